@@ -1,0 +1,655 @@
+// Verilated -*- C++ -*-
+// DESCRIPTION: Verilator output: Design implementation internals
+// See Vsc_axis_core.h for the primary calling header
+
+#include "verilated.h"
+
+#include "Vsc_axis_core___024root.h"
+
+VL_ATTR_COLD void Vsc_axis_core___024root___eval_static(Vsc_axis_core___024root* vlSelf) {
+    if (false && vlSelf) {}  // Prevent unused
+    Vsc_axis_core__Syms* const __restrict vlSymsp VL_ATTR_UNUSED = vlSelf->vlSymsp;
+    VL_DEBUG_IF(VL_DBG_MSGF("+    Vsc_axis_core___024root___eval_static\n"); );
+}
+
+VL_ATTR_COLD void Vsc_axis_core___024root___eval_initial(Vsc_axis_core___024root* vlSelf) {
+    if (false && vlSelf) {}  // Prevent unused
+    Vsc_axis_core__Syms* const __restrict vlSymsp VL_ATTR_UNUSED = vlSelf->vlSymsp;
+    VL_DEBUG_IF(VL_DBG_MSGF("+    Vsc_axis_core___024root___eval_initial\n"); );
+    // Body
+    vlSelf->__Vtrigrprev__TOP__clk_i = vlSelf->clk_i;
+}
+
+VL_ATTR_COLD void Vsc_axis_core___024root___eval_final(Vsc_axis_core___024root* vlSelf) {
+    if (false && vlSelf) {}  // Prevent unused
+    Vsc_axis_core__Syms* const __restrict vlSymsp VL_ATTR_UNUSED = vlSelf->vlSymsp;
+    VL_DEBUG_IF(VL_DBG_MSGF("+    Vsc_axis_core___024root___eval_final\n"); );
+}
+
+VL_ATTR_COLD void Vsc_axis_core___024root___eval_triggers__stl(Vsc_axis_core___024root* vlSelf);
+#ifdef VL_DEBUG
+VL_ATTR_COLD void Vsc_axis_core___024root___dump_triggers__stl(Vsc_axis_core___024root* vlSelf);
+#endif  // VL_DEBUG
+VL_ATTR_COLD void Vsc_axis_core___024root___eval_stl(Vsc_axis_core___024root* vlSelf);
+
+VL_ATTR_COLD void Vsc_axis_core___024root___eval_settle(Vsc_axis_core___024root* vlSelf) {
+    if (false && vlSelf) {}  // Prevent unused
+    Vsc_axis_core__Syms* const __restrict vlSymsp VL_ATTR_UNUSED = vlSelf->vlSymsp;
+    VL_DEBUG_IF(VL_DBG_MSGF("+    Vsc_axis_core___024root___eval_settle\n"); );
+    // Init
+    CData/*0:0*/ __VstlContinue;
+    // Body
+    vlSelf->__VstlIterCount = 0U;
+    __VstlContinue = 1U;
+    while (__VstlContinue) {
+        __VstlContinue = 0U;
+        Vsc_axis_core___024root___eval_triggers__stl(vlSelf);
+        if (vlSelf->__VstlTriggered.any()) {
+            __VstlContinue = 1U;
+            if (VL_UNLIKELY((0x64U < vlSelf->__VstlIterCount))) {
+#ifdef VL_DEBUG
+                Vsc_axis_core___024root___dump_triggers__stl(vlSelf);
+#endif
+                VL_FATAL_MT("/work/main/rtl/sc_axis_core.sv", 10, "", "Settle region did not converge.");
+            }
+            vlSelf->__VstlIterCount = ((IData)(1U) 
+                                       + vlSelf->__VstlIterCount);
+            Vsc_axis_core___024root___eval_stl(vlSelf);
+        }
+    }
+}
+
+#ifdef VL_DEBUG
+VL_ATTR_COLD void Vsc_axis_core___024root___dump_triggers__stl(Vsc_axis_core___024root* vlSelf) {
+    if (false && vlSelf) {}  // Prevent unused
+    Vsc_axis_core__Syms* const __restrict vlSymsp VL_ATTR_UNUSED = vlSelf->vlSymsp;
+    VL_DEBUG_IF(VL_DBG_MSGF("+    Vsc_axis_core___024root___dump_triggers__stl\n"); );
+    // Body
+    if ((1U & (~ (IData)(vlSelf->__VstlTriggered.any())))) {
+        VL_DBG_MSGF("         No triggers active\n");
+    }
+    if (vlSelf->__VstlTriggered.at(0U)) {
+        VL_DBG_MSGF("         'stl' region trigger index 0 is active: Internal 'stl' trigger - first iteration\n");
+    }
+}
+#endif  // VL_DEBUG
+
+VL_ATTR_COLD void Vsc_axis_core___024root___stl_sequent__TOP__0(Vsc_axis_core___024root* vlSelf) {
+    if (false && vlSelf) {}  // Prevent unused
+    Vsc_axis_core__Syms* const __restrict vlSymsp VL_ATTR_UNUSED = vlSelf->vlSymsp;
+    VL_DEBUG_IF(VL_DBG_MSGF("+    Vsc_axis_core___024root___stl_sequent__TOP__0\n"); );
+    // Init
+    SData/*15:0*/ __Vfunc_sc_axis_core__DOT__u_step_gen__DOT__sat_inc__0__Vfuncout;
+    __Vfunc_sc_axis_core__DOT__u_step_gen__DOT__sat_inc__0__Vfuncout = 0;
+    SData/*15:0*/ __Vfunc_sc_axis_core__DOT__u_step_gen__DOT__sat_inc__0__v;
+    __Vfunc_sc_axis_core__DOT__u_step_gen__DOT__sat_inc__0__v = 0;
+    SData/*15:0*/ __Vfunc_sc_axis_core__DOT__u_step_gen__DOT__sat_inc__1__Vfuncout;
+    __Vfunc_sc_axis_core__DOT__u_step_gen__DOT__sat_inc__1__Vfuncout = 0;
+    SData/*15:0*/ __Vfunc_sc_axis_core__DOT__u_step_gen__DOT__sat_inc__1__v;
+    __Vfunc_sc_axis_core__DOT__u_step_gen__DOT__sat_inc__1__v = 0;
+    SData/*15:0*/ __Vfunc_sc_axis_core__DOT__u_step_gen__DOT__sat_inc__2__Vfuncout;
+    __Vfunc_sc_axis_core__DOT__u_step_gen__DOT__sat_inc__2__Vfuncout = 0;
+    SData/*15:0*/ __Vfunc_sc_axis_core__DOT__u_step_gen__DOT__sat_inc__2__v;
+    __Vfunc_sc_axis_core__DOT__u_step_gen__DOT__sat_inc__2__v = 0;
+    VlWide<3>/*95:0*/ __Vtemp_h68fa04a4__0;
+    VlWide<3>/*95:0*/ __Vtemp_h250b1d4a__0;
+    VlWide<3>/*95:0*/ __Vtemp_h54adfcc2__0;
+    VlWide<3>/*95:0*/ __Vtemp_h97375c78__0;
+    VlWide<3>/*95:0*/ __Vtemp_hc514e7b5__0;
+    // Body
+    vlSelf->step_o = vlSelf->sc_axis_core__DOT__u_step_gen__DOT__step_q;
+    vlSelf->dir_o = vlSelf->sc_axis_core__DOT__u_step_gen__DOT__dir_q;
+    vlSelf->en_o = vlSelf->sc_axis_core__DOT__en_q;
+    vlSelf->step_pending_o = vlSelf->sc_axis_core__DOT__u_step_gen__DOT__pend_q;
+    vlSelf->fault_table_o = vlSelf->sc_axis_core__DOT__u_exec__DOT__fault_q;
+    vlSelf->fault_overrun_o = vlSelf->sc_axis_core__DOT__u_step_gen__DOT__overrun_q;
+    vlSelf->pulse_count_o = vlSelf->sc_axis_core__DOT__u_step_gen__DOT__count_q;
+    vlSelf->ref_pos_int_o = vlSelf->sc_axis_core__DOT__u_exec__DOT__pint_q;
+    vlSelf->ref_pos_frac_o[0U] = vlSelf->sc_axis_core__DOT__u_exec__DOT__frac_q[0U];
+    vlSelf->ref_pos_frac_o[1U] = vlSelf->sc_axis_core__DOT__u_exec__DOT__frac_q[1U];
+    vlSelf->ref_pos_frac_o[2U] = vlSelf->sc_axis_core__DOT__u_exec__DOT__frac_q[2U];
+    vlSelf->ref_vel_o[0U] = vlSelf->sc_axis_core__DOT__u_exec__DOT__vel_q[0U];
+    vlSelf->ref_vel_o[1U] = vlSelf->sc_axis_core__DOT__u_exec__DOT__vel_q[1U];
+    vlSelf->ref_vel_o[2U] = vlSelf->sc_axis_core__DOT__u_exec__DOT__vel_q[2U];
+    vlSelf->ref_acc_o = vlSelf->sc_axis_core__DOT__u_exec__DOT__acc_q;
+    vlSelf->ref_jerk_o = vlSelf->sc_axis_core__DOT__u_exec__DOT__jerk_q;
+    vlSelf->seg_idx_o = vlSelf->sc_axis_core__DOT__u_exec__DOT__idx_q;
+    __Vtemp_h68fa04a4__0[0U] = vlSelf->sc_axis_core__DOT__u_exec__DOT__frac_q[0U];
+    __Vtemp_h68fa04a4__0[1U] = vlSelf->sc_axis_core__DOT__u_exec__DOT__frac_q[1U];
+    __Vtemp_h68fa04a4__0[2U] = vlSelf->sc_axis_core__DOT__u_exec__DOT__frac_q[2U];
+    VL_EXTENDS_WW(82,81, __Vtemp_h250b1d4a__0, vlSelf->sc_axis_core__DOT__u_exec__DOT__vel_q);
+    VL_ADD_W(3, __Vtemp_h54adfcc2__0, __Vtemp_h68fa04a4__0, __Vtemp_h250b1d4a__0);
+    vlSelf->sc_axis_core__DOT__u_exec__DOT__pos_sum[0U] 
+        = __Vtemp_h54adfcc2__0[0U];
+    vlSelf->sc_axis_core__DOT__u_exec__DOT__pos_sum[1U] 
+        = __Vtemp_h54adfcc2__0[1U];
+    vlSelf->sc_axis_core__DOT__u_exec__DOT__pos_sum[2U] 
+        = (0x3ffffU & __Vtemp_h54adfcc2__0[2U]);
+    vlSelf->sc_axis_core__DOT__u_step_gen__DOT__dir_ok 
+        = ((1U & (~ ((IData)(vlSelf->sc_axis_core__DOT__u_step_gen__DOT__pend_q) 
+                     >> 3U))) == (IData)(vlSelf->sc_axis_core__DOT__u_step_gen__DOT__dir_q));
+    vlSelf->sc_axis_core__DOT__u_exec__DOT__load_idx = 0U;
+    vlSelf->busy_o = ((IData)(vlSelf->sc_axis_core__DOT__u_exec__DOT__run_q) 
+                      | ((IData)(vlSelf->sc_axis_core__DOT__u_exec__DOT__step_req_q) 
+                         | ((0U != (IData)(vlSelf->sc_axis_core__DOT__u_step_gen__DOT__pend_q)) 
+                            | (IData)(vlSelf->sc_axis_core__DOT__u_step_gen__DOT__step_q))));
+    vlSelf->sc_axis_core__DOT__u_exec__DOT__step_req_d = 0U;
+    vlSelf->sc_axis_core__DOT__u_exec__DOT__pint_d 
+        = vlSelf->sc_axis_core__DOT__u_exec__DOT__pint_q;
+    vlSelf->sc_axis_core__DOT__u_exec__DOT__step_fwd_d 
+        = vlSelf->sc_axis_core__DOT__u_exec__DOT__step_fwd_q;
+    vlSelf->sc_axis_core__DOT__u_step_gen__DOT__flip_dir 
+        = ((0U != (IData)(vlSelf->sc_axis_core__DOT__u_step_gen__DOT__pend_q)) 
+           & ((~ (IData)(vlSelf->sc_axis_core__DOT__u_step_gen__DOT__dir_ok)) 
+              & ((~ (IData)(vlSelf->sc_axis_core__DOT__u_step_gen__DOT__step_q)) 
+                 & ((IData)(vlSelf->sc_axis_core__DOT__u_step_gen__DOT__since_rise_q) 
+                    >= (IData)(vlSelf->sc_axis_core__DOT__cfg_hold_q)))));
+    vlSelf->sc_axis_core__DOT__u_step_gen__DOT__rise 
+        = ((0U != (IData)(vlSelf->sc_axis_core__DOT__u_step_gen__DOT__pend_q)) 
+           & ((IData)(vlSelf->sc_axis_core__DOT__u_step_gen__DOT__dir_ok) 
+              & ((~ (IData)(vlSelf->sc_axis_core__DOT__u_step_gen__DOT__step_q)) 
+                 & (((IData)(vlSelf->sc_axis_core__DOT__u_step_gen__DOT__low_cnt_q) 
+                     >= (IData)(vlSelf->sc_axis_core__DOT__cfg_low_q)) 
+                    & ((IData)(vlSelf->sc_axis_core__DOT__u_step_gen__DOT__since_dir_q) 
+                       >= (IData)(vlSelf->sc_axis_core__DOT__cfg_setup_q))))));
+    if (vlSelf->sc_axis_core__DOT__u_exec__DOT__run_q) {
+        if ((((~ (IData)(vlSelf->sc_axis_core__DOT__abort_q)) 
+              & (1U == vlSelf->sc_axis_core__DOT__u_exec__DOT__left_q)) 
+             & ((0x1fU & ((IData)(1U) + (IData)(vlSelf->sc_axis_core__DOT__u_exec__DOT__idx_q))) 
+                < (IData)(vlSelf->sc_axis_core__DOT__u_exec__DOT__count_q)))) {
+            vlSelf->sc_axis_core__DOT__u_exec__DOT__load_idx 
+                = (0xfU & ((IData)(1U) + (IData)(vlSelf->sc_axis_core__DOT__u_exec__DOT__idx_q)));
+        }
+    }
+    vlSelf->sc_axis_core__DOT__u_exec__DOT__load_seg[0U] 
+        = vlSelf->sc_axis_core__DOT__u_exec__DOT__seg_mem_q
+        [vlSelf->sc_axis_core__DOT__u_exec__DOT__load_idx][0U];
+    vlSelf->sc_axis_core__DOT__u_exec__DOT__load_seg[1U] 
+        = vlSelf->sc_axis_core__DOT__u_exec__DOT__seg_mem_q
+        [vlSelf->sc_axis_core__DOT__u_exec__DOT__load_idx][1U];
+    vlSelf->sc_axis_core__DOT__u_exec__DOT__load_seg[2U] 
+        = vlSelf->sc_axis_core__DOT__u_exec__DOT__seg_mem_q
+        [vlSelf->sc_axis_core__DOT__u_exec__DOT__load_idx][2U];
+    vlSelf->sc_axis_core__DOT__u_exec__DOT__load_seg[3U] 
+        = vlSelf->sc_axis_core__DOT__u_exec__DOT__seg_mem_q
+        [vlSelf->sc_axis_core__DOT__u_exec__DOT__load_idx][3U];
+    vlSelf->sc_axis_core__DOT__u_exec__DOT__load_seg[4U] 
+        = vlSelf->sc_axis_core__DOT__u_exec__DOT__seg_mem_q
+        [vlSelf->sc_axis_core__DOT__u_exec__DOT__load_idx][4U];
+    vlSelf->sc_axis_core__DOT__u_exec__DOT__load_seg[5U] 
+        = vlSelf->sc_axis_core__DOT__u_exec__DOT__seg_mem_q
+        [vlSelf->sc_axis_core__DOT__u_exec__DOT__load_idx][5U];
+    vlSelf->sc_axis_core__DOT__u_exec__DOT__load_seg[6U] 
+        = vlSelf->sc_axis_core__DOT__u_exec__DOT__seg_mem_q
+        [vlSelf->sc_axis_core__DOT__u_exec__DOT__load_idx][6U];
+    vlSelf->sc_axis_core__DOT__u_exec__DOT__load_seg[7U] 
+        = vlSelf->sc_axis_core__DOT__u_exec__DOT__seg_mem_q
+        [vlSelf->sc_axis_core__DOT__u_exec__DOT__load_idx][7U];
+    vlSelf->done_o = ((~ (IData)(vlSelf->busy_o)) & (IData)(vlSelf->sc_axis_core__DOT__u_exec__DOT__finished_q));
+    vlSelf->sc_axis_core__DOT__start_ok = ((IData)(vlSelf->sc_axis_core__DOT__start_q) 
+                                           & ((~ (IData)(vlSelf->busy_o)) 
+                                              & (IData)(vlSelf->sc_axis_core__DOT__en_q)));
+    vlSelf->sc_axis_core__DOT__u_step_gen__DOT__dir_d 
+        = vlSelf->sc_axis_core__DOT__u_step_gen__DOT__dir_q;
+    __Vfunc_sc_axis_core__DOT__u_step_gen__DOT__sat_inc__0__v 
+        = vlSelf->sc_axis_core__DOT__u_step_gen__DOT__since_dir_q;
+    __Vfunc_sc_axis_core__DOT__u_step_gen__DOT__sat_inc__0__Vfuncout 
+        = (0xffffU & ((0xffffU == (IData)(__Vfunc_sc_axis_core__DOT__u_step_gen__DOT__sat_inc__0__v))
+                       ? (IData)(__Vfunc_sc_axis_core__DOT__u_step_gen__DOT__sat_inc__0__v)
+                       : ((IData)(1U) + (IData)(__Vfunc_sc_axis_core__DOT__u_step_gen__DOT__sat_inc__0__v))));
+    vlSelf->sc_axis_core__DOT__u_step_gen__DOT__since_dir_d 
+        = __Vfunc_sc_axis_core__DOT__u_step_gen__DOT__sat_inc__0__Vfuncout;
+    if (vlSelf->sc_axis_core__DOT__u_step_gen__DOT__flip_dir) {
+        vlSelf->sc_axis_core__DOT__u_step_gen__DOT__dir_d 
+            = (1U & (~ (IData)(vlSelf->sc_axis_core__DOT__u_step_gen__DOT__dir_q)));
+        vlSelf->sc_axis_core__DOT__u_step_gen__DOT__since_dir_d = 1U;
+    }
+    vlSelf->sc_axis_core__DOT__u_step_gen__DOT__high_left_d 
+        = vlSelf->sc_axis_core__DOT__u_step_gen__DOT__high_left_q;
+    __Vfunc_sc_axis_core__DOT__u_step_gen__DOT__sat_inc__1__v 
+        = vlSelf->sc_axis_core__DOT__u_step_gen__DOT__since_rise_q;
+    __Vfunc_sc_axis_core__DOT__u_step_gen__DOT__sat_inc__1__Vfuncout 
+        = (0xffffU & ((0xffffU == (IData)(__Vfunc_sc_axis_core__DOT__u_step_gen__DOT__sat_inc__1__v))
+                       ? (IData)(__Vfunc_sc_axis_core__DOT__u_step_gen__DOT__sat_inc__1__v)
+                       : ((IData)(1U) + (IData)(__Vfunc_sc_axis_core__DOT__u_step_gen__DOT__sat_inc__1__v))));
+    vlSelf->sc_axis_core__DOT__u_step_gen__DOT__since_rise_d 
+        = __Vfunc_sc_axis_core__DOT__u_step_gen__DOT__sat_inc__1__Vfuncout;
+    vlSelf->sc_axis_core__DOT__u_step_gen__DOT__step_d 
+        = vlSelf->sc_axis_core__DOT__u_step_gen__DOT__step_q;
+    __Vfunc_sc_axis_core__DOT__u_step_gen__DOT__sat_inc__2__v 
+        = vlSelf->sc_axis_core__DOT__u_step_gen__DOT__low_cnt_q;
+    __Vfunc_sc_axis_core__DOT__u_step_gen__DOT__sat_inc__2__Vfuncout 
+        = (0xffffU & ((0xffffU == (IData)(__Vfunc_sc_axis_core__DOT__u_step_gen__DOT__sat_inc__2__v))
+                       ? (IData)(__Vfunc_sc_axis_core__DOT__u_step_gen__DOT__sat_inc__2__v)
+                       : ((IData)(1U) + (IData)(__Vfunc_sc_axis_core__DOT__u_step_gen__DOT__sat_inc__2__v))));
+    if (vlSelf->sc_axis_core__DOT__u_step_gen__DOT__rise) {
+        vlSelf->sc_axis_core__DOT__u_step_gen__DOT__high_left_d 
+            = vlSelf->sc_axis_core__DOT__cfg_high_q;
+        vlSelf->sc_axis_core__DOT__u_step_gen__DOT__since_rise_d = 1U;
+        vlSelf->sc_axis_core__DOT__u_step_gen__DOT__step_d = 1U;
+    } else if (vlSelf->sc_axis_core__DOT__u_step_gen__DOT__step_q) {
+        vlSelf->sc_axis_core__DOT__u_step_gen__DOT__high_left_d 
+            = (0xffffU & ((IData)(vlSelf->sc_axis_core__DOT__u_step_gen__DOT__high_left_q) 
+                          - (IData)(1U)));
+        if ((1U >= (IData)(vlSelf->sc_axis_core__DOT__u_step_gen__DOT__high_left_q))) {
+            vlSelf->sc_axis_core__DOT__u_step_gen__DOT__step_d = 0U;
+        }
+    }
+    vlSelf->sc_axis_core__DOT__u_step_gen__DOT__low_cnt_d 
+        = ((IData)(vlSelf->sc_axis_core__DOT__u_step_gen__DOT__step_d)
+            ? 0U : (IData)(__Vfunc_sc_axis_core__DOT__u_step_gen__DOT__sat_inc__2__Vfuncout));
+    vlSelf->phase_o = ((IData)(vlSelf->done_o) ? 8U
+                        : (IData)(vlSelf->sc_axis_core__DOT__u_exec__DOT__phase_q));
+    vlSelf->sc_axis_core__DOT__u_exec__DOT__count_d 
+        = vlSelf->sc_axis_core__DOT__u_exec__DOT__count_q;
+    vlSelf->sc_axis_core__DOT__u_step_gen__DOT__count_d 
+        = vlSelf->sc_axis_core__DOT__u_step_gen__DOT__count_q;
+    if (vlSelf->sc_axis_core__DOT__u_step_gen__DOT__rise) {
+        vlSelf->sc_axis_core__DOT__u_exec__DOT__frac_d[0U] 
+            = vlSelf->sc_axis_core__DOT__u_exec__DOT__frac_q[0U];
+        vlSelf->sc_axis_core__DOT__u_exec__DOT__frac_d[1U] 
+            = vlSelf->sc_axis_core__DOT__u_exec__DOT__frac_q[1U];
+        vlSelf->sc_axis_core__DOT__u_exec__DOT__frac_d[2U] 
+            = vlSelf->sc_axis_core__DOT__u_exec__DOT__frac_q[2U];
+        vlSelf->sc_axis_core__DOT__u_step_gen__DOT__overrun_d 
+            = vlSelf->sc_axis_core__DOT__u_step_gen__DOT__overrun_q;
+        vlSelf->sc_axis_core__DOT__u_step_gen__DOT__pend_d 
+            = vlSelf->sc_axis_core__DOT__u_step_gen__DOT__pend_q;
+        if (vlSelf->sc_axis_core__DOT__u_step_gen__DOT__dir_q) {
+            vlSelf->sc_axis_core__DOT__u_step_gen__DOT__count_d 
+                = ((IData)(1U) + vlSelf->sc_axis_core__DOT__u_step_gen__DOT__count_q);
+            vlSelf->sc_axis_core__DOT__u_step_gen__DOT__pend_d 
+                = (0xfU & ((IData)(vlSelf->sc_axis_core__DOT__u_step_gen__DOT__pend_q) 
+                           - (IData)(1U)));
+        } else {
+            vlSelf->sc_axis_core__DOT__u_step_gen__DOT__count_d 
+                = (vlSelf->sc_axis_core__DOT__u_step_gen__DOT__count_q 
+                   - (IData)(1U));
+            vlSelf->sc_axis_core__DOT__u_step_gen__DOT__pend_d 
+                = (0xfU & ((IData)(1U) + (IData)(vlSelf->sc_axis_core__DOT__u_step_gen__DOT__pend_q)));
+        }
+    } else {
+        vlSelf->sc_axis_core__DOT__u_exec__DOT__frac_d[0U] 
+            = vlSelf->sc_axis_core__DOT__u_exec__DOT__frac_q[0U];
+        vlSelf->sc_axis_core__DOT__u_exec__DOT__frac_d[1U] 
+            = vlSelf->sc_axis_core__DOT__u_exec__DOT__frac_q[1U];
+        vlSelf->sc_axis_core__DOT__u_exec__DOT__frac_d[2U] 
+            = vlSelf->sc_axis_core__DOT__u_exec__DOT__frac_q[2U];
+        vlSelf->sc_axis_core__DOT__u_step_gen__DOT__overrun_d 
+            = vlSelf->sc_axis_core__DOT__u_step_gen__DOT__overrun_q;
+        vlSelf->sc_axis_core__DOT__u_step_gen__DOT__pend_d 
+            = vlSelf->sc_axis_core__DOT__u_step_gen__DOT__pend_q;
+    }
+    vlSelf->sc_axis_core__DOT__u_step_gen__DOT__req_blocked = 0U;
+    if (vlSelf->sc_axis_core__DOT__u_exec__DOT__step_req_q) {
+        if (vlSelf->sc_axis_core__DOT__u_exec__DOT__step_fwd_q) {
+            vlSelf->sc_axis_core__DOT__u_step_gen__DOT__req_blocked 
+                = (7U == (IData)(vlSelf->sc_axis_core__DOT__u_step_gen__DOT__pend_d));
+            if ((1U & (~ (IData)(vlSelf->sc_axis_core__DOT__u_step_gen__DOT__req_blocked)))) {
+                vlSelf->sc_axis_core__DOT__u_step_gen__DOT__pend_d 
+                    = (0xfU & ((IData)(1U) + (IData)(vlSelf->sc_axis_core__DOT__u_step_gen__DOT__pend_d)));
+            }
+        } else {
+            vlSelf->sc_axis_core__DOT__u_step_gen__DOT__req_blocked 
+                = (8U == (IData)(vlSelf->sc_axis_core__DOT__u_step_gen__DOT__pend_d));
+            if ((1U & (~ (IData)(vlSelf->sc_axis_core__DOT__u_step_gen__DOT__req_blocked)))) {
+                vlSelf->sc_axis_core__DOT__u_step_gen__DOT__pend_d 
+                    = (0xfU & ((IData)(vlSelf->sc_axis_core__DOT__u_step_gen__DOT__pend_d) 
+                               - (IData)(1U)));
+            }
+        }
+        if (vlSelf->sc_axis_core__DOT__u_step_gen__DOT__req_blocked) {
+            vlSelf->sc_axis_core__DOT__u_step_gen__DOT__overrun_d = 1U;
+        }
+    }
+    if (vlSelf->sc_axis_core__DOT__start_ok) {
+        vlSelf->sc_axis_core__DOT__u_step_gen__DOT__count_d = 0U;
+        vlSelf->sc_axis_core__DOT__u_step_gen__DOT__overrun_d = 0U;
+    }
+    vlSelf->sc_axis_core__DOT__u_exec__DOT__load = 0U;
+    vlSelf->sc_axis_core__DOT__u_exec__DOT__idx_d = vlSelf->sc_axis_core__DOT__u_exec__DOT__idx_q;
+    vlSelf->sc_axis_core__DOT__u_exec__DOT__left_d 
+        = vlSelf->sc_axis_core__DOT__u_exec__DOT__left_q;
+    vlSelf->sc_axis_core__DOT__u_exec__DOT__fault_d 
+        = vlSelf->sc_axis_core__DOT__u_exec__DOT__fault_q;
+    if ((1U & (~ (IData)(vlSelf->sc_axis_core__DOT__u_exec__DOT__run_q)))) {
+        if (vlSelf->sc_axis_core__DOT__start_ok) {
+            vlSelf->sc_axis_core__DOT__u_exec__DOT__count_d 
+                = vlSelf->sc_axis_core__DOT__seg_count_q;
+        }
+    }
+    if (vlSelf->sc_axis_core__DOT__u_exec__DOT__run_q) {
+        if ((1U & (~ (IData)(vlSelf->sc_axis_core__DOT__abort_q)))) {
+            if ((0x20000U & vlSelf->sc_axis_core__DOT__u_exec__DOT__pos_sum[2U])) {
+                vlSelf->sc_axis_core__DOT__u_exec__DOT__step_req_d = 1U;
+                vlSelf->sc_axis_core__DOT__u_exec__DOT__pint_d 
+                    = (vlSelf->sc_axis_core__DOT__u_exec__DOT__pint_q 
+                       - (IData)(1U));
+                vlSelf->sc_axis_core__DOT__u_exec__DOT__step_fwd_d = 0U;
+            } else if ((0x10000U & vlSelf->sc_axis_core__DOT__u_exec__DOT__pos_sum[2U])) {
+                vlSelf->sc_axis_core__DOT__u_exec__DOT__step_req_d = 1U;
+                vlSelf->sc_axis_core__DOT__u_exec__DOT__pint_d 
+                    = ((IData)(1U) + vlSelf->sc_axis_core__DOT__u_exec__DOT__pint_q);
+                vlSelf->sc_axis_core__DOT__u_exec__DOT__step_fwd_d = 1U;
+            }
+            vlSelf->sc_axis_core__DOT__u_exec__DOT__frac_d[0U] 
+                = vlSelf->sc_axis_core__DOT__u_exec__DOT__pos_sum[0U];
+            vlSelf->sc_axis_core__DOT__u_exec__DOT__frac_d[1U] 
+                = vlSelf->sc_axis_core__DOT__u_exec__DOT__pos_sum[1U];
+            vlSelf->sc_axis_core__DOT__u_exec__DOT__frac_d[2U] 
+                = (0xffffU & vlSelf->sc_axis_core__DOT__u_exec__DOT__pos_sum[2U]);
+        }
+        if ((((~ (IData)(vlSelf->sc_axis_core__DOT__abort_q)) 
+              & (1U == vlSelf->sc_axis_core__DOT__u_exec__DOT__left_q)) 
+             & ((0x1fU & ((IData)(1U) + (IData)(vlSelf->sc_axis_core__DOT__u_exec__DOT__idx_q))) 
+                < (IData)(vlSelf->sc_axis_core__DOT__u_exec__DOT__count_q)))) {
+            vlSelf->sc_axis_core__DOT__u_exec__DOT__load = 1U;
+        }
+    } else {
+        if (vlSelf->sc_axis_core__DOT__start_ok) {
+            vlSelf->sc_axis_core__DOT__u_exec__DOT__frac_d[0U] 
+                = vlSelf->sc_axis_core__DOT__pos_frac0_q[0U];
+            vlSelf->sc_axis_core__DOT__u_exec__DOT__frac_d[1U] 
+                = vlSelf->sc_axis_core__DOT__pos_frac0_q[1U];
+            vlSelf->sc_axis_core__DOT__u_exec__DOT__frac_d[2U] 
+                = vlSelf->sc_axis_core__DOT__pos_frac0_q[2U];
+        }
+        if ((((IData)(vlSelf->sc_axis_core__DOT__start_ok) 
+              & (0U != (IData)(vlSelf->sc_axis_core__DOT__seg_count_q))) 
+             & (0x10U >= (IData)(vlSelf->sc_axis_core__DOT__seg_count_q)))) {
+            vlSelf->sc_axis_core__DOT__u_exec__DOT__load = 1U;
+        }
+    }
+    if ((1U & (~ (IData)(vlSelf->sc_axis_core__DOT__u_exec__DOT__run_q)))) {
+        if (vlSelf->sc_axis_core__DOT__start_ok) {
+            vlSelf->sc_axis_core__DOT__u_exec__DOT__fault_d = 0U;
+            if ((1U & (~ (IData)(vlSelf->sc_axis_core__DOT__u_exec__DOT__load)))) {
+                vlSelf->sc_axis_core__DOT__u_exec__DOT__fault_d = 1U;
+            }
+        }
+    }
+    if (vlSelf->sc_axis_core__DOT__u_exec__DOT__run_q) {
+        vlSelf->sc_axis_core__DOT__u_exec__DOT__run_d = 1U;
+        vlSelf->sc_axis_core__DOT__u_exec__DOT__phase_d 
+            = vlSelf->sc_axis_core__DOT__u_exec__DOT__phase_q;
+        vlSelf->sc_axis_core__DOT__u_exec__DOT__jerk_d 
+            = vlSelf->sc_axis_core__DOT__u_exec__DOT__jerk_q;
+        vlSelf->sc_axis_core__DOT__u_exec__DOT__finished_d 
+            = vlSelf->sc_axis_core__DOT__u_exec__DOT__finished_q;
+        vlSelf->sc_axis_core__DOT__u_exec__DOT__vel_d[0U] 
+            = vlSelf->sc_axis_core__DOT__u_exec__DOT__vel_q[0U];
+        vlSelf->sc_axis_core__DOT__u_exec__DOT__vel_d[1U] 
+            = vlSelf->sc_axis_core__DOT__u_exec__DOT__vel_q[1U];
+        vlSelf->sc_axis_core__DOT__u_exec__DOT__vel_d[2U] 
+            = vlSelf->sc_axis_core__DOT__u_exec__DOT__vel_q[2U];
+        if ((1U & (~ (IData)(vlSelf->sc_axis_core__DOT__abort_q)))) {
+            if ((1U != vlSelf->sc_axis_core__DOT__u_exec__DOT__left_q)) {
+                vlSelf->sc_axis_core__DOT__u_exec__DOT__left_d 
+                    = (vlSelf->sc_axis_core__DOT__u_exec__DOT__left_q 
+                       - (IData)(1U));
+            }
+            if ((1U == vlSelf->sc_axis_core__DOT__u_exec__DOT__left_q)) {
+                if ((1U & (~ (IData)(vlSelf->sc_axis_core__DOT__u_exec__DOT__load)))) {
+                    vlSelf->sc_axis_core__DOT__u_exec__DOT__finished_d = 1U;
+                }
+            }
+        }
+        vlSelf->sc_axis_core__DOT__u_exec__DOT__acc_d 
+            = vlSelf->sc_axis_core__DOT__u_exec__DOT__acc_q;
+        if (vlSelf->sc_axis_core__DOT__abort_q) {
+            vlSelf->sc_axis_core__DOT__u_exec__DOT__run_d = 0U;
+            vlSelf->sc_axis_core__DOT__u_exec__DOT__phase_d = 9U;
+            vlSelf->sc_axis_core__DOT__u_exec__DOT__jerk_d = 0ULL;
+            vlSelf->sc_axis_core__DOT__u_exec__DOT__vel_d[0U] = 0U;
+            vlSelf->sc_axis_core__DOT__u_exec__DOT__vel_d[1U] = 0U;
+            vlSelf->sc_axis_core__DOT__u_exec__DOT__vel_d[2U] = 0U;
+            vlSelf->sc_axis_core__DOT__u_exec__DOT__acc_d = 0ULL;
+        } else if ((1U == vlSelf->sc_axis_core__DOT__u_exec__DOT__left_q)) {
+            if ((1U & (~ (IData)(vlSelf->sc_axis_core__DOT__u_exec__DOT__load)))) {
+                vlSelf->sc_axis_core__DOT__u_exec__DOT__run_d = 0U;
+                vlSelf->sc_axis_core__DOT__u_exec__DOT__jerk_d = 0ULL;
+                vlSelf->sc_axis_core__DOT__u_exec__DOT__vel_d[0U] = 0U;
+                vlSelf->sc_axis_core__DOT__u_exec__DOT__vel_d[1U] = 0U;
+                vlSelf->sc_axis_core__DOT__u_exec__DOT__vel_d[2U] = 0U;
+                vlSelf->sc_axis_core__DOT__u_exec__DOT__acc_d = 0ULL;
+            }
+        } else {
+            VL_EXTENDS_WQ(81,64, __Vtemp_h97375c78__0, vlSelf->sc_axis_core__DOT__u_exec__DOT__acc_q);
+            VL_ADD_W(3, __Vtemp_hc514e7b5__0, vlSelf->sc_axis_core__DOT__u_exec__DOT__vel_q, __Vtemp_h97375c78__0);
+            vlSelf->sc_axis_core__DOT__u_exec__DOT__vel_d[0U] 
+                = __Vtemp_hc514e7b5__0[0U];
+            vlSelf->sc_axis_core__DOT__u_exec__DOT__vel_d[1U] 
+                = __Vtemp_hc514e7b5__0[1U];
+            vlSelf->sc_axis_core__DOT__u_exec__DOT__vel_d[2U] 
+                = (0x1ffffU & __Vtemp_hc514e7b5__0[2U]);
+            vlSelf->sc_axis_core__DOT__u_exec__DOT__acc_d 
+                = (vlSelf->sc_axis_core__DOT__u_exec__DOT__acc_q 
+                   + VL_EXTENDS_QQ(64,48, vlSelf->sc_axis_core__DOT__u_exec__DOT__jerk_q));
+        }
+    } else {
+        vlSelf->sc_axis_core__DOT__u_exec__DOT__run_d = 0U;
+        vlSelf->sc_axis_core__DOT__u_exec__DOT__phase_d 
+            = vlSelf->sc_axis_core__DOT__u_exec__DOT__phase_q;
+        vlSelf->sc_axis_core__DOT__u_exec__DOT__jerk_d 
+            = vlSelf->sc_axis_core__DOT__u_exec__DOT__jerk_q;
+        vlSelf->sc_axis_core__DOT__u_exec__DOT__finished_d 
+            = vlSelf->sc_axis_core__DOT__u_exec__DOT__finished_q;
+        vlSelf->sc_axis_core__DOT__u_exec__DOT__vel_d[0U] 
+            = vlSelf->sc_axis_core__DOT__u_exec__DOT__vel_q[0U];
+        vlSelf->sc_axis_core__DOT__u_exec__DOT__vel_d[1U] 
+            = vlSelf->sc_axis_core__DOT__u_exec__DOT__vel_q[1U];
+        vlSelf->sc_axis_core__DOT__u_exec__DOT__vel_d[2U] 
+            = vlSelf->sc_axis_core__DOT__u_exec__DOT__vel_q[2U];
+        if (vlSelf->sc_axis_core__DOT__start_ok) {
+            if ((1U & (~ (IData)(vlSelf->sc_axis_core__DOT__u_exec__DOT__load)))) {
+                vlSelf->sc_axis_core__DOT__u_exec__DOT__phase_d = 0xaU;
+            }
+            vlSelf->sc_axis_core__DOT__u_exec__DOT__finished_d = 0U;
+        }
+        vlSelf->sc_axis_core__DOT__u_exec__DOT__acc_d 
+            = vlSelf->sc_axis_core__DOT__u_exec__DOT__acc_q;
+    }
+    if (vlSelf->sc_axis_core__DOT__u_exec__DOT__load) {
+        if ((0U != ((vlSelf->sc_axis_core__DOT__u_exec__DOT__load_seg[7U] 
+                     << 0x1fU) | (vlSelf->sc_axis_core__DOT__u_exec__DOT__load_seg[6U] 
+                                  >> 1U)))) {
+            vlSelf->sc_axis_core__DOT__u_exec__DOT__idx_d 
+                = vlSelf->sc_axis_core__DOT__u_exec__DOT__load_idx;
+            vlSelf->sc_axis_core__DOT__u_exec__DOT__left_d 
+                = ((vlSelf->sc_axis_core__DOT__u_exec__DOT__load_seg[7U] 
+                    << 0x1fU) | (vlSelf->sc_axis_core__DOT__u_exec__DOT__load_seg[6U] 
+                                 >> 1U));
+        }
+        if ((0U == ((vlSelf->sc_axis_core__DOT__u_exec__DOT__load_seg[7U] 
+                     << 0x1fU) | (vlSelf->sc_axis_core__DOT__u_exec__DOT__load_seg[6U] 
+                                  >> 1U)))) {
+            vlSelf->sc_axis_core__DOT__u_exec__DOT__fault_d = 1U;
+            vlSelf->sc_axis_core__DOT__u_exec__DOT__phase_d = 0xaU;
+            vlSelf->sc_axis_core__DOT__u_exec__DOT__jerk_d = 0ULL;
+            vlSelf->sc_axis_core__DOT__u_exec__DOT__vel_d[0U] = 0U;
+            vlSelf->sc_axis_core__DOT__u_exec__DOT__vel_d[1U] = 0U;
+            vlSelf->sc_axis_core__DOT__u_exec__DOT__vel_d[2U] = 0U;
+            vlSelf->sc_axis_core__DOT__u_exec__DOT__acc_d = 0ULL;
+        } else {
+            vlSelf->sc_axis_core__DOT__u_exec__DOT__phase_d 
+                = (0xfU & (vlSelf->sc_axis_core__DOT__u_exec__DOT__load_seg[7U] 
+                           >> 1U));
+            vlSelf->sc_axis_core__DOT__u_exec__DOT__jerk_d 
+                = (0xffffffffffffULL & (((QData)((IData)(
+                                                         vlSelf->sc_axis_core__DOT__u_exec__DOT__load_seg[6U])) 
+                                         << 0x2fU) 
+                                        | (((QData)((IData)(
+                                                            vlSelf->sc_axis_core__DOT__u_exec__DOT__load_seg[5U])) 
+                                            << 0xfU) 
+                                           | ((QData)((IData)(
+                                                              vlSelf->sc_axis_core__DOT__u_exec__DOT__load_seg[4U])) 
+                                              >> 0x11U))));
+            vlSelf->sc_axis_core__DOT__u_exec__DOT__vel_d[0U] 
+                = vlSelf->sc_axis_core__DOT__u_exec__DOT__load_seg[0U];
+            vlSelf->sc_axis_core__DOT__u_exec__DOT__vel_d[1U] 
+                = vlSelf->sc_axis_core__DOT__u_exec__DOT__load_seg[1U];
+            vlSelf->sc_axis_core__DOT__u_exec__DOT__vel_d[2U] 
+                = (0x1ffffU & vlSelf->sc_axis_core__DOT__u_exec__DOT__load_seg[2U]);
+            vlSelf->sc_axis_core__DOT__u_exec__DOT__acc_d 
+                = (((QData)((IData)(vlSelf->sc_axis_core__DOT__u_exec__DOT__load_seg[4U])) 
+                    << 0x2fU) | (((QData)((IData)(vlSelf->sc_axis_core__DOT__u_exec__DOT__load_seg[3U])) 
+                                  << 0xfU) | ((QData)((IData)(
+                                                              vlSelf->sc_axis_core__DOT__u_exec__DOT__load_seg[2U])) 
+                                              >> 0x11U)));
+        }
+        vlSelf->sc_axis_core__DOT__u_exec__DOT__run_d 
+            = (0U != ((vlSelf->sc_axis_core__DOT__u_exec__DOT__load_seg[7U] 
+                       << 0x1fU) | (vlSelf->sc_axis_core__DOT__u_exec__DOT__load_seg[6U] 
+                                    >> 1U)));
+    }
+}
+
+VL_ATTR_COLD void Vsc_axis_core___024root___eval_stl(Vsc_axis_core___024root* vlSelf) {
+    if (false && vlSelf) {}  // Prevent unused
+    Vsc_axis_core__Syms* const __restrict vlSymsp VL_ATTR_UNUSED = vlSelf->vlSymsp;
+    VL_DEBUG_IF(VL_DBG_MSGF("+    Vsc_axis_core___024root___eval_stl\n"); );
+    // Body
+    if (vlSelf->__VstlTriggered.at(0U)) {
+        Vsc_axis_core___024root___stl_sequent__TOP__0(vlSelf);
+        vlSelf->__Vm_traceActivity[1U] = 1U;
+        vlSelf->__Vm_traceActivity[0U] = 1U;
+    }
+}
+
+#ifdef VL_DEBUG
+VL_ATTR_COLD void Vsc_axis_core___024root___dump_triggers__act(Vsc_axis_core___024root* vlSelf) {
+    if (false && vlSelf) {}  // Prevent unused
+    Vsc_axis_core__Syms* const __restrict vlSymsp VL_ATTR_UNUSED = vlSelf->vlSymsp;
+    VL_DEBUG_IF(VL_DBG_MSGF("+    Vsc_axis_core___024root___dump_triggers__act\n"); );
+    // Body
+    if ((1U & (~ (IData)(vlSelf->__VactTriggered.any())))) {
+        VL_DBG_MSGF("         No triggers active\n");
+    }
+    if (vlSelf->__VactTriggered.at(0U)) {
+        VL_DBG_MSGF("         'act' region trigger index 0 is active: @(posedge clk_i)\n");
+    }
+}
+#endif  // VL_DEBUG
+
+#ifdef VL_DEBUG
+VL_ATTR_COLD void Vsc_axis_core___024root___dump_triggers__nba(Vsc_axis_core___024root* vlSelf) {
+    if (false && vlSelf) {}  // Prevent unused
+    Vsc_axis_core__Syms* const __restrict vlSymsp VL_ATTR_UNUSED = vlSelf->vlSymsp;
+    VL_DEBUG_IF(VL_DBG_MSGF("+    Vsc_axis_core___024root___dump_triggers__nba\n"); );
+    // Body
+    if ((1U & (~ (IData)(vlSelf->__VnbaTriggered.any())))) {
+        VL_DBG_MSGF("         No triggers active\n");
+    }
+    if (vlSelf->__VnbaTriggered.at(0U)) {
+        VL_DBG_MSGF("         'nba' region trigger index 0 is active: @(posedge clk_i)\n");
+    }
+}
+#endif  // VL_DEBUG
+
+VL_ATTR_COLD void Vsc_axis_core___024root___ctor_var_reset(Vsc_axis_core___024root* vlSelf) {
+    if (false && vlSelf) {}  // Prevent unused
+    Vsc_axis_core__Syms* const __restrict vlSymsp VL_ATTR_UNUSED = vlSelf->vlSymsp;
+    VL_DEBUG_IF(VL_DBG_MSGF("+    Vsc_axis_core___024root___ctor_var_reset\n"); );
+    // Body
+    vlSelf->clk_i = 0;
+    vlSelf->rst_ni = 0;
+    vlSelf->enable_i = 0;
+    vlSelf->cfg_high_i = 0;
+    vlSelf->cfg_low_i = 0;
+    vlSelf->cfg_setup_i = 0;
+    vlSelf->cfg_hold_i = 0;
+    vlSelf->seg_we_i = 0;
+    vlSelf->seg_waddr_i = 0;
+    VL_ZERO_RESET_W(229, vlSelf->seg_wdata_i);
+    vlSelf->seg_count_i = 0;
+    VL_ZERO_RESET_W(80, vlSelf->pos_frac0_i);
+    vlSelf->start_i = 0;
+    vlSelf->abort_i = 0;
+    vlSelf->step_o = 0;
+    vlSelf->dir_o = 0;
+    vlSelf->en_o = 0;
+    vlSelf->busy_o = 0;
+    vlSelf->done_o = 0;
+    vlSelf->phase_o = 0;
+    vlSelf->fault_table_o = 0;
+    vlSelf->fault_overrun_o = 0;
+    vlSelf->pulse_count_o = 0;
+    vlSelf->ref_pos_int_o = 0;
+    VL_ZERO_RESET_W(80, vlSelf->ref_pos_frac_o);
+    VL_ZERO_RESET_W(81, vlSelf->ref_vel_o);
+    vlSelf->ref_acc_o = 0;
+    vlSelf->ref_jerk_o = 0;
+    vlSelf->seg_idx_o = 0;
+    vlSelf->step_pending_o = 0;
+    vlSelf->sc_axis_core__DOT__start_ok = 0;
+    vlSelf->sc_axis_core__DOT__en_q = 0;
+    vlSelf->sc_axis_core__DOT__start_q = 0;
+    vlSelf->sc_axis_core__DOT__abort_q = 0;
+    vlSelf->sc_axis_core__DOT__cfg_high_q = 0;
+    vlSelf->sc_axis_core__DOT__cfg_low_q = 0;
+    vlSelf->sc_axis_core__DOT__cfg_setup_q = 0;
+    vlSelf->sc_axis_core__DOT__cfg_hold_q = 0;
+    vlSelf->sc_axis_core__DOT__seg_count_q = 0;
+    VL_ZERO_RESET_W(80, vlSelf->sc_axis_core__DOT__pos_frac0_q);
+    for (int __Vi0 = 0; __Vi0 < 16; ++__Vi0) {
+        VL_ZERO_RESET_W(229, vlSelf->sc_axis_core__DOT__u_exec__DOT__seg_mem_q[__Vi0]);
+    }
+    vlSelf->sc_axis_core__DOT__u_exec__DOT__run_q = 0;
+    vlSelf->sc_axis_core__DOT__u_exec__DOT__run_d = 0;
+    vlSelf->sc_axis_core__DOT__u_exec__DOT__finished_q = 0;
+    vlSelf->sc_axis_core__DOT__u_exec__DOT__finished_d = 0;
+    vlSelf->sc_axis_core__DOT__u_exec__DOT__fault_q = 0;
+    vlSelf->sc_axis_core__DOT__u_exec__DOT__fault_d = 0;
+    vlSelf->sc_axis_core__DOT__u_exec__DOT__idx_q = 0;
+    vlSelf->sc_axis_core__DOT__u_exec__DOT__idx_d = 0;
+    vlSelf->sc_axis_core__DOT__u_exec__DOT__count_q = 0;
+    vlSelf->sc_axis_core__DOT__u_exec__DOT__count_d = 0;
+    vlSelf->sc_axis_core__DOT__u_exec__DOT__left_q = 0;
+    vlSelf->sc_axis_core__DOT__u_exec__DOT__left_d = 0;
+    vlSelf->sc_axis_core__DOT__u_exec__DOT__jerk_q = 0;
+    vlSelf->sc_axis_core__DOT__u_exec__DOT__jerk_d = 0;
+    vlSelf->sc_axis_core__DOT__u_exec__DOT__acc_q = 0;
+    vlSelf->sc_axis_core__DOT__u_exec__DOT__acc_d = 0;
+    VL_ZERO_RESET_W(81, vlSelf->sc_axis_core__DOT__u_exec__DOT__vel_q);
+    VL_ZERO_RESET_W(81, vlSelf->sc_axis_core__DOT__u_exec__DOT__vel_d);
+    VL_ZERO_RESET_W(80, vlSelf->sc_axis_core__DOT__u_exec__DOT__frac_q);
+    VL_ZERO_RESET_W(80, vlSelf->sc_axis_core__DOT__u_exec__DOT__frac_d);
+    vlSelf->sc_axis_core__DOT__u_exec__DOT__pint_q = 0;
+    vlSelf->sc_axis_core__DOT__u_exec__DOT__pint_d = 0;
+    vlSelf->sc_axis_core__DOT__u_exec__DOT__phase_q = 0;
+    vlSelf->sc_axis_core__DOT__u_exec__DOT__phase_d = 0;
+    vlSelf->sc_axis_core__DOT__u_exec__DOT__step_req_q = 0;
+    vlSelf->sc_axis_core__DOT__u_exec__DOT__step_req_d = 0;
+    vlSelf->sc_axis_core__DOT__u_exec__DOT__step_fwd_q = 0;
+    vlSelf->sc_axis_core__DOT__u_exec__DOT__step_fwd_d = 0;
+    VL_ZERO_RESET_W(82, vlSelf->sc_axis_core__DOT__u_exec__DOT__pos_sum);
+    vlSelf->sc_axis_core__DOT__u_exec__DOT__load = 0;
+    vlSelf->sc_axis_core__DOT__u_exec__DOT__load_idx = 0;
+    VL_ZERO_RESET_W(229, vlSelf->sc_axis_core__DOT__u_exec__DOT__load_seg);
+    vlSelf->sc_axis_core__DOT__u_step_gen__DOT__step_q = 0;
+    vlSelf->sc_axis_core__DOT__u_step_gen__DOT__step_d = 0;
+    vlSelf->sc_axis_core__DOT__u_step_gen__DOT__dir_q = 0;
+    vlSelf->sc_axis_core__DOT__u_step_gen__DOT__dir_d = 0;
+    vlSelf->sc_axis_core__DOT__u_step_gen__DOT__high_left_q = 0;
+    vlSelf->sc_axis_core__DOT__u_step_gen__DOT__high_left_d = 0;
+    vlSelf->sc_axis_core__DOT__u_step_gen__DOT__low_cnt_q = 0;
+    vlSelf->sc_axis_core__DOT__u_step_gen__DOT__low_cnt_d = 0;
+    vlSelf->sc_axis_core__DOT__u_step_gen__DOT__since_rise_q = 0;
+    vlSelf->sc_axis_core__DOT__u_step_gen__DOT__since_rise_d = 0;
+    vlSelf->sc_axis_core__DOT__u_step_gen__DOT__since_dir_q = 0;
+    vlSelf->sc_axis_core__DOT__u_step_gen__DOT__since_dir_d = 0;
+    vlSelf->sc_axis_core__DOT__u_step_gen__DOT__pend_q = 0;
+    vlSelf->sc_axis_core__DOT__u_step_gen__DOT__pend_d = 0;
+    vlSelf->sc_axis_core__DOT__u_step_gen__DOT__overrun_q = 0;
+    vlSelf->sc_axis_core__DOT__u_step_gen__DOT__overrun_d = 0;
+    vlSelf->sc_axis_core__DOT__u_step_gen__DOT__count_q = 0;
+    vlSelf->sc_axis_core__DOT__u_step_gen__DOT__count_d = 0;
+    vlSelf->sc_axis_core__DOT__u_step_gen__DOT__dir_ok = 0;
+    vlSelf->sc_axis_core__DOT__u_step_gen__DOT__rise = 0;
+    vlSelf->sc_axis_core__DOT__u_step_gen__DOT__flip_dir = 0;
+    vlSelf->sc_axis_core__DOT__u_step_gen__DOT__req_blocked = 0;
+    vlSelf->__Vtrigrprev__TOP__clk_i = 0;
+    for (int __Vi0 = 0; __Vi0 < 2; ++__Vi0) {
+        vlSelf->__Vm_traceActivity[__Vi0] = 0;
+    }
+}

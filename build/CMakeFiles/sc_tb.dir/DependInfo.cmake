@@ -1,0 +1,24 @@
+
+# Consider dependencies only in project.
+set(CMAKE_DEPENDS_IN_PROJECT_ONLY OFF)
+
+# The set of languages for which implicit dependencies are needed:
+set(CMAKE_DEPENDS_LANGUAGES
+  )
+
+# The set of dependency files which are needed:
+set(CMAKE_DEPENDS_DEPENDENCY_FILES
+  "/work/main/tb/lockstep.cpp" "CMakeFiles/sc_tb.dir/tb/lockstep.cpp.o" "gcc" "CMakeFiles/sc_tb.dir/tb/lockstep.cpp.o.d"
+  "/work/main/tb/pin_monitor.cpp" "CMakeFiles/sc_tb.dir/tb/pin_monitor.cpp.o" "gcc" "CMakeFiles/sc_tb.dir/tb/pin_monitor.cpp.o.d"
+  "/work/main/tb/report.cpp" "CMakeFiles/sc_tb.dir/tb/report.cpp.o" "gcc" "CMakeFiles/sc_tb.dir/tb/report.cpp.o.d"
+  "/work/main/tb/sim_run.cpp" "CMakeFiles/sc_tb.dir/tb/sim_run.cpp.o" "gcc" "CMakeFiles/sc_tb.dir/tb/sim_run.cpp.o.d"
+  )
+
+# Targets to which this target links.
+set(CMAKE_TARGET_LINKED_INFO_FILES
+  "/work/main/build/CMakeFiles/sc_rtl.dir/DependInfo.cmake"
+  "/work/main/build/CMakeFiles/sc_model.dir/DependInfo.cmake"
+  )
+
+# Fortran module output directory.
+set(CMAKE_Fortran_TARGET_MODULE_DIR "")

@@ -1,0 +1,91 @@
+#include "axis_core.h"
+
+#include <algorithm>
+
+namespace sc {
+
+void AxisCore::reset() {
+  exec_.reset();
+  sg_.reset();
+  in_q_ = InputRegs{};
+}
+
+bool AxisCore::busy() const {
+  return exec_.state().run || exec_.state().step_req || sg_.busy();
+}
+
+void AxisCore::step(const CoreInputs& in) {
+  const bool start_ok = in_q_.start && !busy() && in_q_.enable;
+  const ProfileExec::State& e = exec_.state();
+  StepGen::Inputs si;
+  si.cfg = in_q_.cfg;
+  si.clear = start_ok;
+  si.step_req = e.step_req;
+  si.step_fwd = e.step_fwd;
+  ProfileExec::Inputs ei;
+  ei.seg_we = in.seg_we;
+  ei.seg_waddr = in.seg_waddr;
+  ei.seg_wdata = in.seg_wdata;
+  ei.seg_count = in_q_.seg_count;
+  ei.pos_frac0 = in_q_.pos_frac0;
+  ei.start = start_ok;
+  ei.abort = in_q_.abort;
+  sg_.step(si);  // uses the executor's current (registered) outputs
+  exec_.step(ei);
+  in_q_.enable = in.enable;
+  in_q_.start = in.start;
+  in_q_.abort = in.abort;
+  in_q_.cfg = in.cfg;
+  in_q_.seg_count = uint8_t(in.seg_count & ((1u << SegCntW) - 1));
+  in_q_.pos_frac0 = mask_bits(in.pos_frac0, FracBits);
+}
+
+bool AxisCore::inputs_settled(const CoreInputs& in) const {
+  return !in.start && !in.abort && !in.seg_we && !in_q_.start && !in_q_.abort &&
+         in_q_.enable == in.enable && in_q_.cfg == in.cfg &&
+         in_q_.seg_count == (in.seg_count & ((1u << SegCntW) - 1)) &&
+         in_q_.pos_frac0 == mask_bits(in.pos_frac0, FracBits);
+}
+
+CoreOutputs AxisCore::outputs() const {
+  const ProfileExec::State& e = exec_.state();
+  const StepGen::State& s = sg_.state();
+  CoreOutputs o;
+  o.step = s.step;
+  o.dir = s.dir;
+  o.en = in_q_.enable;
+  o.busy = busy();
+  o.done = done();
+  o.phase = o.done ? uint8_t(Phase::PhDone) : uint8_t(e.phase);
+  o.fault_table = e.fault;
+  o.fault_overrun = s.overrun;
+  o.pulse_count = s.count;
+  o.ref_pos_int = e.pint;
+  o.ref_pos_frac = e.frac;
+  o.ref_vel = e.vel;
+  o.ref_acc = e.acc;
+  o.ref_jerk = e.jerk;
+  o.seg_idx = e.idx;
+  o.step_pending = s.pend;
+  return o;
+}
+
+void AxisCore::fast_forward(const CoreInputs& in, uint64_t n) {
+  while (n > 0) {
+    if (sg_.idle() && !exec_.state().step_req && inputs_settled(in)) {
+      uint64_t ev = exec_.clocks_to_next_event();
+      if (ev == 0 && !exec_.state().run) ev = UINT64_MAX;  // idle: only counters move
+      if (ev > 1) {
+        const uint64_t k = std::min<uint64_t>(ev - 1, n);
+        if (exec_.state().run) exec_.jump(k);
+        sg_.jump_idle(k);
+        n -= k;
+        if (n == 0) break;
+      }
+    }
+    step(in);
+    --n;
+  }
+}
+
+}  // namespace sc

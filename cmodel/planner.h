@@ -1,0 +1,94 @@
+// Host-side move planner: a move request in, a segment table (or an error
+// naming the parameter and the bound) out. The table is what sc_profile_exec
+// runs; its endpoint is exact by construction:
+//   * every row starts from exact integer acceleration/velocity,
+//   * the planner sums the executor's integer recurrences in closed form,
+//   * the cruise length and the initial position fraction absorb the rest,
+// so the move ends at exactly distance + 1/2 pulse: |distance| steps.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "fixed_point.h"
+#include "profile_exec.h"
+#include "step_gen.h"
+
+namespace sc {
+
+enum class ProfileKind { SCurve, Trapezoid };
+
+struct MoveRequest {
+  int64_t distance = 0;   // pulses; the sign is the direction
+  double v_start = 0;     // pulses/s, >= 0
+  double v_cruise = 0;    // pulses/s, > 0
+  double v_end = 0;       // pulses/s, >= 0
+  double a_max = 0;       // pulses/s^2
+  double j_max = 0;       // pulses/s^3 (S-curve only)
+  ProfileKind kind = ProfileKind::SCurve;
+  // Paper 002's asymmetric S-shape: jerk while |a| rises / falls when
+  // speeding up (Ts1, Ts2) and when slowing down (Te1, Te2). Unset: j_max.
+  std::optional<std::array<double, 4>> jerks;
+  // Paper 000's rule: when v_end cannot be reached within the distance, use
+  // the closest reachable end speed instead of failing. Off by default.
+  bool adjust_end_speed = false;
+};
+
+// Accepted bounds (besides the step-rate limit set by the pulse timing).
+struct PlannerLimits {
+  static constexpr int64_t kMaxDistance = (int64_t(1) << 31) - 2;
+  static constexpr double kMinAccel = 0.01, kMaxAccel = 1e8;
+  static constexpr double kMinJerk = 10.0, kMaxJerk = 1e11;
+};
+
+struct Plan {
+  std::vector<Segment> segments;
+  u128 pos_frac0 = 0;
+  int64_t distance = 0;
+  uint64_t total_clocks = 0;
+  double duration_s = 0;
+  double peak_velocity = 0;      // pulses/s, from the table
+  double peak_acceleration = 0;  // pulses/s^2
+  double peak_jerk = 0;          // pulses/s^3
+  double v_plateau = 0;          // velocity between the two transitions
+  double v_end_actual = 0;       // realised end velocity (pulses/s)
+  bool end_speed_adjusted = false;
+  double v_end_used = 0;         // end speed the plan aimed at
+};
+
+struct PlanError {
+  std::string parameter;
+  std::string message;  // one line: "<param>=<value> ...: needs/limit ..."
+};
+
+using PlanResult = std::variant<Plan, PlanError>;
+
+PlanResult plan_move(const MoveRequest& req, const PulseTiming& timing);
+
+// Largest speed the step generator can emit with this timing (pulses/s).
+double step_rate_limit(const PulseTiming& timing);
+
+// Executes a table in closed form, independent of how it was built, and
+// reports what the hardware will do: the end position, the number of steps
+// and the peaks over every clock (velocity/acceleration registers and the
+// per-clock differences at row boundaries).
+struct TableReport {
+  bool ok = true;
+  std::string error;
+  uint64_t clocks = 0;
+  i128 end_pos = 0;          // LSBs, from integer position 0 + pos_frac0
+  int64_t steps = 0;         // floor(end_pos) - floor(start)
+  i128 peak_vel = 0;         // max |v| (LSB)
+  i128 min_signed_vel = 0;   // min of sign(distance) * v: < 0 means reversal
+  int64_t peak_acc = 0;      // max |a| over the register and over dv per clock
+  int64_t peak_jerk = 0;     // max |j| over the register and da per clock
+};
+TableReport run_table(const std::vector<Segment>& rows, u128 pos_frac0, int direction);
+
+const char* phase_name(Phase p);
+
+}  // namespace sc

@@ -1,0 +1,184 @@
+#include "profile_exec.h"
+
+#include <algorithm>
+
+namespace sc {
+
+void ProfileExec::reset() { q_ = State{}; }
+
+void ProfileExec::step(const Inputs& in) {
+  // Row loaded this clock (mirrors the first always_comb of the RTL).
+  bool load = false;
+  unsigned load_idx = 0;
+  if (q_.run) {
+    if (!in.abort && q_.left == 1 && unsigned(q_.idx) + 1 < q_.count) {
+      load = true;
+      load_idx = (q_.idx + 1) & (MaxSegs - 1);
+    }
+  } else if (in.start && in.seg_count != 0 && in.seg_count <= MaxSegs) {
+    load = true;
+  }
+  // Read before the write below: the RTL's table RAM is read-before-write.
+  const Segment* row = load ? &mem_[load_idx] : nullptr;
+  Segment row_copy;
+  if (row && in.seg_we && !q_.run) {
+    row_copy = *row;
+    row = &row_copy;
+  }
+  if (in.seg_we && !q_.run) {
+    Segment w = in.seg_wdata;
+    w.jerk = wrap_signed64(w.jerk, JerkW);
+    w.acc0 = wrap_signed64(w.acc0, AccW);
+    w.vel0 = wrap_signed(w.vel0, VelW);
+    w.phase = Phase(uint8_t(w.phase) & ((1u << PhaseW) - 1));
+    mem_[in.seg_waddr & (MaxSegs - 1)] = w;
+  }
+
+  // State is updated in place: each statement reads only fields that are
+  // still at their current-clock value (no per-clock copy of the State).
+  const bool was_running = q_.run;
+  q_.step_req = false;
+  if (was_running) {
+    if (in.abort) {
+      q_.run = false;
+      q_.vel = 0;
+      q_.acc = 0;
+      q_.jerk = 0;
+      q_.phase = Phase::PhAbort;
+    } else {
+      const i128 sum = i128(q_.frac) + q_.vel;
+      if (sum < 0) {
+        q_.step_req = true;
+        q_.step_fwd = false;
+        q_.pint = add_wrap32(q_.pint, -1);
+        q_.frac = u128(sum + i128(kOne));
+      } else if (u128(sum) >= kOne) {
+        q_.step_req = true;
+        q_.step_fwd = true;
+        q_.pint = add_wrap32(q_.pint, 1);
+        q_.frac = u128(sum) - kOne;
+      } else {
+        q_.frac = u128(sum);
+      }
+      if (q_.left == 1) {
+        if (!load) {
+          q_.run = false;
+          q_.finished = true;
+          q_.vel = 0;
+          q_.acc = 0;
+          q_.jerk = 0;
+        }
+      } else {
+        q_.left = q_.left - 1;
+        q_.vel = wrap_signed(q_.vel + q_.acc, VelW);
+        q_.acc = wrap_signed64(add_wrap64(q_.acc, q_.jerk), AccW);
+      }
+    }
+  } else if (in.start) {
+    q_.finished = false;
+    q_.fault = false;
+    q_.count = in.seg_count & ((1u << SegCntW) - 1);
+    q_.frac = mask_bits(in.pos_frac0, FracBits);
+    if (!load) {
+      q_.fault = true;
+      q_.phase = Phase::PhFault;
+    }
+  }
+
+  if (load) {
+    if (row->clocks == 0) {
+      q_.run = false;
+      q_.fault = true;
+      q_.phase = Phase::PhFault;
+      q_.vel = 0;
+      q_.acc = 0;
+      q_.jerk = 0;
+    } else {
+      q_.run = true;
+      q_.idx = uint8_t(load_idx);
+      q_.left = row->clocks;
+      q_.jerk = row->jerk;
+      q_.acc = row->acc0;
+      q_.vel = row->vel0;
+      q_.phase = row->phase;
+    }
+  }
+}
+
+// A jump is exact when, over the rest of the segment, velocity keeps one
+// sign (so the position is monotone and "next carry" is a binary search)
+// and nothing would wrap.
+bool ProfileExec::jump_safe() const {
+  if (!q_.run || q_.left < 2) return false;
+  const uint64_t k = q_.left - 1;  // integrations left in this segment
+  const i128 a_end = acc_after(q_.acc, q_.jerk, k);
+  const i128 amax = (i128(1) << (AccW - 1)) - 1;
+  if (a_end > amax || a_end < -amax) return false;
+  const i128 vmax = (i128(1) << (VelW - 1)) - 1;
+  const i128 v_end = vel_after(q_.vel, q_.acc, q_.jerk, k);
+  if (v_end > vmax || v_end < -vmax) return false;
+  // v_k is quadratic in k; check the ends and the vertex for a sign change.
+  const bool pos0 = q_.vel >= 0;
+  if ((v_end >= 0) != pos0) return false;
+  if (q_.jerk != 0) {
+    // dv/dk = a0 + (k - 1/2) j = 0  ->  k* = 1/2 - a0/j
+    const double ks = 0.5 - double(q_.acc) / double(q_.jerk);
+    if (ks > 0 && ks < double(k)) {
+      for (int64_t c = int64_t(ks) - 1; c <= int64_t(ks) + 2; ++c) {
+        if (c < 0 || uint64_t(c) > k) continue;
+        const i128 vc = vel_after(q_.vel, q_.acc, q_.jerk, uint64_t(c));
+        if ((vc >= 0) != pos0 || vc > vmax || vc < -vmax) return false;
+      }
+    }
+  }
+  return true;
+}
+
+uint64_t ProfileExec::clocks_to_next_event() const {
+  if (!jump_safe()) return 0;
+  const uint64_t left = q_.left;  // clock `left` reloads or finishes
+  const bool fwd = q_.vel >= 0;
+  // Smallest m in [1, left] whose clock emits a step:
+  // fwd: frac + sum_{i<m} v_i >= 2^F ; back: frac + sum_{i<m} v_i < 0.
+  auto emits_by = [&](uint64_t m) {
+    const i128 p = i128(q_.frac) + pos_gain(q_.vel, q_.acc, q_.jerk, m);
+    return fwd ? p >= i128(kOne) : p < 0;
+  };
+  if (!emits_by(left)) return left;
+  uint64_t lo = 0, hi = left;  // emits_by(lo) false, emits_by(hi) true
+  while (hi - lo > 1) {
+    const uint64_t mid = lo + (hi - lo) / 2;
+    if (emits_by(mid)) hi = mid; else lo = mid;
+  }
+  return hi;
+}
+
+void ProfileExec::jump(uint64_t k) {
+  if (k == 0) return;
+  const i128 p = i128(q_.frac) + pos_gain(q_.vel, q_.acc, q_.jerk, k);
+  q_.frac = u128(p);
+  q_.vel = vel_after(q_.vel, q_.acc, q_.jerk, k);
+  q_.acc = int64_t(acc_after(q_.acc, q_.jerk, k));
+  q_.left -= uint32_t(k);
+  q_.step_req = false;
+}
+
+int64_t ProfileExec::fast_forward(uint64_t n) {
+  const Inputs quiet{};
+  const int32_t p0 = q_.pint;
+  while (n > 0) {
+    const uint64_t ev = clocks_to_next_event();
+    if (ev > 1) {
+      const uint64_t k = std::min<uint64_t>(ev - 1, n);
+      jump(k);
+      n -= k;
+      if (n == 0) break;
+    }
+    if (!q_.run && !q_.step_req) break;  // idle: nothing changes any more
+    step(quiet);
+    --n;
+  }
+  return int64_t(add_wrap32(q_.pint, -p0));
+}
+
+}  // namespace sc

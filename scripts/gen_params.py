@@ -1,0 +1,54 @@
+#!/usr/bin/env python3
+"""Generate the C++ view of rtl/sc_pkg.sv (the single source of widths/codes).
+
+Usage: gen_params.py <sc_pkg.sv> <out.h>
+Every `localparam int Name = value;` becomes `inline constexpr int Name`, and
+the phase_e enum becomes `enum class Phase : uint8_t` with the same names.
+Fails loudly on anything it does not understand, so a new package entry can
+never be silently missing from the model.
+"""
+import re
+import sys
+
+
+def main(src, dst):
+    text = open(src, encoding="utf-8").read()
+    body = re.sub(r"//[^\n]*", "", text)
+    params = re.findall(r"localparam\s+int\s+(\w+)\s*=\s*([0-9_]+)\s*;", body)
+    if not params:
+        sys.exit(f"{src}: no localparam int found")
+    all_lp = re.findall(r"localparam\b[^;]*;", body)
+    if len(all_lp) != len(params):
+        sys.exit(f"{src}: {len(all_lp)} localparams but only {len(params)} of form "
+                 "'localparam int Name = N;' - extend gen_params.py")
+    enum = re.search(r"typedef\s+enum\s+logic\s*\[[^\]]*\]\s*\{([^}]*)\}\s*phase_e\s*;", body)
+    if not enum:
+        sys.exit(f"{src}: typedef enum ... phase_e not found")
+    items = re.findall(r"(\w+)\s*=\s*\d+'d(\d+)", enum.group(1))
+    out = [
+        "// Generated from rtl/sc_pkg.sv by scripts/gen_params.py - do not edit.",
+        "#pragma once",
+        "#include <cstdint>",
+        "",
+        "namespace sc {",
+        "",
+    ]
+    for name, value in params:
+        out.append(f"inline constexpr int {name} = {value.replace('_', '')};")
+    out += ["", "enum class Phase : uint8_t {"]
+    for name, value in items:
+        out.append(f"  {name} = {value},")
+    out += ["};", "", "}  // namespace sc", ""]
+    new = "\n".join(out)
+    try:
+        if open(dst, encoding="utf-8").read() == new:
+            return
+    except FileNotFoundError:
+        pass
+    open(dst, "w", encoding="utf-8").write(new)
+
+
+if __name__ == "__main__":
+    if len(sys.argv) != 3:
+        sys.exit(__doc__)
+    main(sys.argv[1], sys.argv[2])

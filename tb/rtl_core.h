@@ -1,0 +1,44 @@
+// Thin adapter between the Verilated sc_axis_core and the model's types:
+// packs seg_t, sign-extends the wide outputs. Knows nothing of the checks.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "axis_core.h"
+
+class VerilatedContext;
+class Vsc_axis_core;
+class VerilatedFstC;
+
+namespace sc {
+
+class RtlCore {
+ public:
+  RtlCore();
+  ~RtlCore();
+  RtlCore(const RtlCore&) = delete;
+  RtlCore& operator=(const RtlCore&) = delete;
+
+  // Hold rst_ni low for `cycles` clocks.
+  void reset(int cycles = 4);
+  // One clock: apply inputs, rising edge, falling edge.
+  void step(const CoreInputs& in);
+  CoreOutputs outputs() const;
+
+  // FST waveform (needs the tracing build); dumps clocks in [from, to).
+  bool trace_supported() const;
+  void trace_open(const std::string& path, uint64_t from_clock, uint64_t to_clock);
+  void trace_close();
+
+ private:
+  void eval_edge(int clk);
+  std::unique_ptr<VerilatedContext> ctx_;
+  std::unique_ptr<Vsc_axis_core> m_;
+  std::unique_ptr<VerilatedFstC> fst_;
+  uint64_t clock_ = 0;
+  u128 pos_frac0_ = 0;  // last value driven on pos_frac0_i
+  uint64_t trace_from_ = 0, trace_to_ = 0;
+};
+
+}  // namespace sc

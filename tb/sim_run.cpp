@@ -1,0 +1,232 @@
+#include "sim_run.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <chrono>
+#include <memory>
+
+#include "rtl_core.h"
+
+namespace sc {
+
+const char* engine_name(SimEngine e) {
+  switch (e) {
+    case SimEngine::Lockstep: return "lockstep";
+    case SimEngine::RtlOnly: return "rtl";
+    case SimEngine::ModelOnly: return "model";
+    case SimEngine::ModelFast: return "model-fast";
+  }
+  return "?";
+}
+
+std::vector<DutyTrend> expected_trends(const Plan& plan) {
+  std::vector<DutyTrend> seq;
+  for (const Segment& s : plan.segments) {
+    const DutyTrend t = trend_of_phase(uint8_t(s.phase));
+    if (seq.empty() || seq.back() != t) seq.push_back(t);
+  }
+  seq.push_back(DutyTrend::Zero);
+  return seq;
+}
+
+namespace {
+
+// Peak tracking on the reference outputs, every clock: register values and
+// per-clock differences (so a jump at a row boundary is seen as accel/jerk).
+struct PeakTracker {
+  i128 v = 0;
+  i128 a = 0;
+  i128 j = 0;
+  i128 prev_vel = 0;
+  int64_t prev_acc = 0;
+  bool have_prev = false;
+  void on_clock(const CoreOutputs& o, bool moving) {
+    if (!moving) {
+      have_prev = false;
+      return;
+    }
+    const i128 av = o.ref_vel < 0 ? -o.ref_vel : o.ref_vel;
+    if (av > v) v = av;
+    const i128 aa = o.ref_acc < 0 ? -i128(o.ref_acc) : i128(o.ref_acc);
+    if (aa > a) a = aa;
+    const i128 aj = o.ref_jerk < 0 ? -i128(o.ref_jerk) : i128(o.ref_jerk);
+    if (aj > j) j = aj;
+    if (have_prev) {
+      i128 dv = o.ref_vel - prev_vel;
+      dv = dv < 0 ? -dv : dv;
+      if (dv > a) a = dv;
+      i128 da = i128(o.ref_acc) - prev_acc;
+      da = da < 0 ? -da : da;
+      if (da > j) j = da;
+    }
+    prev_vel = o.ref_vel;
+    prev_acc = o.ref_acc;
+    have_prev = true;
+  }
+};
+
+}  // namespace
+
+SimResult run_move(const Plan& plan, const PulseTiming& timing, const Limits4Check& limits,
+                   const SimOptions& opt) {
+  SimResult res;
+  res.engine = opt.engine;
+  res.distance = plan.distance;
+  res.expected_trends = expected_trends(plan);
+  const bool use_rtl = opt.engine == SimEngine::Lockstep || opt.engine == SimEngine::RtlOnly;
+  const bool use_model = opt.engine != SimEngine::RtlOnly;
+
+  std::unique_ptr<RtlCore> rtl;
+  if (use_rtl) {
+    rtl = std::make_unique<RtlCore>();
+    if (!opt.fst_path.empty()) rtl->trace_open(opt.fst_path, opt.fst_from, opt.fst_to);
+    rtl->reset(4);
+  }
+  AxisCore model;
+  LockstepChecker checker(opt.max_mismatches);
+  PinMonitor pins(timing);
+  PeakTracker peaks;
+
+  const auto t0 = std::chrono::steady_clock::now();
+  uint64_t clock = 0;
+  CoreInputs in;
+  in.cfg = timing;
+  in.enable = true;
+  bool stopped = false;
+  CoreOutputs out;
+
+  auto tick = [&](const CoreInputs& ci) {
+    if (rtl) rtl->step(ci);
+    if (use_model) model.step(ci);
+    out = rtl ? rtl->outputs() : model.outputs();
+    if (opt.engine == SimEngine::Lockstep && !checker.compare(clock, out, model.outputs())) {
+      if (checker.should_stop()) stopped = true;
+    }
+    pins.on_clock(clock, out);
+    ++clock;
+  };
+
+  // Load the table one row per clock, then start.
+  for (size_t i = 0; i < plan.segments.size() && !stopped; ++i) {
+    CoreInputs w = in;
+    w.seg_we = true;
+    w.seg_waddr = uint8_t(i);
+    w.seg_wdata = plan.segments[i];
+    tick(w);
+  }
+  in.seg_count = uint8_t(plan.segments.size());
+  in.pos_frac0 = plan.pos_frac0;
+  CoreInputs st = in;
+  st.start = true;
+  if (!stopped) tick(st);
+  const uint64_t start_clock = clock;
+
+  // Run to done. A hang is caught by a limit well past the planned length.
+  const uint64_t limit = start_clock + plan.total_clocks + 1000 + 4ull * (timing.high + timing.low + timing.setup);
+  if (opt.engine == SimEngine::ModelFast) {
+    // Closed form between pulses: only the clocks around each pulse are
+    // stepped, so the pin monitor still sees every edge.
+    while (!stopped && clock < limit) {
+      const CoreOutputs before = model.outputs();
+      if (before.done) break;
+      uint64_t n = 1;
+      if (model.step_gen().idle() && !model.exec().state().step_req) {
+        const uint64_t ev = model.exec().clocks_to_next_event();
+        if (ev > 1) n = ev - 1;
+      }
+      if (n > 1) {
+        // The reference moves smoothly in between: sample its peaks at the
+        // jump ends (the per-clock maxima are at row ends or pulses).
+        peaks.on_clock(before, true);
+        model.fast_forward(in, n);
+        clock += n;
+        out = model.outputs();
+        pins.on_clock(clock - 1, out);
+        peaks.have_prev = false;
+        peaks.on_clock(out, out.busy && !out.done);
+      } else {
+        tick(in);
+        peaks.on_clock(out, out.busy && !out.done);
+      }
+    }
+  } else {
+    const double expected = double(plan.total_clocks) + 1.0;
+    while (!stopped && clock < limit && !out.done) {
+      tick(in);
+      peaks.on_clock(out, !out.done && out.busy);
+      if ((clock & 0xffffff) == 0 && opt.progress) opt.progress(double(clock - start_clock) / expected);
+    }
+  }
+  const uint64_t done_clock = clock;
+  const bool reached_done = out.done;
+  res.clocks = done_clock;
+  res.duration_s = double(done_clock - start_clock) / ClkHz;
+
+  // Quiet tail: nothing may move after done.
+  const uint64_t tail = opt.tail_clocks ? opt.tail_clocks
+                                        : 4ull * (uint64_t(timing.high) + timing.low + timing.setup + timing.hold) + 1000;
+  for (uint64_t i = 0; i < tail && !stopped; ++i) tick(in);
+  pins.finish(clock);
+  res.total_clocks = clock;
+  res.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  res.clocks_per_s = res.wall_s > 0 ? double(clock) / res.wall_s : 0;
+
+  res.pulses = pins.net_steps();
+  res.pulse_count_reg = out.pulse_count;
+  res.final_error = plan.distance - res.pulses;
+  res.peak_velocity = vel_to_phys(peaks.v);
+  res.peak_acceleration = acc_to_phys(peaks.a);
+  res.peak_jerk = jerk_to_phys(peaks.j);
+  res.mismatches = checker.mismatches();
+  res.matched_clocks = checker.matched();
+  if (!checker.errors().empty()) res.first_mismatch = checker.errors().front().to_string();
+  res.pin_errors = pins.errors();
+  res.phase_runs = pins.runs();
+  res.trends = pins.trend_sequence();
+
+  // ---- verdict ---------------------------------------------------------
+  auto fail = [&](std::string s) { res.failures.push_back(std::move(s)); };
+  if (res.mismatches) fail(fmt::format("{} lockstep mismatches: {}", res.mismatches, res.first_mismatch));
+  if (!reached_done) fail(fmt::format("no done within {} clocks (hang)", limit));
+  if (res.final_error != 0) fail(fmt::format("pulses {} != distance {}", res.pulses, plan.distance));
+  if (res.pulse_count_reg != res.pulses) {
+    fail(fmt::format("pulse_count_o {} != pins {}", res.pulse_count_reg, res.pulses));
+  }
+  for (const std::string& e : res.pin_errors) fail(e);
+  if (res.trends != res.expected_trends) {
+    auto join = [](const std::vector<DutyTrend>& v) {
+      std::string s;
+      for (DutyTrend t : v) s += std::string(s.empty() ? "" : ",") + trend_name(t);
+      return s;
+    };
+    // A very short move may have no pulse in a phase: only a missing
+    // phase is tolerated, never an extra or out-of-order one.
+    const auto& want = res.expected_trends;
+    bool subseq = true;
+    size_t pos = 0;
+    for (DutyTrend t : res.trends) {
+      while (pos < want.size() && want[pos] != t) ++pos;
+      if (pos == want.size()) {
+        subseq = false;
+        break;
+      }
+      ++pos;
+    }
+    if (!subseq) fail(fmt::format("duty phases {} do not follow the plan's {}", join(res.trends), join(want)));
+  }
+  const double tol = 1e-9;
+  if (limits.v_max > 0 && res.peak_velocity > limits.v_max * (1 + tol)) {
+    fail(fmt::format("peak velocity {} > limit {}", res.peak_velocity, limits.v_max));
+  }
+  if (limits.a_max > 0 && res.peak_acceleration > limits.a_max * (1 + tol)) {
+    fail(fmt::format("peak acceleration {} > limit {}", res.peak_acceleration, limits.a_max));
+  }
+  if (limits.j_max > 0 && res.peak_jerk > limits.j_max * (1 + tol)) {
+    fail(fmt::format("peak jerk {} > limit {}", res.peak_jerk, limits.j_max));
+  }
+  if (opt.engine == SimEngine::Lockstep && res.matched_clocks == 0) fail("lockstep compared nothing");
+  return res;
+}
+
+}  // namespace sc

@@ -1,0 +1,68 @@
+// Runs one planned move: load the table, start, run to done and a quiet
+// tail, with RTL and model in lockstep (or the model alone), collecting the
+// pin checks, peaks and throughput.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "lockstep.h"
+#include "pin_monitor.h"
+#include "planner.h"
+
+namespace sc {
+
+enum class SimEngine {
+  Lockstep,   // Verilated RTL and model, compared every clock
+  RtlOnly,    // Verilated RTL with the pin checks
+  ModelOnly,  // model step() every clock with the pin checks
+  ModelFast,  // model fast_forward(): closed form between pulses
+};
+const char* engine_name(SimEngine e);
+
+struct SimOptions {
+  SimEngine engine = SimEngine::Lockstep;
+  uint64_t tail_clocks = 0;  // 0: automatic (covers the longest pulse timing)
+  std::string fst_path;      // RTL waveform (tracing build only)
+  uint64_t fst_from = 0, fst_to = UINT64_MAX;
+  size_t max_mismatches = 1;
+  std::function<void(double)> progress;  // fraction done, every ~16 M clocks
+};
+
+struct SimResult {
+  std::string name;
+  SimEngine engine = SimEngine::Lockstep;
+  int64_t distance = 0;
+  uint64_t clocks = 0;          // reset release to done
+  uint64_t total_clocks = 0;    // including load and tail
+  int64_t pulses = 0;           // net STEP pulses counted on the pins
+  int64_t pulse_count_reg = 0;  // the core's own counter
+  int64_t final_error = 0;      // distance - pulses
+  double duration_s = 0;        // start to done
+  double peak_velocity = 0, peak_acceleration = 0, peak_jerk = 0;  // from the reference every clock
+  uint64_t mismatches = 0;
+  uint64_t matched_clocks = 0;
+  std::string first_mismatch;
+  std::vector<std::string> pin_errors;
+  std::vector<PhaseRun> phase_runs;
+  std::vector<DutyTrend> trends;
+  std::vector<DutyTrend> expected_trends;
+  double wall_s = 0;
+  double clocks_per_s = 0;
+  std::vector<std::string> failures;  // everything that makes the run fail
+  bool pass() const { return failures.empty(); }
+};
+
+struct Limits4Check {
+  double v_max = 0, a_max = 0, j_max = 0;  // pulses/s^k; 0 = not checked
+};
+
+SimResult run_move(const Plan& plan, const PulseTiming& timing, const Limits4Check& limits,
+                   const SimOptions& opt);
+
+// The duty trends a plan should show: its rows' phases, repeats merged, + zero.
+std::vector<DutyTrend> expected_trends(const Plan& plan);
+
+}  // namespace sc
