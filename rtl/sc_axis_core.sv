@@ -7,23 +7,25 @@
 // latency), so no logic inside depends combinationally on a top-level input:
 // short input-to-flop paths on the FPGA, and Verilator evaluates the logic
 // once per rising edge instead of on every input change.
-module sc_axis_core
-  import sc_pkg::*;
-(
+module sc_axis_core (
   input  logic                        clk_i,
   input  logic                        rst_ni,
 
   input  logic                        enable_i,     // drives the EN pin
-  input  logic [PulseTimeW-1:0]       cfg_high_i,
-  input  logic [PulseTimeW-1:0]       cfg_low_i,
-  input  logic [PulseTimeW-1:0]       cfg_setup_i,
-  input  logic [PulseTimeW-1:0]       cfg_hold_i,
+  input  logic [sc_pkg::PulseTimeW-1:0]       cfg_high_i,
+  input  logic [sc_pkg::PulseTimeW-1:0]       cfg_low_i,
+  input  logic [sc_pkg::PulseTimeW-1:0]       cfg_setup_i,
+  input  logic [sc_pkg::PulseTimeW-1:0]       cfg_hold_i,
 
   input  logic                        seg_we_i,
-  input  logic [SegIdxW-1:0]          seg_waddr_i,
-  input  seg_t                        seg_wdata_i,
-  input  logic [SegCntW-1:0]          seg_count_i,
-  input  logic [FracBits-1:0]         pos_frac0_i,
+  input  logic [sc_pkg::SegIdxW-1:0]          seg_waddr_i,
+  input  logic [sc_pkg::PhaseW-1:0]           seg_phase_i,
+  input  logic [sc_pkg::SegClkW-1:0]          seg_clocks_i,
+  input  logic signed [sc_pkg::JerkW-1:0]     seg_jerk_i,
+  input  logic signed [sc_pkg::AccW-1:0]      seg_acc0_i,
+  input  logic signed [sc_pkg::VelW-1:0]      seg_vel0_i,
+  input  logic [sc_pkg::SegCntW-1:0]          seg_count_i,
+  input  logic [sc_pkg::FracBits-1:0]         pos_frac0_i,
   input  logic                        start_i,      // ignored while busy_o or !enable_i (seen a clock later)
   input  logic                        abort_i,
 
@@ -33,20 +35,25 @@ module sc_axis_core
 
   output logic                        busy_o,
   output logic                        done_o,
-  output logic [PhaseW-1:0]           phase_o,
+  output logic [sc_pkg::PhaseW-1:0]           phase_o,
   output logic                        fault_table_o,
   output logic                        fault_overrun_o,
-  output logic signed [PosIntW-1:0]   pulse_count_o,  // net steps since start
+  output logic signed [sc_pkg::PosIntW-1:0]   pulse_count_o,  // net steps since start
 
   // reference kinematics (P*, V*, A*, J*) for the closed loop and for checks
-  output logic signed [PosIntW-1:0]   ref_pos_int_o,
-  output logic [FracBits-1:0]         ref_pos_frac_o,
-  output logic signed [VelW-1:0]      ref_vel_o,
-  output logic signed [AccW-1:0]      ref_acc_o,
-  output logic signed [JerkW-1:0]     ref_jerk_o,
-  output logic [SegIdxW-1:0]          seg_idx_o,
-  output logic signed [PendW-1:0]     step_pending_o
+  output logic signed [sc_pkg::PosIntW-1:0]   ref_pos_int_o,
+  output logic [sc_pkg::FracBits-1:0]         ref_pos_frac_o,
+  output logic signed [sc_pkg::VelW-1:0]      ref_vel_o,
+  output logic signed [sc_pkg::AccW-1:0]      ref_acc_o,
+  output logic signed [sc_pkg::JerkW-1:0]     ref_jerk_o,
+  output logic [sc_pkg::SegIdxW-1:0]          seg_idx_o,
+  output logic signed [sc_pkg::PendW-1:0]     step_pending_o
 );
+
+  localparam int PulseTimeW = sc_pkg::PulseTimeW;
+  localparam int SegCntW    = sc_pkg::SegCntW;
+  localparam int FracBits   = sc_pkg::FracBits;
+  localparam int PhaseW     = sc_pkg::PhaseW;
 
   logic   exec_running, exec_finished, exec_fault;
   logic   exec_step_req, exec_step_fwd;
@@ -66,7 +73,11 @@ module sc_axis_core
     .rst_ni,
     .seg_we_i,
     .seg_waddr_i,
-    .seg_wdata_i,
+    .seg_phase_i,
+    .seg_clocks_i,
+    .seg_jerk_i,
+    .seg_acc0_i,
+    .seg_vel0_i,
     .seg_count_i (seg_count_q),
     .pos_frac0_i (pos_frac0_q),
     .start_i     (start_ok),
@@ -129,7 +140,7 @@ module sc_axis_core
 
   assign en_o          = en_q;
   assign done_o        = exec_finished && !busy_o;
-  assign phase_o       = done_o ? PhDone : exec_phase;
+  assign phase_o       = done_o ? sc_pkg::PhDone : exec_phase;
   assign fault_table_o = exec_fault;
 
 endmodule

@@ -7,18 +7,20 @@
 // integrated, so each segment starts from the exact values the planner chose
 // and nothing accumulates across segments. A carry (borrow) out of the
 // position fraction is one step forward (backward): step_req_o, one clock.
-module sc_profile_exec
-  import sc_pkg::*;
-(
+module sc_profile_exec (
   input  logic                       clk_i,
   input  logic                       rst_ni,
 
   // segment table, writable while not running
-  input  logic                       seg_we_i,
-  input  logic [SegIdxW-1:0]         seg_waddr_i,
-  input  seg_t                       seg_wdata_i,
-  input  logic [SegCntW-1:0]         seg_count_i,
-  input  logic [FracBits-1:0]        pos_frac0_i,
+  input  logic                                seg_we_i,
+  input  logic [sc_pkg::SegIdxW-1:0]          seg_waddr_i,
+  input  logic [sc_pkg::PhaseW-1:0]           seg_phase_i,
+  input  logic [sc_pkg::SegClkW-1:0]          seg_clocks_i,
+  input  logic signed [sc_pkg::JerkW-1:0]     seg_jerk_i,
+  input  logic signed [sc_pkg::AccW-1:0]      seg_acc0_i,
+  input  logic signed [sc_pkg::VelW-1:0]      seg_vel0_i,
+  input  logic [sc_pkg::SegCntW-1:0]          seg_count_i,
+  input  logic [sc_pkg::FracBits-1:0]         pos_frac0_i,
 
   input  logic                       start_i,
   input  logic                       abort_i,
@@ -29,16 +31,32 @@ module sc_profile_exec
   output logic                       step_req_o,
   output logic                       step_fwd_o,
 
-  output logic signed [PosIntW-1:0]  pos_int_o,
-  output logic [FracBits-1:0]        pos_frac_o,
-  output logic signed [VelW-1:0]     vel_o,
-  output logic signed [AccW-1:0]     acc_o,
-  output logic signed [JerkW-1:0]    jerk_o,
-  output logic [PhaseW-1:0]          phase_o,
-  output logic [SegIdxW-1:0]         seg_idx_o
+  output logic signed [sc_pkg::PosIntW-1:0]   pos_int_o,
+  output logic [sc_pkg::FracBits-1:0]         pos_frac_o,
+  output logic signed [sc_pkg::VelW-1:0]      vel_o,
+  output logic signed [sc_pkg::AccW-1:0]      acc_o,
+  output logic signed [sc_pkg::JerkW-1:0]     jerk_o,
+  output logic [sc_pkg::PhaseW-1:0]           phase_o,
+  output logic [sc_pkg::SegIdxW-1:0]          seg_idx_o
 );
 
-  seg_t seg_mem_q [MaxSegs];
+  localparam int FracBits = sc_pkg::FracBits;
+  localparam int PosIntW  = sc_pkg::PosIntW;
+  localparam int VelW     = sc_pkg::VelW;
+  localparam int AccW     = sc_pkg::AccW;
+  localparam int JerkW    = sc_pkg::JerkW;
+  localparam int SegClkW  = sc_pkg::SegClkW;
+  localparam int SegIdxW  = sc_pkg::SegIdxW;
+  localparam int SegCntW  = sc_pkg::SegCntW;
+  localparam int PhaseW   = sc_pkg::PhaseW;
+  localparam int MaxSegs  = sc_pkg::MaxSegs;
+
+  // The segment table: one small RAM per field (LUTRAM on 7-series).
+  logic [PhaseW-1:0]        mem_phase_q  [MaxSegs];
+  logic [SegClkW-1:0]       mem_clocks_q [MaxSegs];
+  logic signed [JerkW-1:0]  mem_jerk_q   [MaxSegs];
+  logic signed [AccW-1:0]   mem_acc0_q   [MaxSegs];
+  logic signed [VelW-1:0]   mem_vel0_q   [MaxSegs];
 
   logic                      run_q, run_d;
   logic                      finished_q, finished_d;
@@ -60,12 +78,20 @@ module sc_profile_exec
   logic signed [FracBits+1:0] pos_sum;
   logic                       load;
   logic [SegIdxW-1:0]         load_idx;
-  seg_t                       load_seg;
+  logic [PhaseW-1:0]          ld_phase;
+  logic [SegClkW-1:0]         ld_clocks;
+  logic signed [JerkW-1:0]    ld_jerk;
+  logic signed [AccW-1:0]     ld_acc0;
+  logic signed [VelW-1:0]     ld_vel0;
   logic [SegCntW-1:0]         next_idx_ext;
 
   assign pos_sum      = $signed({2'b00, frac_q}) + (FracBits+2)'(vel_q);
   assign next_idx_ext = SegCntW'(idx_q) + SegCntW'(1);
-  assign load_seg     = seg_mem_q[load_idx];
+  assign ld_phase     = mem_phase_q[load_idx];
+  assign ld_clocks    = mem_clocks_q[load_idx];
+  assign ld_jerk      = mem_jerk_q[load_idx];
+  assign ld_acc0      = mem_acc0_q[load_idx];
+  assign ld_vel0      = mem_vel0_q[load_idx];
 
   // Which table row (if any) is loaded this clock: the next row on the last
   // clock of a segment, row 0 on an accepted start.
@@ -104,7 +130,7 @@ module sc_profile_exec
         vel_d   = '0;
         acc_d   = '0;
         jerk_d  = '0;
-        phase_d = PhAbort;
+        phase_d = sc_pkg::PhAbort;
       end else begin
         frac_d = pos_sum[FracBits-1:0];
         if (pos_sum[FracBits+1]) begin
@@ -137,34 +163,38 @@ module sc_profile_exec
       frac_d     = pos_frac0_i;
       if (!load) begin
         fault_d = 1'b1;
-        phase_d = PhFault;
+        phase_d = sc_pkg::PhFault;
       end
     end
 
     if (load) begin
-      if (load_seg.clocks == '0) begin
+      if (ld_clocks == '0) begin
         // A zero-length row is a malformed table: stop rather than guess.
         run_d   = 1'b0;
         fault_d = 1'b1;
-        phase_d = PhFault;
+        phase_d = sc_pkg::PhFault;
         vel_d   = '0;
         acc_d   = '0;
         jerk_d  = '0;
       end else begin
         run_d   = 1'b1;
         idx_d   = load_idx;
-        left_d  = load_seg.clocks;
-        jerk_d  = load_seg.jerk;
-        acc_d   = load_seg.acc0;
-        vel_d   = load_seg.vel0;
-        phase_d = load_seg.phase;
+        left_d  = ld_clocks;
+        jerk_d  = ld_jerk;
+        acc_d   = ld_acc0;
+        vel_d   = ld_vel0;
+        phase_d = ld_phase;
       end
     end
   end
 
   always_ff @(posedge clk_i) begin
     if (seg_we_i && !run_q) begin
-      seg_mem_q[seg_waddr_i] <= seg_wdata_i;
+      mem_phase_q[seg_waddr_i]  <= seg_phase_i;
+      mem_clocks_q[seg_waddr_i] <= seg_clocks_i;
+      mem_jerk_q[seg_waddr_i]   <= seg_jerk_i;
+      mem_acc0_q[seg_waddr_i]   <= seg_acc0_i;
+      mem_vel0_q[seg_waddr_i]   <= seg_vel0_i;
     end
   end
 
@@ -181,7 +211,7 @@ module sc_profile_exec
       vel_q      <= '0;
       frac_q     <= '0;
       pint_q     <= '0;
-      phase_q    <= PhIdle;
+      phase_q    <= sc_pkg::PhIdle;
       step_req_q <= 1'b0;
       step_fwd_q <= 1'b1;
     end else begin

@@ -11,16 +11,14 @@
 // A request that would overflow the queue sets overrun_o (sticky until
 // clear_i); the planner's step-rate limit (v <= 1/(high+low)) keeps the
 // queue at <= 1 in open loop.
-module sc_step_gen
-  import sc_pkg::*;
-(
+module sc_step_gen (
   input  logic                        clk_i,
   input  logic                        rst_ni,
 
-  input  logic [PulseTimeW-1:0]       cfg_high_i,
-  input  logic [PulseTimeW-1:0]       cfg_low_i,
-  input  logic [PulseTimeW-1:0]       cfg_setup_i,
-  input  logic [PulseTimeW-1:0]       cfg_hold_i,
+  input  logic [sc_pkg::PulseTimeW-1:0]       cfg_high_i,
+  input  logic [sc_pkg::PulseTimeW-1:0]       cfg_low_i,
+  input  logic [sc_pkg::PulseTimeW-1:0]       cfg_setup_i,
+  input  logic [sc_pkg::PulseTimeW-1:0]       cfg_hold_i,
 
   input  logic                        clear_i,     // zero count_o and overrun_o
   input  logic                        step_req_i,
@@ -30,10 +28,13 @@ module sc_step_gen
   output logic                        dir_o,       // 1 = forward
   output logic                        busy_o,      // steps owed or pulse high
   output logic                        overrun_o,
-  output logic signed [PendW-1:0]     pending_o,
-  output logic signed [PosIntW-1:0]   count_o      // net steps emitted
+  output logic signed [sc_pkg::PendW-1:0]     pending_o,
+  output logic signed [sc_pkg::PosIntW-1:0]   count_o      // net steps emitted
 );
 
+  localparam int PulseTimeW = sc_pkg::PulseTimeW;
+  localparam int PendW      = sc_pkg::PendW;
+  localparam int PosIntW    = sc_pkg::PosIntW;
   localparam logic [PulseTimeW-1:0] CntMax = '1;
   localparam logic signed [PendW-1:0] PendMax = {1'b0, {(PendW-1){1'b1}}};
   localparam logic signed [PendW-1:0] PendMin = {1'b1, {(PendW-1){1'b0}}};
@@ -58,8 +59,8 @@ module sc_step_gen
                       low_cnt_q >= cfg_low_i && since_dir_q >= cfg_setup_i;
   assign flip_dir   = have_steps && !dir_ok && !step_q && since_rise_q >= cfg_hold_i;
 
-  function automatic logic [PulseTimeW-1:0] sat_inc(logic [PulseTimeW-1:0] v);
-    return (v == CntMax) ? v : v + PulseTimeW'(1);
+  function automatic logic [PulseTimeW-1:0] sat_inc(input logic [PulseTimeW-1:0] v);
+    sat_inc = (v == CntMax) ? v : v + PulseTimeW'(1);
   endfunction
 
   always_comb begin

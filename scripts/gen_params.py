@@ -3,7 +3,8 @@
 
 Usage: gen_params.py <sc_pkg.sv> <out.h>
 Every `localparam int Name = value;` becomes `inline constexpr int Name`, and
-the phase_e enum becomes `enum class Phase : uint8_t` with the same names.
+the phase codes `localparam logic [3:0] PhX = 4'dN;` become
+`enum class Phase : uint8_t` with the same names.
 Fails loudly on anything it does not understand, so a new package entry can
 never be silently missing from the model.
 """
@@ -17,14 +18,14 @@ def main(src, dst):
     params = re.findall(r"localparam\s+int\s+(\w+)\s*=\s*([0-9_]+)\s*;", body)
     if not params:
         sys.exit(f"{src}: no localparam int found")
+    phases = re.findall(r"localparam\s+logic\s*\[3:0\]\s*(Ph\w+)\s*=\s*4'd(\d+)\s*;", body)
     all_lp = re.findall(r"localparam\b[^;]*;", body)
-    if len(all_lp) != len(params):
+    if len(all_lp) != len(params) + len(phases):
         sys.exit(f"{src}: {len(all_lp)} localparams but only {len(params)} of form "
                  "'localparam int Name = N;' - extend gen_params.py")
-    enum = re.search(r"typedef\s+enum\s+logic\s*\[[^\]]*\]\s*\{([^}]*)\}\s*phase_e\s*;", body)
-    if not enum:
-        sys.exit(f"{src}: typedef enum ... phase_e not found")
-    items = re.findall(r"(\w+)\s*=\s*\d+'d(\d+)", enum.group(1))
+    if not phases:
+        sys.exit(f"{src}: no phase codes (localparam logic [3:0] Ph* = 4'dN;) found")
+    items = phases
     out = [
         "// Generated from rtl/sc_pkg.sv by scripts/gen_params.py - do not edit.",
         "#pragma once",

@@ -16,14 +16,6 @@ namespace sc {
 
 namespace {
 
-// seg_t = {phase, clocks, jerk, acc0, vel0}, first member in the MSBs.
-constexpr int kVel0Lsb = 0;
-constexpr int kAcc0Lsb = kVel0Lsb + VelW;
-constexpr int kJerkLsb = kAcc0Lsb + AccW;
-constexpr int kClocksLsb = kJerkLsb + JerkW;
-constexpr int kPhaseLsb = kClocksLsb + SegClkW;
-constexpr int kSegBits = kPhaseLsb + PhaseW;
-
 template <typename W>
 void put_bits(W& w, int lsb, int width, u128 v) {
   v = mask_bits(v, width);
@@ -45,8 +37,6 @@ u128 get_u128(const W& w, int words) {
 }
 
 }  // namespace
-
-static_assert(kSegBits == 229, "seg_t layout changed: update the packing");
 
 RtlCore::RtlCore() : ctx_(std::make_unique<VerilatedContext>()) {
   m_ = std::make_unique<Vsc_axis_core>(ctx_.get(), "sc_axis_core");
@@ -89,11 +79,11 @@ void RtlCore::step(const CoreInputs& in) {
   if (in.seg_we) {
     m_->seg_waddr_i = in.seg_waddr;
     const Segment& s = in.seg_wdata;
-    put_bits(m_->seg_wdata_i, kVel0Lsb, VelW, u128(s.vel0));
-    put_bits(m_->seg_wdata_i, kAcc0Lsb, AccW, u128(i128(s.acc0)));
-    put_bits(m_->seg_wdata_i, kJerkLsb, JerkW, u128(i128(s.jerk)));
-    put_bits(m_->seg_wdata_i, kClocksLsb, SegClkW, s.clocks);
-    put_bits(m_->seg_wdata_i, kPhaseLsb, PhaseW, uint8_t(s.phase));
+    m_->seg_phase_i = uint8_t(s.phase);
+    m_->seg_clocks_i = s.clocks;
+    m_->seg_jerk_i = uint64_t(s.jerk) & ((uint64_t(1) << JerkW) - 1);
+    m_->seg_acc0_i = uint64_t(s.acc0);
+    put_bits(m_->seg_vel0_i, 0, VelW, u128(s.vel0));
   }
   m_->seg_count_i = in.seg_count;
   if (in.pos_frac0 != pos_frac0_) {

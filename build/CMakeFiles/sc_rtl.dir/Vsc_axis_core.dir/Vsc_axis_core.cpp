@@ -16,6 +16,7 @@ Vsc_axis_core::Vsc_axis_core(VerilatedContext* _vcontextp__, const char* _vcname
     , enable_i{vlSymsp->TOP.enable_i}
     , seg_we_i{vlSymsp->TOP.seg_we_i}
     , seg_waddr_i{vlSymsp->TOP.seg_waddr_i}
+    , seg_phase_i{vlSymsp->TOP.seg_phase_i}
     , seg_count_i{vlSymsp->TOP.seg_count_i}
     , start_i{vlSymsp->TOP.start_i}
     , abort_i{vlSymsp->TOP.abort_i}
@@ -33,12 +34,15 @@ Vsc_axis_core::Vsc_axis_core(VerilatedContext* _vcontextp__, const char* _vcname
     , cfg_low_i{vlSymsp->TOP.cfg_low_i}
     , cfg_setup_i{vlSymsp->TOP.cfg_setup_i}
     , cfg_hold_i{vlSymsp->TOP.cfg_hold_i}
+    , seg_clocks_i{vlSymsp->TOP.seg_clocks_i}
+    , seg_vel0_i{vlSymsp->TOP.seg_vel0_i}
     , pos_frac0_i{vlSymsp->TOP.pos_frac0_i}
     , pulse_count_o{vlSymsp->TOP.pulse_count_o}
     , ref_pos_int_o{vlSymsp->TOP.ref_pos_int_o}
     , ref_pos_frac_o{vlSymsp->TOP.ref_pos_frac_o}
     , ref_vel_o{vlSymsp->TOP.ref_vel_o}
-    , seg_wdata_i{vlSymsp->TOP.seg_wdata_i}
+    , seg_jerk_i{vlSymsp->TOP.seg_jerk_i}
+    , seg_acc0_i{vlSymsp->TOP.seg_acc0_i}
     , ref_acc_o{vlSymsp->TOP.ref_acc_o}
     , ref_jerk_o{vlSymsp->TOP.ref_jerk_o}
     , rootp{&(vlSymsp->TOP)}

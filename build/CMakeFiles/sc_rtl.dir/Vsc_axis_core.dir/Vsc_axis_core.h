@@ -30,6 +30,7 @@ class Vsc_axis_core VL_NOT_FINAL : public VerilatedModel {
     VL_IN8(&enable_i,0,0);
     VL_IN8(&seg_we_i,0,0);
     VL_IN8(&seg_waddr_i,3,0);
+    VL_IN8(&seg_phase_i,3,0);
     VL_IN8(&seg_count_i,4,0);
     VL_IN8(&start_i,0,0);
     VL_IN8(&abort_i,0,0);
@@ -47,12 +48,15 @@ class Vsc_axis_core VL_NOT_FINAL : public VerilatedModel {
     VL_IN16(&cfg_low_i,15,0);
     VL_IN16(&cfg_setup_i,15,0);
     VL_IN16(&cfg_hold_i,15,0);
+    VL_IN(&seg_clocks_i,31,0);
+    VL_INW(&seg_vel0_i,80,0,3);
     VL_INW(&pos_frac0_i,79,0,3);
     VL_OUT(&pulse_count_o,31,0);
     VL_OUT(&ref_pos_int_o,31,0);
     VL_OUTW(&ref_pos_frac_o,79,0,3);
     VL_OUTW(&ref_vel_o,80,0,3);
-    VL_INW(&seg_wdata_i,228,0,8);
+    VL_IN64(&seg_jerk_i,47,0);
+    VL_IN64(&seg_acc0_i,63,0);
     VL_OUT64(&ref_acc_o,63,0);
     VL_OUT64(&ref_jerk_o,47,0);
 

@@ -20,6 +20,7 @@ class Vsc_axis_core___024root final : public VerilatedModule {
         VL_IN8(enable_i,0,0);
         VL_IN8(seg_we_i,0,0);
         VL_IN8(seg_waddr_i,3,0);
+        VL_IN8(seg_phase_i,3,0);
         VL_IN8(seg_count_i,4,0);
         VL_IN8(start_i,0,0);
         VL_IN8(abort_i,0,0);
@@ -78,9 +79,9 @@ class Vsc_axis_core___024root final : public VerilatedModule {
         SData/*15:0*/ sc_axis_core__DOT__cfg_low_q;
         SData/*15:0*/ sc_axis_core__DOT__cfg_setup_q;
         SData/*15:0*/ sc_axis_core__DOT__cfg_hold_q;
-        SData/*15:0*/ sc_axis_core__DOT__u_step_gen__DOT__high_left_q;
     };
     struct {
+        SData/*15:0*/ sc_axis_core__DOT__u_step_gen__DOT__high_left_q;
         SData/*15:0*/ sc_axis_core__DOT__u_step_gen__DOT__high_left_d;
         SData/*15:0*/ sc_axis_core__DOT__u_step_gen__DOT__low_cnt_q;
         SData/*15:0*/ sc_axis_core__DOT__u_step_gen__DOT__low_cnt_d;
@@ -88,6 +89,8 @@ class Vsc_axis_core___024root final : public VerilatedModule {
         SData/*15:0*/ sc_axis_core__DOT__u_step_gen__DOT__since_rise_d;
         SData/*15:0*/ sc_axis_core__DOT__u_step_gen__DOT__since_dir_q;
         SData/*15:0*/ sc_axis_core__DOT__u_step_gen__DOT__since_dir_d;
+        VL_IN(seg_clocks_i,31,0);
+        VL_INW(seg_vel0_i,80,0,3);
         VL_INW(pos_frac0_i,79,0,3);
         VL_OUT(pulse_count_o,31,0);
         VL_OUT(ref_pos_int_o,31,0);
@@ -103,19 +106,24 @@ class Vsc_axis_core___024root final : public VerilatedModule {
         IData/*31:0*/ sc_axis_core__DOT__u_exec__DOT__pint_q;
         IData/*31:0*/ sc_axis_core__DOT__u_exec__DOT__pint_d;
         VlWide<3>/*81:0*/ sc_axis_core__DOT__u_exec__DOT__pos_sum;
+        IData/*31:0*/ sc_axis_core__DOT__u_exec__DOT__ld_clocks;
         IData/*31:0*/ sc_axis_core__DOT__u_step_gen__DOT__count_q;
         IData/*31:0*/ sc_axis_core__DOT__u_step_gen__DOT__count_d;
         IData/*31:0*/ __VstlIterCount;
         IData/*31:0*/ __VactIterCount;
-        VL_INW(seg_wdata_i,228,0,8);
+        VL_IN64(seg_jerk_i,47,0);
+        VL_IN64(seg_acc0_i,63,0);
         VL_OUT64(ref_acc_o,63,0);
         VL_OUT64(ref_jerk_o,47,0);
         QData/*47:0*/ sc_axis_core__DOT__u_exec__DOT__jerk_q;
         QData/*47:0*/ sc_axis_core__DOT__u_exec__DOT__jerk_d;
         QData/*63:0*/ sc_axis_core__DOT__u_exec__DOT__acc_q;
         QData/*63:0*/ sc_axis_core__DOT__u_exec__DOT__acc_d;
-        VlWide<8>/*228:0*/ sc_axis_core__DOT__u_exec__DOT__load_seg;
-        VlUnpacked<VlWide<8>/*228:0*/, 16> sc_axis_core__DOT__u_exec__DOT__seg_mem_q;
+        VlUnpacked<CData/*3:0*/, 16> sc_axis_core__DOT__u_exec__DOT__mem_phase_q;
+        VlUnpacked<IData/*31:0*/, 16> sc_axis_core__DOT__u_exec__DOT__mem_clocks_q;
+        VlUnpacked<QData/*47:0*/, 16> sc_axis_core__DOT__u_exec__DOT__mem_jerk_q;
+        VlUnpacked<QData/*63:0*/, 16> sc_axis_core__DOT__u_exec__DOT__mem_acc0_q;
+        VlUnpacked<VlWide<3>/*80:0*/, 16> sc_axis_core__DOT__u_exec__DOT__mem_vel0_q;
         VlUnpacked<CData/*0:0*/, 2> __Vm_traceActivity;
     };
     VlTriggerVec<1> __VstlTriggered;

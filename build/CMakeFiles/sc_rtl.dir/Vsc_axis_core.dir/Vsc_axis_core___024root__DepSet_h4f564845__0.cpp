@@ -29,38 +29,76 @@ VL_INLINE_OPT void Vsc_axis_core___024root___nba_sequent__TOP__0(Vsc_axis_core__
     __Vfunc_sc_axis_core__DOT__u_step_gen__DOT__sat_inc__2__Vfuncout = 0;
     SData/*15:0*/ __Vfunc_sc_axis_core__DOT__u_step_gen__DOT__sat_inc__2__v;
     __Vfunc_sc_axis_core__DOT__u_step_gen__DOT__sat_inc__2__v = 0;
-    CData/*3:0*/ __Vdlyvdim0__sc_axis_core__DOT__u_exec__DOT__seg_mem_q__v0;
-    __Vdlyvdim0__sc_axis_core__DOT__u_exec__DOT__seg_mem_q__v0 = 0;
-    VlWide<8>/*228:0*/ __Vdlyvval__sc_axis_core__DOT__u_exec__DOT__seg_mem_q__v0;
-    VL_ZERO_W(229, __Vdlyvval__sc_axis_core__DOT__u_exec__DOT__seg_mem_q__v0);
-    CData/*0:0*/ __Vdlyvset__sc_axis_core__DOT__u_exec__DOT__seg_mem_q__v0;
-    __Vdlyvset__sc_axis_core__DOT__u_exec__DOT__seg_mem_q__v0 = 0;
+    CData/*3:0*/ __Vdlyvdim0__sc_axis_core__DOT__u_exec__DOT__mem_phase_q__v0;
+    __Vdlyvdim0__sc_axis_core__DOT__u_exec__DOT__mem_phase_q__v0 = 0;
+    CData/*3:0*/ __Vdlyvval__sc_axis_core__DOT__u_exec__DOT__mem_phase_q__v0;
+    __Vdlyvval__sc_axis_core__DOT__u_exec__DOT__mem_phase_q__v0 = 0;
+    CData/*0:0*/ __Vdlyvset__sc_axis_core__DOT__u_exec__DOT__mem_phase_q__v0;
+    __Vdlyvset__sc_axis_core__DOT__u_exec__DOT__mem_phase_q__v0 = 0;
+    CData/*3:0*/ __Vdlyvdim0__sc_axis_core__DOT__u_exec__DOT__mem_acc0_q__v0;
+    __Vdlyvdim0__sc_axis_core__DOT__u_exec__DOT__mem_acc0_q__v0 = 0;
+    QData/*63:0*/ __Vdlyvval__sc_axis_core__DOT__u_exec__DOT__mem_acc0_q__v0;
+    __Vdlyvval__sc_axis_core__DOT__u_exec__DOT__mem_acc0_q__v0 = 0;
+    CData/*0:0*/ __Vdlyvset__sc_axis_core__DOT__u_exec__DOT__mem_acc0_q__v0;
+    __Vdlyvset__sc_axis_core__DOT__u_exec__DOT__mem_acc0_q__v0 = 0;
+    CData/*3:0*/ __Vdlyvdim0__sc_axis_core__DOT__u_exec__DOT__mem_clocks_q__v0;
+    __Vdlyvdim0__sc_axis_core__DOT__u_exec__DOT__mem_clocks_q__v0 = 0;
+    IData/*31:0*/ __Vdlyvval__sc_axis_core__DOT__u_exec__DOT__mem_clocks_q__v0;
+    __Vdlyvval__sc_axis_core__DOT__u_exec__DOT__mem_clocks_q__v0 = 0;
+    CData/*0:0*/ __Vdlyvset__sc_axis_core__DOT__u_exec__DOT__mem_clocks_q__v0;
+    __Vdlyvset__sc_axis_core__DOT__u_exec__DOT__mem_clocks_q__v0 = 0;
+    CData/*3:0*/ __Vdlyvdim0__sc_axis_core__DOT__u_exec__DOT__mem_jerk_q__v0;
+    __Vdlyvdim0__sc_axis_core__DOT__u_exec__DOT__mem_jerk_q__v0 = 0;
+    QData/*47:0*/ __Vdlyvval__sc_axis_core__DOT__u_exec__DOT__mem_jerk_q__v0;
+    __Vdlyvval__sc_axis_core__DOT__u_exec__DOT__mem_jerk_q__v0 = 0;
+    CData/*0:0*/ __Vdlyvset__sc_axis_core__DOT__u_exec__DOT__mem_jerk_q__v0;
+    __Vdlyvset__sc_axis_core__DOT__u_exec__DOT__mem_jerk_q__v0 = 0;
+    CData/*3:0*/ __Vdlyvdim0__sc_axis_core__DOT__u_exec__DOT__mem_vel0_q__v0;
+    __Vdlyvdim0__sc_axis_core__DOT__u_exec__DOT__mem_vel0_q__v0 = 0;
+    VlWide<3>/*80:0*/ __Vdlyvval__sc_axis_core__DOT__u_exec__DOT__mem_vel0_q__v0;
+    VL_ZERO_W(81, __Vdlyvval__sc_axis_core__DOT__u_exec__DOT__mem_vel0_q__v0);
+    CData/*0:0*/ __Vdlyvset__sc_axis_core__DOT__u_exec__DOT__mem_vel0_q__v0;
+    __Vdlyvset__sc_axis_core__DOT__u_exec__DOT__mem_vel0_q__v0 = 0;
     VlWide<3>/*95:0*/ __Vtemp_h68fa04a4__0;
     VlWide<3>/*95:0*/ __Vtemp_h250b1d4a__0;
     VlWide<3>/*95:0*/ __Vtemp_h54adfcc2__0;
     VlWide<3>/*95:0*/ __Vtemp_h97375c78__0;
     VlWide<3>/*95:0*/ __Vtemp_hc514e7b5__0;
     // Body
-    __Vdlyvset__sc_axis_core__DOT__u_exec__DOT__seg_mem_q__v0 = 0U;
+    __Vdlyvset__sc_axis_core__DOT__u_exec__DOT__mem_jerk_q__v0 = 0U;
+    __Vdlyvset__sc_axis_core__DOT__u_exec__DOT__mem_phase_q__v0 = 0U;
+    __Vdlyvset__sc_axis_core__DOT__u_exec__DOT__mem_vel0_q__v0 = 0U;
+    __Vdlyvset__sc_axis_core__DOT__u_exec__DOT__mem_acc0_q__v0 = 0U;
+    __Vdlyvset__sc_axis_core__DOT__u_exec__DOT__mem_clocks_q__v0 = 0U;
     if (((IData)(vlSelf->seg_we_i) & (~ (IData)(vlSelf->sc_axis_core__DOT__u_exec__DOT__run_q)))) {
-        __Vdlyvval__sc_axis_core__DOT__u_exec__DOT__seg_mem_q__v0[0U] 
-            = vlSelf->seg_wdata_i[0U];
-        __Vdlyvval__sc_axis_core__DOT__u_exec__DOT__seg_mem_q__v0[1U] 
-            = vlSelf->seg_wdata_i[1U];
-        __Vdlyvval__sc_axis_core__DOT__u_exec__DOT__seg_mem_q__v0[2U] 
-            = vlSelf->seg_wdata_i[2U];
-        __Vdlyvval__sc_axis_core__DOT__u_exec__DOT__seg_mem_q__v0[3U] 
-            = vlSelf->seg_wdata_i[3U];
-        __Vdlyvval__sc_axis_core__DOT__u_exec__DOT__seg_mem_q__v0[4U] 
-            = vlSelf->seg_wdata_i[4U];
-        __Vdlyvval__sc_axis_core__DOT__u_exec__DOT__seg_mem_q__v0[5U] 
-            = vlSelf->seg_wdata_i[5U];
-        __Vdlyvval__sc_axis_core__DOT__u_exec__DOT__seg_mem_q__v0[6U] 
-            = vlSelf->seg_wdata_i[6U];
-        __Vdlyvval__sc_axis_core__DOT__u_exec__DOT__seg_mem_q__v0[7U] 
-            = vlSelf->seg_wdata_i[7U];
-        __Vdlyvset__sc_axis_core__DOT__u_exec__DOT__seg_mem_q__v0 = 1U;
-        __Vdlyvdim0__sc_axis_core__DOT__u_exec__DOT__seg_mem_q__v0 
+        __Vdlyvval__sc_axis_core__DOT__u_exec__DOT__mem_jerk_q__v0 
+            = vlSelf->seg_jerk_i;
+        __Vdlyvset__sc_axis_core__DOT__u_exec__DOT__mem_jerk_q__v0 = 1U;
+        __Vdlyvdim0__sc_axis_core__DOT__u_exec__DOT__mem_jerk_q__v0 
+            = vlSelf->seg_waddr_i;
+        __Vdlyvval__sc_axis_core__DOT__u_exec__DOT__mem_phase_q__v0 
+            = vlSelf->seg_phase_i;
+        __Vdlyvset__sc_axis_core__DOT__u_exec__DOT__mem_phase_q__v0 = 1U;
+        __Vdlyvdim0__sc_axis_core__DOT__u_exec__DOT__mem_phase_q__v0 
+            = vlSelf->seg_waddr_i;
+        __Vdlyvval__sc_axis_core__DOT__u_exec__DOT__mem_vel0_q__v0[0U] 
+            = vlSelf->seg_vel0_i[0U];
+        __Vdlyvval__sc_axis_core__DOT__u_exec__DOT__mem_vel0_q__v0[1U] 
+            = vlSelf->seg_vel0_i[1U];
+        __Vdlyvval__sc_axis_core__DOT__u_exec__DOT__mem_vel0_q__v0[2U] 
+            = vlSelf->seg_vel0_i[2U];
+        __Vdlyvset__sc_axis_core__DOT__u_exec__DOT__mem_vel0_q__v0 = 1U;
+        __Vdlyvdim0__sc_axis_core__DOT__u_exec__DOT__mem_vel0_q__v0 
+            = vlSelf->seg_waddr_i;
+        __Vdlyvval__sc_axis_core__DOT__u_exec__DOT__mem_acc0_q__v0 
+            = vlSelf->seg_acc0_i;
+        __Vdlyvset__sc_axis_core__DOT__u_exec__DOT__mem_acc0_q__v0 = 1U;
+        __Vdlyvdim0__sc_axis_core__DOT__u_exec__DOT__mem_acc0_q__v0 
+            = vlSelf->seg_waddr_i;
+        __Vdlyvval__sc_axis_core__DOT__u_exec__DOT__mem_clocks_q__v0 
+            = vlSelf->seg_clocks_i;
+        __Vdlyvset__sc_axis_core__DOT__u_exec__DOT__mem_clocks_q__v0 = 1U;
+        __Vdlyvdim0__sc_axis_core__DOT__u_exec__DOT__mem_clocks_q__v0 
             = vlSelf->seg_waddr_i;
     }
     if (vlSelf->rst_ni) {
@@ -160,27 +198,33 @@ VL_INLINE_OPT void Vsc_axis_core___024root___nba_sequent__TOP__0(Vsc_axis_core__
                                        & (IData)(vlSelf->enable_i));
     vlSelf->sc_axis_core__DOT__u_exec__DOT__step_req_q 
         = ((IData)(vlSelf->rst_ni) & (IData)(vlSelf->sc_axis_core__DOT__u_exec__DOT__step_req_d));
-    vlSelf->sc_axis_core__DOT__abort_q = ((IData)(vlSelf->rst_ni) 
-                                          & (IData)(vlSelf->abort_i));
     vlSelf->sc_axis_core__DOT__u_step_gen__DOT__step_q 
         = ((IData)(vlSelf->rst_ni) & (IData)(vlSelf->sc_axis_core__DOT__u_step_gen__DOT__step_d));
-    if (__Vdlyvset__sc_axis_core__DOT__u_exec__DOT__seg_mem_q__v0) {
-        vlSelf->sc_axis_core__DOT__u_exec__DOT__seg_mem_q[__Vdlyvdim0__sc_axis_core__DOT__u_exec__DOT__seg_mem_q__v0][0U] 
-            = __Vdlyvval__sc_axis_core__DOT__u_exec__DOT__seg_mem_q__v0[0U];
-        vlSelf->sc_axis_core__DOT__u_exec__DOT__seg_mem_q[__Vdlyvdim0__sc_axis_core__DOT__u_exec__DOT__seg_mem_q__v0][1U] 
-            = __Vdlyvval__sc_axis_core__DOT__u_exec__DOT__seg_mem_q__v0[1U];
-        vlSelf->sc_axis_core__DOT__u_exec__DOT__seg_mem_q[__Vdlyvdim0__sc_axis_core__DOT__u_exec__DOT__seg_mem_q__v0][2U] 
-            = __Vdlyvval__sc_axis_core__DOT__u_exec__DOT__seg_mem_q__v0[2U];
-        vlSelf->sc_axis_core__DOT__u_exec__DOT__seg_mem_q[__Vdlyvdim0__sc_axis_core__DOT__u_exec__DOT__seg_mem_q__v0][3U] 
-            = __Vdlyvval__sc_axis_core__DOT__u_exec__DOT__seg_mem_q__v0[3U];
-        vlSelf->sc_axis_core__DOT__u_exec__DOT__seg_mem_q[__Vdlyvdim0__sc_axis_core__DOT__u_exec__DOT__seg_mem_q__v0][4U] 
-            = __Vdlyvval__sc_axis_core__DOT__u_exec__DOT__seg_mem_q__v0[4U];
-        vlSelf->sc_axis_core__DOT__u_exec__DOT__seg_mem_q[__Vdlyvdim0__sc_axis_core__DOT__u_exec__DOT__seg_mem_q__v0][5U] 
-            = __Vdlyvval__sc_axis_core__DOT__u_exec__DOT__seg_mem_q__v0[5U];
-        vlSelf->sc_axis_core__DOT__u_exec__DOT__seg_mem_q[__Vdlyvdim0__sc_axis_core__DOT__u_exec__DOT__seg_mem_q__v0][6U] 
-            = __Vdlyvval__sc_axis_core__DOT__u_exec__DOT__seg_mem_q__v0[6U];
-        vlSelf->sc_axis_core__DOT__u_exec__DOT__seg_mem_q[__Vdlyvdim0__sc_axis_core__DOT__u_exec__DOT__seg_mem_q__v0][7U] 
-            = __Vdlyvval__sc_axis_core__DOT__u_exec__DOT__seg_mem_q__v0[7U];
+    vlSelf->sc_axis_core__DOT__abort_q = ((IData)(vlSelf->rst_ni) 
+                                          & (IData)(vlSelf->abort_i));
+    if (__Vdlyvset__sc_axis_core__DOT__u_exec__DOT__mem_jerk_q__v0) {
+        vlSelf->sc_axis_core__DOT__u_exec__DOT__mem_jerk_q[__Vdlyvdim0__sc_axis_core__DOT__u_exec__DOT__mem_jerk_q__v0] 
+            = __Vdlyvval__sc_axis_core__DOT__u_exec__DOT__mem_jerk_q__v0;
+    }
+    if (__Vdlyvset__sc_axis_core__DOT__u_exec__DOT__mem_phase_q__v0) {
+        vlSelf->sc_axis_core__DOT__u_exec__DOT__mem_phase_q[__Vdlyvdim0__sc_axis_core__DOT__u_exec__DOT__mem_phase_q__v0] 
+            = __Vdlyvval__sc_axis_core__DOT__u_exec__DOT__mem_phase_q__v0;
+    }
+    if (__Vdlyvset__sc_axis_core__DOT__u_exec__DOT__mem_vel0_q__v0) {
+        vlSelf->sc_axis_core__DOT__u_exec__DOT__mem_vel0_q[__Vdlyvdim0__sc_axis_core__DOT__u_exec__DOT__mem_vel0_q__v0][0U] 
+            = __Vdlyvval__sc_axis_core__DOT__u_exec__DOT__mem_vel0_q__v0[0U];
+        vlSelf->sc_axis_core__DOT__u_exec__DOT__mem_vel0_q[__Vdlyvdim0__sc_axis_core__DOT__u_exec__DOT__mem_vel0_q__v0][1U] 
+            = __Vdlyvval__sc_axis_core__DOT__u_exec__DOT__mem_vel0_q__v0[1U];
+        vlSelf->sc_axis_core__DOT__u_exec__DOT__mem_vel0_q[__Vdlyvdim0__sc_axis_core__DOT__u_exec__DOT__mem_vel0_q__v0][2U] 
+            = __Vdlyvval__sc_axis_core__DOT__u_exec__DOT__mem_vel0_q__v0[2U];
+    }
+    if (__Vdlyvset__sc_axis_core__DOT__u_exec__DOT__mem_acc0_q__v0) {
+        vlSelf->sc_axis_core__DOT__u_exec__DOT__mem_acc0_q[__Vdlyvdim0__sc_axis_core__DOT__u_exec__DOT__mem_acc0_q__v0] 
+            = __Vdlyvval__sc_axis_core__DOT__u_exec__DOT__mem_acc0_q__v0;
+    }
+    if (__Vdlyvset__sc_axis_core__DOT__u_exec__DOT__mem_clocks_q__v0) {
+        vlSelf->sc_axis_core__DOT__u_exec__DOT__mem_clocks_q[__Vdlyvdim0__sc_axis_core__DOT__u_exec__DOT__mem_clocks_q__v0] 
+            = __Vdlyvval__sc_axis_core__DOT__u_exec__DOT__mem_clocks_q__v0;
     }
     vlSelf->sc_axis_core__DOT__u_exec__DOT__run_q = 
         ((IData)(vlSelf->rst_ni) & (IData)(vlSelf->sc_axis_core__DOT__u_exec__DOT__run_d));
@@ -311,30 +355,9 @@ VL_INLINE_OPT void Vsc_axis_core___024root___nba_sequent__TOP__0(Vsc_axis_core__
                 = (0xfU & ((IData)(1U) + (IData)(vlSelf->sc_axis_core__DOT__u_exec__DOT__idx_q)));
         }
     }
-    vlSelf->sc_axis_core__DOT__u_exec__DOT__load_seg[0U] 
-        = vlSelf->sc_axis_core__DOT__u_exec__DOT__seg_mem_q
-        [vlSelf->sc_axis_core__DOT__u_exec__DOT__load_idx][0U];
-    vlSelf->sc_axis_core__DOT__u_exec__DOT__load_seg[1U] 
-        = vlSelf->sc_axis_core__DOT__u_exec__DOT__seg_mem_q
-        [vlSelf->sc_axis_core__DOT__u_exec__DOT__load_idx][1U];
-    vlSelf->sc_axis_core__DOT__u_exec__DOT__load_seg[2U] 
-        = vlSelf->sc_axis_core__DOT__u_exec__DOT__seg_mem_q
-        [vlSelf->sc_axis_core__DOT__u_exec__DOT__load_idx][2U];
-    vlSelf->sc_axis_core__DOT__u_exec__DOT__load_seg[3U] 
-        = vlSelf->sc_axis_core__DOT__u_exec__DOT__seg_mem_q
-        [vlSelf->sc_axis_core__DOT__u_exec__DOT__load_idx][3U];
-    vlSelf->sc_axis_core__DOT__u_exec__DOT__load_seg[4U] 
-        = vlSelf->sc_axis_core__DOT__u_exec__DOT__seg_mem_q
-        [vlSelf->sc_axis_core__DOT__u_exec__DOT__load_idx][4U];
-    vlSelf->sc_axis_core__DOT__u_exec__DOT__load_seg[5U] 
-        = vlSelf->sc_axis_core__DOT__u_exec__DOT__seg_mem_q
-        [vlSelf->sc_axis_core__DOT__u_exec__DOT__load_idx][5U];
-    vlSelf->sc_axis_core__DOT__u_exec__DOT__load_seg[6U] 
-        = vlSelf->sc_axis_core__DOT__u_exec__DOT__seg_mem_q
-        [vlSelf->sc_axis_core__DOT__u_exec__DOT__load_idx][6U];
-    vlSelf->sc_axis_core__DOT__u_exec__DOT__load_seg[7U] 
-        = vlSelf->sc_axis_core__DOT__u_exec__DOT__seg_mem_q
-        [vlSelf->sc_axis_core__DOT__u_exec__DOT__load_idx][7U];
+    vlSelf->sc_axis_core__DOT__u_exec__DOT__ld_clocks 
+        = vlSelf->sc_axis_core__DOT__u_exec__DOT__mem_clocks_q
+        [vlSelf->sc_axis_core__DOT__u_exec__DOT__load_idx];
     vlSelf->done_o = ((~ (IData)(vlSelf->busy_o)) & (IData)(vlSelf->sc_axis_core__DOT__u_exec__DOT__finished_q));
     vlSelf->sc_axis_core__DOT__start_ok = ((IData)(vlSelf->sc_axis_core__DOT__start_q) 
                                            & ((~ (IData)(vlSelf->busy_o)) 
@@ -459,12 +482,12 @@ VL_INLINE_OPT void Vsc_axis_core___024root___nba_sequent__TOP__0(Vsc_axis_core__
     }
     if (vlSelf->sc_axis_core__DOT__u_exec__DOT__run_q) {
         vlSelf->sc_axis_core__DOT__u_exec__DOT__run_d = 1U;
+        vlSelf->sc_axis_core__DOT__u_exec__DOT__finished_d 
+            = vlSelf->sc_axis_core__DOT__u_exec__DOT__finished_q;
         vlSelf->sc_axis_core__DOT__u_exec__DOT__phase_d 
             = vlSelf->sc_axis_core__DOT__u_exec__DOT__phase_q;
         vlSelf->sc_axis_core__DOT__u_exec__DOT__jerk_d 
             = vlSelf->sc_axis_core__DOT__u_exec__DOT__jerk_q;
-        vlSelf->sc_axis_core__DOT__u_exec__DOT__finished_d 
-            = vlSelf->sc_axis_core__DOT__u_exec__DOT__finished_q;
         vlSelf->sc_axis_core__DOT__u_exec__DOT__vel_d[0U] 
             = vlSelf->sc_axis_core__DOT__u_exec__DOT__vel_q[0U];
         vlSelf->sc_axis_core__DOT__u_exec__DOT__vel_d[1U] 
@@ -517,12 +540,12 @@ VL_INLINE_OPT void Vsc_axis_core___024root___nba_sequent__TOP__0(Vsc_axis_core__
         }
     } else {
         vlSelf->sc_axis_core__DOT__u_exec__DOT__run_d = 0U;
+        vlSelf->sc_axis_core__DOT__u_exec__DOT__finished_d 
+            = vlSelf->sc_axis_core__DOT__u_exec__DOT__finished_q;
         vlSelf->sc_axis_core__DOT__u_exec__DOT__phase_d 
             = vlSelf->sc_axis_core__DOT__u_exec__DOT__phase_q;
         vlSelf->sc_axis_core__DOT__u_exec__DOT__jerk_d 
             = vlSelf->sc_axis_core__DOT__u_exec__DOT__jerk_q;
-        vlSelf->sc_axis_core__DOT__u_exec__DOT__finished_d 
-            = vlSelf->sc_axis_core__DOT__u_exec__DOT__finished_q;
         vlSelf->sc_axis_core__DOT__u_exec__DOT__vel_d[0U] 
             = vlSelf->sc_axis_core__DOT__u_exec__DOT__vel_q[0U];
         vlSelf->sc_axis_core__DOT__u_exec__DOT__vel_d[1U] 
@@ -530,28 +553,22 @@ VL_INLINE_OPT void Vsc_axis_core___024root___nba_sequent__TOP__0(Vsc_axis_core__
         vlSelf->sc_axis_core__DOT__u_exec__DOT__vel_d[2U] 
             = vlSelf->sc_axis_core__DOT__u_exec__DOT__vel_q[2U];
         if (vlSelf->sc_axis_core__DOT__start_ok) {
+            vlSelf->sc_axis_core__DOT__u_exec__DOT__finished_d = 0U;
             if ((1U & (~ (IData)(vlSelf->sc_axis_core__DOT__u_exec__DOT__load)))) {
                 vlSelf->sc_axis_core__DOT__u_exec__DOT__phase_d = 0xaU;
             }
-            vlSelf->sc_axis_core__DOT__u_exec__DOT__finished_d = 0U;
         }
         vlSelf->sc_axis_core__DOT__u_exec__DOT__acc_d 
             = vlSelf->sc_axis_core__DOT__u_exec__DOT__acc_q;
     }
     if (vlSelf->sc_axis_core__DOT__u_exec__DOT__load) {
-        if ((0U != ((vlSelf->sc_axis_core__DOT__u_exec__DOT__load_seg[7U] 
-                     << 0x1fU) | (vlSelf->sc_axis_core__DOT__u_exec__DOT__load_seg[6U] 
-                                  >> 1U)))) {
+        if ((0U != vlSelf->sc_axis_core__DOT__u_exec__DOT__ld_clocks)) {
             vlSelf->sc_axis_core__DOT__u_exec__DOT__idx_d 
                 = vlSelf->sc_axis_core__DOT__u_exec__DOT__load_idx;
             vlSelf->sc_axis_core__DOT__u_exec__DOT__left_d 
-                = ((vlSelf->sc_axis_core__DOT__u_exec__DOT__load_seg[7U] 
-                    << 0x1fU) | (vlSelf->sc_axis_core__DOT__u_exec__DOT__load_seg[6U] 
-                                 >> 1U));
+                = vlSelf->sc_axis_core__DOT__u_exec__DOT__ld_clocks;
         }
-        if ((0U == ((vlSelf->sc_axis_core__DOT__u_exec__DOT__load_seg[7U] 
-                     << 0x1fU) | (vlSelf->sc_axis_core__DOT__u_exec__DOT__load_seg[6U] 
-                                  >> 1U)))) {
+        if ((0U == vlSelf->sc_axis_core__DOT__u_exec__DOT__ld_clocks)) {
             vlSelf->sc_axis_core__DOT__u_exec__DOT__fault_d = 1U;
             vlSelf->sc_axis_core__DOT__u_exec__DOT__phase_d = 0xaU;
             vlSelf->sc_axis_core__DOT__u_exec__DOT__jerk_d = 0ULL;
@@ -561,35 +578,26 @@ VL_INLINE_OPT void Vsc_axis_core___024root___nba_sequent__TOP__0(Vsc_axis_core__
             vlSelf->sc_axis_core__DOT__u_exec__DOT__acc_d = 0ULL;
         } else {
             vlSelf->sc_axis_core__DOT__u_exec__DOT__phase_d 
-                = (0xfU & (vlSelf->sc_axis_core__DOT__u_exec__DOT__load_seg[7U] 
-                           >> 1U));
+                = vlSelf->sc_axis_core__DOT__u_exec__DOT__mem_phase_q
+                [vlSelf->sc_axis_core__DOT__u_exec__DOT__load_idx];
             vlSelf->sc_axis_core__DOT__u_exec__DOT__jerk_d 
-                = (0xffffffffffffULL & (((QData)((IData)(
-                                                         vlSelf->sc_axis_core__DOT__u_exec__DOT__load_seg[6U])) 
-                                         << 0x2fU) 
-                                        | (((QData)((IData)(
-                                                            vlSelf->sc_axis_core__DOT__u_exec__DOT__load_seg[5U])) 
-                                            << 0xfU) 
-                                           | ((QData)((IData)(
-                                                              vlSelf->sc_axis_core__DOT__u_exec__DOT__load_seg[4U])) 
-                                              >> 0x11U))));
+                = vlSelf->sc_axis_core__DOT__u_exec__DOT__mem_jerk_q
+                [vlSelf->sc_axis_core__DOT__u_exec__DOT__load_idx];
             vlSelf->sc_axis_core__DOT__u_exec__DOT__vel_d[0U] 
-                = vlSelf->sc_axis_core__DOT__u_exec__DOT__load_seg[0U];
+                = vlSelf->sc_axis_core__DOT__u_exec__DOT__mem_vel0_q
+                [vlSelf->sc_axis_core__DOT__u_exec__DOT__load_idx][0U];
             vlSelf->sc_axis_core__DOT__u_exec__DOT__vel_d[1U] 
-                = vlSelf->sc_axis_core__DOT__u_exec__DOT__load_seg[1U];
+                = vlSelf->sc_axis_core__DOT__u_exec__DOT__mem_vel0_q
+                [vlSelf->sc_axis_core__DOT__u_exec__DOT__load_idx][1U];
             vlSelf->sc_axis_core__DOT__u_exec__DOT__vel_d[2U] 
-                = (0x1ffffU & vlSelf->sc_axis_core__DOT__u_exec__DOT__load_seg[2U]);
+                = vlSelf->sc_axis_core__DOT__u_exec__DOT__mem_vel0_q
+                [vlSelf->sc_axis_core__DOT__u_exec__DOT__load_idx][2U];
             vlSelf->sc_axis_core__DOT__u_exec__DOT__acc_d 
-                = (((QData)((IData)(vlSelf->sc_axis_core__DOT__u_exec__DOT__load_seg[4U])) 
-                    << 0x2fU) | (((QData)((IData)(vlSelf->sc_axis_core__DOT__u_exec__DOT__load_seg[3U])) 
-                                  << 0xfU) | ((QData)((IData)(
-                                                              vlSelf->sc_axis_core__DOT__u_exec__DOT__load_seg[2U])) 
-                                              >> 0x11U)));
+                = vlSelf->sc_axis_core__DOT__u_exec__DOT__mem_acc0_q
+                [vlSelf->sc_axis_core__DOT__u_exec__DOT__load_idx];
         }
         vlSelf->sc_axis_core__DOT__u_exec__DOT__run_d 
-            = (0U != ((vlSelf->sc_axis_core__DOT__u_exec__DOT__load_seg[7U] 
-                       << 0x1fU) | (vlSelf->sc_axis_core__DOT__u_exec__DOT__load_seg[6U] 
-                                    >> 1U)));
+            = (0U != vlSelf->sc_axis_core__DOT__u_exec__DOT__ld_clocks);
     }
 }
 
@@ -676,6 +684,12 @@ void Vsc_axis_core___024root___eval_debug_assertions(Vsc_axis_core___024root* vl
         Verilated::overWidthError("seg_we_i");}
     if (VL_UNLIKELY((vlSelf->seg_waddr_i & 0xf0U))) {
         Verilated::overWidthError("seg_waddr_i");}
+    if (VL_UNLIKELY((vlSelf->seg_phase_i & 0xf0U))) {
+        Verilated::overWidthError("seg_phase_i");}
+    if (VL_UNLIKELY((vlSelf->seg_jerk_i & 0ULL))) {
+        Verilated::overWidthError("seg_jerk_i");}
+    if (VL_UNLIKELY((vlSelf->seg_vel0_i[2U] & 0xfffe0000U))) {
+        Verilated::overWidthError("seg_vel0_i");}
     if (VL_UNLIKELY((vlSelf->seg_count_i & 0xe0U))) {
         Verilated::overWidthError("seg_count_i");}
     if (VL_UNLIKELY((vlSelf->pos_frac0_i[2U] & 0xffff0000U))) {

@@ -161,30 +161,9 @@ VL_ATTR_COLD void Vsc_axis_core___024root___stl_sequent__TOP__0(Vsc_axis_core___
                 = (0xfU & ((IData)(1U) + (IData)(vlSelf->sc_axis_core__DOT__u_exec__DOT__idx_q)));
         }
     }
-    vlSelf->sc_axis_core__DOT__u_exec__DOT__load_seg[0U] 
-        = vlSelf->sc_axis_core__DOT__u_exec__DOT__seg_mem_q
-        [vlSelf->sc_axis_core__DOT__u_exec__DOT__load_idx][0U];
-    vlSelf->sc_axis_core__DOT__u_exec__DOT__load_seg[1U] 
-        = vlSelf->sc_axis_core__DOT__u_exec__DOT__seg_mem_q
-        [vlSelf->sc_axis_core__DOT__u_exec__DOT__load_idx][1U];
-    vlSelf->sc_axis_core__DOT__u_exec__DOT__load_seg[2U] 
-        = vlSelf->sc_axis_core__DOT__u_exec__DOT__seg_mem_q
-        [vlSelf->sc_axis_core__DOT__u_exec__DOT__load_idx][2U];
-    vlSelf->sc_axis_core__DOT__u_exec__DOT__load_seg[3U] 
-        = vlSelf->sc_axis_core__DOT__u_exec__DOT__seg_mem_q
-        [vlSelf->sc_axis_core__DOT__u_exec__DOT__load_idx][3U];
-    vlSelf->sc_axis_core__DOT__u_exec__DOT__load_seg[4U] 
-        = vlSelf->sc_axis_core__DOT__u_exec__DOT__seg_mem_q
-        [vlSelf->sc_axis_core__DOT__u_exec__DOT__load_idx][4U];
-    vlSelf->sc_axis_core__DOT__u_exec__DOT__load_seg[5U] 
-        = vlSelf->sc_axis_core__DOT__u_exec__DOT__seg_mem_q
-        [vlSelf->sc_axis_core__DOT__u_exec__DOT__load_idx][5U];
-    vlSelf->sc_axis_core__DOT__u_exec__DOT__load_seg[6U] 
-        = vlSelf->sc_axis_core__DOT__u_exec__DOT__seg_mem_q
-        [vlSelf->sc_axis_core__DOT__u_exec__DOT__load_idx][6U];
-    vlSelf->sc_axis_core__DOT__u_exec__DOT__load_seg[7U] 
-        = vlSelf->sc_axis_core__DOT__u_exec__DOT__seg_mem_q
-        [vlSelf->sc_axis_core__DOT__u_exec__DOT__load_idx][7U];
+    vlSelf->sc_axis_core__DOT__u_exec__DOT__ld_clocks 
+        = vlSelf->sc_axis_core__DOT__u_exec__DOT__mem_clocks_q
+        [vlSelf->sc_axis_core__DOT__u_exec__DOT__load_idx];
     vlSelf->done_o = ((~ (IData)(vlSelf->busy_o)) & (IData)(vlSelf->sc_axis_core__DOT__u_exec__DOT__finished_q));
     vlSelf->sc_axis_core__DOT__start_ok = ((IData)(vlSelf->sc_axis_core__DOT__start_q) 
                                            & ((~ (IData)(vlSelf->busy_o)) 
@@ -370,12 +349,12 @@ VL_ATTR_COLD void Vsc_axis_core___024root___stl_sequent__TOP__0(Vsc_axis_core___
     }
     if (vlSelf->sc_axis_core__DOT__u_exec__DOT__run_q) {
         vlSelf->sc_axis_core__DOT__u_exec__DOT__run_d = 1U;
+        vlSelf->sc_axis_core__DOT__u_exec__DOT__finished_d 
+            = vlSelf->sc_axis_core__DOT__u_exec__DOT__finished_q;
         vlSelf->sc_axis_core__DOT__u_exec__DOT__phase_d 
             = vlSelf->sc_axis_core__DOT__u_exec__DOT__phase_q;
         vlSelf->sc_axis_core__DOT__u_exec__DOT__jerk_d 
             = vlSelf->sc_axis_core__DOT__u_exec__DOT__jerk_q;
-        vlSelf->sc_axis_core__DOT__u_exec__DOT__finished_d 
-            = vlSelf->sc_axis_core__DOT__u_exec__DOT__finished_q;
         vlSelf->sc_axis_core__DOT__u_exec__DOT__vel_d[0U] 
             = vlSelf->sc_axis_core__DOT__u_exec__DOT__vel_q[0U];
         vlSelf->sc_axis_core__DOT__u_exec__DOT__vel_d[1U] 
@@ -428,12 +407,12 @@ VL_ATTR_COLD void Vsc_axis_core___024root___stl_sequent__TOP__0(Vsc_axis_core___
         }
     } else {
         vlSelf->sc_axis_core__DOT__u_exec__DOT__run_d = 0U;
+        vlSelf->sc_axis_core__DOT__u_exec__DOT__finished_d 
+            = vlSelf->sc_axis_core__DOT__u_exec__DOT__finished_q;
         vlSelf->sc_axis_core__DOT__u_exec__DOT__phase_d 
             = vlSelf->sc_axis_core__DOT__u_exec__DOT__phase_q;
         vlSelf->sc_axis_core__DOT__u_exec__DOT__jerk_d 
             = vlSelf->sc_axis_core__DOT__u_exec__DOT__jerk_q;
-        vlSelf->sc_axis_core__DOT__u_exec__DOT__finished_d 
-            = vlSelf->sc_axis_core__DOT__u_exec__DOT__finished_q;
         vlSelf->sc_axis_core__DOT__u_exec__DOT__vel_d[0U] 
             = vlSelf->sc_axis_core__DOT__u_exec__DOT__vel_q[0U];
         vlSelf->sc_axis_core__DOT__u_exec__DOT__vel_d[1U] 
@@ -441,28 +420,22 @@ VL_ATTR_COLD void Vsc_axis_core___024root___stl_sequent__TOP__0(Vsc_axis_core___
         vlSelf->sc_axis_core__DOT__u_exec__DOT__vel_d[2U] 
             = vlSelf->sc_axis_core__DOT__u_exec__DOT__vel_q[2U];
         if (vlSelf->sc_axis_core__DOT__start_ok) {
+            vlSelf->sc_axis_core__DOT__u_exec__DOT__finished_d = 0U;
             if ((1U & (~ (IData)(vlSelf->sc_axis_core__DOT__u_exec__DOT__load)))) {
                 vlSelf->sc_axis_core__DOT__u_exec__DOT__phase_d = 0xaU;
             }
-            vlSelf->sc_axis_core__DOT__u_exec__DOT__finished_d = 0U;
         }
         vlSelf->sc_axis_core__DOT__u_exec__DOT__acc_d 
             = vlSelf->sc_axis_core__DOT__u_exec__DOT__acc_q;
     }
     if (vlSelf->sc_axis_core__DOT__u_exec__DOT__load) {
-        if ((0U != ((vlSelf->sc_axis_core__DOT__u_exec__DOT__load_seg[7U] 
-                     << 0x1fU) | (vlSelf->sc_axis_core__DOT__u_exec__DOT__load_seg[6U] 
-                                  >> 1U)))) {
+        if ((0U != vlSelf->sc_axis_core__DOT__u_exec__DOT__ld_clocks)) {
             vlSelf->sc_axis_core__DOT__u_exec__DOT__idx_d 
                 = vlSelf->sc_axis_core__DOT__u_exec__DOT__load_idx;
             vlSelf->sc_axis_core__DOT__u_exec__DOT__left_d 
-                = ((vlSelf->sc_axis_core__DOT__u_exec__DOT__load_seg[7U] 
-                    << 0x1fU) | (vlSelf->sc_axis_core__DOT__u_exec__DOT__load_seg[6U] 
-                                 >> 1U));
+                = vlSelf->sc_axis_core__DOT__u_exec__DOT__ld_clocks;
         }
-        if ((0U == ((vlSelf->sc_axis_core__DOT__u_exec__DOT__load_seg[7U] 
-                     << 0x1fU) | (vlSelf->sc_axis_core__DOT__u_exec__DOT__load_seg[6U] 
-                                  >> 1U)))) {
+        if ((0U == vlSelf->sc_axis_core__DOT__u_exec__DOT__ld_clocks)) {
             vlSelf->sc_axis_core__DOT__u_exec__DOT__fault_d = 1U;
             vlSelf->sc_axis_core__DOT__u_exec__DOT__phase_d = 0xaU;
             vlSelf->sc_axis_core__DOT__u_exec__DOT__jerk_d = 0ULL;
@@ -472,35 +445,26 @@ VL_ATTR_COLD void Vsc_axis_core___024root___stl_sequent__TOP__0(Vsc_axis_core___
             vlSelf->sc_axis_core__DOT__u_exec__DOT__acc_d = 0ULL;
         } else {
             vlSelf->sc_axis_core__DOT__u_exec__DOT__phase_d 
-                = (0xfU & (vlSelf->sc_axis_core__DOT__u_exec__DOT__load_seg[7U] 
-                           >> 1U));
+                = vlSelf->sc_axis_core__DOT__u_exec__DOT__mem_phase_q
+                [vlSelf->sc_axis_core__DOT__u_exec__DOT__load_idx];
             vlSelf->sc_axis_core__DOT__u_exec__DOT__jerk_d 
-                = (0xffffffffffffULL & (((QData)((IData)(
-                                                         vlSelf->sc_axis_core__DOT__u_exec__DOT__load_seg[6U])) 
-                                         << 0x2fU) 
-                                        | (((QData)((IData)(
-                                                            vlSelf->sc_axis_core__DOT__u_exec__DOT__load_seg[5U])) 
-                                            << 0xfU) 
-                                           | ((QData)((IData)(
-                                                              vlSelf->sc_axis_core__DOT__u_exec__DOT__load_seg[4U])) 
-                                              >> 0x11U))));
+                = vlSelf->sc_axis_core__DOT__u_exec__DOT__mem_jerk_q
+                [vlSelf->sc_axis_core__DOT__u_exec__DOT__load_idx];
             vlSelf->sc_axis_core__DOT__u_exec__DOT__vel_d[0U] 
-                = vlSelf->sc_axis_core__DOT__u_exec__DOT__load_seg[0U];
+                = vlSelf->sc_axis_core__DOT__u_exec__DOT__mem_vel0_q
+                [vlSelf->sc_axis_core__DOT__u_exec__DOT__load_idx][0U];
             vlSelf->sc_axis_core__DOT__u_exec__DOT__vel_d[1U] 
-                = vlSelf->sc_axis_core__DOT__u_exec__DOT__load_seg[1U];
+                = vlSelf->sc_axis_core__DOT__u_exec__DOT__mem_vel0_q
+                [vlSelf->sc_axis_core__DOT__u_exec__DOT__load_idx][1U];
             vlSelf->sc_axis_core__DOT__u_exec__DOT__vel_d[2U] 
-                = (0x1ffffU & vlSelf->sc_axis_core__DOT__u_exec__DOT__load_seg[2U]);
+                = vlSelf->sc_axis_core__DOT__u_exec__DOT__mem_vel0_q
+                [vlSelf->sc_axis_core__DOT__u_exec__DOT__load_idx][2U];
             vlSelf->sc_axis_core__DOT__u_exec__DOT__acc_d 
-                = (((QData)((IData)(vlSelf->sc_axis_core__DOT__u_exec__DOT__load_seg[4U])) 
-                    << 0x2fU) | (((QData)((IData)(vlSelf->sc_axis_core__DOT__u_exec__DOT__load_seg[3U])) 
-                                  << 0xfU) | ((QData)((IData)(
-                                                              vlSelf->sc_axis_core__DOT__u_exec__DOT__load_seg[2U])) 
-                                              >> 0x11U)));
+                = vlSelf->sc_axis_core__DOT__u_exec__DOT__mem_acc0_q
+                [vlSelf->sc_axis_core__DOT__u_exec__DOT__load_idx];
         }
         vlSelf->sc_axis_core__DOT__u_exec__DOT__run_d 
-            = (0U != ((vlSelf->sc_axis_core__DOT__u_exec__DOT__load_seg[7U] 
-                       << 0x1fU) | (vlSelf->sc_axis_core__DOT__u_exec__DOT__load_seg[6U] 
-                                    >> 1U)));
+            = (0U != vlSelf->sc_axis_core__DOT__u_exec__DOT__ld_clocks);
     }
 }
 
@@ -560,7 +524,11 @@ VL_ATTR_COLD void Vsc_axis_core___024root___ctor_var_reset(Vsc_axis_core___024ro
     vlSelf->cfg_hold_i = 0;
     vlSelf->seg_we_i = 0;
     vlSelf->seg_waddr_i = 0;
-    VL_ZERO_RESET_W(229, vlSelf->seg_wdata_i);
+    vlSelf->seg_phase_i = 0;
+    vlSelf->seg_clocks_i = 0;
+    vlSelf->seg_jerk_i = 0;
+    vlSelf->seg_acc0_i = 0;
+    VL_ZERO_RESET_W(81, vlSelf->seg_vel0_i);
     vlSelf->seg_count_i = 0;
     VL_ZERO_RESET_W(80, vlSelf->pos_frac0_i);
     vlSelf->start_i = 0;
@@ -592,7 +560,19 @@ VL_ATTR_COLD void Vsc_axis_core___024root___ctor_var_reset(Vsc_axis_core___024ro
     vlSelf->sc_axis_core__DOT__seg_count_q = 0;
     VL_ZERO_RESET_W(80, vlSelf->sc_axis_core__DOT__pos_frac0_q);
     for (int __Vi0 = 0; __Vi0 < 16; ++__Vi0) {
-        VL_ZERO_RESET_W(229, vlSelf->sc_axis_core__DOT__u_exec__DOT__seg_mem_q[__Vi0]);
+        vlSelf->sc_axis_core__DOT__u_exec__DOT__mem_phase_q[__Vi0] = 0;
+    }
+    for (int __Vi0 = 0; __Vi0 < 16; ++__Vi0) {
+        vlSelf->sc_axis_core__DOT__u_exec__DOT__mem_clocks_q[__Vi0] = 0;
+    }
+    for (int __Vi0 = 0; __Vi0 < 16; ++__Vi0) {
+        vlSelf->sc_axis_core__DOT__u_exec__DOT__mem_jerk_q[__Vi0] = 0;
+    }
+    for (int __Vi0 = 0; __Vi0 < 16; ++__Vi0) {
+        vlSelf->sc_axis_core__DOT__u_exec__DOT__mem_acc0_q[__Vi0] = 0;
+    }
+    for (int __Vi0 = 0; __Vi0 < 16; ++__Vi0) {
+        VL_ZERO_RESET_W(81, vlSelf->sc_axis_core__DOT__u_exec__DOT__mem_vel0_q[__Vi0]);
     }
     vlSelf->sc_axis_core__DOT__u_exec__DOT__run_q = 0;
     vlSelf->sc_axis_core__DOT__u_exec__DOT__run_d = 0;
@@ -625,7 +605,7 @@ VL_ATTR_COLD void Vsc_axis_core___024root___ctor_var_reset(Vsc_axis_core___024ro
     VL_ZERO_RESET_W(82, vlSelf->sc_axis_core__DOT__u_exec__DOT__pos_sum);
     vlSelf->sc_axis_core__DOT__u_exec__DOT__load = 0;
     vlSelf->sc_axis_core__DOT__u_exec__DOT__load_idx = 0;
-    VL_ZERO_RESET_W(229, vlSelf->sc_axis_core__DOT__u_exec__DOT__load_seg);
+    vlSelf->sc_axis_core__DOT__u_exec__DOT__ld_clocks = 0;
     vlSelf->sc_axis_core__DOT__u_step_gen__DOT__step_q = 0;
     vlSelf->sc_axis_core__DOT__u_step_gen__DOT__step_d = 0;
     vlSelf->sc_axis_core__DOT__u_step_gen__DOT__dir_q = 0;

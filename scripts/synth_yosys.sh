@@ -1,0 +1,40 @@
+#!/usr/bin/env bash
+# 7-series synthesis check with yosys: synth_xilinx -family xc7 of a top
+# module; fails on any error or latch; writes a utilization report.
+#   scripts/synth_yosys.sh [top] [outdir]      (default: sc_axis_core build/synth)
+set -euo pipefail
+here=$(cd "$(dirname "$0")/.." && pwd)
+top=${1:-sc_axis_core}
+out=${2:-$here/build/synth}
+mkdir -p "$out"
+srcs=$(ls "$here"/rtl/sc_pkg.sv; ls "$here"/rtl/*.sv | grep -v '/sc_pkg.sv$')
+log="$out/$top.yosys.log"
+# read_verilog -sv (not the slang/surelog front ends): yosys 0.23 needs the
+# package first.
+yosys -q -l "$log" -p "
+  read_verilog -sv $(echo $srcs | tr '\n' ' ');
+  hierarchy -check -top $top;
+  proc;
+  select -assert-none t:\$dlatch t:\$adlatch t:\$dlatchsr;
+  synth_xilinx -family xc7 -top $top;
+  select -assert-none t:LD* t:LDC* t:LDP*;
+  tee -o $out/$top.stat.txt stat;
+  write_verilog -noattr $out/$top.netlist.v;
+" >/dev/null
+# Logic depth: longest combinational path in LUT6 levels on a generic
+# flattened mapping (carry chains count as LUT levels, so it is an upper bound).
+yosys -q -l "$out/$top.depth.log" -p "
+  read_verilog -sv $(echo $srcs | tr '\n' ' ');
+  synth -flatten -top $top;
+  abc -lut 6;
+  opt_clean;
+  tee -o $out/$top.depth.txt ltp -noff;
+" >/dev/null 2>&1
+cell() { awk -v c="$1" '$1==c {s+=$2} END {print s+0}' "$out/$top.stat.txt"; }
+luts=0; for l in LUT1 LUT2 LUT3 LUT4 LUT5 LUT6; do luts=$((luts + $(cell $l))); done
+ffs=0; for f in FDRE FDSE FDCE FDPE; do ffs=$((ffs + $(cell $f))); done
+lutram=0; for r in RAM32M RAM64M RAM32X1D RAM64X1D RAM128X1D RAM16X1D RAM32M16 RAM64X1S RAM32X1S; do lutram=$((lutram + $(cell $r))); done
+carry=$(cell CARRY4); dsp=$(cell DSP48E1); bram=$(( $(cell RAMB18E1) + $(cell RAMB36E1) ))
+depth=$(grep -o 'length=[0-9]*' "$out/$top.depth.txt" | head -1 | cut -d= -f2)
+printf '{"top":"%s","lut":%d,"ff":%d,"carry4":%d,"dsp48e1":%d,"bram":%d,"lutram":%d,"logic_depth":%s}\n' \
+  "$top" "$luts" "$ffs" "$carry" "$dsp" "$bram" "$lutram" "${depth:-0}" | tee "$out/$top.util.json"
