@@ -1,3 +1,0 @@
-file(REMOVE_RECURSE
-  "libsc_model.a"
-)
