@@ -22,6 +22,8 @@ void AxisCore::step(const CoreInputs& in) {
   si.clear = start_ok;
   si.step_req = e.step_req;
   si.step_fwd = e.step_fwd;
+  si.dir_hint_valid = e.run && e.vel != 0;
+  si.dir_hint = e.vel >= 0;
   ProfileExec::Inputs ei;
   ei.seg_we = in.seg_we;
   ei.seg_waddr = in.seg_waddr;
@@ -72,12 +74,14 @@ CoreOutputs AxisCore::outputs() const {
 
 void AxisCore::fast_forward(const CoreInputs& in, uint64_t n) {
   while (n > 0) {
-    if (sg_.idle() && !exec_.state().step_req && inputs_settled(in)) {
+    const ProfileExec::State& e = exec_.state();
+    const bool dir_settled = !(e.run && e.vel != 0) || (e.vel >= 0) == sg_.state().dir;
+    if (sg_.idle() && dir_settled && !e.step_req && inputs_settled(in)) {
       uint64_t ev = exec_.clocks_to_next_event();
       if (ev == 0 && !exec_.state().run) ev = UINT64_MAX;  // idle: only counters move
       if (ev > 1) {
         const uint64_t k = std::min<uint64_t>(ev - 1, n);
-        if (exec_.state().run) exec_.jump(k);
+        if (exec_.state().run) exec_.advance(k);
         sg_.jump_idle(k);
         n -= k;
         if (n == 0) break;

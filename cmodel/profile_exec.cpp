@@ -153,25 +153,32 @@ uint64_t ProfileExec::clocks_to_next_event() const {
   return hi;
 }
 
-void ProfileExec::jump(uint64_t k) {
+uint64_t ProfileExec::closed_form_span() const { return jump_safe() ? q_.left - 1 : 0; }
+
+void ProfileExec::advance(uint64_t k) {
   if (k == 0) return;
+  const i128 one = i128(kOne);
+  auto floor_div = [one](i128 x) { return x >= 0 ? x / one : -((-x + one - 1) / one); };
   const i128 p = i128(q_.frac) + pos_gain(q_.vel, q_.acc, q_.jerk, k);
-  q_.frac = u128(p);
+  const i128 p_prev = i128(q_.frac) + pos_gain(q_.vel, q_.acc, q_.jerk, k - 1);
+  const i128 steps = floor_div(p);
+  if (steps != 0) q_.step_fwd = steps > 0;  // velocity keeps one sign here
+  q_.step_req = floor_div(p_prev) != steps;
+  q_.pint = add_wrap32(q_.pint, int32_t(int64_t(steps)));
+  q_.frac = u128(p - steps * one);
   q_.vel = vel_after(q_.vel, q_.acc, q_.jerk, k);
   q_.acc = int64_t(acc_after(q_.acc, q_.jerk, k));
   q_.left -= uint32_t(k);
-  q_.step_req = false;
 }
 
 int64_t ProfileExec::fast_forward(uint64_t n) {
   const Inputs quiet{};
   const int32_t p0 = q_.pint;
   while (n > 0) {
-    const uint64_t ev = clocks_to_next_event();
-    if (ev > 1) {
-      const uint64_t k = std::min<uint64_t>(ev - 1, n);
-      jump(k);
-      n -= k;
+    const uint64_t span = std::min(closed_form_span(), n);
+    if (span > 0) {
+      advance(span);
+      n -= span;
       if (n == 0) break;
     }
     if (!q_.run && !q_.step_req) break;  // idle: nothing changes any more

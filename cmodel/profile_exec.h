@@ -56,11 +56,15 @@ class ProfileExec {
   // (1 = the coming clock), assuming no inputs; 0 if the executor is idle
   // or a closed-form jump is not safe (velocity changes sign, would wrap).
   uint64_t clocks_to_next_event() const;
-  // Advance k quiet clocks that emit no step and do not end a segment
-  // (k < clocks_to_next_event()); bit-exact with k calls of step().
-  void jump(uint64_t k);
-  // Advance up to n quiet clocks (no start/abort/writes) using jump() where
-  // possible; returns net steps emitted. Equal to n calls of step().
+  // Clocks that advance() may cover in closed form: the rest of the current
+  // segment except its last (reload) clock; 0 when not safe.
+  uint64_t closed_form_span() const;
+  // Advance k quiet clocks (k <= closed_form_span()) in closed form,
+  // including the steps they emit; bit-exact with k calls of step().
+  void advance(uint64_t k);
+  // Advance up to n quiet clocks (no start/abort/writes): a whole segment
+  // per advance(), step() for the reload clocks. Returns net steps emitted.
+  // Equal to n calls of step() (stops early once idle).
   int64_t fast_forward(uint64_t n);
 
   const State& state() const { return q_; }

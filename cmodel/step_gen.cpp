@@ -19,7 +19,8 @@ void StepGen::step(const Inputs& in) {
   const bool dir_ok = q_.dir == want_fwd;
   const bool rise = have && dir_ok && !q_.step && q_.low_cnt >= in.cfg.low &&
                     q_.since_dir >= in.cfg.setup;
-  const bool flip = have && !dir_ok && !q_.step && q_.since_rise >= in.cfg.hold;
+  const bool flip = !q_.step && q_.since_rise >= in.cfg.hold &&
+                    (have ? !dir_ok : (in.dir_hint_valid && in.dir_hint != q_.dir));
 
   // Updated in place (every right-hand side below reads a field before it is
   // written): copying the whole State per clock costs a store-forwarding

@@ -22,6 +22,8 @@ class StepGen {
     bool clear = false;
     bool step_req = false;
     bool step_fwd = true;
+    bool dir_hint_valid = false;
+    bool dir_hint = true;  // forward
   };
   struct State {
     bool step = false;
@@ -43,7 +45,8 @@ class StepGen {
   void reset() { q_ = State{}; }
   void step(const Inputs& in);
   bool busy() const { return q_.pend != 0 || q_.step; }
-  // Nothing but saturating counters moves while idle: jump k clocks.
+  // Nothing but saturating counters moves while idle (and DIR already
+  // points where the hint says - the caller checks): jump k clocks.
   bool idle() const { return q_.pend == 0 && !q_.step; }
   void jump_idle(uint64_t k);
 

@@ -106,6 +106,8 @@ module sc_axis_core (
     .clear_i     (start_ok),
     .step_req_i  (exec_step_req),
     .step_fwd_i  (exec_step_fwd),
+    .dir_hint_valid_i (exec_running && ref_vel_o != '0),
+    .dir_hint_i  (!ref_vel_o[sc_pkg::VelW-1]),
     .step_o,
     .dir_o,
     .busy_o      (sg_busy),

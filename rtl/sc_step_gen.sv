@@ -8,6 +8,9 @@
 //   DIR changes only while STEP is low and >= cfg_hold_i clocks after the
 //   last STEP rising edge;
 //   STEP rises >= cfg_setup_i clocks after a DIR change.
+// With no step owed, DIR is pre-positioned to dir_hint_i (the sign of the
+// commanded velocity) so the first step after a reversal or at the start of
+// a move is not delayed by the setup time.
 // A request that would overflow the queue sets overrun_o (sticky until
 // clear_i); the planner's step-rate limit (v <= 1/(high+low)) keeps the
 // queue at <= 1 in open loop.
@@ -23,6 +26,8 @@ module sc_step_gen (
   input  logic                        clear_i,     // zero count_o and overrun_o
   input  logic                        step_req_i,
   input  logic                        step_fwd_i,
+  input  logic                        dir_hint_valid_i,
+  input  logic                        dir_hint_i,   // 1 = forward
 
   output logic                        step_o,
   output logic                        dir_o,       // 1 = forward
@@ -57,7 +62,8 @@ module sc_step_gen (
   assign dir_ok     = dir_q == want_fwd;
   assign rise       = have_steps && dir_ok && !step_q &&
                       low_cnt_q >= cfg_low_i && since_dir_q >= cfg_setup_i;
-  assign flip_dir   = have_steps && !dir_ok && !step_q && since_rise_q >= cfg_hold_i;
+  assign flip_dir   = !step_q && since_rise_q >= cfg_hold_i &&
+                      (have_steps ? !dir_ok : (dir_hint_valid_i && dir_hint_i != dir_q));
 
   function automatic logic [PulseTimeW-1:0] sat_inc(input logic [PulseTimeW-1:0] v);
     sat_inc = (v == CntMax) ? v : v + PulseTimeW'(1);

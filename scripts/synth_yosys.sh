@@ -2,16 +2,23 @@
 # 7-series synthesis check with yosys: synth_xilinx -family xc7 of a top
 # module; fails on any error or latch; writes a utilization report.
 #   scripts/synth_yosys.sh [top] [outdir]      (default: sc_axis_core build/synth)
+# Area budget (fails when over): SC_LUT_BUDGET / SC_DSP_BUDGET in the
+# environment; sc_axis_core defaults to 3000 LUT and 8 DSP48E1 (issue 5).
+# Sources: the files the top instantiates (scripts/rtl_deps.py), so a
+# half-written module elsewhere in rtl/ does not break this check.
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
 top=${1:-sc_axis_core}
 out=${2:-$here/build/synth}
 mkdir -p "$out"
-srcs=$(ls "$here"/rtl/sc_pkg.sv; ls "$here"/rtl/*.sv | grep -v '/sc_pkg.sv$')
+srcs=$(python3 "$here/scripts/rtl_deps.py" "$here/rtl" "$top")
+# Xilinx primitives instantiated by the RTL (MMCME2_BASE, BUFG) as black boxes
+xlib="read_verilog -lib -specify +/xilinx/cells_sim.v; read_verilog -lib +/xilinx/cells_xtra.v;"
 log="$out/$top.yosys.log"
 # read_verilog -sv (not the slang/surelog front ends): yosys 0.23 needs the
 # package first.
 yosys -q -l "$log" -p "
+  $xlib
   read_verilog -sv $(echo $srcs | tr '\n' ' ');
   hierarchy -check -top $top;
   proc;
@@ -24,6 +31,7 @@ yosys -q -l "$log" -p "
 # Logic depth: longest combinational path in LUT6 levels on a generic
 # flattened mapping (carry chains count as LUT levels, so it is an upper bound).
 yosys -q -l "$out/$top.depth.log" -p "
+  $xlib
   read_verilog -sv $(echo $srcs | tr '\n' ' ');
   synth -flatten -top $top;
   abc -lut 6;
@@ -38,3 +46,12 @@ carry=$(cell CARRY4); dsp=$(cell DSP48E1); bram=$(( $(cell RAMB18E1) + $(cell RA
 depth=$(grep -o 'length=[0-9]*' "$out/$top.depth.txt" | head -1 | cut -d= -f2)
 printf '{"top":"%s","lut":%d,"ff":%d,"carry4":%d,"dsp48e1":%d,"bram":%d,"lutram":%d,"logic_depth":%s}\n' \
   "$top" "$luts" "$ffs" "$carry" "$dsp" "$bram" "$lutram" "${depth:-0}" | tee "$out/$top.util.json"
+# ---- area budget ---------------------------------------------------------------
+lut_budget=${SC_LUT_BUDGET:-}; dsp_budget=${SC_DSP_BUDGET:-}
+if [ "$top" = sc_axis_core ]; then lut_budget=${lut_budget:-3000}; dsp_budget=${dsp_budget:-8}; fi
+if [ -n "$lut_budget" ] && [ "$luts" -gt "$lut_budget" ]; then
+  echo "synth_yosys: $top uses $luts LUT > budget $lut_budget" >&2; exit 1
+fi
+if [ -n "$dsp_budget" ] && [ "$dsp" -gt "$dsp_budget" ]; then
+  echo "synth_yosys: $top uses $dsp DSP48E1 > budget $dsp_budget" >&2; exit 1
+fi

@@ -31,7 +31,17 @@ struct MoveFlags {
   int pulse_high = PulseTiming{}.high, pulse_low = PulseTiming{}.low;
   int dir_setup = PulseTiming{}.setup, dir_hold = PulseTiming{}.hold;
   bool json = false;
+  std::string json_out;
 };
+
+bool write_json_file(const std::string& path, const nlohmann::json& j) {
+  if (path.empty()) return true;
+  std::FILE* f = std::fopen(path.c_str(), "w");
+  if (!f) return false;
+  const std::string s = j.dump(2) + "\n";
+  const bool ok = std::fwrite(s.data(), 1, s.size(), f) == s.size();
+  return std::fclose(f) == 0 && ok;
+}
 
 void add_move_flags(CLI::App* app, MoveFlags& f, std::vector<CLI::Option*>& move_opts) {
   move_opts.push_back(app->add_option("--distance", f.distance, "move length in pulses (sign = direction)"));
@@ -52,6 +62,7 @@ void add_move_flags(CLI::App* app, MoveFlags& f, std::vector<CLI::Option*>& move
   app->add_option("--dir-setup", f.dir_setup, "DIR setup before STEP rise, clocks")->check(CLI::Range(0, 65535));
   app->add_option("--dir-hold", f.dir_hold, "DIR hold after STEP rise, clocks")->check(CLI::Range(0, 65535));
   app->add_flag("--json", f.json, "print one JSON object");
+  app->add_option("--json-out", f.json_out, "also write the JSON object to this file");
 }
 
 MoveRequest to_request(const MoveFlags& f) {
@@ -161,11 +172,13 @@ int main(int argc, char** argv) {
     const PlanResult r = plan_move(req, to_timing(pf));
     if (const auto* e = std::get_if<PlanError>(&r)) return bad_input(e->message);
     const Plan& p = std::get<Plan>(r);
+    const nlohmann::json j = plan_to_json(p);
     if (pf.json) {
-      std::cout << plan_to_json(p).dump(2) << "\n";
+      std::cout << j.dump(2) << "\n";
     } else {
       std::cout << plan_to_table(p);
     }
+    if (!write_json_file(pf.json_out, j)) return bad_input("--json-out: cannot write " + pf.json_out);
     return 0;
   }
 
@@ -219,18 +232,19 @@ int main(int argc, char** argv) {
 
   bool pass = true;
   for (const SimResult& r : results) pass = pass && r.pass();
+  nlohmann::json out;
+  if (results.size() == 1) {
+    out = sim_to_json(results[0]);
+  } else {
+    out["runs"] = nlohmann::json::array();
+    for (const SimResult& r : results) out["runs"].push_back(sim_to_json(r));
+    out["pass"] = pass;
+  }
   if (sf.json) {
-    nlohmann::json out;
-    if (results.size() == 1) {
-      out = sim_to_json(results[0]);
-    } else {
-      out["runs"] = nlohmann::json::array();
-      for (const SimResult& r : results) out["runs"].push_back(sim_to_json(r));
-      out["pass"] = pass;
-    }
     std::cout << out.dump(2) << "\n";
   } else {
     std::cout << sim_table(results);
   }
+  if (!write_json_file(sf.json_out, out)) return bad_input("--json-out: cannot write " + sf.json_out);
   return pass ? 0 : 1;
 }

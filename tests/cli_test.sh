@@ -1,0 +1,49 @@
+#!/usr/bin/env bash
+# CLI contract: JSON fields, exit code 2 with one stderr line naming the
+# parameter on bad input, a passing lockstep sim of a short move.
+set -euo pipefail
+scurve=$1
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+fail() { echo "FAIL: $*" >&2; exit 1; }
+
+"$scurve" plan --distance 30000 --v-start 1500 --v-cruise 3000 --v-end 0 --a-max 500 --j-max 2500 --json > "$tmp/plan.json"
+python3 - "$tmp/plan.json" <<'PY'
+import json, sys
+p = json.load(open(sys.argv[1]))
+for k in ("duration_s", "pulses", "peak_velocity", "peak_acceleration", "peak_jerk", "segments"):
+    assert k in p, k
+assert p["pulses"] == 30000
+assert len(p["segments"]) == 7, len(p["segments"])
+assert abs(p["peak_velocity"] - 3000) < 1e-3 and p["peak_acceleration"] <= 500 and p["peak_jerk"] <= 2500
+PY
+
+check_bad() {  # expected-parameter, args...
+  local param=$1; shift
+  set +e
+  "$scurve" "$@" > "$tmp/out" 2> "$tmp/err"
+  local rc=$?
+  set -e
+  [ "$rc" -eq 2 ] || fail "$* -> exit $rc, want 2"
+  [ "$(wc -l < "$tmp/err")" -eq 1 ] || fail "$* -> stderr is not one line: $(cat "$tmp/err")"
+  grep -q -- "$param" "$tmp/err" || fail "$* -> stderr does not name $param: $(cat "$tmp/err")"
+}
+check_bad distance plan --distance 0 --v-cruise 100 --a-max 500 --j-max 2500
+check_bad v_cruise plan --distance 100 --v-cruise 1e6 --a-max 500 --j-max 2500
+check_bad v_end plan --distance 5000 --v-cruise 3000 --v-end 3000 --a-max 500 --j-max 2500
+check_bad a_max sim --distance 100 --v-cruise 100 --a-max -5 --j-max 2500
+check_bad distance plan --distance abc --v-cruise 100 --a-max 500 --j-max 2500
+check_bad group sim --group 7
+
+out=$("$scurve" sim --distance 300 --v-cruise 20000 --a-max 200000 --j-max 2e7)
+echo "$out" | grep -q PASS || fail "short sim did not pass: $out"
+"$scurve" sim --distance -300 --v-cruise 20000 --a-max 200000 --j-max 2e7 --json > "$tmp/sim.json"
+python3 - "$tmp/sim.json" <<'PY'
+import json, sys
+r = json.load(open(sys.argv[1]))
+for k in ("clocks", "pulses", "duration_s", "final_error", "peak_velocity", "peak_acceleration",
+          "peak_jerk", "mismatches", "wall_s", "clocks_per_s", "pass"):
+    assert k in r, k
+assert r["pulses"] == -300 and r["final_error"] == 0 and r["mismatches"] == 0 and r["pass"]
+PY
+echo "cli ok"
