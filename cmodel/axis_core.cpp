@@ -72,6 +72,36 @@ CoreOutputs AxisCore::outputs() const {
   return o;
 }
 
+void AxisCore::tick() {
+  const ProfileExec::State& e = exec_.state();
+  const bool start_ok = in_q_.start && !busy() && in_q_.enable;
+  StepGen::Inputs si;
+  si.cfg = in_q_.cfg;
+  si.clear = start_ok;
+  si.step_req = e.step_req;
+  si.step_fwd = e.step_fwd;
+  si.dir_hint_valid = e.run && e.vel != 0;
+  si.dir_hint = e.vel >= 0;
+  ProfileExec::Inputs& ei = held_exec_in_;
+  ei.seg_count = in_q_.seg_count;
+  ei.pos_frac0 = in_q_.pos_frac0;
+  ei.start = start_ok;
+  ei.abort = in_q_.abort;
+  sg_.step(si);
+  exec_.step(ei);
+}
+
+bool AxisCore::outputs_equal(const CoreOutputs& o) const {
+  const ProfileExec::State& e = exec_.state();
+  const StepGen::State& s = sg_.state();
+  const bool is_done = done();
+  return o.step == s.step && o.dir == s.dir && o.pulse_count == s.count && o.ref_pos_int == e.pint &&
+         o.ref_pos_frac == e.frac && o.ref_vel == e.vel && o.ref_acc == e.acc && o.ref_jerk == e.jerk &&
+         o.done == is_done && o.busy == busy() && o.en == in_q_.enable &&
+         o.phase == (is_done ? uint8_t(Phase::PhDone) : uint8_t(e.phase)) && o.fault_table == e.fault &&
+         o.fault_overrun == s.overrun && o.seg_idx == e.idx && o.step_pending == s.pend;
+}
+
 void AxisCore::fast_forward(const CoreInputs& in, uint64_t n) {
   while (n > 0) {
     const ProfileExec::State& e = exec_.state();

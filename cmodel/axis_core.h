@@ -48,6 +48,11 @@ class AxisCore {
   void reset();
   void step(const CoreInputs& in);
   CoreOutputs outputs() const;
+  // outputs() == o, without building the struct (the lockstep hot path).
+  bool outputs_equal(const CoreOutputs& o) const;
+  // One clock holding the inputs of the previous step(), which must not have
+  // written the table: the same as step(previous inputs), cheaper.
+  void tick();
 
   bool busy() const;
   bool done() const { return exec_.state().finished && !busy(); }
@@ -78,6 +83,7 @@ class AxisCore {
   ProfileExec exec_;
   StepGen sg_;
   InputRegs in_q_;
+  ProfileExec::Inputs held_exec_in_{};  // reused by tick(): no per-clock construction
 };
 
 }  // namespace sc

@@ -42,6 +42,17 @@ RtlCore::RtlCore() : ctx_(std::make_unique<VerilatedContext>()) {
   m_ = std::make_unique<Vsc_axis_core>(ctx_.get(), "sc_axis_core");
   m_->clk_i = 0;
   m_->rst_ni = 0;
+  // Drive every input once so last_ mirrors the ports.
+  m_->enable_i = last_.enable;
+  m_->cfg_high_i = last_.cfg.high;
+  m_->cfg_low_i = last_.cfg.low;
+  m_->cfg_setup_i = last_.cfg.setup;
+  m_->cfg_hold_i = last_.cfg.hold;
+  m_->seg_we_i = 0;
+  m_->seg_count_i = 0;
+  put_bits(m_->pos_frac0_i, 0, FracBits, 0);
+  m_->start_i = 0;
+  m_->abort_i = 0;
   m_->eval();
 }
 
@@ -70,12 +81,16 @@ void RtlCore::reset(int cycles) {
 }
 
 void RtlCore::step(const CoreInputs& in) {
-  m_->enable_i = in.enable;
-  m_->cfg_high_i = in.cfg.high;
-  m_->cfg_low_i = in.cfg.low;
-  m_->cfg_setup_i = in.cfg.setup;
-  m_->cfg_hold_i = in.cfg.hold;
-  m_->seg_we_i = in.seg_we;
+  // Inputs are written only when they change (cheaper, and no store right
+  // before eval() to bytes the model then loads with a wider access).
+  if (in.enable != last_.enable) m_->enable_i = in.enable;
+  if (!(in.cfg == last_.cfg)) {
+    m_->cfg_high_i = in.cfg.high;
+    m_->cfg_low_i = in.cfg.low;
+    m_->cfg_setup_i = in.cfg.setup;
+    m_->cfg_hold_i = in.cfg.hold;
+  }
+  if (in.seg_we != last_.seg_we) m_->seg_we_i = in.seg_we;
   if (in.seg_we) {
     m_->seg_waddr_i = in.seg_waddr;
     const Segment& s = in.seg_wdata;
@@ -85,20 +100,28 @@ void RtlCore::step(const CoreInputs& in) {
     m_->seg_acc0_i = uint64_t(s.acc0);
     put_bits(m_->seg_vel0_i, 0, VelW, u128(s.vel0));
   }
-  m_->seg_count_i = in.seg_count;
-  if (in.pos_frac0 != pos_frac0_) {
-    pos_frac0_ = in.pos_frac0;
-    put_bits(m_->pos_frac0_i, 0, FracBits, in.pos_frac0);
-  }
-  m_->start_i = in.start;
-  m_->abort_i = in.abort;
-  eval_edge(1);
-  eval_edge(0);
-  ++clock_;
+  if (in.seg_count != last_.seg_count) m_->seg_count_i = in.seg_count;
+  if (in.pos_frac0 != last_.pos_frac0) put_bits(m_->pos_frac0_i, 0, FracBits, in.pos_frac0);
+  if (in.start != last_.start) m_->start_i = in.start;
+  if (in.abort != last_.abort) m_->abort_i = in.abort;
+  last_.enable = in.enable;
+  last_.cfg = in.cfg;
+  last_.seg_we = in.seg_we;
+  last_.seg_count = in.seg_count;
+  last_.pos_frac0 = in.pos_frac0;
+  last_.start = in.start;
+  last_.abort = in.abort;
+  tick();
 }
 
 CoreOutputs RtlCore::outputs() const {
   CoreOutputs o;
+  read_outputs(o);
+  return o;
+}
+
+void RtlCore::read_outputs(CoreOutputs& o) const {
+  static_assert(FracBits > 64 && FracBits <= 96 && VelW > 64 && VelW <= 96, "3-word wide ports");
   o.step = m_->step_o;
   o.dir = m_->dir_o;
   o.en = m_->en_o;
@@ -109,13 +132,17 @@ CoreOutputs RtlCore::outputs() const {
   o.fault_overrun = m_->fault_overrun_o;
   o.pulse_count = int32_t(m_->pulse_count_o);
   o.ref_pos_int = int32_t(m_->ref_pos_int_o);
-  o.ref_pos_frac = get_u128(m_->ref_pos_frac_o, 3);
-  o.ref_vel = wrap_signed(i128(get_u128(m_->ref_vel_o, 3)), VelW);
-  o.ref_acc = wrap_signed64(int64_t(m_->ref_acc_o), AccW);
-  o.ref_jerk = wrap_signed64(int64_t(m_->ref_jerk_o), JerkW);
+  const auto& f = m_->ref_pos_frac_o;
+  o.ref_pos_frac = (u128(f[2]) << 64) | (uint64_t(f[1]) << 32) | f[0];
+  const auto& v = m_->ref_vel_o;
+  // Sign-extend bit VelW-1 of the top word (bits 64..VelW-1).
+  const int64_t v_hi = int64_t(uint64_t(v[2]) << (128 - VelW)) >> (128 - VelW);
+  o.ref_vel = i128((u128(uint64_t(v_hi)) << 64) | (uint64_t(v[1]) << 32) | v[0]);
+  o.ref_acc = int64_t(m_->ref_acc_o);
+  static_assert(AccW == 64, "ref_acc_o needs no sign extension");
+  o.ref_jerk = int64_t(uint64_t(m_->ref_jerk_o) << (64 - JerkW)) >> (64 - JerkW);
   o.seg_idx = m_->seg_idx_o;
-  o.step_pending = int8_t(wrap_signed64(m_->step_pending_o, PendW));
-  return o;
+  o.step_pending = int8_t(uint8_t(m_->step_pending_o << (8 - PendW))) >> (8 - PendW);
 }
 
 bool RtlCore::trace_supported() const { return VM_TRACE_FST != 0; }

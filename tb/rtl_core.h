@@ -25,6 +25,13 @@ class RtlCore {
   // One clock: apply inputs, rising edge, falling edge.
   void step(const CoreInputs& in);
   CoreOutputs outputs() const;
+  void read_outputs(CoreOutputs& o) const;  // fill in place (per-clock path)
+  // One clock with the inputs of the previous step() held.
+  void tick() {
+    eval_edge(1);
+    eval_edge(0);
+    ++clock_;
+  }
 
   // FST waveform (needs the tracing build); dumps clocks in [from, to).
   bool trace_supported() const;
@@ -37,7 +44,7 @@ class RtlCore {
   std::unique_ptr<Vsc_axis_core> m_;
   std::unique_ptr<VerilatedFstC> fst_;
   uint64_t clock_ = 0;
-  u128 pos_frac0_ = 0;  // last value driven on pos_frac0_i
+  CoreInputs last_{};  // what the ports are driven with (seg data aside)
   uint64_t trace_from_ = 0, trace_to_ = 0;
 };
 

@@ -35,35 +35,41 @@ namespace {
 // Peak tracking on the reference outputs, every clock: register values and
 // per-clock differences (so a jump at a row boundary is seen as accel/jerk).
 struct PeakTracker {
-  i128 v = 0;
-  i128 a = 0;
-  i128 j = 0;
+  // Register extremes every clock; the per-clock differences inside a row
+  // are the acc/jerk registers themselves (the recurrence, lockstep-checked),
+  // so differences are only taken where a row is reloaded.
+  i128 v_max = 0, v_min = 0;
+  int64_t a_max = 0, a_min = 0, j_max = 0, j_min = 0;
+  i128 jump_a = 0, jump_j = 0;  // largest |dv|, |da| across a reload
   i128 prev_vel = 0;
   int64_t prev_acc = 0;
+  uint8_t prev_idx = 0;
   bool have_prev = false;
   void on_clock(const CoreOutputs& o, bool moving) {
     if (!moving) {
       have_prev = false;
       return;
     }
-    const i128 av = o.ref_vel < 0 ? -o.ref_vel : o.ref_vel;
-    if (av > v) v = av;
-    const i128 aa = o.ref_acc < 0 ? -i128(o.ref_acc) : i128(o.ref_acc);
-    if (aa > a) a = aa;
-    const i128 aj = o.ref_jerk < 0 ? -i128(o.ref_jerk) : i128(o.ref_jerk);
-    if (aj > j) j = aj;
-    if (have_prev) {
-      i128 dv = o.ref_vel - prev_vel;
-      dv = dv < 0 ? -dv : dv;
-      if (dv > a) a = dv;
-      i128 da = i128(o.ref_acc) - prev_acc;
-      da = da < 0 ? -da : da;
-      if (da > j) j = da;
+    if (o.ref_vel > v_max) v_max = o.ref_vel;
+    if (o.ref_vel < v_min) v_min = o.ref_vel;
+    if (o.ref_acc > a_max) a_max = o.ref_acc;
+    if (o.ref_acc < a_min) a_min = o.ref_acc;
+    if (o.ref_jerk > j_max) j_max = o.ref_jerk;
+    if (o.ref_jerk < j_min) j_min = o.ref_jerk;
+    if (have_prev && o.seg_idx != prev_idx) [[unlikely]] {
+      const i128 dv = o.ref_vel - prev_vel;
+      const i128 da = i128(o.ref_acc) - prev_acc;
+      jump_a = std::max(jump_a, dv < 0 ? -dv : dv);
+      jump_j = std::max(jump_j, da < 0 ? -da : da);
     }
     prev_vel = o.ref_vel;
     prev_acc = o.ref_acc;
+    prev_idx = o.seg_idx;
     have_prev = true;
   }
+  i128 v() const { return std::max(v_max, -v_min); }
+  i128 a() const { return std::max({i128(a_max), -i128(a_min), jump_a}); }
+  i128 j() const { return std::max({i128(j_max), -i128(j_min), jump_j}); }
 };
 
 }  // namespace
@@ -96,14 +102,28 @@ SimResult run_move(const Plan& plan, const PulseTiming& timing, const Limits4Che
   bool stopped = false;
   CoreOutputs out;
 
-  auto tick = [&](const CoreInputs& ci) {
-    if (rtl) rtl->step(ci);
-    if (use_model) model.step(ci);
-    out = rtl ? rtl->outputs() : model.outputs();
-    if (opt.engine == SimEngine::Lockstep && !checker.compare(clock, out, model.outputs())) {
-      if (checker.should_stop()) stopped = true;
+  const bool lockstep = opt.engine == SimEngine::Lockstep;
+  const CoreOutputs* cur = &out;
+  // held: `ci` equals the previous clock's inputs and writes no table row,
+  // so both sides can take the cheaper hold-the-inputs path.
+  auto tick = [&](const CoreInputs& ci, bool held = false) {
+    if (held) {
+      if (rtl) rtl->tick();
+      if (use_model) model.tick();
+    } else {
+      if (rtl) rtl->step(ci);
+      if (use_model) model.step(ci);
     }
-    pins.on_clock(clock, out);
+    if (lockstep) {
+      CoreOutputs& o = checker.slot(clock);
+      rtl->read_outputs(o);
+      if (!checker.check(clock, model) && checker.should_stop()) stopped = true;
+      cur = &o;
+    } else {
+      if (rtl) rtl->read_outputs(out); else out = model.outputs();
+      cur = &out;
+    }
+    pins.on_clock(clock, *cur);
     ++clock;
   };
 
@@ -142,22 +162,26 @@ SimResult run_move(const Plan& plan, const PulseTiming& timing, const Limits4Che
         model.fast_forward(in, n);
         clock += n;
         out = model.outputs();
+        cur = &out;
         pins.on_clock(clock - 1, out);
         peaks.have_prev = false;
         peaks.on_clock(out, out.busy && !out.done);
       } else {
         tick(in);
+        out = *cur;
         peaks.on_clock(out, out.busy && !out.done);
       }
     }
   } else {
     const double expected = double(plan.total_clocks) + 1.0;
-    while (!stopped && clock < limit && !out.done) {
-      tick(in);
-      peaks.on_clock(out, !out.done && out.busy);
+    if (!stopped) tick(in);  // drops start: from here on the inputs are held
+    while (!stopped && clock < limit && !cur->done) {
+      tick(in, true);
+      peaks.on_clock(*cur, !cur->done && cur->busy);
       if ((clock & 0xffffff) == 0 && opt.progress) opt.progress(double(clock - start_clock) / expected);
     }
   }
+  out = *cur;
   const uint64_t done_clock = clock;
   const bool reached_done = out.done;
   res.clocks = done_clock;
@@ -166,7 +190,8 @@ SimResult run_move(const Plan& plan, const PulseTiming& timing, const Limits4Che
   // Quiet tail: nothing may move after done.
   const uint64_t tail = opt.tail_clocks ? opt.tail_clocks
                                         : 4ull * (uint64_t(timing.high) + timing.low + timing.setup + timing.hold) + 1000;
-  for (uint64_t i = 0; i < tail && !stopped; ++i) tick(in);
+  for (uint64_t i = 0; i < tail && !stopped; ++i) tick(in, true);
+  out = *cur;
   pins.finish(clock);
   res.total_clocks = clock;
   res.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -175,9 +200,9 @@ SimResult run_move(const Plan& plan, const PulseTiming& timing, const Limits4Che
   res.pulses = pins.net_steps();
   res.pulse_count_reg = out.pulse_count;
   res.final_error = plan.distance - res.pulses;
-  res.peak_velocity = vel_to_phys(peaks.v);
-  res.peak_acceleration = acc_to_phys(peaks.a);
-  res.peak_jerk = jerk_to_phys(peaks.j);
+  res.peak_velocity = vel_to_phys(peaks.v());
+  res.peak_acceleration = acc_to_phys(peaks.a());
+  res.peak_jerk = jerk_to_phys(peaks.j());
   res.mismatches = checker.mismatches();
   res.matched_clocks = checker.matched();
   if (!checker.errors().empty()) res.first_mismatch = checker.errors().front().to_string();
