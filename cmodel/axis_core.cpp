@@ -15,8 +15,27 @@ bool AxisCore::busy() const {
 }
 
 void AxisCore::step(const CoreInputs& in) {
-  const bool start_ok = in_q_.start && !busy() && in_q_.enable;
+  ProfileExec::Inputs& ei = exec_in_;
+  ei.seg_we = in.seg_we;
+  if (in.seg_we) {
+    ei.seg_waddr = in.seg_waddr;
+    ei.seg_wdata = in.seg_wdata;
+  }
+  clock_edge();
+  ei.seg_we = false;
+  in_q_.enable = in.enable;
+  in_q_.start = in.start;
+  in_q_.abort = in.abort;
+  in_q_.cfg = in.cfg;
+  in_q_.seg_count = uint8_t(in.seg_count & ((1u << SegCntW) - 1));
+  in_q_.pos_frac0 = mask_bits(in.pos_frac0, FracBits);
+}
+
+void AxisCore::clock_edge() {
+  // Every sub-block input below is a register output (the core's input
+  // stage or the executor's step request), as in the RTL.
   const ProfileExec::State& e = exec_.state();
+  const bool start_ok = in_q_.start && !busy() && in_q_.enable;
   StepGen::Inputs si;
   si.cfg = in_q_.cfg;
   si.clear = start_ok;
@@ -24,22 +43,13 @@ void AxisCore::step(const CoreInputs& in) {
   si.step_fwd = e.step_fwd;
   si.dir_hint_valid = e.run && e.vel != 0;
   si.dir_hint = e.vel >= 0;
-  ProfileExec::Inputs ei;
-  ei.seg_we = in.seg_we;
-  ei.seg_waddr = in.seg_waddr;
-  ei.seg_wdata = in.seg_wdata;
+  ProfileExec::Inputs& ei = exec_in_;
   ei.seg_count = in_q_.seg_count;
   ei.pos_frac0 = in_q_.pos_frac0;
   ei.start = start_ok;
   ei.abort = in_q_.abort;
   sg_.step(si);  // uses the executor's current (registered) outputs
   exec_.step(ei);
-  in_q_.enable = in.enable;
-  in_q_.start = in.start;
-  in_q_.abort = in.abort;
-  in_q_.cfg = in.cfg;
-  in_q_.seg_count = uint8_t(in.seg_count & ((1u << SegCntW) - 1));
-  in_q_.pos_frac0 = mask_bits(in.pos_frac0, FracBits);
 }
 
 bool AxisCore::inputs_settled(const CoreInputs& in) const {
@@ -72,24 +82,7 @@ CoreOutputs AxisCore::outputs() const {
   return o;
 }
 
-void AxisCore::tick() {
-  const ProfileExec::State& e = exec_.state();
-  const bool start_ok = in_q_.start && !busy() && in_q_.enable;
-  StepGen::Inputs si;
-  si.cfg = in_q_.cfg;
-  si.clear = start_ok;
-  si.step_req = e.step_req;
-  si.step_fwd = e.step_fwd;
-  si.dir_hint_valid = e.run && e.vel != 0;
-  si.dir_hint = e.vel >= 0;
-  ProfileExec::Inputs& ei = held_exec_in_;
-  ei.seg_count = in_q_.seg_count;
-  ei.pos_frac0 = in_q_.pos_frac0;
-  ei.start = start_ok;
-  ei.abort = in_q_.abort;
-  sg_.step(si);
-  exec_.step(ei);
-}
+void AxisCore::tick() { clock_edge(); }
 
 bool AxisCore::outputs_equal(const CoreOutputs& o) const {
   const ProfileExec::State& e = exec_.state();

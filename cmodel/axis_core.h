@@ -83,7 +83,8 @@ class AxisCore {
   ProfileExec exec_;
   StepGen sg_;
   InputRegs in_q_;
-  ProfileExec::Inputs held_exec_in_{};  // reused by tick(): no per-clock construction
+  ProfileExec::Inputs exec_in_{};  // reused every clock: no per-clock construction
+  void clock_edge();
 };
 
 }  // namespace sc

@@ -172,14 +172,12 @@ std::optional<PlanError> check_range(const char* name, double v, double lo, doub
 
 i128 pulses_to_lsb(int64_t p) { return i128(p) * i128(kOne); }
 
-// Smallest distance (pulses) for which `remainder` would be >= 1.
-int64_t needed_distance(const Candidate& c, i128 target, int64_t distance) {
-  const i128 gain = target - c.remainder;  // transition gain
-  // need distance*2^F + 2^(F-1) - gain >= 1
+// Smallest distance (pulses) that leaves the candidate's transitions a
+// remainder >= 1 LSB: distance * 2^F + 2^(F-1) - gain >= 1.
+int64_t needed_distance(const Candidate& c, i128 target) {
+  const i128 gain = target - c.remainder;  // position covered by the transitions
   const i128 num = gain + 1 - (i128(kOne) >> 1);
-  i128 need = num <= 0 ? 0 : (num + i128(kOne) - 1) / i128(kOne);
-  (void)distance;
-  return int64_t(need);
+  return int64_t(num <= 0 ? 0 : (num + i128(kOne) - 1) / i128(kOne));
 }
 
 PlanResult plan_magnitude(const MoveRequest& req, const PulseTiming& timing, double v_end);
@@ -304,7 +302,7 @@ PlanResult plan_magnitude(const MoveRequest& req, const PulseTiming& timing, dou
     const bool far_is_stop = v_far == 0.0;  // vs = ve = 0: a tiny plateau always fits
     if (!far_is_stop && !far.feasible) {
       const std::string need =
-          far.too_far ? std::string("more than 1e12") : fmt::format("{}", needed_distance(far, target, dist));
+          far.too_far ? std::string("more than 1e12") : fmt::format("{}", needed_distance(far, target));
       if (v_end > req.v_start) {
         return PlanError{"v_end", fmt::format("v_end={} unreachable from v_start={}: needs distance >= {} "
                                               "pulses, got {} (or allow --adjust-end-speed)",

@@ -20,6 +20,23 @@ const char* engine_name(SimEngine e) {
   return "?";
 }
 
+std::vector<CoreInputs> load_sequence(const std::vector<Segment>& rows, u128 pos_frac0, const CoreInputs& base) {
+  std::vector<CoreInputs> seq;
+  for (size_t i = 0; i < rows.size(); ++i) {
+    CoreInputs w = base;
+    w.seg_we = true;
+    w.seg_waddr = uint8_t(i);
+    w.seg_wdata = rows[i];
+    seq.push_back(w);
+  }
+  CoreInputs st = base;
+  st.seg_count = uint8_t(rows.size());
+  st.pos_frac0 = pos_frac0;
+  st.start = true;
+  seq.push_back(st);
+  return seq;
+}
+
 std::vector<DutyTrend> expected_trends(const Plan& plan) {
   std::vector<DutyTrend> seq;
   for (const Segment& s : plan.segments) {
@@ -74,7 +91,7 @@ struct PeakTracker {
 
 }  // namespace
 
-SimResult run_move(const Plan& plan, const PulseTiming& timing, const Limits4Check& limits,
+SimResult run_move(const Plan& plan, const PulseTiming& timing, const RunLimits& limits,
                    const SimOptions& opt) {
   SimResult res;
   res.engine = opt.engine;
@@ -128,18 +145,11 @@ SimResult run_move(const Plan& plan, const PulseTiming& timing, const Limits4Che
   };
 
   // Load the table one row per clock, then start.
-  for (size_t i = 0; i < plan.segments.size() && !stopped; ++i) {
-    CoreInputs w = in;
-    w.seg_we = true;
-    w.seg_waddr = uint8_t(i);
-    w.seg_wdata = plan.segments[i];
-    tick(w);
+  for (const CoreInputs& ci : load_sequence(plan.segments, plan.pos_frac0, in)) {
+    if (!stopped) tick(ci);
+    in = ci;
   }
-  in.seg_count = uint8_t(plan.segments.size());
-  in.pos_frac0 = plan.pos_frac0;
-  CoreInputs st = in;
-  st.start = true;
-  if (!stopped) tick(st);
+  in.start = false;
   const uint64_t start_clock = clock;
 
   // Run to done. A hang is caught by a limit well past the planned length.

@@ -55,12 +55,17 @@ struct SimResult {
   bool pass() const { return failures.empty(); }
 };
 
-struct Limits4Check {
+struct RunLimits {
   double v_max = 0, a_max = 0, j_max = 0;  // pulses/s^k; 0 = not checked
 };
 
-SimResult run_move(const Plan& plan, const PulseTiming& timing, const Limits4Check& limits,
+SimResult run_move(const Plan& plan, const PulseTiming& timing, const RunLimits& limits,
                    const SimOptions& opt);
+
+// The clock-by-clock inputs that load a table and start it: one row per
+// clock (seg_we), then one clock with start; `base` supplies enable, timing.
+// The last element's inputs, with start dropped, are what a run then holds.
+std::vector<CoreInputs> load_sequence(const std::vector<Segment>& rows, u128 pos_frac0, const CoreInputs& base);
 
 // The duty trends a plan should show: its rows' phases, repeats merged, + zero.
 std::vector<DutyTrend> expected_trends(const Plan& plan);

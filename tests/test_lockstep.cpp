@@ -17,8 +17,8 @@ using namespace sc;
 
 namespace {
 
-Limits4Check limits_of(const MoveRequest& r, const Plan& p) {
-  Limits4Check l;
+RunLimits limits_of(const MoveRequest& r, const Plan& p) {
+  RunLimits l;
   l.v_max = std::max({r.v_cruise, r.v_start, p.v_end_used});
   l.a_max = r.a_max;
   if (r.kind == ProfileKind::SCurve) l.j_max = r.j_max;
@@ -112,18 +112,11 @@ TEST(Lockstep, RandomRawTablesWithReversalsAndOverrunsMatch) {
       pins.on_clock(clock, o);
       ++clock;
     };
-    for (int i = 0; i < rows; ++i) {
-      CoreInputs w = in;
-      w.seg_we = true;
-      w.seg_waddr = uint8_t(i);
-      w.seg_wdata = table[size_t(i)];
-      tick(w);
+    for (const CoreInputs& ci : load_sequence(table, (u128(g()) << 16) & (kOne - 1), in)) {
+      tick(ci);
+      in = ci;
     }
-    in.seg_count = uint8_t(rows);
-    in.pos_frac0 = (u128(g()) << 16) & (kOne - 1);
-    CoreInputs st = in;
-    st.start = true;
-    tick(st);
+    in.start = false;
     bool last_dir = model.outputs().dir;
     while (clock < 400000 && !chk.should_stop()) {
       tick(in);
@@ -153,20 +146,12 @@ TEST(LockstepChecker, ReportsAnInjectedStateDifferenceAtTheRightClock) {
   LockstepChecker chk;
   CoreInputs in;
   in.enable = true;
-  for (size_t i = 0; i < p.segments.size(); ++i) {
-    CoreInputs w = in;
-    w.seg_we = true;
-    w.seg_waddr = uint8_t(i);
-    w.seg_wdata = p.segments[i];
-    rtl.step(w);
-    model.step(w);
+  for (const CoreInputs& ci : load_sequence(p.segments, p.pos_frac0, in)) {
+    rtl.step(ci);
+    model.step(ci);
+    in = ci;
   }
-  in.seg_count = uint8_t(p.segments.size());
-  in.pos_frac0 = p.pos_frac0;
-  CoreInputs st = in;
-  st.start = true;
-  rtl.step(st);
-  model.step(st);
+  in.start = false;
   const uint64_t inject_at = 5000;
   for (uint64_t clock = 0; clock < 6000; ++clock) {
     rtl.step(in);
@@ -198,24 +183,15 @@ TEST(LockstepChecker, ReportsAPinDifferenceFromADifferentPulseWidth) {
   LockstepChecker chk;
   CoreInputs in;
   in.enable = true;
-  CoreInputs model_in = in;
-  model_in.cfg.high = uint16_t(in.cfg.high + 1);  // the model believes in a wider pulse
-  for (size_t i = 0; i < p.segments.size(); ++i) {
-    CoreInputs w = in;
-    w.seg_we = true;
-    w.seg_waddr = uint8_t(i);
-    w.seg_wdata = p.segments[i];
-    CoreInputs wm = w;
-    wm.cfg = model_in.cfg;
-    rtl.step(w);
-    model.step(wm);
+  CoreInputs model_in;
+  for (CoreInputs ci : load_sequence(p.segments, p.pos_frac0, in)) {
+    rtl.step(ci);
+    in = ci;
+    ci.cfg.high = uint16_t(ci.cfg.high + 1);  // the model believes in a wider pulse
+    model.step(ci);
+    model_in = ci;
   }
-  in.seg_count = model_in.seg_count = uint8_t(p.segments.size());
-  in.pos_frac0 = model_in.pos_frac0 = p.pos_frac0;
-  CoreInputs st = in, stm = model_in;
-  st.start = stm.start = true;
-  rtl.step(st);
-  model.step(stm);
+  in.start = model_in.start = false;
   uint64_t clock = 0;
   while (clock < 2'000'000 && !chk.should_stop()) {
     rtl.step(in);

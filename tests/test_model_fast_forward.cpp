@@ -7,6 +7,7 @@
 
 #include "axis_core.h"
 #include "planner.h"
+#include "sim_run.h"
 
 using namespace sc;
 
@@ -124,20 +125,12 @@ TEST(CoreFastForward, MatchesStepClockForClockAtEveryPulse) {
     CoreInputs in;
     in.enable = true;
     in.cfg = t;
-    for (size_t i = 0; i < p.segments.size(); ++i) {
-      CoreInputs w = in;
-      w.seg_we = true;
-      w.seg_waddr = uint8_t(i);
-      w.seg_wdata = p.segments[i];
-      slow.step(w);
-      fast.step(w);
+    for (const CoreInputs& ci : load_sequence(p.segments, p.pos_frac0, in)) {
+      slow.step(ci);
+      fast.step(ci);
+      in = ci;
     }
-    in.seg_count = uint8_t(p.segments.size());
-    in.pos_frac0 = p.pos_frac0;
-    CoreInputs st = in;
-    st.start = true;
-    slow.step(st);
-    fast.step(st);
+    in.start = false;
     uint64_t clock = 0;
     int pulses_checked = 0;
     while (!slow.done() || clock < 10) {
