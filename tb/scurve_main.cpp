@@ -1,6 +1,7 @@
 // scurve: plan S-curve moves and run them on the RTL and the bit-exact model.
 //   scurve plan --distance L --v-start VS --v-cruise VC --v-end VE --a-max A --j-max J [--json]
 //   scurve sim  (same move flags | --group 1 2 3 4) [--engine ...] [--json]
+//   scurve regs (same move flags) [--uart] [--no-start] [--json]   register writes
 // Exit codes: 0 ok, 1 a check failed, 2 bad input (one line on stderr).
 #include <fmt/format.h>
 #include <unistd.h>
@@ -14,6 +15,7 @@
 #include <thread>
 
 #include "planner.h"
+#include "regs_cli.h"
 #include "report.h"
 #include "scenarios.h"
 #include "sim_run.h"
@@ -138,6 +140,13 @@ int main(int argc, char** argv) {
   CLI::App* plan_cmd = app.add_subcommand("plan", "plan a move and print its segment table");
   add_move_flags(plan_cmd, pf, plan_opts);
 
+  MoveFlags rf;  // scurve regs (issue 5, tb/regs_cli.h)
+  std::vector<CLI::Option*> regs_opts;
+  RegsCliFlags regs_flags;
+  CLI::App* regs_cmd = app.add_subcommand("regs", "plan a move and print it as register writes (AXI4-Lite, --uart frames)");
+  add_move_flags(regs_cmd, rf, regs_opts);
+  add_regs_flags(regs_cmd, regs_flags);
+
   MoveFlags sf;
   std::vector<CLI::Option*> sim_opts;
   std::vector<int> groups;
@@ -180,6 +189,12 @@ int main(int argc, char** argv) {
     }
     if (!write_json_file(pf.json_out, j)) return bad_input("--json-out: cannot write " + pf.json_out);
     return 0;
+  }
+
+  if (*regs_cmd) {
+    const PlanResult r = plan_move(to_request(rf), to_timing(rf));
+    if (const auto* e = std::get_if<PlanError>(&r)) return bad_input(e->message);
+    return run_regs_cli(regs_flags, std::get<Plan>(r), to_timing(rf), rf.json);
   }
 
   // ---- sim ----------------------------------------------------------------
