@@ -19,6 +19,7 @@
 #include "report.h"
 #include "scenarios.h"
 #include "sim_run.h"
+#include "tool_commands.h"
 
 namespace {
 
@@ -166,6 +167,8 @@ int main(int argc, char** argv) {
   sim_cmd->add_option("--fst-to", fst_to, "clock after the last one to trace");
   sim_cmd->add_option("--jobs", jobs, "parallel runs (default: cores)")->check(CLI::Range(1, 64));
 
+  auto tools = add_tool_commands(app);  // diff, regress (issue 4, tb/tools/tool_commands.h)
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -175,6 +178,8 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     return bad_input(e.what());
   }
+
+  if (int rc = 0; run_tool_command(*tools, &rc)) return rc;
 
   if (*plan_cmd) {
     const MoveRequest req = to_request(pf);
