@@ -2,7 +2,8 @@
 """Generate the C++ view of rtl/sc_pkg.sv (the single source of widths/codes).
 
 Usage: gen_params.py <sc_pkg.sv> <out.h>
-Every `localparam int Name = value;` becomes `inline constexpr int Name`, and
+Every `localparam int Name = value;` (decimal, or sized hex such as 8'h1C)
+becomes `inline constexpr int Name`, and
 the phase codes `localparam logic [3:0] PhX = 4'dN;` become
 `enum class Phase : uint8_t` with the same names.
 Fails loudly on anything it does not understand, so a new package entry can
@@ -15,7 +16,7 @@ import sys
 def main(src, dst):
     text = open(src, encoding="utf-8").read()
     body = re.sub(r"//[^\n]*", "", text)
-    params = re.findall(r"localparam\s+int\s+(\w+)\s*=\s*([0-9_]+)\s*;", body)
+    params = re.findall(r"localparam\s+int\s+(\w+)\s*=\s*([0-9_]+|[0-9]+'h[0-9a-fA-F_]+)\s*;", body)
     if not params:
         sys.exit(f"{src}: no localparam int found")
     phases = re.findall(r"localparam\s+logic\s*\[3:0\]\s*(Ph\w+)\s*=\s*4'd(\d+)\s*;", body)
@@ -35,7 +36,13 @@ def main(src, dst):
         "",
     ]
     for name, value in params:
-        out.append(f"inline constexpr int {name} = {value.replace('_', '')};")
+        v = value.replace("_", "")
+        if "'h" in v:  # sized hex (register addresses): must fit its size and an int
+            size, digits = v.split("'h")
+            v = int(digits, 16)
+            if v >= (1 << int(size)) or v >= (1 << 31):
+                sys.exit(f"{src}: {name} = {value} does not fit {size} bits / int")
+        out.append(f"inline constexpr int {name} = {v};")
     out += ["", "enum class Phase : uint8_t {"]
     for name, value in items:
         out.append(f"  {name} = {value},")

@@ -38,7 +38,9 @@ yosys -q -l "$out/$top.depth.log" -p "
   opt_clean;
   tee -o $out/$top.depth.txt ltp -noff;
 " >/dev/null 2>&1
-cell() { awk -v c="$1" '$1==c {s+=$2} END {print s+0}' "$out/$top.stat.txt"; }
+# A hierarchical design's stat lists every module and then the totals under
+# "design hierarchy": count only the totals (else everything counts twice).
+cell() { awk -v c="$1" '/=== design hierarchy ===/ {s=0} $1==c {s+=$2} END {print s+0}' "$out/$top.stat.txt"; }
 luts=0; for l in LUT1 LUT2 LUT3 LUT4 LUT5 LUT6; do luts=$((luts + $(cell $l))); done
 ffs=0; for f in FDRE FDSE FDCE FDPE; do ffs=$((ffs + $(cell $f))); done
 lutram=0; for r in RAM32M RAM64M RAM32X1D RAM64X1D RAM128X1D RAM16X1D RAM32M16 RAM64X1S RAM32X1S; do lutram=$((lutram + $(cell $r))); done

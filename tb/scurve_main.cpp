@@ -1,6 +1,7 @@
 // scurve: plan S-curve moves and run them on the RTL and the bit-exact model.
 //   scurve plan --distance L --v-start VS --v-cruise VC --v-end VE --a-max A --j-max J [--json]
 //   scurve sim  (same move flags | --group 1 2 3 4) [--engine ...] [--json]
+//   scurve regs (same move flags) [--uart] [--no-start] [--json]   register writes
 // Exit codes: 0 ok, 1 a check failed, 2 bad input (one line on stderr).
 #include <fmt/format.h>
 #include <unistd.h>
@@ -14,9 +15,11 @@
 #include <thread>
 
 #include "planner.h"
+#include "regs_cli.h"
 #include "report.h"
 #include "scenarios.h"
 #include "sim_run.h"
+#include "tool_commands.h"
 
 namespace {
 
@@ -138,6 +141,13 @@ int main(int argc, char** argv) {
   CLI::App* plan_cmd = app.add_subcommand("plan", "plan a move and print its segment table");
   add_move_flags(plan_cmd, pf, plan_opts);
 
+  MoveFlags rf;  // scurve regs (issue 5, tb/regs_cli.h)
+  std::vector<CLI::Option*> regs_opts;
+  RegsCliFlags regs_flags;
+  CLI::App* regs_cmd = app.add_subcommand("regs", "plan a move and print it as register writes (AXI4-Lite, --uart frames)");
+  add_move_flags(regs_cmd, rf, regs_opts);
+  add_regs_flags(regs_cmd, regs_flags);
+
   MoveFlags sf;
   std::vector<CLI::Option*> sim_opts;
   std::vector<int> groups;
@@ -157,6 +167,8 @@ int main(int argc, char** argv) {
   sim_cmd->add_option("--fst-to", fst_to, "clock after the last one to trace");
   sim_cmd->add_option("--jobs", jobs, "parallel runs (default: cores)")->check(CLI::Range(1, 64));
 
+  auto tools = add_tool_commands(app);  // diff, regress (issue 4, tb/tools/tool_commands.h)
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -166,6 +178,8 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     return bad_input(e.what());
   }
+
+  if (int rc = 0; run_tool_command(*tools, &rc)) return rc;
 
   if (*plan_cmd) {
     const MoveRequest req = to_request(pf);
@@ -180,6 +194,12 @@ int main(int argc, char** argv) {
     }
     if (!write_json_file(pf.json_out, j)) return bad_input("--json-out: cannot write " + pf.json_out);
     return 0;
+  }
+
+  if (*regs_cmd) {
+    const PlanResult r = plan_move(to_request(rf), to_timing(rf));
+    if (const auto* e = std::get_if<PlanError>(&r)) return bad_input(e->message);
+    return run_regs_cli(regs_flags, std::get<Plan>(r), to_timing(rf), rf.json);
   }
 
   // ---- sim ----------------------------------------------------------------

@@ -1,0 +1,271 @@
+#include "axi_regs.h"
+
+namespace sc {
+
+namespace {
+
+constexpr uint32_t bit(int b) { return uint32_t(1) << b; }
+constexpr uint32_t field(uint32_t v, int lsb, int w) { return (v >> lsb) & ((w >= 32) ? ~0u : ((1u << w) - 1)); }
+uint32_t strb_mask(uint8_t strb) {
+  uint32_t m = 0;
+  for (int b = 0; b < 4; ++b)
+    if (strb & (1 << b)) m |= 0xffu << (8 * b);
+  return m;
+}
+uint32_t wmerge(uint32_t old_v, uint32_t new_v, uint32_t mask) { return (old_v & ~mask) | (new_v & mask); }
+// Replace 32 bits at `lsb` of a wide value (only the bits below `width` kept).
+u128 put_word(u128 v, int lsb, uint32_t w, int width) {
+  const u128 m = u128(0xffffffffu) << lsb;
+  return mask_bits((v & ~m) | (u128(w) << lsb), width);
+}
+uint32_t get_word(u128 v, int lsb) { return uint32_t(v >> lsb); }
+bool locked_addr(uint8_t a) {
+  switch (a) {
+    case RegSegCount: case RegPulseTime: case RegDirTime:
+    case RegPosFrac0: case RegPosFrac0 + 4: case RegPosFrac0 + 8:
+    case RegSegPhase: case RegSegClocks: case RegSegJerk: case RegSegJerk + 4:
+    case RegSegAcc0: case RegSegAcc0 + 4: case RegSegVel0: case RegSegVel0 + 4: case RegSegVel0 + 8:
+    case RegSegCommit:
+      return true;
+    default:
+      return false;
+  }
+}
+
+}  // namespace
+
+void AxiRegs::reset() {
+  q_ = State{};
+  q_.cfg = PulseTiming{uint16_t(RstPulseHigh), uint16_t(RstPulseLow), uint16_t(RstDirSetup), uint16_t(RstDirHold)};
+}
+
+uint32_t AxiRegs::read_word(uint8_t a, const RegsSide& side, const CoreOutputs& core, uint8_t& resp) const {
+  resp = kOkay;
+  const bool busy_eff = busy(core);
+  switch (a) {
+    case RegId: return (uint32_t(RegIdMagic) << 16) | uint32_t(RegMapVersion);
+    case RegCtrl: return q_.en ? bit(CtrlEnableBit) : 0;
+    case RegCmd: return 0;
+    case RegStatus: {
+      uint32_t s = uint32_t(core.phase & ((1u << PhaseW) - 1)) << StatusPhaseLsb;
+      if (busy_eff) s |= bit(StatusBusyBit);
+      if (core.done && !busy_eff) s |= bit(StatusDoneBit);
+      if (core.en) s |= bit(StatusEnBit);
+      if (core.fault_table) s |= bit(StatusFaultTableBit);
+      if (core.fault_overrun) s |= bit(StatusFaultOverrunBit);
+      if (q_.err_estop) s |= bit(StatusEstopBit);
+      if (q_.err_reject || q_.err_bad || q_.err_estop) s |= bit(StatusErrBit);
+      s |= uint32_t(side.enc_ab & 3) << StatusEncALsb;
+      s |= uint32_t(core.seg_idx & ((1u << SegIdxW) - 1)) << StatusSegIdxLsb;
+      return s;
+    }
+    case RegErr:
+      return (q_.err_reject ? bit(ErrRejectBit) : 0) | (q_.err_bad ? bit(ErrBadAddrBit) : 0) |
+             (q_.err_estop ? bit(ErrEstopBit) : 0);
+    case RegPulseCount: return uint32_t(core.pulse_count);
+    case RegRefPos: return uint32_t(core.ref_pos_int);
+    case RegEncPos: return uint32_t(side.enc_pos);
+    case RegFollowErr: return uint32_t(core.ref_pos_int) - uint32_t(side.enc_pos);
+    case RegSegCount: return uint32_t(q_.seg_count) << SegCountLsb;
+    case RegPulseTime: return (uint32_t(q_.cfg.high) << PulseHighLsb) | (uint32_t(q_.cfg.low) << PulseLowLsb);
+    case RegDirTime: return (uint32_t(q_.cfg.setup) << DirSetupLsb) | (uint32_t(q_.cfg.hold) << DirHoldLsb);
+    case RegPosFrac0: return get_word(q_.frac0, 0);
+    case RegPosFrac0 + 4: return get_word(q_.frac0, 32);
+    case RegPosFrac0 + 8: return get_word(q_.frac0, 64);
+    case RegSegPhase: return uint32_t(q_.st_phase) << SegPhaseLsb;
+    case RegSegClocks: return q_.st_clocks;
+    case RegSegJerk: return uint32_t(q_.st_jerk);
+    case RegSegJerk + 4: return uint32_t(q_.st_jerk >> 32);
+    case RegSegAcc0: return uint32_t(q_.st_acc0);
+    case RegSegAcc0 + 4: return uint32_t(q_.st_acc0 >> 32);
+    case RegSegVel0: return get_word(q_.st_vel0, 0);
+    case RegSegVel0 + 4: return get_word(q_.st_vel0, 32);
+    case RegSegVel0 + 8: return get_word(q_.st_vel0, 64);
+    case RegSegCommit: return 0;
+    default: resp = kDecErr; return 0;
+  }
+}
+
+void AxiRegs::step(const AxiIn& in, const RegsSide& side, const CoreOutputs& core) {
+  const State q = q_;
+  State d = q;
+  d.seg_we = false;
+  d.start = false;
+  d.abort = false;
+  bool set_reject = false, set_bad = false;
+  const bool busy_eff = busy(core);
+  const bool do_write = q.aw_full && q.w_full && !q.bvalid;
+  const bool do_read = in.arvalid && !q.rvalid;
+  const uint32_t wmask = strb_mask(q.wstrb);
+  const uint32_t wd = q.wdata;
+
+  if (in.awvalid && !q.aw_full) {
+    d.aw_full = true;
+    d.awaddr = uint8_t(in.awaddr & ((1u << RegAddrW) - 1));
+  }
+  if (in.wvalid && !q.w_full) {
+    d.w_full = true;
+    d.wdata = in.wdata;
+    d.wstrb = in.wstrb & 0xf;
+  }
+  if (q.bvalid && in.bready) d.bvalid = false;
+  if (q.rvalid && in.rready) d.rvalid = false;
+
+  if (do_write) {
+    d.aw_full = false;
+    d.w_full = false;
+    d.bvalid = true;
+    d.bresp = kOkay;
+    const uint8_t a = q.awaddr;
+    if (locked_addr(a) && busy_eff) {
+      d.bresp = kSlvErr;
+      set_reject = true;
+    } else {
+      switch (a) {
+        case RegId: case RegStatus: case RegPulseCount: case RegRefPos: case RegEncPos: case RegFollowErr:
+          d.bresp = kSlvErr;
+          set_bad = true;
+          break;
+        case RegCtrl:
+          if (q.wstrb & 1) d.en = (wd >> CtrlEnableBit) & 1;
+          break;
+        case RegCmd:
+          if (q.wstrb & 1) {
+            if ((wd & bit(CmdStopBit)) || (wd & bit(CmdEstopBit))) {
+              d.abort = true;
+              if (wd & bit(CmdEstopBit)) {
+                d.en = false;
+                d.err_estop = true;
+              }
+            } else if (wd & bit(CmdStartBit)) {
+              if (busy_eff || q.err_estop || !q.en) {
+                d.bresp = kSlvErr;
+                set_reject = true;
+              } else {
+                d.start = true;
+              }
+            }
+          }
+          break;
+        case RegErr:
+          if (q.wstrb & 1) {
+            if (wd & bit(ErrRejectBit)) d.err_reject = false;
+            if (wd & bit(ErrBadAddrBit)) d.err_bad = false;
+            if (wd & bit(ErrEstopBit)) d.err_estop = false;
+          }
+          break;
+        case RegSegCount:
+          d.seg_count = uint8_t(field(wmerge(uint32_t(q.seg_count) << SegCountLsb, wd, wmask), SegCountLsb, SegCntW));
+          break;
+        case RegPulseTime:
+          d.cfg.high = uint16_t(field(wmerge(uint32_t(q.cfg.high) << PulseHighLsb, wd, wmask), PulseHighLsb, PulseTimeW));
+          d.cfg.low = uint16_t(field(wmerge(uint32_t(q.cfg.low) << PulseLowLsb, wd, wmask), PulseLowLsb, PulseTimeW));
+          break;
+        case RegDirTime:
+          d.cfg.setup = uint16_t(field(wmerge(uint32_t(q.cfg.setup) << DirSetupLsb, wd, wmask), DirSetupLsb, PulseTimeW));
+          d.cfg.hold = uint16_t(field(wmerge(uint32_t(q.cfg.hold) << DirHoldLsb, wd, wmask), DirHoldLsb, PulseTimeW));
+          break;
+        case RegPosFrac0: d.frac0 = put_word(q.frac0, 0, wmerge(get_word(q.frac0, 0), wd, wmask), FracBits); break;
+        case RegPosFrac0 + 4: d.frac0 = put_word(q.frac0, 32, wmerge(get_word(q.frac0, 32), wd, wmask), FracBits); break;
+        case RegPosFrac0 + 8: d.frac0 = put_word(q.frac0, 64, wmerge(get_word(q.frac0, 64), wd, wmask), FracBits); break;
+        case RegSegPhase:
+          d.st_phase = uint8_t(field(wmerge(uint32_t(q.st_phase) << SegPhaseLsb, wd, wmask), SegPhaseLsb, PhaseW));
+          break;
+        case RegSegClocks: d.st_clocks = wmerge(q.st_clocks, wd, wmask); break;
+        case RegSegJerk:
+          d.st_jerk = uint64_t(put_word(q.st_jerk, 0, wmerge(uint32_t(q.st_jerk), wd, wmask), JerkW));
+          break;
+        case RegSegJerk + 4:
+          d.st_jerk = uint64_t(put_word(q.st_jerk, 32, wmerge(uint32_t(q.st_jerk >> 32), wd, wmask), JerkW));
+          break;
+        case RegSegAcc0:
+          d.st_acc0 = uint64_t(put_word(q.st_acc0, 0, wmerge(uint32_t(q.st_acc0), wd, wmask), AccW));
+          break;
+        case RegSegAcc0 + 4:
+          d.st_acc0 = uint64_t(put_word(q.st_acc0, 32, wmerge(uint32_t(q.st_acc0 >> 32), wd, wmask), AccW));
+          break;
+        case RegSegVel0: d.st_vel0 = put_word(q.st_vel0, 0, wmerge(get_word(q.st_vel0, 0), wd, wmask), VelW); break;
+        case RegSegVel0 + 4: d.st_vel0 = put_word(q.st_vel0, 32, wmerge(get_word(q.st_vel0, 32), wd, wmask), VelW); break;
+        case RegSegVel0 + 8: d.st_vel0 = put_word(q.st_vel0, 64, wmerge(get_word(q.st_vel0, 64), wd, wmask), VelW); break;
+        case RegSegCommit:
+          if (q.wstrb & 1) {
+            d.seg_we = true;
+            d.seg_waddr = uint8_t(field(wd, SegCommitLsb, SegIdxW));
+          }
+          break;
+        default:
+          d.bresp = kDecErr;
+          set_bad = true;
+          break;
+      }
+    }
+  }
+
+  if (do_read) {
+    uint8_t resp = kOkay;
+    d.rvalid = true;
+    d.rdata = read_word(uint8_t(in.araddr & ((1u << RegAddrW) - 1)), side, core, resp);
+    d.rresp = resp;
+    if (resp != kOkay) set_bad = true;
+  }
+
+  if (side.estop) {
+    d.abort = true;
+    d.en = false;
+    d.start = false;
+    d.err_estop = true;
+  }
+  if (set_reject) d.err_reject = true;
+  if (set_bad) d.err_bad = true;
+  d.start_d1 = q.start;
+  q_ = d;
+}
+
+AxiOut AxiRegs::axi_outputs() const {
+  AxiOut o;
+  o.awready = !q_.aw_full;
+  o.wready = !q_.w_full;
+  o.bvalid = q_.bvalid;
+  o.bresp = q_.bresp;
+  o.arready = !q_.rvalid;
+  o.rvalid = q_.rvalid;
+  o.rdata = q_.rdata;
+  o.rresp = q_.rresp;
+  return o;
+}
+
+CoreInputs AxiRegs::core_inputs() const {
+  CoreInputs c;
+  c.enable = q_.en;
+  c.cfg = q_.cfg;
+  c.seg_we = q_.seg_we;
+  c.seg_waddr = q_.seg_waddr;
+  c.seg_wdata.phase = Phase(q_.st_phase);
+  c.seg_wdata.clocks = q_.st_clocks;
+  c.seg_wdata.jerk = wrap_signed64(int64_t(q_.st_jerk), JerkW);
+  c.seg_wdata.acc0 = wrap_signed64(int64_t(q_.st_acc0), AccW);
+  c.seg_wdata.vel0 = wrap_signed(i128(q_.st_vel0), VelW);
+  c.seg_count = q_.seg_count;
+  c.pos_frac0 = q_.frac0;
+  c.start = q_.start;
+  c.abort = q_.abort;
+  return c;
+}
+
+AxiAxisOutputs AxiAxis::outputs() const {
+  const CoreOutputs c = core_.outputs();
+  AxiAxisOutputs o;
+  o.axi = regs_.axi_outputs();
+  o.step = c.step;
+  o.dir = c.dir;
+  o.en = c.en;
+  o.busy = regs_.busy(c);
+  o.done = c.done && !o.busy;
+  o.fault = c.fault_table || c.fault_overrun;
+  o.phase = c.phase;
+  o.pulse_count = c.pulse_count;
+  o.ref_pos = c.ref_pos_int;
+  return o;
+}
+
+}  // namespace sc

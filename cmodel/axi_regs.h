@@ -1,0 +1,127 @@
+// Bit-exact model of rtl/sc_axi_regs.sv (AXI4-Lite register file) and of
+// rtl/sc_axi_axis.sv (register file + sc_axis_core). Same flops, same update
+// order, one step() per clock; no Verilator or SystemC types.
+#pragma once
+
+#include <cstdint>
+
+#include "axis_core.h"
+
+namespace sc {
+
+// AXI4-Lite inputs of the slave for one clock (what the master drives).
+struct AxiIn {
+  uint8_t awaddr = 0;
+  bool awvalid = false;
+  uint32_t wdata = 0;
+  uint8_t wstrb = 0;
+  bool wvalid = false;
+  bool bready = false;
+  uint8_t araddr = 0;
+  bool arvalid = false;
+  bool rready = false;
+};
+
+struct AxiOut {
+  bool awready = false;
+  bool wready = false;
+  bool bvalid = false;
+  uint8_t bresp = 0;
+  bool arready = false;
+  bool rvalid = false;
+  uint32_t rdata = 0;
+  uint8_t rresp = 0;
+  bool operator==(const AxiOut&) const = default;
+};
+
+enum AxiResp : uint8_t { kOkay = 0, kSlvErr = 2, kDecErr = 3 };
+
+// The register file's side inputs (synchronous).
+struct RegsSide {
+  bool estop = false;
+  uint8_t enc_ab = 0;  // bit 0 = A, bit 1 = B
+  int32_t enc_pos = 0;
+};
+
+class AxiRegs {
+ public:
+  struct State {
+    bool aw_full = false;
+    uint8_t awaddr = 0;
+    bool w_full = false;
+    uint32_t wdata = 0;
+    uint8_t wstrb = 0;
+    bool bvalid = false;
+    uint8_t bresp = 0;
+    bool rvalid = false;
+    uint8_t rresp = 0;
+    uint32_t rdata = 0;
+    bool en = false;
+    uint8_t seg_count = 0;
+    PulseTiming cfg{};
+    u128 frac0 = 0;
+    uint8_t st_phase = 0;
+    uint32_t st_clocks = 0;
+    uint64_t st_jerk = 0;  // JerkW bits, unsigned view
+    uint64_t st_acc0 = 0;
+    u128 st_vel0 = 0;      // VelW bits, unsigned view
+    bool seg_we = false;
+    uint8_t seg_waddr = 0;
+    bool start = false;
+    bool start_d1 = false;
+    bool abort = false;
+    bool err_reject = false;
+    bool err_bad = false;
+    bool err_estop = false;
+    bool operator==(const State&) const = default;
+  };
+
+  AxiRegs() { reset(); }
+  void reset();
+  // One clock. `core` = the core's outputs during this clock.
+  void step(const AxiIn& in, const RegsSide& side, const CoreOutputs& core);
+
+  AxiOut axi_outputs() const;
+  CoreInputs core_inputs() const;
+  // STATUS.BUSY: the core is busy or an accepted START has not reached it yet.
+  bool busy(const CoreOutputs& core) const { return core.busy || q_.start || q_.start_d1; }
+  const State& state() const { return q_; }
+
+ private:
+  uint32_t read_word(uint8_t addr, const RegsSide& side, const CoreOutputs& core, uint8_t& resp) const;
+  State q_;
+};
+
+// Outputs of sc_axi_axis compared by the lockstep checker.
+struct AxiAxisOutputs {
+  AxiOut axi;
+  bool step = false, dir = false, en = false;
+  bool busy = false, done = false, fault = false;
+  uint8_t phase = 0;
+  int32_t pulse_count = 0;
+  int32_t ref_pos = 0;
+  bool operator==(const AxiAxisOutputs&) const = default;
+};
+
+class AxiAxis {
+ public:
+  AxiAxis() { reset(); }
+  void reset() {
+    regs_.reset();
+    core_.reset();
+  }
+  void step(const AxiIn& in, const RegsSide& side) {
+    const CoreInputs ci = regs_.core_inputs();
+    regs_.step(in, side, core_.outputs());
+    core_.step(ci);
+  }
+  AxiAxisOutputs outputs() const;
+  const AxiRegs& regs() const { return regs_; }
+  const AxisCore& core() const { return core_; }
+
+ private:
+  AxiRegs regs_;
+  AxisCore core_;
+};
+
+}  // namespace sc

@@ -1,0 +1,94 @@
+#include "reg_encode.h"
+
+#include <fmt/format.h>
+
+#include "sc_regmap.h"
+
+namespace sc {
+
+std::string reg_name(uint32_t addr) {
+  for (const regmap::Reg& r : regmap::kRegs)
+    if (r.addr == addr) return r.name;
+  return "?";
+}
+
+std::vector<RegWrite> encode_row(const Segment& s, unsigned row) {
+  const uint64_t jerk = uint64_t(s.jerk) & ((uint64_t(1) << JerkW) - 1);
+  const uint64_t acc = uint64_t(s.acc0);
+  const u128 vel = mask_bits(u128(s.vel0), VelW);
+  return {
+      {uint32_t(RegSegPhase), uint32_t(uint8_t(s.phase)) << SegPhaseLsb},
+      {uint32_t(RegSegClocks), s.clocks},
+      {uint32_t(RegSegJerk), uint32_t(jerk)},
+      {uint32_t(RegSegJerk + 4), uint32_t(jerk >> 32)},
+      {uint32_t(RegSegAcc0), uint32_t(acc)},
+      {uint32_t(RegSegAcc0 + 4), uint32_t(acc >> 32)},
+      {uint32_t(RegSegVel0), uint32_t(vel)},
+      {uint32_t(RegSegVel0 + 4), uint32_t(vel >> 32)},
+      {uint32_t(RegSegVel0 + 8), uint32_t(vel >> 64)},
+      {uint32_t(RegSegCommit), uint32_t(row) << SegCommitLsb},
+  };
+}
+
+std::vector<RegWrite> encode_move(const Plan& plan, const PulseTiming& t, bool start) {
+  std::vector<RegWrite> w;
+  w.push_back({uint32_t(RegCtrl), 1u << CtrlEnableBit});
+  w.push_back({uint32_t(RegPulseTime), (uint32_t(t.high) << PulseHighLsb) | (uint32_t(t.low) << PulseLowLsb)});
+  w.push_back({uint32_t(RegDirTime), (uint32_t(t.setup) << DirSetupLsb) | (uint32_t(t.hold) << DirHoldLsb)});
+  for (size_t i = 0; i < plan.segments.size(); ++i) {
+    const auto row = encode_row(plan.segments[i], unsigned(i));
+    w.insert(w.end(), row.begin(), row.end());
+  }
+  w.push_back({uint32_t(RegSegCount), uint32_t(plan.segments.size()) << SegCountLsb});
+  const u128 f = mask_bits(plan.pos_frac0, FracBits);
+  w.push_back({uint32_t(RegPosFrac0), uint32_t(f)});
+  w.push_back({uint32_t(RegPosFrac0 + 4), uint32_t(f >> 32)});
+  w.push_back({uint32_t(RegPosFrac0 + 8), uint32_t(f >> 64)});
+  if (start) w.push_back({uint32_t(RegCmd), 1u << CmdStartBit});
+  return w;
+}
+
+uint8_t crc8(const uint8_t* data, size_t n, uint8_t crc) {
+  for (size_t i = 0; i < n; ++i) {
+    crc ^= data[i];
+    for (int b = 0; b < 8; ++b) crc = (crc & 0x80) ? uint8_t((crc << 1) ^ 0x07) : uint8_t(crc << 1);
+  }
+  return crc;
+}
+
+std::vector<uint8_t> uart_write_frame(uint8_t addr, uint32_t data) {
+  std::vector<uint8_t> f = {uint8_t(UartReqSync), uint8_t(UartCmdWrite), addr,
+                            uint8_t(data), uint8_t(data >> 8), uint8_t(data >> 16), uint8_t(data >> 24)};
+  f.push_back(crc8(f.data() + 1, f.size() - 1));
+  return f;
+}
+
+std::vector<uint8_t> uart_read_frame(uint8_t addr) {
+  std::vector<uint8_t> f = {uint8_t(UartReqSync), uint8_t(UartCmdRead), addr};
+  f.push_back(crc8(f.data() + 1, f.size() - 1));
+  return f;
+}
+
+UartResponse parse_uart_response(const std::vector<uint8_t>& b, bool is_read) {
+  UartResponse r;
+  if (b.size() < 3 || b[0] != uint8_t(UartRspSync)) {
+    r.error = fmt::format("no response sync ({} bytes)", b.size());
+    return r;
+  }
+  r.status = b[1];
+  const bool has_data = is_read && r.status < 0x80;
+  const size_t len = has_data ? 7 : 3;
+  if (b.size() != len) {
+    r.error = fmt::format("response length {} != {}", b.size(), len);
+    return r;
+  }
+  if (crc8(b.data() + 1, len - 2) != b[len - 1]) {
+    r.error = "response CRC wrong";
+    return r;
+  }
+  if (has_data) r.data = uint32_t(b[2]) | uint32_t(b[3]) << 8 | uint32_t(b[4]) << 16 | uint32_t(b[5]) << 24;
+  r.ok = true;
+  return r;
+}
+
+}  // namespace sc

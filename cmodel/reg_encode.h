@@ -1,0 +1,43 @@
+// Host side of the register interface: a planned move as the register
+// write sequence (docs/regmap.md "Loading and running a move") and the
+// UART bridge frames (CRC-8/0x07) that carry register reads and writes.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "planner.h"
+#include "step_gen.h"
+
+namespace sc {
+
+struct RegWrite {
+  uint32_t addr = 0;
+  uint32_t data = 0;
+};
+
+// Register name for an address ("SEG_VEL0_2"), or "?" if none.
+std::string reg_name(uint32_t addr);
+
+// CTRL enable, pulse timing, every table row (staging + SEG_COMMIT),
+// SEG_COUNT, POS_FRAC0 and, if `start`, CMD.START.
+std::vector<RegWrite> encode_move(const Plan& plan, const PulseTiming& timing, bool start = true);
+// One row's staging writes and its commit.
+std::vector<RegWrite> encode_row(const Segment& s, unsigned row);
+
+// CRC-8, polynomial 0x07, initial 0x00, no reflection, no final XOR.
+uint8_t crc8(const uint8_t* data, size_t n, uint8_t crc = 0);
+std::vector<uint8_t> uart_write_frame(uint8_t addr, uint32_t data);
+std::vector<uint8_t> uart_read_frame(uint8_t addr);
+
+struct UartResponse {
+  bool ok = false;        // well formed and CRC correct
+  uint8_t status = 0;     // AXI response or 0x80 / 0x81
+  uint32_t data = 0;      // reads
+  std::string error;      // why not ok
+};
+// Parse a response to a write (is_read = false) or read request.
+UartResponse parse_uart_response(const std::vector<uint8_t>& bytes, bool is_read);
+
+}  // namespace sc

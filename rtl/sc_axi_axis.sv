@@ -1,0 +1,165 @@
+// sc_axi_axis: one open-loop axis behind an AXI4-Lite slave
+// (sc_axi_regs + sc_axis_core). This is the block a MicroBlaze/Zynq design
+// or the UART bridge (sc_board_top) connects to; the testbench drives it in
+// lockstep with the model (cmodel/axi_axis.h).
+module sc_axi_axis (
+  input  logic                                clk_i,
+  input  logic                                rst_ni,
+
+  input  logic [sc_pkg::RegAddrW-1:0]         s_axi_awaddr_i,
+  input  logic                                s_axi_awvalid_i,
+  output logic                                s_axi_awready_o,
+  input  logic [31:0]                         s_axi_wdata_i,
+  input  logic [3:0]                          s_axi_wstrb_i,
+  input  logic                                s_axi_wvalid_i,
+  output logic                                s_axi_wready_o,
+  output logic [1:0]                          s_axi_bresp_o,
+  output logic                                s_axi_bvalid_o,
+  input  logic                                s_axi_bready_i,
+  input  logic [sc_pkg::RegAddrW-1:0]         s_axi_araddr_i,
+  input  logic                                s_axi_arvalid_i,
+  output logic                                s_axi_arready_o,
+  output logic [31:0]                         s_axi_rdata_o,
+  output logic [1:0]                          s_axi_rresp_o,
+  output logic                                s_axi_rvalid_o,
+  input  logic                                s_axi_rready_i,
+
+  input  logic                                estop_i,
+  input  logic [1:0]                          enc_ab_i,
+  input  logic signed [sc_pkg::PosIntW-1:0]   enc_pos_i,
+
+  output logic                                step_o,
+  output logic                                dir_o,
+  output logic                                en_o,
+
+  // status for LEDs and the lockstep checker
+  output logic                                busy_o,
+  output logic                                done_o,
+  output logic                                fault_o,
+  output logic [sc_pkg::PhaseW-1:0]           phase_o,
+  output logic signed [sc_pkg::PosIntW-1:0]   pulse_count_o,
+  output logic signed [sc_pkg::PosIntW-1:0]   ref_pos_o
+);
+
+  localparam int PulseTimeW = sc_pkg::PulseTimeW;
+  localparam int SegIdxW    = sc_pkg::SegIdxW;
+  localparam int PhaseW     = sc_pkg::PhaseW;
+  localparam int SegClkW    = sc_pkg::SegClkW;
+  localparam int JerkW      = sc_pkg::JerkW;
+  localparam int AccW       = sc_pkg::AccW;
+  localparam int VelW       = sc_pkg::VelW;
+  localparam int SegCntW    = sc_pkg::SegCntW;
+  localparam int FracBits   = sc_pkg::FracBits;
+  localparam int PendW      = sc_pkg::PendW;
+
+  logic                        enable, seg_we, start, abort;
+  logic [PulseTimeW-1:0]       cfg_high, cfg_low, cfg_setup, cfg_hold;
+  logic [SegIdxW-1:0]          seg_waddr, seg_idx;
+  logic [PhaseW-1:0]           seg_phase;
+  logic [SegClkW-1:0]          seg_clocks;
+  logic signed [JerkW-1:0]     seg_jerk;
+  logic signed [AccW-1:0]      seg_acc0;
+  logic signed [VelW-1:0]      seg_vel0;
+  logic [SegCntW-1:0]          seg_count;
+  logic [FracBits-1:0]         pos_frac0;
+  logic                        core_busy, core_done, fault_table, fault_overrun;
+
+  // reference kinematics not used here (the closed loop will take them)
+  logic [FracBits-1:0]         unused_ref_frac;
+  logic signed [VelW-1:0]      unused_ref_vel;
+  logic signed [AccW-1:0]      unused_ref_acc;
+  logic signed [JerkW-1:0]     unused_ref_jerk;
+  logic signed [PendW-1:0]     unused_pending;
+
+  sc_axi_regs u_regs (
+    .clk_i,
+    .rst_ni,
+    .s_axi_awaddr_i,
+    .s_axi_awvalid_i,
+    .s_axi_awready_o,
+    .s_axi_wdata_i,
+    .s_axi_wstrb_i,
+    .s_axi_wvalid_i,
+    .s_axi_wready_o,
+    .s_axi_bresp_o,
+    .s_axi_bvalid_o,
+    .s_axi_bready_i,
+    .s_axi_araddr_i,
+    .s_axi_arvalid_i,
+    .s_axi_arready_o,
+    .s_axi_rdata_o,
+    .s_axi_rresp_o,
+    .s_axi_rvalid_o,
+    .s_axi_rready_i,
+    .estop_i,
+    .enc_ab_i,
+    .enc_pos_i,
+    .enable_o        (enable),
+    .cfg_high_o      (cfg_high),
+    .cfg_low_o       (cfg_low),
+    .cfg_setup_o     (cfg_setup),
+    .cfg_hold_o      (cfg_hold),
+    .seg_we_o        (seg_we),
+    .seg_waddr_o     (seg_waddr),
+    .seg_phase_o     (seg_phase),
+    .seg_clocks_o    (seg_clocks),
+    .seg_jerk_o      (seg_jerk),
+    .seg_acc0_o      (seg_acc0),
+    .seg_vel0_o      (seg_vel0),
+    .seg_count_o     (seg_count),
+    .pos_frac0_o     (pos_frac0),
+    .start_o         (start),
+    .abort_o         (abort),
+    .busy_i          (core_busy),
+    .done_i          (core_done),
+    .phase_i         (phase_o),
+    .en_i            (en_o),
+    .fault_table_i   (fault_table),
+    .fault_overrun_i (fault_overrun),
+    .pulse_count_i   (pulse_count_o),
+    .ref_pos_i       (ref_pos_o),
+    .seg_idx_i       (seg_idx),
+    .busy_o
+  );
+
+  sc_axis_core u_core (
+    .clk_i,
+    .rst_ni,
+    .enable_i        (enable),
+    .cfg_high_i      (cfg_high),
+    .cfg_low_i       (cfg_low),
+    .cfg_setup_i     (cfg_setup),
+    .cfg_hold_i      (cfg_hold),
+    .seg_we_i        (seg_we),
+    .seg_waddr_i     (seg_waddr),
+    .seg_phase_i     (seg_phase),
+    .seg_clocks_i    (seg_clocks),
+    .seg_jerk_i      (seg_jerk),
+    .seg_acc0_i      (seg_acc0),
+    .seg_vel0_i      (seg_vel0),
+    .seg_count_i     (seg_count),
+    .pos_frac0_i     (pos_frac0),
+    .start_i         (start),
+    .abort_i         (abort),
+    .step_o,
+    .dir_o,
+    .en_o,
+    .busy_o          (core_busy),
+    .done_o          (core_done),
+    .phase_o,
+    .fault_table_o   (fault_table),
+    .fault_overrun_o (fault_overrun),
+    .pulse_count_o,
+    .ref_pos_int_o   (ref_pos_o),
+    .ref_pos_frac_o  (unused_ref_frac),
+    .ref_vel_o       (unused_ref_vel),
+    .ref_acc_o       (unused_ref_acc),
+    .ref_jerk_o      (unused_ref_jerk),
+    .seg_idx_o       (seg_idx),
+    .step_pending_o  (unused_pending)
+  );
+
+  assign done_o  = core_done && !busy_o;
+  assign fault_o = fault_table || fault_overrun;
+
+endmodule

@@ -1,0 +1,495 @@
+// sc_axi_regs: AXI4-Lite slave register file of one axis (map: sc_pkg
+// "host register map", docs/regmap.md).
+//
+// Loads the segment table through a staging row (SEG_PHASE .. SEG_VEL0,
+// committed to a table row by SEG_COMMIT), the pulse timing, SEG_COUNT and
+// POS_FRAC0; CMD starts, stops and e-stops; STATUS/PULSE_COUNT/REF_POS/...
+// read the core. Every output to the core is a flop.
+//
+// AXI4-Lite: one write and one read in flight. AW and W are accepted in
+// any order (each held until the write is done); the write takes effect
+// the clock after both are held, together with BVALID. A read answers
+// RVALID the clock after the AR handshake. Responses: OKAY; SLVERR for a
+// write to a read-only register or a refused write (table/config/START
+// while busy, START while e-stopped or disabled); DECERR for an address
+// with no register (including unaligned ones). Refused and bad accesses
+// change nothing but the sticky ERR flags. Reserved bits read 0. WSTRB
+// selects bytes; CMD, ERR and SEG_COMMIT act on byte 0 only. AWPROT/ARPROT
+// are not used and not present.
+module sc_axi_regs (
+  input  logic                                clk_i,
+  input  logic                                rst_ni,
+
+  // AXI4-Lite slave
+  input  logic [sc_pkg::RegAddrW-1:0]         s_axi_awaddr_i,
+  input  logic                                s_axi_awvalid_i,
+  output logic                                s_axi_awready_o,
+  input  logic [31:0]                         s_axi_wdata_i,
+  input  logic [3:0]                          s_axi_wstrb_i,
+  input  logic                                s_axi_wvalid_i,
+  output logic                                s_axi_wready_o,
+  output logic [1:0]                          s_axi_bresp_o,
+  output logic                                s_axi_bvalid_o,
+  input  logic                                s_axi_bready_i,
+  input  logic [sc_pkg::RegAddrW-1:0]         s_axi_araddr_i,
+  input  logic                                s_axi_arvalid_i,
+  output logic                                s_axi_arready_o,
+  output logic [31:0]                         s_axi_rdata_o,
+  output logic [1:0]                          s_axi_rresp_o,
+  output logic                                s_axi_rvalid_o,
+  input  logic                                s_axi_rready_i,
+
+  // side inputs (synchronous to clk_i)
+  input  logic                                estop_i,     // level: abort, disable, latch ERR.ESTOP
+  input  logic [1:0]                          enc_ab_i,    // synchronised encoder A (bit 0), B (bit 1)
+  input  logic signed [sc_pkg::PosIntW-1:0]   enc_pos_i,
+
+  // to sc_axis_core
+  output logic                                enable_o,
+  output logic [sc_pkg::PulseTimeW-1:0]       cfg_high_o,
+  output logic [sc_pkg::PulseTimeW-1:0]       cfg_low_o,
+  output logic [sc_pkg::PulseTimeW-1:0]       cfg_setup_o,
+  output logic [sc_pkg::PulseTimeW-1:0]       cfg_hold_o,
+  output logic                                seg_we_o,
+  output logic [sc_pkg::SegIdxW-1:0]          seg_waddr_o,
+  output logic [sc_pkg::PhaseW-1:0]           seg_phase_o,
+  output logic [sc_pkg::SegClkW-1:0]          seg_clocks_o,
+  output logic signed [sc_pkg::JerkW-1:0]     seg_jerk_o,
+  output logic signed [sc_pkg::AccW-1:0]      seg_acc0_o,
+  output logic signed [sc_pkg::VelW-1:0]      seg_vel0_o,
+  output logic [sc_pkg::SegCntW-1:0]          seg_count_o,
+  output logic [sc_pkg::FracBits-1:0]         pos_frac0_o,
+  output logic                                start_o,
+  output logic                                abort_o,
+
+  // from sc_axis_core
+  input  logic                                busy_i,
+  input  logic                                done_i,
+  input  logic [sc_pkg::PhaseW-1:0]           phase_i,
+  input  logic                                en_i,
+  input  logic                                fault_table_i,
+  input  logic                                fault_overrun_i,
+  input  logic signed [sc_pkg::PosIntW-1:0]   pulse_count_i,
+  input  logic signed [sc_pkg::PosIntW-1:0]   ref_pos_i,
+  input  logic [sc_pkg::SegIdxW-1:0]          seg_idx_i,
+
+  output logic                                busy_o       // STATUS.BUSY
+);
+
+  localparam int AW         = sc_pkg::RegAddrW;
+  localparam int PulseTimeW = sc_pkg::PulseTimeW;
+  localparam int PhaseW     = sc_pkg::PhaseW;
+  localparam int SegIdxW    = sc_pkg::SegIdxW;
+  localparam int SegCntW    = sc_pkg::SegCntW;
+  localparam int SegClkW    = sc_pkg::SegClkW;
+  localparam int FracBits   = sc_pkg::FracBits;
+  localparam int JerkW      = sc_pkg::JerkW;
+  localparam int AccW       = sc_pkg::AccW;
+  localparam int VelW       = sc_pkg::VelW;
+
+  localparam logic [1:0] RespOkay   = 2'b00;
+  localparam logic [1:0] RespSlvErr = 2'b10;
+  localparam logic [1:0] RespDecErr = 2'b11;
+
+  localparam logic [AW-1:0] AId        = AW'(sc_pkg::RegId);
+  localparam logic [AW-1:0] ACtrl      = AW'(sc_pkg::RegCtrl);
+  localparam logic [AW-1:0] ACmd       = AW'(sc_pkg::RegCmd);
+  localparam logic [AW-1:0] AStatus    = AW'(sc_pkg::RegStatus);
+  localparam logic [AW-1:0] AErr       = AW'(sc_pkg::RegErr);
+  localparam logic [AW-1:0] APulseCnt  = AW'(sc_pkg::RegPulseCount);
+  localparam logic [AW-1:0] ARefPos    = AW'(sc_pkg::RegRefPos);
+  localparam logic [AW-1:0] AEncPos    = AW'(sc_pkg::RegEncPos);
+  localparam logic [AW-1:0] AFollowErr = AW'(sc_pkg::RegFollowErr);
+  localparam logic [AW-1:0] ASegCount  = AW'(sc_pkg::RegSegCount);
+  localparam logic [AW-1:0] APulseTime = AW'(sc_pkg::RegPulseTime);
+  localparam logic [AW-1:0] ADirTime   = AW'(sc_pkg::RegDirTime);
+  localparam logic [AW-1:0] AFrac0     = AW'(sc_pkg::RegPosFrac0);
+  localparam logic [AW-1:0] AFrac1     = AW'(sc_pkg::RegPosFrac0 + 4);
+  localparam logic [AW-1:0] AFrac2     = AW'(sc_pkg::RegPosFrac0 + 8);
+  localparam logic [AW-1:0] ASegPhase  = AW'(sc_pkg::RegSegPhase);
+  localparam logic [AW-1:0] ASegClocks = AW'(sc_pkg::RegSegClocks);
+  localparam logic [AW-1:0] AJerk0     = AW'(sc_pkg::RegSegJerk);
+  localparam logic [AW-1:0] AJerk1     = AW'(sc_pkg::RegSegJerk + 4);
+  localparam logic [AW-1:0] AAcc0      = AW'(sc_pkg::RegSegAcc0);
+  localparam logic [AW-1:0] AAcc1      = AW'(sc_pkg::RegSegAcc0 + 4);
+  localparam logic [AW-1:0] AVel0      = AW'(sc_pkg::RegSegVel0);
+  localparam logic [AW-1:0] AVel1      = AW'(sc_pkg::RegSegVel0 + 4);
+  localparam logic [AW-1:0] AVel2      = AW'(sc_pkg::RegSegVel0 + 8);
+  localparam logic [AW-1:0] ASegCommit = AW'(sc_pkg::RegSegCommit);
+
+  localparam int CtrlEnableBit = sc_pkg::CtrlEnableBit;
+  localparam int CmdStartBit   = sc_pkg::CmdStartBit;
+  localparam int CmdStopBit    = sc_pkg::CmdStopBit;
+  localparam int CmdEstopBit   = sc_pkg::CmdEstopBit;
+  localparam int ErrRejectBit  = sc_pkg::ErrRejectBit;
+  localparam int ErrBadAddrBit = sc_pkg::ErrBadAddrBit;
+  localparam int ErrEstopBit   = sc_pkg::ErrEstopBit;
+
+  // byte-strobe merge of a 32-bit register word
+  function automatic logic [31:0] wmerge(input logic [31:0] old_v, input logic [31:0] new_v,
+                                         input logic [31:0] mask);
+    wmerge = (old_v & ~mask) | (new_v & mask);
+  endfunction
+
+  // ---- state ---------------------------------------------------------------
+  logic                      aw_full_q, aw_full_d;
+  logic [AW-1:0]             awaddr_q, awaddr_d;
+  logic                      w_full_q, w_full_d;
+  logic [31:0]               wdata_q, wdata_d;
+  logic [3:0]                wstrb_q, wstrb_d;
+  logic                      bvalid_q, bvalid_d;
+  logic [1:0]                bresp_q, bresp_d;
+  logic                      rvalid_q, rvalid_d;
+  logic [1:0]                rresp_q, rresp_d;
+  logic [31:0]               rdata_q, rdata_d;
+
+  logic                      en_q, en_d;
+  logic [SegCntW-1:0]        seg_count_q, seg_count_d;
+  logic [PulseTimeW-1:0]     high_q, high_d, low_q, low_d, setup_q, setup_d, hold_q, hold_d;
+  logic [FracBits-1:0]       frac0_q, frac0_d;
+  logic [PhaseW-1:0]         st_phase_q, st_phase_d;
+  logic [SegClkW-1:0]        st_clocks_q, st_clocks_d;
+  logic [JerkW-1:0]          st_jerk_q, st_jerk_d;
+  logic [AccW-1:0]           st_acc0_q, st_acc0_d;
+  logic [VelW-1:0]           st_vel0_q, st_vel0_d;
+  logic                      seg_we_q, seg_we_d;
+  logic [SegIdxW-1:0]        seg_waddr_q, seg_waddr_d;
+  logic                      start_q, start_d;
+  logic                      start_d1_q;           // START accepted, core not busy yet
+  logic                      abort_q, abort_d;
+  logic                      err_reject_q, err_reject_d;
+  logic                      err_bad_q, err_bad_d;
+  logic                      err_estop_q, err_estop_d;
+
+  // ---- decode --------------------------------------------------------------
+  logic        busy_eff;
+  logic        do_write, do_read;
+  logic [31:0] wmask, wd;
+  logic        set_reject, set_bad;
+  logic        w_locked;          // the written register is locked while busy
+  logic [31:0] status_word, rd_word;
+  logic [1:0]  rd_resp;
+
+  assign busy_eff = busy_i || start_q || start_d1_q;
+  assign do_write = aw_full_q && w_full_q && !bvalid_q;
+  assign do_read  = s_axi_arvalid_i && !rvalid_q;
+  assign wmask    = {{8{wstrb_q[3]}}, {8{wstrb_q[2]}}, {8{wstrb_q[1]}}, {8{wstrb_q[0]}}};
+  assign wd       = wdata_q;
+
+  always_comb begin
+    unique case (awaddr_q)
+      ASegCount, APulseTime, ADirTime, AFrac0, AFrac1, AFrac2, ASegPhase, ASegClocks,
+      AJerk0, AJerk1, AAcc0, AAcc1, AVel0, AVel1, AVel2, ASegCommit: w_locked = 1'b1;
+      default:                                                        w_locked = 1'b0;
+    endcase
+  end
+
+  always_comb begin
+    status_word = '0;
+    status_word[sc_pkg::StatusPhaseLsb +: PhaseW]   = phase_i;
+    status_word[sc_pkg::StatusBusyBit]              = busy_eff;
+    status_word[sc_pkg::StatusDoneBit]              = done_i && !busy_eff;
+    status_word[sc_pkg::StatusEnBit]                = en_i;
+    status_word[sc_pkg::StatusFaultTableBit]        = fault_table_i;
+    status_word[sc_pkg::StatusFaultOverrunBit]      = fault_overrun_i;
+    status_word[sc_pkg::StatusEstopBit]             = err_estop_q;
+    status_word[sc_pkg::StatusErrBit]               = err_reject_q || err_bad_q || err_estop_q;
+    status_word[sc_pkg::StatusEncALsb +: 2]         = enc_ab_i;
+    status_word[sc_pkg::StatusSegIdxLsb +: SegIdxW] = seg_idx_i;
+  end
+
+  // read mux
+  always_comb begin
+    rd_word = '0;
+    rd_resp = RespOkay;
+    unique case (s_axi_araddr_i)
+      AId:        rd_word = {16'(sc_pkg::RegIdMagic), 16'(sc_pkg::RegMapVersion)};
+      ACtrl:      rd_word[CtrlEnableBit] = en_q;
+      ACmd:       rd_word = '0;
+      AStatus:    rd_word = status_word;
+      AErr: begin
+        rd_word[ErrRejectBit]  = err_reject_q;
+        rd_word[ErrBadAddrBit] = err_bad_q;
+        rd_word[ErrEstopBit]   = err_estop_q;
+      end
+      APulseCnt:  rd_word = 32'(pulse_count_i);
+      ARefPos:    rd_word = 32'(ref_pos_i);
+      AEncPos:    rd_word = 32'(enc_pos_i);
+      AFollowErr: rd_word = 32'(ref_pos_i - enc_pos_i);
+      ASegCount:  rd_word[sc_pkg::SegCountLsb +: SegCntW] = seg_count_q;
+      APulseTime: begin
+        rd_word[sc_pkg::PulseHighLsb +: PulseTimeW] = high_q;
+        rd_word[sc_pkg::PulseLowLsb +: PulseTimeW]  = low_q;
+      end
+      ADirTime: begin
+        rd_word[sc_pkg::DirSetupLsb +: PulseTimeW] = setup_q;
+        rd_word[sc_pkg::DirHoldLsb +: PulseTimeW]  = hold_q;
+      end
+      AFrac0:     rd_word = frac0_q[31:0];
+      AFrac1:     rd_word = frac0_q[63:32];
+      AFrac2:     rd_word = 32'(frac0_q[FracBits-1:64]);
+      ASegPhase:  rd_word[sc_pkg::SegPhaseLsb +: PhaseW] = st_phase_q;
+      ASegClocks: rd_word = st_clocks_q;
+      AJerk0:     rd_word = st_jerk_q[31:0];
+      AJerk1:     rd_word = 32'(st_jerk_q[JerkW-1:32]);
+      AAcc0:      rd_word = st_acc0_q[31:0];
+      AAcc1:      rd_word = st_acc0_q[63:32];
+      AVel0:      rd_word = st_vel0_q[31:0];
+      AVel1:      rd_word = st_vel0_q[63:32];
+      AVel2:      rd_word = 32'(st_vel0_q[VelW-1:64]);
+      ASegCommit: rd_word = '0;
+      default:    rd_resp = RespDecErr;
+    endcase
+  end
+
+  // ---- next state ------------------------------------------------------------
+  always_comb begin
+    aw_full_d    = aw_full_q;
+    awaddr_d     = awaddr_q;
+    w_full_d     = w_full_q;
+    wdata_d      = wdata_q;
+    wstrb_d      = wstrb_q;
+    bvalid_d     = bvalid_q;
+    bresp_d      = bresp_q;
+    rvalid_d     = rvalid_q;
+    rresp_d      = rresp_q;
+    rdata_d      = rdata_q;
+    en_d         = en_q;
+    seg_count_d  = seg_count_q;
+    high_d       = high_q;
+    low_d        = low_q;
+    setup_d      = setup_q;
+    hold_d       = hold_q;
+    frac0_d      = frac0_q;
+    st_phase_d   = st_phase_q;
+    st_clocks_d  = st_clocks_q;
+    st_jerk_d    = st_jerk_q;
+    st_acc0_d    = st_acc0_q;
+    st_vel0_d    = st_vel0_q;
+    seg_we_d     = 1'b0;
+    seg_waddr_d  = seg_waddr_q;
+    start_d      = 1'b0;
+    abort_d      = 1'b0;
+    err_reject_d = err_reject_q;
+    err_bad_d    = err_bad_q;
+    err_estop_d  = err_estop_q;
+    set_reject   = 1'b0;
+    set_bad      = 1'b0;
+
+    // AXI handshakes
+    if (s_axi_awvalid_i && !aw_full_q) begin
+      aw_full_d = 1'b1;
+      awaddr_d  = s_axi_awaddr_i;
+    end
+    if (s_axi_wvalid_i && !w_full_q) begin
+      w_full_d = 1'b1;
+      wdata_d  = s_axi_wdata_i;
+      wstrb_d  = s_axi_wstrb_i;
+    end
+    if (bvalid_q && s_axi_bready_i) begin
+      bvalid_d = 1'b0;
+    end
+    if (rvalid_q && s_axi_rready_i) begin
+      rvalid_d = 1'b0;
+    end
+
+    // the write
+    if (do_write) begin
+      aw_full_d = 1'b0;
+      w_full_d  = 1'b0;
+      bvalid_d  = 1'b1;
+      bresp_d   = RespOkay;
+      if (w_locked && busy_eff) begin
+        bresp_d    = RespSlvErr;
+        set_reject = 1'b1;
+      end else begin
+        unique case (awaddr_q)
+          AId, AStatus, APulseCnt, ARefPos, AEncPos, AFollowErr: begin
+            bresp_d = RespSlvErr;
+            set_bad = 1'b1;
+          end
+          ACtrl: begin
+            if (wstrb_q[0]) en_d = wd[CtrlEnableBit];
+          end
+          ACmd: begin
+            if (wstrb_q[0]) begin
+              if (wd[CmdStopBit] || wd[CmdEstopBit]) begin
+                abort_d = 1'b1;
+                if (wd[CmdEstopBit]) begin
+                  en_d        = 1'b0;
+                  err_estop_d = 1'b1;
+                end
+              end else if (wd[CmdStartBit]) begin
+                if (busy_eff || err_estop_q || !en_q) begin
+                  bresp_d    = RespSlvErr;
+                  set_reject = 1'b1;
+                end else begin
+                  start_d = 1'b1;
+                end
+              end
+            end
+          end
+          AErr: begin
+            if (wstrb_q[0]) begin
+              if (wd[ErrRejectBit])  err_reject_d = 1'b0;
+              if (wd[ErrBadAddrBit]) err_bad_d    = 1'b0;
+              if (wd[ErrEstopBit])   err_estop_d  = 1'b0;
+            end
+          end
+          ASegCount: seg_count_d = SegCntW'(wmerge(32'(seg_count_q) << sc_pkg::SegCountLsb, wd, wmask)
+                                             >> sc_pkg::SegCountLsb);
+          APulseTime: begin
+            high_d = PulseTimeW'(wmerge(32'(high_q) << sc_pkg::PulseHighLsb, wd, wmask)
+                                 >> sc_pkg::PulseHighLsb);
+            low_d  = PulseTimeW'(wmerge(32'(low_q) << sc_pkg::PulseLowLsb, wd, wmask)
+                                 >> sc_pkg::PulseLowLsb);
+          end
+          ADirTime: begin
+            setup_d = PulseTimeW'(wmerge(32'(setup_q) << sc_pkg::DirSetupLsb, wd, wmask)
+                                  >> sc_pkg::DirSetupLsb);
+            hold_d  = PulseTimeW'(wmerge(32'(hold_q) << sc_pkg::DirHoldLsb, wd, wmask)
+                                  >> sc_pkg::DirHoldLsb);
+          end
+          AFrac0:     frac0_d[31:0]  = wmerge(frac0_q[31:0], wd, wmask);
+          AFrac1:     frac0_d[63:32] = wmerge(frac0_q[63:32], wd, wmask);
+          AFrac2:     frac0_d[FracBits-1:64] =
+                          (FracBits-64)'(wmerge(32'(frac0_q[FracBits-1:64]), wd, wmask));
+          ASegPhase:  st_phase_d = PhaseW'(wmerge(32'(st_phase_q) << sc_pkg::SegPhaseLsb, wd, wmask)
+                                           >> sc_pkg::SegPhaseLsb);
+          ASegClocks: st_clocks_d = wmerge(st_clocks_q, wd, wmask);
+          AJerk0:     st_jerk_d[31:0] = wmerge(st_jerk_q[31:0], wd, wmask);
+          AJerk1:     st_jerk_d[JerkW-1:32] = (JerkW-32)'(wmerge(32'(st_jerk_q[JerkW-1:32]), wd, wmask));
+          AAcc0:      st_acc0_d[31:0]  = wmerge(st_acc0_q[31:0], wd, wmask);
+          AAcc1:      st_acc0_d[63:32] = wmerge(st_acc0_q[63:32], wd, wmask);
+          AVel0:      st_vel0_d[31:0]  = wmerge(st_vel0_q[31:0], wd, wmask);
+          AVel1:      st_vel0_d[63:32] = wmerge(st_vel0_q[63:32], wd, wmask);
+          AVel2:      st_vel0_d[VelW-1:64] = (VelW-64)'(wmerge(32'(st_vel0_q[VelW-1:64]), wd, wmask));
+          ASegCommit: begin
+            if (wstrb_q[0]) begin
+              seg_we_d    = 1'b1;
+              seg_waddr_d = wd[sc_pkg::SegCommitLsb +: SegIdxW];
+            end
+          end
+          default: begin
+            bresp_d = RespDecErr;
+            set_bad = 1'b1;
+          end
+        endcase
+      end
+    end
+
+    // the read
+    if (do_read) begin
+      rvalid_d = 1'b1;
+      rdata_d  = rd_word;
+      rresp_d  = rd_resp;
+      if (rd_resp != RespOkay) set_bad = 1'b1;
+    end
+
+    // e-stop input: overrides everything
+    if (estop_i) begin
+      abort_d     = 1'b1;
+      en_d        = 1'b0;
+      start_d     = 1'b0;
+      err_estop_d = 1'b1;
+    end
+
+    // sticky flags: setting wins over a clear in the same clock
+    if (set_reject) err_reject_d = 1'b1;
+    if (set_bad)    err_bad_d    = 1'b1;
+  end
+
+  always_ff @(posedge clk_i) begin
+    if (!rst_ni) begin
+      aw_full_q    <= 1'b0;
+      awaddr_q     <= '0;
+      w_full_q     <= 1'b0;
+      wdata_q      <= '0;
+      wstrb_q      <= '0;
+      bvalid_q     <= 1'b0;
+      bresp_q      <= RespOkay;
+      rvalid_q     <= 1'b0;
+      rresp_q      <= RespOkay;
+      rdata_q      <= '0;
+      en_q         <= 1'b0;
+      seg_count_q  <= '0;
+      high_q       <= PulseTimeW'(sc_pkg::RstPulseHigh);
+      low_q        <= PulseTimeW'(sc_pkg::RstPulseLow);
+      setup_q      <= PulseTimeW'(sc_pkg::RstDirSetup);
+      hold_q       <= PulseTimeW'(sc_pkg::RstDirHold);
+      frac0_q      <= '0;
+      st_phase_q   <= '0;
+      st_clocks_q  <= '0;
+      st_jerk_q    <= '0;
+      st_acc0_q    <= '0;
+      st_vel0_q    <= '0;
+      seg_we_q     <= 1'b0;
+      seg_waddr_q  <= '0;
+      start_q      <= 1'b0;
+      start_d1_q   <= 1'b0;
+      abort_q      <= 1'b0;
+      err_reject_q <= 1'b0;
+      err_bad_q    <= 1'b0;
+      err_estop_q  <= 1'b0;
+    end else begin
+      aw_full_q    <= aw_full_d;
+      awaddr_q     <= awaddr_d;
+      w_full_q     <= w_full_d;
+      wdata_q      <= wdata_d;
+      wstrb_q      <= wstrb_d;
+      bvalid_q     <= bvalid_d;
+      bresp_q      <= bresp_d;
+      rvalid_q     <= rvalid_d;
+      rresp_q      <= rresp_d;
+      rdata_q      <= rdata_d;
+      en_q         <= en_d;
+      seg_count_q  <= seg_count_d;
+      high_q       <= high_d;
+      low_q        <= low_d;
+      setup_q      <= setup_d;
+      hold_q       <= hold_d;
+      frac0_q      <= frac0_d;
+      st_phase_q   <= st_phase_d;
+      st_clocks_q  <= st_clocks_d;
+      st_jerk_q    <= st_jerk_d;
+      st_acc0_q    <= st_acc0_d;
+      st_vel0_q    <= st_vel0_d;
+      seg_we_q     <= seg_we_d;
+      seg_waddr_q  <= seg_waddr_d;
+      start_q      <= start_d;
+      start_d1_q   <= start_q;
+      abort_q      <= abort_d;
+      err_reject_q <= err_reject_d;
+      err_bad_q    <= err_bad_d;
+      err_estop_q  <= err_estop_d;
+    end
+  end
+
+  assign s_axi_awready_o = !aw_full_q;
+  assign s_axi_wready_o  = !w_full_q;
+  assign s_axi_bvalid_o  = bvalid_q;
+  assign s_axi_bresp_o   = bresp_q;
+  assign s_axi_arready_o = !rvalid_q;
+  assign s_axi_rvalid_o  = rvalid_q;
+  assign s_axi_rresp_o   = rresp_q;
+  assign s_axi_rdata_o   = rdata_q;
+
+  assign enable_o    = en_q;
+  assign cfg_high_o  = high_q;
+  assign cfg_low_o   = low_q;
+  assign cfg_setup_o = setup_q;
+  assign cfg_hold_o  = hold_q;
+  assign seg_we_o    = seg_we_q;
+  assign seg_waddr_o = seg_waddr_q;
+  assign seg_phase_o = st_phase_q;
+  assign seg_clocks_o = st_clocks_q;
+  assign seg_jerk_o  = st_jerk_q;
+  assign seg_acc0_o  = st_acc0_q;
+  assign seg_vel0_o  = st_vel0_q;
+  assign seg_count_o = seg_count_q;
+  assign pos_frac0_o = frac0_q;
+  assign start_o     = start_q;
+  assign abort_o     = abort_q;
+  assign busy_o      = busy_eff;
+
+endmodule

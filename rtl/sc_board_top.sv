@@ -1,0 +1,195 @@
+// sc_board_top: Digilent Arty A7-35T (xc7a35ticsg324-1L) top level.
+// Pins: constraints/arty_a7_35t.xdc.
+//
+//   CLK100MHZ --[sc_clkgen: MMCM]--> 20 MHz system clock
+//   ck_rst button AND MMCM locked --[sc_rst_sync]--> rst_n
+//   USB-UART (115200 8N1) --[sc_uart_rx/tx + sc_uart_bridge]--> AXI4-Lite
+//       --> sc_axi_axis (sc_axi_regs + sc_axis_core) --> STEP/DIR/EN on Pmod JA
+//   encoder A/B on Pmod JB --[sc_sync, sc_enc_count]--> ENC_POS / FOLLOW_ERR
+//   BTN0 --[sc_sync]--> e-stop (abort, EN off, ERR.ESTOP latched)
+//   LD4 heartbeat, LD5 busy, LD6 done, LD7 fault / e-stop / error flag
+// Every input pin is asynchronous and goes through a two-flop synchroniser;
+// every output pin comes from a flop of the system clock domain.
+module sc_board_top #(
+  parameter int ClksPerBit = sc_pkg::UartClksPerBit
+) (
+  input  logic       clk100_i,    // E3, 100 MHz oscillator
+  input  logic       ck_rst_ni,   // C2, red RESET button (low = pressed)
+  input  logic       estop_i,     // D9, BTN0 (high = pressed): e-stop
+  input  logic       uart_rx_i,   // A9, uart_txd_in: data from the PC
+  output logic       uart_tx_o,   // D10, uart_rxd_out: data to the PC
+  output logic       step_o,      // G13, Pmod JA1
+  output logic       dir_o,       // B11, Pmod JA2
+  output logic       en_o,        // A11, Pmod JA3 (high = enabled)
+  input  logic       enc_a_i,     // E15, Pmod JB1
+  input  logic       enc_b_i,     // E16, Pmod JB2
+  output logic [3:0] led_o        // H5 J5 T9 T10 (LD4..LD7)
+);
+
+  localparam int AW      = sc_pkg::RegAddrW;
+  localparam int PosIntW = sc_pkg::PosIntW;
+  localparam int PhaseW  = sc_pkg::PhaseW;
+  localparam int HeartW  = 24;    // 2^23 clocks = 0.42 s per LED toggle
+
+  logic clk, locked, rst_n;
+
+  sc_clkgen u_clkgen (
+    .clk100_i,
+    .clk_o    (clk),
+    .locked_o (locked)
+  );
+
+  sc_rst_sync u_rst_sync (
+    .clk_i   (clk),
+    .arst_ni (ck_rst_ni && locked),
+    .rst_no  (rst_n)
+  );
+
+  // ---- asynchronous inputs --------------------------------------------------
+  logic       rx_sync, estop_sync;
+  logic [1:0] enc_ab;
+
+  sc_sync #(.Width(1), .ResetVal(1'b1)) u_sync_rx (
+    .clk_i (clk), .rst_ni (rst_n), .d_i (uart_rx_i), .q_o (rx_sync)
+  );
+  sc_sync #(.Width(1), .ResetVal(1'b0)) u_sync_estop (
+    .clk_i (clk), .rst_ni (rst_n), .d_i (estop_i), .q_o (estop_sync)
+  );
+  sc_sync #(.Width(2), .ResetVal(1'b0)) u_sync_enc (
+    .clk_i (clk), .rst_ni (rst_n), .d_i ({enc_b_i, enc_a_i}), .q_o (enc_ab)
+  );
+
+  // ---- encoder (placeholder for the closed-loop quadrature decoder) ----------
+  logic signed [PosIntW-1:0] enc_pos;
+  logic [7:0]                unused_enc_illegal;
+
+  sc_enc_count u_enc (
+    .clk_i     (clk),
+    .rst_ni    (rst_n),
+    .ab_i      (enc_ab),
+    .pos_o     (enc_pos),
+    .illegal_o (unused_enc_illegal)
+  );
+
+  // ---- UART bridge -------------------------------------------------------------
+  logic       rx_valid, rx_ferr, tx_valid, tx_ready, unused_crc_err;
+  logic [7:0] rx_data, tx_data;
+
+  sc_uart_rx #(.ClksPerBit(ClksPerBit)) u_uart_rx (
+    .clk_i       (clk),
+    .rst_ni      (rst_n),
+    .rx_i        (rx_sync),
+    .valid_o     (rx_valid),
+    .data_o      (rx_data),
+    .frame_err_o (rx_ferr)
+  );
+
+  sc_uart_tx #(.ClksPerBit(ClksPerBit)) u_uart_tx (
+    .clk_i   (clk),
+    .rst_ni  (rst_n),
+    .valid_i (tx_valid),
+    .data_i  (tx_data),
+    .ready_o (tx_ready),
+    .tx_o    (uart_tx_o)
+  );
+
+  logic [AW-1:0] awaddr, araddr;
+  logic          awvalid, awready, wvalid, wready, bvalid, bready;
+  logic          arvalid, arready, rvalid, rready;
+  logic [31:0]   wdata, rdata;
+  logic [3:0]    wstrb;
+  logic [1:0]    bresp, rresp;
+
+  sc_uart_bridge #(.TimeoutClks(sc_pkg::UartTimeoutBits * ClksPerBit)) u_bridge (
+    .clk_i           (clk),
+    .rst_ni          (rst_n),
+    .rx_valid_i      (rx_valid),
+    .rx_data_i       (rx_data),
+    .rx_frame_err_i  (rx_ferr),
+    .tx_valid_o      (tx_valid),
+    .tx_data_o       (tx_data),
+    .tx_ready_i      (tx_ready),
+    .m_axi_awaddr_o  (awaddr),
+    .m_axi_awvalid_o (awvalid),
+    .m_axi_awready_i (awready),
+    .m_axi_wdata_o   (wdata),
+    .m_axi_wstrb_o   (wstrb),
+    .m_axi_wvalid_o  (wvalid),
+    .m_axi_wready_i  (wready),
+    .m_axi_bresp_i   (bresp),
+    .m_axi_bvalid_i  (bvalid),
+    .m_axi_bready_o  (bready),
+    .m_axi_araddr_o  (araddr),
+    .m_axi_arvalid_o (arvalid),
+    .m_axi_arready_i (arready),
+    .m_axi_rdata_i   (rdata),
+    .m_axi_rresp_i   (rresp),
+    .m_axi_rvalid_i  (rvalid),
+    .m_axi_rready_o  (rready),
+    .crc_err_o       (unused_crc_err)
+  );
+
+  // ---- the axis ------------------------------------------------------------------
+  logic                      busy, done, fault;
+  logic [PhaseW-1:0]         unused_phase;
+  logic signed [PosIntW-1:0] unused_pulse_count, unused_ref_pos;
+
+  sc_axi_axis u_axis (
+    .clk_i           (clk),
+    .rst_ni          (rst_n),
+    .s_axi_awaddr_i  (awaddr),
+    .s_axi_awvalid_i (awvalid),
+    .s_axi_awready_o (awready),
+    .s_axi_wdata_i   (wdata),
+    .s_axi_wstrb_i   (wstrb),
+    .s_axi_wvalid_i  (wvalid),
+    .s_axi_wready_o  (wready),
+    .s_axi_bresp_o   (bresp),
+    .s_axi_bvalid_o  (bvalid),
+    .s_axi_bready_i  (bready),
+    .s_axi_araddr_i  (araddr),
+    .s_axi_arvalid_i (arvalid),
+    .s_axi_arready_o (arready),
+    .s_axi_rdata_o   (rdata),
+    .s_axi_rresp_o   (rresp),
+    .s_axi_rvalid_o  (rvalid),
+    .s_axi_rready_i  (rready),
+    .estop_i         (estop_sync),
+    .enc_ab_i        (enc_ab),
+    .enc_pos_i       (enc_pos),
+    .step_o,
+    .dir_o,
+    .en_o,
+    .busy_o          (busy),
+    .done_o          (done),
+    .fault_o         (fault),
+    .phase_o         (unused_phase),
+    .pulse_count_o   (unused_pulse_count),
+    .ref_pos_o       (unused_ref_pos)
+  );
+
+  // ---- LEDs ------------------------------------------------------------------------
+  logic [HeartW-1:0] heart_q;
+  logic [3:0]        led_q, led_d;
+
+  always_comb begin
+    led_d    = '0;
+    led_d[0] = heart_q[HeartW-1];
+    led_d[1] = busy;
+    led_d[2] = done;
+    led_d[3] = fault || estop_sync;
+  end
+
+  always_ff @(posedge clk) begin
+    if (!rst_n) begin
+      heart_q <= '0;
+      led_q   <= '0;
+    end else begin
+      heart_q <= heart_q + HeartW'(1);
+      led_q   <= led_d;
+    end
+  end
+
+  assign led_o = led_q;
+
+endmodule

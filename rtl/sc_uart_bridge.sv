@@ -1,0 +1,279 @@
+// sc_uart_bridge: UART frames to AXI4-Lite register reads and writes, so a
+// PC can drive the register file with no processor (protocol: docs/regmap.md).
+//
+//   host -> board  write: A5 01 addr d0 d1 d2 d3 crc     (data little-endian)
+//                  read : A5 02 addr crc
+//   board -> host  write: 5A status crc
+//                  read : 5A status d0 d1 d2 d3 crc
+//                  error: 5A 80 crc (CRC wrong) | 5A 81 crc (unknown command)
+//   crc: CRC-8, polynomial 0x07, initial 0x00, over every byte after the
+//   sync byte. status: the AXI response (0 OKAY, 2 SLVERR, 3 DECERR).
+// A frame with a wrong CRC, a UART framing error, or a gap longer than
+// TimeoutClks inside it is dropped before anything reaches the bus (a CRC
+// error is answered, the others are not). Bytes that arrive while a
+// request is executed or answered are ignored; bytes other than A5 between
+// frames are skipped, so the host can always resynchronise.
+module sc_uart_bridge #(
+  parameter int TimeoutClks = 6960
+) (
+  input  logic                         clk_i,
+  input  logic                         rst_ni,
+
+  // from sc_uart_rx / to sc_uart_tx
+  input  logic                         rx_valid_i,
+  input  logic [7:0]                   rx_data_i,
+  input  logic                         rx_frame_err_i,
+  output logic                         tx_valid_o,
+  output logic [7:0]                   tx_data_o,
+  input  logic                         tx_ready_i,
+
+  // AXI4-Lite master
+  output logic [sc_pkg::RegAddrW-1:0]  m_axi_awaddr_o,
+  output logic                         m_axi_awvalid_o,
+  input  logic                         m_axi_awready_i,
+  output logic [31:0]                  m_axi_wdata_o,
+  output logic [3:0]                   m_axi_wstrb_o,
+  output logic                         m_axi_wvalid_o,
+  input  logic                         m_axi_wready_i,
+  input  logic [1:0]                   m_axi_bresp_i,
+  input  logic                         m_axi_bvalid_i,
+  output logic                         m_axi_bready_o,
+  output logic [sc_pkg::RegAddrW-1:0]  m_axi_araddr_o,
+  output logic                         m_axi_arvalid_o,
+  input  logic                         m_axi_arready_i,
+  input  logic [31:0]                  m_axi_rdata_i,
+  input  logic [1:0]                   m_axi_rresp_i,
+  input  logic                         m_axi_rvalid_i,
+  output logic                         m_axi_rready_o,
+
+  output logic                         crc_err_o     // one clock per rejected frame
+);
+
+  localparam int AW = sc_pkg::RegAddrW;
+  localparam logic [7:0] ReqSync  = 8'(sc_pkg::UartReqSync);
+  localparam logic [7:0] RspSync  = 8'(sc_pkg::UartRspSync);
+  localparam logic [7:0] CmdWrite = 8'(sc_pkg::UartCmdWrite);
+  localparam logic [7:0] CmdRead  = 8'(sc_pkg::UartCmdRead);
+  localparam logic [7:0] StCrcErr = 8'(sc_pkg::UartStCrcErr);
+  localparam logic [7:0] StBadCmd = 8'(sc_pkg::UartStBadCmd);
+  localparam int ToW = $clog2(TimeoutClks + 1);
+
+  typedef enum logic [3:0] {
+    SSync  = 4'd0,
+    SCmd   = 4'd1,
+    SAddr  = 4'd2,
+    SData  = 4'd3,
+    SCrc   = 4'd4,
+    SWrite = 4'd5,
+    SRead  = 4'd6,
+    STx    = 4'd7
+  } state_e;
+
+  // CRC-8, polynomial x^8 + x^2 + x + 1 (0x07), MSB first
+  function automatic logic [7:0] crc8(input logic [7:0] crc, input logic [7:0] d);
+    logic [7:0] c;
+    c = crc ^ d;
+    for (int i = 0; i < 8; i++) begin
+      c = c[7] ? ((c << 1) ^ 8'h07) : (c << 1);
+    end
+    crc8 = c;
+  endfunction
+
+  state_e          state_q, state_d;
+  logic            is_write_q, is_write_d;
+  logic [AW-1:0]   addr_q, addr_d;
+  logic [31:0]     data_q, data_d;
+  logic [1:0]      dcnt_q, dcnt_d;
+  logic [7:0]      crc_q, crc_d;
+  logic [ToW-1:0]  idle_q, idle_d;
+  logic            aw_done_q, aw_done_d;
+  logic            w_done_q, w_done_d;
+  logic            a_pend_q, a_pend_d;    // request presented, response awaited
+  logic [7:0]      status_q, status_d;
+  logic            has_data_q, has_data_d;
+  logic [2:0]      tx_idx_q, tx_idx_d;
+  logic            crc_err_q, crc_err_d;
+
+  logic [7:0]      tx_byte;
+  logic            tx_last;
+
+  always_comb begin
+    if (tx_idx_q == 3'd0) begin
+      tx_byte = RspSync;
+    end else if (tx_idx_q == 3'd1) begin
+      tx_byte = status_q;
+    end else if (has_data_q && tx_idx_q <= 3'd5) begin
+      tx_byte = data_q[8 * (tx_idx_q - 3'd2) +: 8];
+    end else begin
+      tx_byte = crc_q;
+    end
+    tx_last = tx_idx_q == (has_data_q ? 3'd6 : 3'd2);
+  end
+
+  always_comb begin
+    state_d    = state_q;
+    is_write_d = is_write_q;
+    addr_d     = addr_q;
+    data_d     = data_q;
+    dcnt_d     = dcnt_q;
+    crc_d      = crc_q;
+    idle_d     = idle_q;
+    aw_done_d  = aw_done_q;
+    w_done_d   = w_done_q;
+    a_pend_d   = a_pend_q;
+    status_d   = status_q;
+    has_data_d = has_data_q;
+    tx_idx_d   = tx_idx_q;
+    crc_err_d  = 1'b0;
+
+    // inter-byte timeout inside a request frame
+    if (state_q == SCmd || state_q == SAddr || state_q == SData || state_q == SCrc) begin
+      if (rx_valid_i) begin
+        idle_d = '0;
+      end else if (idle_q == ToW'(TimeoutClks)) begin
+        state_d = SSync;
+      end else begin
+        idle_d = idle_q + ToW'(1);
+      end
+      if (rx_frame_err_i) state_d = SSync;
+    end
+
+    unique case (state_q)
+      SSync: begin
+        if (rx_valid_i && rx_data_i == ReqSync) begin
+          state_d = SCmd;
+          crc_d   = 8'h00;
+          idle_d  = '0;
+        end
+      end
+      SCmd: begin
+        if (rx_valid_i) begin
+          crc_d = crc8(crc_q, rx_data_i);
+          if (rx_data_i == CmdWrite || rx_data_i == CmdRead) begin
+            is_write_d = rx_data_i == CmdWrite;
+            state_d    = SAddr;
+          end else begin
+            // unknown command: answer, then hunt for the next sync
+            status_d   = StBadCmd;
+            has_data_d = 1'b0;
+            crc_d      = 8'h00;
+            tx_idx_d   = 3'd0;
+            state_d    = STx;
+          end
+        end
+      end
+      SAddr: begin
+        if (rx_valid_i) begin
+          crc_d   = crc8(crc_q, rx_data_i);
+          addr_d  = AW'(rx_data_i);
+          dcnt_d  = 2'd0;
+          data_d  = '0;
+          if (is_write_q) state_d = SData;
+          else            state_d = SCrc;
+        end
+      end
+      SData: begin
+        if (rx_valid_i) begin
+          crc_d  = crc8(crc_q, rx_data_i);
+          data_d = {rx_data_i, data_q[31:8]};
+          dcnt_d = dcnt_q + 2'd1;
+          if (dcnt_q == 2'd3) state_d = SCrc;
+        end
+      end
+      SCrc: begin
+        if (rx_valid_i) begin
+          tx_idx_d = 3'd0;
+          if (rx_data_i != crc_q) begin
+            status_d   = StCrcErr;
+            has_data_d = 1'b0;
+            crc_err_d  = 1'b1;
+            state_d    = STx;
+          end else begin
+            aw_done_d = 1'b0;
+            w_done_d  = 1'b0;
+            a_pend_d  = 1'b1;
+            if (is_write_q) state_d = SWrite;
+            else            state_d = SRead;
+          end
+          crc_d = 8'h00;
+        end
+      end
+      SWrite: begin
+        if (m_axi_awvalid_o && m_axi_awready_i) aw_done_d = 1'b1;
+        if (m_axi_wvalid_o && m_axi_wready_i)   w_done_d  = 1'b1;
+        if (m_axi_bvalid_i) begin
+          status_d   = 8'(m_axi_bresp_i);
+          has_data_d = 1'b0;
+          a_pend_d   = 1'b0;
+          state_d    = STx;
+        end
+      end
+      SRead: begin
+        if (m_axi_arvalid_o && m_axi_arready_i) a_pend_d = 1'b0;
+        if (m_axi_rvalid_i) begin
+          status_d   = 8'(m_axi_rresp_i);
+          data_d     = m_axi_rdata_i;
+          has_data_d = 1'b1;
+          state_d    = STx;
+        end
+      end
+      STx: begin
+        if (tx_ready_i) begin
+          tx_idx_d = tx_idx_q + 3'd1;
+          if (tx_idx_q != 3'd0 && !tx_last) crc_d = crc8(crc_q, tx_byte);
+          if (tx_last) state_d = SSync;
+        end
+      end
+      default: state_d = SSync;
+    endcase
+  end
+
+  always_ff @(posedge clk_i) begin
+    if (!rst_ni) begin
+      state_q    <= SSync;
+      is_write_q <= 1'b0;
+      addr_q     <= '0;
+      data_q     <= '0;
+      dcnt_q     <= '0;
+      crc_q      <= '0;
+      idle_q     <= '0;
+      aw_done_q  <= 1'b0;
+      w_done_q   <= 1'b0;
+      a_pend_q   <= 1'b0;
+      status_q   <= '0;
+      has_data_q <= 1'b0;
+      tx_idx_q   <= '0;
+      crc_err_q  <= 1'b0;
+    end else begin
+      state_q    <= state_d;
+      is_write_q <= is_write_d;
+      addr_q     <= addr_d;
+      data_q     <= data_d;
+      dcnt_q     <= dcnt_d;
+      crc_q      <= crc_d;
+      idle_q     <= idle_d;
+      aw_done_q  <= aw_done_d;
+      w_done_q   <= w_done_d;
+      a_pend_q   <= a_pend_d;
+      status_q   <= status_d;
+      has_data_q <= has_data_d;
+      tx_idx_q   <= tx_idx_d;
+      crc_err_q  <= crc_err_d;
+    end
+  end
+
+  assign m_axi_awaddr_o  = addr_q;
+  assign m_axi_awvalid_o = state_q == SWrite && !aw_done_q;
+  assign m_axi_wdata_o   = data_q;
+  assign m_axi_wstrb_o   = 4'hF;
+  assign m_axi_wvalid_o  = state_q == SWrite && !w_done_q;
+  assign m_axi_bready_o  = state_q == SWrite;
+  assign m_axi_araddr_o  = addr_q;
+  assign m_axi_arvalid_o = state_q == SRead && a_pend_q;
+  assign m_axi_rready_o  = state_q == SRead;
+
+  assign tx_valid_o = state_q == STx;
+  assign tx_data_o  = tx_byte;
+  assign crc_err_o  = crc_err_q;
+
+endmodule

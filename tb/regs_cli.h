@@ -1,0 +1,20 @@
+// `scurve regs`: a planned move as the register write sequence of the
+// AXI4-Lite register file, or as UART bridge frames (docs/regmap.md).
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include "planner.h"
+#include "step_gen.h"
+
+namespace sc {
+
+struct RegsCliFlags {
+  bool uart = false;      // print UART frames (hex) instead of address/data
+  bool no_start = false;  // leave out the final CMD.START
+};
+
+void add_regs_flags(CLI::App* cmd, RegsCliFlags& f);
+int run_regs_cli(const RegsCliFlags& f, const Plan& plan, const PulseTiming& timing, bool json);
+
+}  // namespace sc

@@ -1,0 +1,53 @@
+// Thin adapters to the Verilated sc_axi_axis and sc_board_top.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+
+#include "axi_regs.h"
+
+class VerilatedContext;
+class Vsc_axi_axis;
+class Vsc_board_top;
+
+namespace sc {
+
+class RtlAxiAxis {
+ public:
+  RtlAxiAxis();
+  ~RtlAxiAxis();
+  RtlAxiAxis(const RtlAxiAxis&) = delete;
+  RtlAxiAxis& operator=(const RtlAxiAxis&) = delete;
+  void reset(int cycles = 4);
+  void step(const AxiIn& in, const RegsSide& side);
+  AxiAxisOutputs outputs() const;
+
+ private:
+  std::unique_ptr<VerilatedContext> ctx_;
+  std::unique_ptr<Vsc_axi_axis> m_;
+};
+
+// The whole board: 100 MHz pin clock (the simulation stand-in of the MMCM
+// divides it by 5), UART pins, Pmod pins, LEDs.
+class RtlBoard {
+ public:
+  struct Pins {
+    bool uart_tx = true, step = false, dir = false, en = false;
+    uint8_t led = 0;
+  };
+  RtlBoard();
+  ~RtlBoard();
+  RtlBoard(const RtlBoard&) = delete;
+  RtlBoard& operator=(const RtlBoard&) = delete;
+  // One 100 MHz period (rising + falling edge) with these input levels.
+  void tick100(bool uart_rx, bool rst_n = true, bool estop = false, bool enc_a = false, bool enc_b = false);
+  Pins pins() const;
+  uint64_t clocks100() const { return clk100_; }
+
+ private:
+  std::unique_ptr<VerilatedContext> ctx_;
+  std::unique_ptr<Vsc_board_top> m_;
+  uint64_t clk100_ = 0;
+};
+
+}  // namespace sc

@@ -1,0 +1,62 @@
+// `scurve regress`: runs a JSON test list (paper groups, seeded random
+// moves, corner cases, arbitrary commands such as closed-loop scenarios)
+// as separate bench processes in parallel, shows progress, prints a summary
+// table and writes JUnit XML and JSON. `--shard i/n` runs every n-th test
+// so several machines can split a list; `--merge` combines their JSON.
+#pragma once
+
+#include <cstdint>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+namespace sc::regress {
+
+struct TestCase {
+  std::string name;    // unique: entry name, plus ".s<seed>" for random entries
+  std::string entry;   // the list entry it came from
+  std::string what;    // what the entry proves
+  std::string kind;    // group | move | random | command
+  uint64_t seed = 0;   // random entries only
+  std::vector<std::string> argv;  // bench command (argv[0] may use {bin})
+  double timeout_s = 3600;
+  std::vector<std::string> labels;
+};
+
+struct TestResult {
+  TestCase test;
+  bool pass = false;
+  int exit_code = -1;
+  bool timed_out = false;
+  double wall_s = 0;
+  nlohmann::json result;  // the bench's JSON (null if it printed none)
+  std::string failure;    // one line when failing
+  std::string log_path;   // stderr of the run
+};
+
+// Expands a list (see tests/regress_list.json) into test cases. Labels:
+// keep a test when it has any of `only` (if given) and none of `exclude`.
+std::vector<TestCase> expand_list(const nlohmann::json& list, const std::vector<std::string>& only,
+                                  const std::vector<std::string>& exclude);
+// Test k (0-based, in list order) belongs to shard i (1-based) of n when k % n == i - 1.
+std::vector<TestCase> select_shard(const std::vector<TestCase>& tests, int index, int count);
+// Parses "i/n"; throws std::invalid_argument naming the flag.
+std::pair<int, int> parse_shard(const std::string& s);
+
+// The random move of a seed: bench flags of an accepted (plannable) request.
+std::vector<std::string> random_move_args(uint64_t seed, const nlohmann::json& ranges);
+
+struct RunOptions {
+  unsigned jobs = 1;
+  std::string bin_dir;   // replaces {bin} in argv[0]
+  std::string out_dir;   // per-test JSON/log, results.json, junit.xml
+  bool progress = true;  // a live line on a terminal
+};
+std::vector<TestResult> run_tests(const std::vector<TestCase>& tests, const RunOptions& opt);
+
+std::string summary_table(const std::vector<TestResult>& results);
+std::string junit_xml(const std::vector<TestResult>& results, const std::string& suite);
+nlohmann::json results_json(const std::vector<TestResult>& results, const std::string& shard);
+std::vector<TestResult> results_from_json(const nlohmann::json& j);
+
+}  // namespace sc::regress

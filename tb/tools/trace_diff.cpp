@@ -1,0 +1,337 @@
+#include "trace_diff.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <map>
+#include <stdexcept>
+#include <unordered_map>
+
+#include "fstapi.h"
+#include "kin_trace.h"
+
+namespace sc {
+
+std::string DiffReport::to_text() const {
+  std::string s = fmt::format("diff ({}): A={}  B={}\n", format, a_name, b_name);
+  s += fmt::format("compared {} signals over {} clocks", compared_signals, compared_clocks);
+  if (!only_in_a.empty()) s += fmt::format("; {} only in A", only_in_a.size());
+  if (!only_in_b.empty()) s += fmt::format("; {} only in B", only_in_b.size());
+  s += "\n";
+  if (identical()) return s + "identical: no divergence\n";
+  if (!signals.empty()) {
+    const SignalDiff& f = signals.front();
+    s += fmt::format("first divergence: clock {} signal {}: A={} B={}\n", f.first_clock, f.signal, f.a, f.b);
+    if (!context.empty()) s += context;
+    s += fmt::format("summary: {} of {} signals differ, on {} clocks\n", signals.size(), compared_signals,
+                     differing_clocks);
+    for (const SignalDiff& d : signals) {
+      s += fmt::format("  {:<16} first at clock {:>11}  differs on {} clocks\n", d.signal, d.first_clock,
+                       d.differing_clocks);
+    }
+  }
+  if (length_differs) {
+    s += fmt::format("length differs: A ends at clock {}, B at clock {}\n", a_last_clock, b_last_clock);
+  }
+  return s;
+}
+
+namespace {
+
+bool ends_with(const std::string& s, const std::string& suffix) {
+  return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+std::string with_source(const std::string& path, const std::map<std::string, std::string>& meta) {
+  const auto it = meta.find("source");
+  return it == meta.end() ? path : fmt::format("{} ({})", path, it->second);
+}
+
+bool ignored(const DiffOptions& opt, const std::string& name) {
+  return std::find(opt.ignore.begin(), opt.ignore.end(), name) != opt.ignore.end();
+}
+
+}  // namespace
+
+// CSV: held columns are exact between rows (sample and hold); sampled
+// columns are compared only at clocks where both traces have a row.
+DiffReport diff_kin_traces(const std::string& a_path, const std::string& b_path, const DiffOptions& opt) {
+  const KinTrace a = read_kin_trace(a_path);
+  const KinTrace b = read_kin_trace(b_path);
+  DiffReport rep;
+  rep.format = "csv";
+  rep.a_name = with_source(a_path, a.meta);
+  rep.b_name = with_source(b_path, b.meta);
+
+  struct Col {
+    std::string name;
+    int ia, ib;
+    bool held;
+  };
+  std::vector<Col> cols;
+  for (size_t i = 0; i < a.columns.size(); ++i) {
+    if (ignored(opt, a.columns[i])) continue;
+    const auto it = std::find(b.columns.begin(), b.columns.end(), a.columns[i]);
+    if (it == b.columns.end()) {
+      rep.only_in_a.push_back(a.columns[i]);
+      continue;
+    }
+    const size_t ib = size_t(it - b.columns.begin());
+    cols.push_back({a.columns[i], int(i), int(ib), a.held[i] && b.held[ib]});
+  }
+  for (const std::string& c : b.columns) {
+    if (!ignored(opt, c) && std::find(a.columns.begin(), a.columns.end(), c) == a.columns.end()) {
+      rep.only_in_b.push_back(c);
+    }
+  }
+  rep.compared_signals = cols.size();
+  rep.a_last_clock = a.end_clock ? a.end_clock - 1 : 0;
+  rep.b_last_clock = b.end_clock ? b.end_clock - 1 : 0;
+  rep.length_differs = rep.a_last_clock != rep.b_last_clock;
+  const uint64_t common_end = std::min(a.end_clock, b.end_clock);  // clocks [0, common_end) compared
+
+  std::map<std::string, size_t> index;  // signal -> position in rep.signals
+  size_t ia = 0, ib = 0;                // next unread row
+  long la = -1, lb = -1;                // row holding the current value
+  size_t first_union_row = SIZE_MAX;    // for the context
+  std::vector<uint64_t> union_clocks;
+  while (ia < a.clocks.size() || ib < b.clocks.size()) {
+    const uint64_t ca = ia < a.clocks.size() ? a.clocks[ia] : UINT64_MAX;
+    const uint64_t cb = ib < b.clocks.size() ? b.clocks[ib] : UINT64_MAX;
+    const uint64_t c = std::min(ca, cb);
+    const bool row_a = ca == c, row_b = cb == c;
+    if (row_a) la = long(ia++);
+    if (row_b) lb = long(ib++);
+    union_clocks.push_back(c);
+    if (la < 0 || lb < 0) continue;  // one trace has not started yet
+    if (c >= common_end) continue;  // past the shorter trace
+    const uint64_t next_a = ia < a.clocks.size() ? a.clocks[ia] : common_end;
+    const uint64_t next_b = ib < b.clocks.size() ? b.clocks[ib] : common_end;
+    const uint64_t span = std::max<uint64_t>(1, std::min({next_a, next_b, common_end}) - c);  // clocks this value holds
+    bool any = false;
+    uint64_t any_span = 0;
+    for (const Col& col : cols) {
+      if (!col.held && !(row_a && row_b)) continue;
+      const std::string& va = a.rows[size_t(la)][size_t(col.ia)];
+      const std::string& vb = b.rows[size_t(lb)][size_t(col.ib)];
+      if (va == vb) continue;
+      const uint64_t n = col.held ? span : 1;
+      any = true;
+      any_span = std::max(any_span, n);
+      auto it = index.find(col.name);
+      if (it == index.end()) {
+        index[col.name] = rep.signals.size();
+        rep.signals.push_back({col.name, c, va, vb, n});
+      } else {
+        rep.signals[it->second].differing_clocks += n;
+      }
+    }
+    if (any) {
+      rep.differing_clocks += any_span;
+      if (first_union_row == SIZE_MAX) first_union_row = union_clocks.size() - 1;
+    }
+  }
+  rep.compared_clocks = common_end;
+  std::stable_sort(rep.signals.begin(), rep.signals.end(),
+                   [](const SignalDiff& x, const SignalDiff& y) { return x.first_clock < y.first_clock; });
+
+  if (first_union_row != SIZE_MAX) {
+    // Context: the rows of both traces around the first divergence.
+    const uint64_t c0 = union_clocks[first_union_row];
+    std::vector<std::string> names;
+    for (const SignalDiff& d : rep.signals) names.push_back(d.signal);
+    for (const Col& col : cols) {
+      if (names.size() >= 6) break;
+      if (std::find(names.begin(), names.end(), col.name) == names.end() && col.held) names.push_back(col.name);
+    }
+    auto render = [&](const KinTrace& t, const char* tag) {
+      std::string s;
+      const auto pos = size_t(std::lower_bound(t.clocks.begin(), t.clocks.end(), c0) - t.clocks.begin());
+      const size_t from = pos > opt.context_rows ? pos - opt.context_rows : 0;
+      const size_t to = std::min(t.clocks.size(), pos + opt.context_rows + 1);
+      for (size_t r = from; r < to; ++r) {
+        std::string line = fmt::format("  {} clock {:>11}{}", tag, t.clocks[r], t.clocks[r] == c0 ? " >" : "  ");
+        for (const std::string& n : names) {
+          const auto it = std::find(t.columns.begin(), t.columns.end(), n);
+          if (it != t.columns.end()) line += fmt::format(" {}={}", n, t.rows[r][size_t(it - t.columns.begin())]);
+        }
+        s += line + "\n";
+      }
+      return s;
+    };
+    rep.context = "context (rows of each trace around the first divergence):\n" + render(a, "A") + render(b, "B");
+  }
+  return rep;
+}
+
+// ---- FST ------------------------------------------------------------------
+namespace {
+
+struct FstSignals {
+  std::vector<std::string> names;                         // one per handle we keep
+  std::unordered_map<fstHandle, size_t> by_handle;
+  std::vector<std::vector<std::pair<uint64_t, std::string>>> changes;  // per signal, time ordered
+  uint64_t end_time = 0;
+};
+
+FstSignals read_fst(const std::string& path) {
+  void* ctx = fstReaderOpen(path.c_str());
+  if (!ctx) throw std::runtime_error(fmt::format("cannot read FST {}", path));
+  FstSignals s;
+  s.end_time = fstReaderGetEndTime(ctx);
+  std::vector<std::string> scope;
+  while (const fstHier* h = fstReaderIterateHier(ctx)) {
+    switch (h->htyp) {
+      case FST_HT_SCOPE: scope.emplace_back(h->u.scope.name); break;
+      case FST_HT_UPSCOPE:
+        if (!scope.empty()) scope.pop_back();
+        break;
+      case FST_HT_VAR: {
+        std::string name;
+        for (const std::string& p : scope) name += p + ".";
+        name += h->u.var.name;
+        // Aliases share a handle: keep the first name (the values are the same).
+        if (!h->u.var.is_alias && !s.by_handle.count(h->u.var.handle)) {
+          s.by_handle[h->u.var.handle] = s.names.size();
+          s.names.push_back(name);
+        }
+        break;
+      }
+      default: break;
+    }
+  }
+  s.changes.resize(s.names.size());
+  fstReaderSetFacProcessMaskAll(ctx);
+  auto cb = [](void* user, uint64_t time, fstHandle handle, const unsigned char* value) {
+    auto* sig = static_cast<FstSignals*>(user);
+    const auto it = sig->by_handle.find(handle);
+    if (it == sig->by_handle.end()) return;
+    auto& ch = sig->changes[it->second];
+    std::string v(reinterpret_cast<const char*>(value));
+    if (!ch.empty() && ch.back().first == time) {
+      ch.back().second = std::move(v);  // last write of a time step wins
+    } else {
+      ch.emplace_back(time, std::move(v));
+    }
+  };
+  fstReaderIterBlocks(ctx, cb, &s, nullptr);
+  fstReaderClose(ctx);
+  return s;
+}
+
+}  // namespace
+
+DiffReport diff_fst(const std::string& a_path, const std::string& b_path, const DiffOptions& opt) {
+  const FstSignals a = read_fst(a_path);
+  const FstSignals b = read_fst(b_path);
+  DiffReport rep;
+  rep.format = "fst";
+  rep.a_name = a_path;
+  rep.b_name = b_path;
+  const uint64_t ticks = std::max<uint64_t>(1, opt.fst_ticks_per_clock);
+  auto to_clock = [&](uint64_t t) { return t / ticks; };
+  rep.a_last_clock = to_clock(a.end_time);
+  rep.b_last_clock = to_clock(b.end_time);
+  rep.length_differs = a.end_time != b.end_time;
+  const uint64_t end = std::min(a.end_time, b.end_time);
+  rep.compared_clocks = to_clock(end) + 1;
+
+  std::map<std::string, size_t> b_index;
+  for (size_t i = 0; i < b.names.size(); ++i) b_index[b.names[i]] = i;
+  std::map<std::string, bool> in_a;
+  // Clock intervals where some signal differs, merged afterwards.
+  std::vector<std::pair<uint64_t, uint64_t>> bad;
+  struct First {
+    size_t ia, ib;
+    uint64_t time;
+  };
+  std::vector<First> firsts;
+  for (size_t i = 0; i < a.names.size(); ++i) {
+    const std::string& name = a.names[i];
+    in_a[name] = true;
+    if (ignored(opt, name)) continue;
+    const auto it = b_index.find(name);
+    if (it == b_index.end()) {
+      rep.only_in_a.push_back(name);
+      continue;
+    }
+    ++rep.compared_signals;
+    const auto& ca = a.changes[i];
+    const auto& cb = b.changes[it->second];
+    // Walk both change lists: the value holds until the next change.
+    size_t pa = 0, pb = 0;
+    const std::string none = "x";
+    const std::string* va = &none;
+    const std::string* vb = &none;
+    bool differing = false;
+    uint64_t diff_from = 0, t = 0, total = 0;
+    SignalDiff sd;
+    bool seen = false;
+    while (true) {
+      const uint64_t ta = pa < ca.size() ? ca[pa].first : UINT64_MAX;
+      const uint64_t tb = pb < cb.size() ? cb[pb].first : UINT64_MAX;
+      t = std::min(ta, tb);
+      if (t > end) t = end + 1;
+      // close the interval [diff_from, t)
+      if (differing && t > diff_from) {
+        bad.emplace_back(to_clock(diff_from), to_clock(t - 1) + 1);
+        total += to_clock(t - 1) + 1 - to_clock(diff_from);
+      }
+      if (t > end) break;
+      while (pa < ca.size() && ca[pa].first == t) va = &ca[pa++].second;
+      while (pb < cb.size() && cb[pb].first == t) vb = &cb[pb++].second;
+      differing = *va != *vb;
+      diff_from = t;
+      if (differing && !seen) {
+        seen = true;
+        sd = {name, to_clock(t), *va, *vb, 0};
+        firsts.push_back({i, it->second, t});
+      }
+    }
+    if (seen) {
+      sd.differing_clocks = std::max<uint64_t>(1, total);
+      rep.signals.push_back(sd);
+    }
+  }
+  for (const std::string& n : b.names) {
+    if (!in_a.count(n) && !ignored(opt, n)) rep.only_in_b.push_back(n);
+  }
+  std::stable_sort(rep.signals.begin(), rep.signals.end(),
+                   [](const SignalDiff& x, const SignalDiff& y) { return x.first_clock < y.first_clock; });
+  std::sort(bad.begin(), bad.end());
+  uint64_t covered_to = 0;
+  for (const auto& [from, to] : bad) {
+    const uint64_t f = std::max(from, covered_to);
+    if (to > f) rep.differing_clocks += to - f;
+    covered_to = std::max(covered_to, to);
+  }
+  if (!firsts.empty()) {
+    const First f = *std::min_element(firsts.begin(), firsts.end(),
+                                      [](const First& x, const First& y) { return x.time < y.time; });
+    auto render = [&](const FstSignals& s, size_t idx, const char* tag) {
+      const auto& ch = s.changes[idx];
+      const auto pos = size_t(std::lower_bound(ch.begin(), ch.end(), std::make_pair(f.time, std::string())) -
+                              ch.begin());
+      const size_t from = pos > opt.context_rows ? pos - opt.context_rows : 0;
+      const size_t to = std::min(ch.size(), pos + opt.context_rows + 1);
+      std::string out;
+      for (size_t r = from; r < to; ++r) {
+        out += fmt::format("  {} clock {:>11} (t={}){} {}={}\n", tag, to_clock(ch[r].first), ch[r].first,
+                           ch[r].first == f.time ? " >" : "  ", s.names[idx], ch[r].second);
+      }
+      return out;
+    };
+    rep.context = "context (value changes of that signal around the first divergence):\n" +
+                  render(a, f.ia, "A") + render(b, f.ib, "B");
+  }
+  return rep;
+}
+
+DiffReport diff_traces(const std::string& a, const std::string& b, const DiffOptions& opt) {
+  if (ends_with(a, ".fst") != ends_with(b, ".fst")) {
+    throw std::runtime_error("diff: both traces must be of the same kind (two .fst or two kinematics CSV)");
+  }
+  return ends_with(a, ".fst") ? diff_fst(a, b, opt) : diff_kin_traces(a, b, opt);
+}
+
+}  // namespace sc

@@ -1,0 +1,241 @@
+// Kinematics traces, `scurve diff` and the regression list/shard logic, plus
+// end-to-end runs of the SystemC bench with an injected model fault.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <string>
+
+#include "axis_core.h"
+#include "kin_trace.h"
+#include "regress.h"
+#include "trace_diff.h"
+
+using namespace sc;
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path temp_dir(const std::string& name) {
+  const fs::path d = fs::temp_directory_path() / ("scurve_tools_" + name + "_" + std::to_string(getpid()));
+  fs::create_directories(d);
+  return d;
+}
+
+// A synthetic run: a pulse every 1000 clocks (high for 50), the velocity
+// changing every clock. `tweak` may corrupt the outputs of one clock.
+template <typename Tweak>
+void write_synthetic(const fs::path& path, const char* source, uint64_t clocks, Tweak tweak) {
+  KinTraceWriter w(path.string(), source, 5000);
+  CoreOutputs o;
+  o.en = o.busy = true;
+  o.dir = true;
+  o.phase = 4;
+  for (uint64_t c = 0; c < clocks; ++c) {
+    const uint64_t k = c % 1000;
+    o.step = k < 50;
+    if (k == 0) ++o.pulse_count;
+    o.ref_vel = i128(c) * 1000;
+    o.ref_pos_int = int32_t(c / 1000);
+    CoreOutputs out = o;
+    tweak(c, out);
+    w.on_clock(c, out);
+  }
+  w.close(clocks);
+}
+
+void no_tweak(uint64_t, CoreOutputs&) {}
+
+int run(const std::string& cmd) {
+  const int rc = std::system((cmd + " >/dev/null 2>&1").c_str());
+  return WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
+}
+
+}  // namespace
+
+TEST(KinTrace, WritesOnChangeAndDecimatedAndReadsBack) {
+  const fs::path d = temp_dir("rw");
+  write_synthetic(d / "a.csv", "rtl", 100000, no_tweak);
+  const KinTrace t = read_kin_trace((d / "a.csv").string());
+  EXPECT_EQ(t.meta.at("source"), "rtl");
+  EXPECT_EQ(t.end_clock, 100000u);
+  // Two rows per pulse (rise, fall) + one per 5000 clocks, not one per clock.
+  EXPECT_LE(t.clocks.size(), 100u * 2 + 100000u / 5000 + 2);
+  EXPECT_GE(t.clocks.size(), 100u * 2);
+  ASSERT_EQ(t.columns.size(), kin_trace_columns().size());
+  EXPECT_TRUE(t.held[0]);   // step
+  EXPECT_FALSE(t.held.back());  // ref_jerk is sampled
+}
+
+TEST(TraceDiff, IdenticalTracesReportNothing) {
+  const fs::path d = temp_dir("same");
+  write_synthetic(d / "a.csv", "rtl", 50000, no_tweak);
+  write_synthetic(d / "b.csv", "model", 50000, no_tweak);
+  const DiffReport r = diff_traces((d / "a.csv").string(), (d / "b.csv").string());
+  EXPECT_TRUE(r.identical()) << r.to_text();
+  EXPECT_EQ(r.compared_signals, kin_trace_columns().size());
+  EXPECT_EQ(r.compared_clocks, 50000u);
+}
+
+TEST(TraceDiff, FindsInjectedHeldDivergenceAtItsClock) {
+  const fs::path d = temp_dir("held");
+  write_synthetic(d / "a.csv", "rtl", 50000, no_tweak);
+  // From clock 23456 on, B counts one pulse more.
+  write_synthetic(d / "b.csv", "model", 50000, [](uint64_t c, CoreOutputs& o) {
+    if (c >= 23456) o.pulse_count += 1;
+  });
+  const DiffReport r = diff_traces((d / "a.csv").string(), (d / "b.csv").string());
+  ASSERT_FALSE(r.identical());
+  ASSERT_EQ(r.signals.size(), 1u) << r.to_text();
+  EXPECT_EQ(r.signals[0].signal, "pulse_count");
+  EXPECT_EQ(r.signals[0].first_clock, 23456u);
+  EXPECT_EQ(r.signals[0].differing_clocks, 50000u - 23456u);  // held to the end
+  EXPECT_EQ(r.differing_clocks, 50000u - 23456u);
+  const std::string text = r.to_text();
+  EXPECT_NE(text.find("first divergence: clock 23456 signal pulse_count"), std::string::npos) << text;
+  EXPECT_NE(text.find("context"), std::string::npos);
+}
+
+TEST(TraceDiff, FindsSampledDivergenceAndLengthDifference) {
+  const fs::path d = temp_dir("sampled");
+  write_synthetic(d / "a.csv", "rtl", 50000, no_tweak);
+  // Velocity off at one clock that is a sample row (multiple of 5000).
+  write_synthetic(d / "b.csv", "model", 40000, [](uint64_t c, CoreOutputs& o) {
+    if (c == 15000) o.ref_vel += 1;
+  });
+  const DiffReport r = diff_traces((d / "a.csv").string(), (d / "b.csv").string());
+  ASSERT_EQ(r.signals.size(), 1u) << r.to_text();
+  EXPECT_EQ(r.signals[0].signal, "ref_vel");
+  EXPECT_EQ(r.signals[0].first_clock, 15000u);
+  EXPECT_TRUE(r.length_differs);
+  EXPECT_EQ(r.a_last_clock, 49999u);
+  EXPECT_EQ(r.b_last_clock, 39999u);
+}
+
+TEST(TraceDiff, RejectsMalformedTraces) {
+  const fs::path d = temp_dir("bad");
+  std::ofstream(d / "bad.csv") << "clock,step\n5,1\n3,0\n";
+  write_synthetic(d / "a.csv", "rtl", 1000, no_tweak);
+  EXPECT_THROW(diff_traces((d / "bad.csv").string(), (d / "a.csv").string()), std::runtime_error);
+  EXPECT_THROW(diff_traces((d / "a.csv").string(), (d / "x.fst").string()), std::runtime_error);
+}
+
+// ---- end to end through the SystemC bench --------------------------------------------
+const std::string kShortMove =
+    " --distance 300 --v-start 0 --v-cruise 3000 --v-end 0 --a-max 50000 --j-max 500000";
+
+TEST(ScBench, ModelAndRtlTracesOfACleanRunAreIdentical) {
+  const fs::path d = temp_dir("clean");
+  const std::string rtl = (d / "rtl.csv").string(), model = (d / "model.csv").string();
+  ASSERT_EQ(run(std::string(SC_BENCH) + kShortMove + " --trace-rtl " + rtl + " --trace-model " + model), 0);
+  const DiffReport r = diff_traces(rtl, model);
+  EXPECT_TRUE(r.identical()) << r.to_text();
+  EXPECT_GT(r.compared_clocks, 100000u);
+  EXPECT_EQ(run(std::string(SCURVE) + " diff " + rtl + " " + model), 0);
+}
+
+TEST(ScBench, InjectedModelFaultIsFoundAtItsClockByScoreboardAndDiff) {
+  const fs::path d = temp_dir("inject");
+  const std::string rtl = (d / "rtl.csv").string(), model = (d / "model.csv").string();
+  const std::string json = (d / "run.json").string();
+  const uint64_t k = 123457;
+  const int rc = std::system((std::string(SC_BENCH) + kShortMove + " --json --inject-model-fault " +
+                              std::to_string(k) + " --trace-rtl " + rtl + " --trace-model " + model + " > " + json +
+                              " 2>/dev/null")
+                                 .c_str());
+  EXPECT_EQ(WEXITSTATUS(rc), 1);
+  std::ifstream in(json);
+  const nlohmann::json j = nlohmann::json::parse(in);
+  EXPECT_FALSE(j.at("pass").get<bool>());
+  EXPECT_EQ(j.at("first_mismatch").get<std::string>().rfind("clock " + std::to_string(k) + " signal pulse_count_o", 0),
+            0u)
+      << j.at("first_mismatch");
+  const DiffReport r = diff_traces(rtl, model);
+  ASSERT_FALSE(r.signals.empty()) << r.to_text();
+  EXPECT_EQ(r.signals.front().signal, "pulse_count");
+  EXPECT_EQ(r.signals.front().first_clock, k);
+  EXPECT_EQ(r.signals.front().a, "0");
+  EXPECT_EQ(r.signals.front().b, "1");
+  EXPECT_EQ(run(std::string(SCURVE) + " diff " + rtl + " " + model), 1);
+}
+
+TEST(ScBench, FstWindowsOfTwoIdenticalRunsAreIdenticalAndADifferentWindowIsNot) {
+  const fs::path d = temp_dir("fst");
+  const std::string a = (d / "a.fst").string(), b = (d / "b.fst").string(), c = (d / "c.fst").string();
+  const std::string win = " --fst-from 100000 --fst-to 104000";
+  ASSERT_EQ(run(std::string(SC_BENCH) + kShortMove + " --fst " + a + win), 0);
+  ASSERT_EQ(run(std::string(SC_BENCH) + kShortMove + " --fst " + b + win), 0);
+  ASSERT_EQ(run(std::string(SC_BENCH) + kShortMove + " --fst " + c + " --fst-from 100000 --fst-to 103000"), 0);
+  const DiffReport same = diff_traces(a, b);
+  EXPECT_TRUE(same.identical()) << same.to_text();
+  EXPECT_GT(same.compared_signals, 20u);
+  const DiffReport shorter = diff_traces(a, c);
+  EXPECT_FALSE(shorter.identical());
+  EXPECT_TRUE(shorter.length_differs);
+  EXPECT_EQ(shorter.b_last_clock, 102999u);
+}
+
+// ---- regression list ---------------------------------------------------------------------
+nlohmann::json default_list() {
+  std::ifstream in(std::string(SOURCE_DIR) + "/tests/regress_list.json");
+  return nlohmann::json::parse(in);
+}
+
+TEST(Regress, RandomMovesAreReproducibleFromTheSeed) {
+  const auto a = regress::random_move_args(42, nlohmann::json::object());
+  const auto b = regress::random_move_args(42, nlohmann::json::object());
+  const auto c = regress::random_move_args(43, nlohmann::json::object());
+  EXPECT_EQ(a, b);
+  EXPECT_NE(a, c);
+  const auto l1 = regress::expand_list(default_list(), {}, {});
+  const auto l2 = regress::expand_list(default_list(), {}, {});
+  ASSERT_EQ(l1.size(), l2.size());
+  for (size_t i = 0; i < l1.size(); ++i) EXPECT_EQ(l1[i].argv, l2[i].argv);
+}
+
+TEST(Regress, DefaultListHasTheFourPaperGroupsRandomSeedsAndCorners) {
+  const auto tests = regress::expand_list(default_list(), {}, {});
+  std::set<std::string> kinds, names;
+  for (const auto& t : tests) {
+    kinds.insert(t.kind);
+    EXPECT_TRUE(names.insert(t.name).second) << "duplicate test name " << t.name;
+  }
+  for (int g = 1; g <= 4; ++g) EXPECT_TRUE(names.count("paper_group" + std::to_string(g)));
+  EXPECT_TRUE(kinds.count("random"));
+  EXPECT_TRUE(kinds.count("move"));
+  const auto quick = regress::expand_list(default_list(), {}, {"long"});
+  EXPECT_EQ(quick.size(), tests.size() - 4);
+}
+
+TEST(Regress, ShardsPartitionTheList) {
+  const auto all = regress::expand_list(default_list(), {}, {});
+  for (int n : {1, 2, 3, 7}) {
+    std::multiset<std::string> seen;
+    for (int i = 1; i <= n; ++i) {
+      for (const auto& t : regress::select_shard(all, i, n)) seen.insert(t.name);
+    }
+    std::multiset<std::string> want;
+    for (const auto& t : all) want.insert(t.name);
+    EXPECT_EQ(seen, want) << "n=" << n;
+  }
+  EXPECT_EQ(regress::parse_shard("2/3"), std::make_pair(2, 3));
+  EXPECT_THROW(regress::parse_shard("0/2"), std::invalid_argument);
+  EXPECT_THROW(regress::parse_shard("3/2"), std::invalid_argument);
+  EXPECT_THROW(regress::parse_shard("1-2"), std::invalid_argument);
+}
+
+TEST(Regress, CommandEntriesAreExtensible) {
+  const nlohmann::json list = {
+      {"tests",
+       {{{"name", "closed_loop_g1"}, {"kind", "command"}, {"argv", {"{bin}/scurve", "sim", "--closed-loop"}}},
+        {{"name", "bad"}, {"kind", "nonsense"}}}}};
+  EXPECT_THROW(regress::expand_list(list, {}, {}), std::invalid_argument);
+  const nlohmann::json ok = {{"tests", {list["tests"][0]}}};
+  const auto t = regress::expand_list(ok, {}, {});
+  ASSERT_EQ(t.size(), 1u);
+  EXPECT_EQ(t[0].argv.front(), "{bin}/scurve");
+}

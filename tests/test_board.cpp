@@ -1,0 +1,391 @@
+// Register-level tests of the host interface (issue 5):
+//   AxiRegs.*   AXI4-Lite master on sc_axi_axis, RTL and model in lockstep
+//   BoardUart.* UART host on the Verilated board top (sc_board_top)
+//   BoardLong.* a paper group (30,000 pulses, ~14 s of motion) over AXI
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "axi_bench.h"
+#include "planner.h"
+#include "reg_encode.h"
+#include "sc_regmap.h"
+#include "scenarios.h"
+
+using namespace sc;
+
+namespace {
+
+const regmap::Reg& reg(const std::string& name) {
+  for (const regmap::Reg& r : regmap::kRegs)
+    if (name == r.name) return r;
+  throw std::runtime_error("no register " + name);
+}
+// Field mask from the generated table (the docs), not from the RTL constants.
+uint32_t fmask(const std::string& rname, const std::string& fname) {
+  const regmap::Reg& r = reg(rname);
+  for (int i = 0; i < r.nfields; ++i)
+    if (fname == r.fields[i].name) return ((r.fields[i].width >= 32 ? 0 : (1u << r.fields[i].width)) - 1) << r.fields[i].lsb;
+  throw std::runtime_error("no field " + rname + "." + fname);
+}
+uint32_t addr(const std::string& name) { return reg(name).addr; }
+
+Plan plan_or_die(const MoveRequest& req, const PulseTiming& t) {
+  const PlanResult r = plan_move(req, t);
+  if (const auto* e = std::get_if<PlanError>(&r)) throw std::runtime_error(e->message);
+  return std::get<Plan>(r);
+}
+
+// 30,000 pulses in about a quarter of a second.
+MoveRequest short_move(int64_t distance = 30000) {
+  MoveRequest r;
+  r.distance = distance;
+  r.v_start = 0;
+  r.v_cruise = 150000;
+  r.v_end = 0;
+  r.a_max = 2e6;
+  r.j_max = 2e8;
+  return r;
+}
+
+void load(AxiBench& b, const Plan& p, const PulseTiming& t) {
+  for (const RegWrite& w : encode_move(p, t, false)) {
+    ASSERT_EQ(b.write(w.addr, w.data), kOkay) << reg_name(w.addr);
+  }
+}
+
+// Start, poll STATUS until DONE; returns clocks from START to DONE seen.
+uint64_t run_to_done(AxiBench& b, uint64_t limit, int poll = 2000) {
+  EXPECT_EQ(b.write(addr("CMD"), fmask("CMD", "START")), kOkay);
+  const uint64_t t0 = b.clock();
+  while (b.clock() - t0 < limit && !b.failed()) {
+    const auto [st, resp] = b.read(addr("STATUS"));
+    EXPECT_EQ(resp, kOkay);
+    if (st & fmask("STATUS", "DONE")) return b.clock() - t0;
+    b.idle(poll);
+  }
+  ADD_FAILURE() << "no DONE within " << limit << " clocks";
+  return 0;
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------------------------
+TEST(AxiRegs, ResetValuesReservedBitsAndAccessTypes) {
+  AxiBench b(true, 11);
+  b.set_jitter(true);
+  for (const regmap::Reg& r : regmap::kRegs) {
+    const auto [v, resp] = b.read(r.addr);
+    EXPECT_EQ(resp, kOkay) << r.name;
+    EXPECT_EQ(v & ~r.mask, 0u) << r.name << ": reserved bits read 1";
+    if (r.access == regmap::Access::RW || r.access == regmap::Access::WO || std::string(r.name) == "ID") {
+      EXPECT_EQ(v, r.reset) << r.name << " reset value";
+    }
+  }
+  for (const regmap::Reg& r : regmap::kRegs) {
+    const std::string n = r.name;
+    if (r.access == regmap::Access::RW) {
+      EXPECT_EQ(b.write(r.addr, 0xffffffffu), kOkay) << n;
+      EXPECT_EQ(b.read(r.addr).first, r.mask) << n << ": all-ones must read back as the implemented bits";
+      EXPECT_EQ(b.write(r.addr, 0), kOkay) << n;
+      EXPECT_EQ(b.read(r.addr).first, 0u) << n;
+    } else if (r.access == regmap::Access::RO) {
+      const uint32_t before = b.read(r.addr).first;
+      EXPECT_EQ(b.write(r.addr, ~before), kSlvErr) << n << ": write to a read-only register";
+      if (n == "ID") {
+        EXPECT_EQ(b.read(r.addr).first, before);
+      }
+      EXPECT_TRUE(b.read(addr("ERR")).first & fmask("ERR", "BAD_ACCESS"));
+      EXPECT_EQ(b.write(addr("ERR"), fmask("ERR", "BAD_ACCESS")), kOkay);
+      EXPECT_EQ(b.read(addr("ERR")).first, 0u) << "ERR is write-1-to-clear";
+    } else if (r.access == regmap::Access::WO) {
+      EXPECT_EQ(b.read(r.addr).first, 0u) << n << " reads 0";
+    }
+  }
+  // byte strobes: only the selected bytes change
+  EXPECT_EQ(b.write(addr("SEG_CLOCKS"), 0x11223344u), kOkay);
+  EXPECT_EQ(b.write(addr("SEG_CLOCKS"), 0xaabbccddu, 0x5), kOkay);
+  EXPECT_EQ(b.read(addr("SEG_CLOCKS")).first, 0x11bb33ddu);
+  EXPECT_FALSE(b.failed()) << b.error();
+  EXPECT_GT(b.matched(), 500u);
+}
+
+TEST(AxiRegs, IllegalAddressesAnswerDecErrAndChangeNothing) {
+  AxiBench b(true, 12);
+  b.set_jitter(true);
+  std::vector<uint32_t> snapshot;
+  for (const regmap::Reg& r : regmap::kRegs) snapshot.push_back(b.read(r.addr).first);
+  int illegal = 0;
+  for (uint32_t a = 0; a < 256; ++a) {
+    bool mapped = false;
+    for (const regmap::Reg& r : regmap::kRegs) mapped = mapped || r.addr == a;
+    if (mapped) continue;
+    ++illegal;
+    const auto [v, rresp] = b.read(a);
+    EXPECT_EQ(rresp, kDecErr) << "read 0x" << std::hex << a;
+    EXPECT_EQ(v, 0u);
+    EXPECT_EQ(b.write(a, 0xffffffffu), kDecErr) << "write 0x" << std::hex << a;
+  }
+  EXPECT_GT(illegal, 150);  // unaligned and unmapped
+  EXPECT_EQ(b.read(addr("ERR")).first, fmask("ERR", "BAD_ACCESS"));
+  EXPECT_EQ(b.write(addr("ERR"), 0xffffffffu), kOkay);
+  size_t i = 0;
+  for (const regmap::Reg& r : regmap::kRegs) {
+    EXPECT_EQ(b.read(r.addr).first, snapshot[i++]) << r.name << " changed by an illegal access";
+  }
+  EXPECT_FALSE(b.failed()) << b.error();
+}
+
+TEST(AxiRegs, ShortMoveLoadedByRegistersEmitsExactPulses) {
+  const PulseTiming t{};
+  const Plan p = plan_or_die(short_move(30000), t);
+  AxiBench b(true, 13);
+  b.set_jitter(true);
+  load(b, p, t);
+  // the staged last row and table size read back
+  EXPECT_EQ(b.read(addr("SEG_COUNT")).first, uint32_t(p.segments.size()));
+  const uint64_t clocks = run_to_done(b, p.total_clocks + 100000);
+  b.idle(2000);
+  EXPECT_FALSE(b.failed()) << b.error();
+  EXPECT_EQ(int32_t(b.read(addr("PULSE_COUNT")).first), 30000);
+  EXPECT_EQ(b.net_steps(), 30000);
+  EXPECT_EQ(int32_t(b.read(addr("REF_POS")).first), 30000);
+  EXPECT_EQ(b.read(addr("STATUS")).first & fmask("STATUS", "PHASE"), uint32_t(Phase::PhDone));
+  EXPECT_EQ(b.read(addr("ERR")).first, 0u);
+  EXPECT_GE(clocks, p.total_clocks);
+  EXPECT_GT(b.matched(), p.total_clocks);
+}
+
+TEST(AxiRegs, WritesWhileBusyAreRejectedFlaggedAndTheMoveIsUnharmed) {
+  const PulseTiming t{};
+  const Plan p = plan_or_die(short_move(6000), t);
+  // undisturbed reference: clocks from START to the last pulse
+  AxiBench ref(false);
+  load(ref, p, t);
+  const uint64_t ref_clocks = run_to_done(ref, p.total_clocks + 100000, 1);
+
+  AxiBench b(true, 14);
+  b.set_jitter(true);
+  load(b, p, t);
+  EXPECT_EQ(b.write(addr("CMD"), fmask("CMD", "START")), kOkay);
+  const uint64_t t0 = b.clock() - 0;
+  b.idle(50000);
+  ASSERT_TRUE(b.out().busy);
+  const std::vector<std::pair<std::string, uint32_t>> attempts = {
+      {"SEG_COUNT", 1}, {"PULSE_TIME", 0x00010001}, {"DIR_TIME", 0}, {"POS_FRAC0_0", 0},
+      {"POS_FRAC0_2", 0xffff}, {"SEG_PHASE", 0}, {"SEG_CLOCKS", 1}, {"SEG_JERK_0", 0},
+      {"SEG_ACC0_1", 0}, {"SEG_VEL0_2", 0x1ffff}, {"SEG_COMMIT", 0}, {"CMD", fmask("CMD", "START")}};
+  for (const auto& [name, value] : attempts) {
+    const uint32_t before = b.read(addr(name)).first;
+    EXPECT_EQ(b.write(addr(name), value), kSlvErr) << name << " written while busy";
+    EXPECT_EQ(b.read(addr(name)).first, before) << name << " changed while busy";
+    EXPECT_TRUE(b.read(addr("ERR")).first & fmask("ERR", "REJECT")) << name;
+    EXPECT_TRUE(b.read(addr("STATUS")).first & fmask("STATUS", "ERR"));
+    EXPECT_EQ(b.write(addr("ERR"), fmask("ERR", "REJECT")), kOkay);
+  }
+  // CTRL and the table rows outside the lock stay writable? CTRL yes (EN pin).
+  while (!b.out().done && b.clock() - t0 < p.total_clocks + 100000 && !b.failed()) b.idle(1000);
+  b.idle(1000);
+  EXPECT_FALSE(b.failed()) << b.error();
+  EXPECT_EQ(b.net_steps(), 6000);
+  EXPECT_EQ(int32_t(b.read(addr("PULSE_COUNT")).first), 6000);
+  // a polled run and this one see DONE within one poll interval of each other
+  EXPECT_NEAR(double(b.clock() - t0), double(ref_clocks), 3000.0);
+}
+
+TEST(AxiRegs, StartRefusedWhenDisabledOrEstoppedStopAndEstopAbort) {
+  const PulseTiming t{};
+  const Plan p = plan_or_die(short_move(6000), t);
+  AxiBench b(true, 15);
+  load(b, p, t);
+  const uint32_t start = fmask("CMD", "START");
+  // disabled: refused
+  EXPECT_EQ(b.write(addr("CTRL"), 0), kOkay);
+  EXPECT_EQ(b.write(addr("CMD"), start), kSlvErr);
+  EXPECT_TRUE(b.read(addr("ERR")).first & fmask("ERR", "REJECT"));
+  EXPECT_EQ(b.write(addr("ERR"), 0xff), kOkay);
+  // enabled: runs; STOP aborts
+  EXPECT_EQ(b.write(addr("CTRL"), 1), kOkay);
+  EXPECT_EQ(b.write(addr("CMD"), start), kOkay);
+  b.idle(200000);
+  EXPECT_EQ(b.write(addr("CMD"), fmask("CMD", "STOP")), kOkay);
+  b.idle(1000);
+  uint32_t st = b.read(addr("STATUS")).first;
+  EXPECT_EQ(st & fmask("STATUS", "PHASE"), uint32_t(Phase::PhAbort));
+  EXPECT_FALSE(st & fmask("STATUS", "BUSY"));
+  const int64_t after_stop = b.net_steps();
+  EXPECT_GT(after_stop, 0);
+  EXPECT_LT(after_stop, 6000);
+  b.idle(20000);
+  EXPECT_EQ(b.net_steps(), after_stop) << "pulses after STOP";
+  // restart, then the e-stop input: abort, EN off, latched, START refused
+  EXPECT_EQ(b.write(addr("CMD"), start), kOkay);
+  b.idle(100000);
+  b.side().estop = true;
+  b.idle(3);
+  b.side().estop = false;
+  b.idle(1000);
+  st = b.read(addr("STATUS")).first;
+  EXPECT_TRUE(st & fmask("STATUS", "ESTOP"));
+  EXPECT_FALSE(st & fmask("STATUS", "EN"));
+  EXPECT_FALSE(b.out().en);
+  EXPECT_EQ(b.read(addr("CTRL")).first, 0u);
+  EXPECT_EQ(b.write(addr("CTRL"), 1), kOkay);
+  EXPECT_EQ(b.write(addr("CMD"), start), kSlvErr) << "START while e-stop latched";
+  EXPECT_EQ(b.write(addr("ERR"), fmask("ERR", "ESTOP") | fmask("ERR", "REJECT")), kOkay);
+  EXPECT_EQ(b.write(addr("CMD"), start), kOkay);
+  // CMD.ESTOP does the same from the bus
+  b.idle(1000);
+  EXPECT_EQ(b.write(addr("CMD"), fmask("CMD", "ESTOP")), kOkay);
+  b.idle(100);
+  EXPECT_TRUE(b.read(addr("ERR")).first & fmask("ERR", "ESTOP"));
+  EXPECT_EQ(b.read(addr("CTRL")).first, 0u);
+  // encoder position and following error
+  b.side().enc_pos = -5;
+  b.side().enc_ab = 2;
+  b.idle(2);
+  const int32_t ref_pos = int32_t(b.read(addr("REF_POS")).first);
+  EXPECT_EQ(int32_t(b.read(addr("ENC_POS")).first), -5);
+  EXPECT_EQ(int32_t(b.read(addr("FOLLOW_ERR")).first), ref_pos + 5);
+  EXPECT_EQ((b.read(addr("STATUS")).first & fmask("STATUS", "ENC_AB")) >> 12, 2u);
+  EXPECT_FALSE(b.failed()) << b.error();
+}
+
+TEST(AxiRegs, CheckerCatchesAnInjectedDifference) {
+  AxiBench b(true, 16);
+  EXPECT_EQ(b.read(addr("FOLLOW_ERR")).first, 0u);
+  EXPECT_FALSE(b.failed());
+  b.inject_model_enc_offset(1);
+  b.read(addr("FOLLOW_ERR"));
+  ASSERT_TRUE(b.failed());
+  EXPECT_NE(b.error().find("rdata"), std::string::npos) << b.error();
+}
+
+// ---------------------------------------------------------------------------------
+namespace {
+
+struct Board {
+  RtlBoard rtl;
+  UartHost host{rtl, UartClksPerBit};
+  Board() { host.idle(200); }  // MMCM stand-in lock + reset synchroniser
+};
+
+}  // namespace
+
+TEST(BoardUart, LoadMoveStartPollAndCountPulses) {
+  Board bd;
+  UartResponse r = bd.host.read(uint8_t(addr("ID")));
+  ASSERT_TRUE(r.ok) << r.error;
+  EXPECT_EQ(r.status, kOkay);
+  EXPECT_EQ(r.data, reg("ID").reset);
+  const PulseTiming t{};
+  MoveRequest req = short_move(2000);
+  req.a_max = 1e7;
+  req.j_max = 1e10;
+  const Plan p = plan_or_die(req, t);
+  for (const RegWrite& w : encode_move(p, t, true)) {
+    r = bd.host.write(uint8_t(w.addr), w.data);
+    ASSERT_TRUE(r.ok) << reg_name(w.addr) << ": " << r.error;
+    ASSERT_EQ(r.status, kOkay) << reg_name(w.addr);
+  }
+  bool done = false;
+  for (int i = 0; i < 200 && !done; ++i) {
+    r = bd.host.read(uint8_t(addr("STATUS")));
+    ASSERT_TRUE(r.ok) << r.error;
+    done = r.data & fmask("STATUS", "DONE");
+  }
+  ASSERT_TRUE(done);
+  r = bd.host.read(uint8_t(addr("PULSE_COUNT")));
+  EXPECT_EQ(int32_t(r.data), 2000);
+  EXPECT_EQ(bd.host.net_steps(), 2000);
+  EXPECT_EQ(bd.host.pulses(), 2000u);
+}
+
+TEST(BoardUart, IllegalAddressReservedBitsAndWriteWhileBusy) {
+  Board bd;
+  UartResponse r = bd.host.read(0x68);
+  ASSERT_TRUE(r.ok) << r.error;
+  EXPECT_EQ(r.status, kDecErr);
+  r = bd.host.write(0xfc, 1);
+  EXPECT_EQ(r.status, kDecErr);
+  r = bd.host.write(uint8_t(addr("ID")), 0);
+  EXPECT_EQ(r.status, kSlvErr);
+  r = bd.host.write(uint8_t(addr("SEG_PHASE")), 0xffffffffu);
+  EXPECT_EQ(r.status, kOkay);
+  EXPECT_EQ(bd.host.read(uint8_t(addr("SEG_PHASE"))).data, reg("SEG_PHASE").mask);
+  EXPECT_EQ(bd.host.read(uint8_t(addr("ERR"))).data, fmask("ERR", "BAD_ACCESS"));
+  EXPECT_EQ(bd.host.write(uint8_t(addr("ERR")), 0xff).status, kOkay);
+  // a move, then writes while it runs
+  const PulseTiming t{};
+  const Plan p = plan_or_die(short_move(3000), t);
+  for (const RegWrite& w : encode_move(p, t, true)) ASSERT_EQ(bd.host.write(uint8_t(w.addr), w.data).status, kOkay);
+  r = bd.host.write(uint8_t(addr("SEG_COUNT")), 1);
+  EXPECT_EQ(r.status, kSlvErr);
+  EXPECT_EQ(bd.host.read(uint8_t(addr("SEG_COUNT"))).data, uint32_t(p.segments.size()));
+  EXPECT_TRUE(bd.host.read(uint8_t(addr("ERR"))).data & fmask("ERR", "REJECT"));
+  bool done = false;
+  for (int i = 0; i < 400 && !done; ++i) done = bd.host.read(uint8_t(addr("STATUS"))).data & fmask("STATUS", "DONE");
+  ASSERT_TRUE(done);
+  EXPECT_EQ(bd.host.net_steps(), 3000);
+}
+
+TEST(BoardUart, CorruptedFramesAreRejectedWithNothingWritten) {
+  Board bd;
+  const uint8_t a = uint8_t(addr("SEG_CLOCKS"));
+  ASSERT_EQ(bd.host.write(a, 0x12345678u).status, kOkay);
+  // one data bit flipped after the CRC was computed
+  std::vector<uint8_t> f = uart_write_frame(a, 0xdeadbeefu);
+  f[4] ^= 0x10;
+  std::vector<uint8_t> rsp = bd.host.transact(f, 3);
+  UartResponse r = parse_uart_response(rsp, false);
+  ASSERT_TRUE(r.ok) << r.error;
+  EXPECT_EQ(r.status, uint8_t(UartStCrcErr));
+  EXPECT_EQ(bd.host.read(a).data, 0x12345678u) << "corrupted frame wrote";
+  // wrong CRC byte on a write to CMD (would start / stop): ignored
+  f = uart_write_frame(uint8_t(addr("CTRL")), 1);
+  f.back() ^= 0xff;
+  r = parse_uart_response(bd.host.transact(f, 3), false);
+  EXPECT_EQ(r.status, uint8_t(UartStCrcErr));
+  EXPECT_EQ(bd.host.read(uint8_t(addr("CTRL"))).data, 0u);
+  // address byte corrupted: nothing written anywhere
+  f = uart_write_frame(a, 1);
+  f[2] ^= 0x04;
+  r = parse_uart_response(bd.host.transact(f, 3), false);
+  EXPECT_EQ(r.status, uint8_t(UartStCrcErr));
+  EXPECT_EQ(bd.host.read(a).data, 0x12345678u);
+  EXPECT_EQ(bd.host.read(uint8_t(a - 4)).data, 0u);  // SEG_PHASE
+  // unknown command byte
+  std::vector<uint8_t> bad = {0xA5, 0x07};
+  r = parse_uart_response(bd.host.transact(bad, 3), false);
+  EXPECT_EQ(r.status, uint8_t(UartStBadCmd));
+  // a truncated frame is dropped after the gap; the next frame works
+  f = uart_write_frame(a, 0xcafef00du);
+  f.resize(5);
+  EXPECT_TRUE(bd.host.transact(f, 1, 2 * UartTimeoutBits).empty());
+  EXPECT_EQ(bd.host.read(a).data, 0x12345678u);
+  ASSERT_EQ(bd.host.write(a, 0x0badf00du).status, kOkay);
+  EXPECT_EQ(bd.host.read(a).data, 0x0badf00du);
+  // garbage between frames is skipped
+  std::vector<uint8_t> g = {0x00, 0x5A, 0xFF};
+  const std::vector<uint8_t> rd = uart_read_frame(a);
+  g.insert(g.end(), rd.begin(), rd.end());
+  r = parse_uart_response(bd.host.transact(g, 7), true);
+  ASSERT_TRUE(r.ok) << r.error;
+  EXPECT_EQ(r.data, 0x0badf00du);
+}
+
+// ---------------------------------------------------------------------------------
+TEST(BoardLong, PaperGroup1OverAxiExactly30000Pulses) {
+  const PulseTiming t{};
+  const Plan p = plan_or_die(paper_group(1), t);
+  AxiBench b(true, 21);
+  b.set_jitter(true);
+  load(b, p, t);
+  run_to_done(b, p.total_clocks + 1000000, 200000);
+  b.idle(2000);
+  EXPECT_FALSE(b.failed()) << b.error();
+  EXPECT_EQ(int32_t(b.read(addr("PULSE_COUNT")).first), 30000);
+  EXPECT_EQ(b.net_steps(), 30000);
+  EXPECT_GT(b.matched(), p.total_clocks);
+}
