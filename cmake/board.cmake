@@ -90,3 +90,11 @@ add_test(NAME rtl_compile_icarus_board
 add_test(NAME synth_yosys
   COMMAND ${CMAKE_SOURCE_DIR}/scripts/synth_yosys.sh sc_board_top ${CMAKE_BINARY_DIR}/synth)
 set_tests_properties(synth_yosys PROPERTIES TIMEOUT 600)
+
+# Vivado is not installed here: dry-run build.tcl + the XDC under tclsh with
+# stubbed Vivado commands, and check build.tcl's file list against rtl_deps.py.
+find_program(SC_TCLSH tclsh)
+if(SC_TCLSH)
+  add_test(NAME vivado_flow_dry_run
+    COMMAND ${CMAKE_SOURCE_DIR}/scripts/vivado/check_flow.sh ${CMAKE_BINARY_DIR}/vivado-dry-run)
+endif()
