@@ -32,7 +32,7 @@ void run(benchmark::State& state, SimEngine engine) {
   uint64_t clocks = 0;
   bool pass = true;
   for (auto _ : state) {
-    const SimResult r = run_move(bench_plan(), PulseTiming{}, RunLimits{}, opt);
+    const SimResult r = run_move(bench_plan(), PulseTiming{}, Limits4Check{}, opt);
     clocks += r.total_clocks;
     pass = pass && r.pass();
   }

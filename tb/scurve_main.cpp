@@ -97,8 +97,8 @@ int bad_input(const std::string& msg) {
 }
 
 // The limits a run is checked against: the request's (not the plan's own).
-RunLimits limits_of(const MoveRequest& r, double v_end_used) {
-  RunLimits l;
+Limits4Check limits_of(const MoveRequest& r, double v_end_used) {
+  Limits4Check l;
   l.v_max = std::max({r.v_cruise, r.v_start, v_end_used});
   l.a_max = r.a_max;
   if (r.kind == ProfileKind::SCurve) {

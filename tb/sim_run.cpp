@@ -91,7 +91,7 @@ struct PeakTracker {
 
 }  // namespace
 
-SimResult run_move(const Plan& plan, const PulseTiming& timing, const RunLimits& limits,
+SimResult run_move(const Plan& plan, const PulseTiming& timing, const Limits4Check& limits,
                    const SimOptions& opt) {
   SimResult res;
   res.engine = opt.engine;

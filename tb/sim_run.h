@@ -55,11 +55,11 @@ struct SimResult {
   bool pass() const { return failures.empty(); }
 };
 
-struct RunLimits {
+struct Limits4Check {
   double v_max = 0, a_max = 0, j_max = 0;  // pulses/s^k; 0 = not checked
 };
 
-SimResult run_move(const Plan& plan, const PulseTiming& timing, const RunLimits& limits,
+SimResult run_move(const Plan& plan, const PulseTiming& timing, const Limits4Check& limits,
                    const SimOptions& opt);
 
 // The clock-by-clock inputs that load a table and start it: one row per

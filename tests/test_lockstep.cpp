@@ -17,8 +17,8 @@ using namespace sc;
 
 namespace {
 
-RunLimits limits_of(const MoveRequest& r, const Plan& p) {
-  RunLimits l;
+Limits4Check limits_of(const MoveRequest& r, const Plan& p) {
+  Limits4Check l;
   l.v_max = std::max({r.v_cruise, r.v_start, p.v_end_used});
   l.a_max = r.a_max;
   if (r.kind == ProfileKind::SCurve) l.j_max = r.j_max;
