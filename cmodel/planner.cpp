@@ -363,6 +363,13 @@ PlanResult plan_magnitude(const MoveRequest& req, const PulseTiming& timing, dou
   }
 
   // ---- split rows to the 32-bit clock field, mirror for direction ---------
+  uint64_t rows_needed = 0;
+  for (const Row& r : rows) rows_needed += (r.clocks + kMaxRowClocks - 1) / kMaxRowClocks;
+  if (rows_needed > uint64_t(MaxSegs)) {
+    return PlanError{"distance", fmt::format("distance={}: the move needs {} table rows, the executor holds {} "
+                                             "(a row lasts at most {:.1f} s); raise v_cruise or split the move",
+                                             dist, rows_needed, MaxSegs, kMaxRowClocks / kF)};
+  }
   Plan plan;
   for (const Row& r0 : rows) {
     Row r = r0;
@@ -379,11 +386,6 @@ PlanResult plan_magnitude(const MoveRequest& req, const PulseTiming& timing, dou
       r.acc0 = int64_t(acc_after(r.acc0, r.jerk, n));
       r.clocks -= n;
     }
-  }
-  if (plan.segments.size() > size_t(MaxSegs)) {
-    return PlanError{"distance", fmt::format("distance={}: the move needs {} table rows, the executor holds {} "
-                                             "(a row lasts at most {:.1f} s); raise v_cruise or split the move",
-                                             dist, plan.segments.size(), MaxSegs, kMaxRowClocks / kF)};
   }
   plan.pos_frac0 = dir > 0 ? u128(p0) : kOne - u128(p0);
   plan.distance = req.distance;
