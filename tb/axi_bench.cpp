@@ -39,7 +39,14 @@ void AxiBench::tick() {
   } else if (rtl_) {
     ++matched_;
   }
-  if (out_.step && !last_step_) net_steps_ += out_.dir ? 1 : -1;
+  if (model_.regs().state().start) {
+    start_clock_ = clock_;
+    rise_times_.clear();
+  }
+  if (out_.step && !last_step_) {
+    net_steps_ += out_.dir ? 1 : -1;
+    rise_times_.push_back(clock_ - start_clock_);
+  }
   last_step_ = out_.step;
   ++clock_;
 }

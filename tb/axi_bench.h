@@ -45,6 +45,8 @@ class AxiBench {
   const AxiAxisOutputs& out() const { return out_; }
   const AxiAxis& model() const { return model_; }
 
+  // STEP rising edges, as clocks after the last START pulse to the core.
+  const std::vector<uint64_t>& rise_times() const { return rise_times_; }
   uint64_t clock() const { return clock_; }
   int64_t net_steps() const { return net_steps_; }
   uint64_t matched() const { return matched_; }
@@ -63,6 +65,8 @@ class AxiBench {
   bool last_step_ = false;
   bool jitter_ = false;
   int32_t model_enc_offset_ = 0;
+  uint64_t start_clock_ = 0;
+  std::vector<uint64_t> rise_times_;
   std::mt19937 rng_;
   std::string error_;
 };
