@@ -34,11 +34,14 @@ target_link_libraries(scurve PRIVATE sc_tools)
 # sc_tb: sc_tb drags in sc_rtl's --cc Verilator runtime, which the --sc bench
 # cannot link next to its own (with LTO the archive members get pulled in
 # for shared template instantiations and clash).
+# The model's FST writer uses the fstapi.c that each bench's Verilator
+# runtime carries (both benches are verilated with TRACE_FST).
 add_library(sc_bench_parts STATIC
   tb/systemc/components.cpp
+  tb/tools/model_fst.cpp
   tb/lockstep.cpp
   tb/pin_monitor.cpp)
-target_include_directories(sc_bench_parts PUBLIC tb/systemc tb)
+target_include_directories(sc_bench_parts PUBLIC tb/systemc tb PRIVATE ${VERILATOR_ROOT}/include/gtkwave)
 target_link_libraries(sc_bench_parts PUBLIC sc_kin_trace sc_model fmt::fmt nlohmann_json::nlohmann_json)
 target_compile_options(sc_bench_parts PRIVATE ${SC_WARN})
 
@@ -64,6 +67,7 @@ verilate(sc_bench_pin SYSTEMC
   SOURCES ${SC_RTL_SOURCES}
   TOP_MODULE sc_axis_core
   PREFIX Vsc_axis_core_pin
+  TRACE_FST
   VERILATOR_ARGS ${SC_VERILATOR_ARGS}
   OPT_FAST -O3 -fno-tree-slp-vectorize
   OPT_SLOW -O1

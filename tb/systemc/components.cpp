@@ -13,6 +13,7 @@
 #include "axis_core.h"
 #include "kin_trace.h"
 #include "lockstep.h"
+#include "model_fst.h"
 #include "pin_monitor.h"
 #include "planner.h"
 #include "scenarios.h"
@@ -28,23 +29,36 @@ class ModelCore : public Core {
   void reset(int) override { model_.reset(); }
   void step(const CoreInputs& in) override {
     model_.step(in);
-    out_ = model_.outputs();
+    after_clock();
+  }
+  void tick() override {
+    model_.tick();
+    after_clock();
+  }
+  // Built on demand: the scoreboard compares against the state in place.
+  const CoreOutputs& outputs() const override {
+    if (stale_) {
+      out_ = model_.outputs();
+      stale_ = false;
+    }
+    return out_;
+  }
+  bool done() const override { return outputs().done; }
+  uint32_t phase() const override { return outputs().phase; }
+  int32_t pulse_count() const override { return outputs().pulse_count; }
+  const AxisCore& axis() const { return model_; }
+
+ private:
+  void after_clock() {
+    stale_ = true;
     // Test hook: one extra count in the model's pulse counter after clock
     // `inject_clock_`, so the checker and the trace diff must report a
     // divergence at exactly that clock.
-    if (clock_++ == inject_clock_) [[unlikely]] {
-      model_.step_gen().mutable_state().count += 1;
-      out_ = model_.outputs();
-    }
+    if (clock_++ == inject_clock_) [[unlikely]] model_.step_gen().mutable_state().count += 1;
   }
-  const CoreOutputs& outputs() const override { return out_; }
-  bool done() const override { return out_.done; }
-  uint32_t phase() const override { return out_.phase; }
-  int32_t pulse_count() const override { return out_.pulse_count; }
-
- private:
   AxisCore model_;
-  CoreOutputs out_{};
+  mutable CoreOutputs out_{};
+  mutable bool stale_ = true;
   uint64_t clock_ = 0;
   uint64_t inject_clock_;
 };
@@ -78,11 +92,13 @@ struct ReferencePeaks {
 
 class LockstepScoreboard : public Checker {
  public:
-  explicit LockstepScoreboard(size_t max_mismatches) : checker_(max_mismatches) {}
-  bool compare(uint64_t clock, const CoreOutputs& rtl, const CoreOutputs& model) override {
+  LockstepScoreboard(const AxisCore& model, size_t max_mismatches) : model_(model), checker_(max_mismatches) {}
+  bool compare(uint64_t clock, const CoreOutputs& rtl) override {
     peaks_.on_clock(rtl);
-    return checker_.compare(clock, rtl, model);
+    checker_.slot(clock) = rtl;  // kept as context for a later mismatch report
+    return checker_.check(clock, model_);
   }
+  const AxisCore& model_;
   bool should_stop() const override { return checker_.should_stop(); }
   uint64_t mismatches() const override { return checker_.mismatches(); }
   LockstepChecker checker_;
@@ -134,21 +150,25 @@ class OpenLoopPlant : public Plant {
 // ---- traces -------------------------------------------------------------------
 class KinTracer : public Tracer {
  public:
-  KinTracer(const std::string& rtl, const std::string& model, uint64_t decimate) {
-    if (!rtl.empty()) rtl_ = std::make_unique<KinTraceWriter>(rtl, "rtl", decimate);
-    if (!model.empty()) model_ = std::make_unique<KinTraceWriter>(model, "model", decimate);
+  explicit KinTracer(const BenchOptions& o) {
+    if (!o.trace_rtl.empty()) rtl_ = std::make_unique<KinTraceWriter>(o.trace_rtl, "rtl", o.trace_decimate);
+    if (!o.trace_model.empty()) model_ = std::make_unique<KinTraceWriter>(o.trace_model, "model", o.trace_decimate);
+    if (!o.fst_model_path.empty()) fst_ = std::make_unique<ModelFstWriter>(o.fst_model_path, o.fst_from, o.fst_to);
   }
   void on_clock(uint64_t clock, const CoreOutputs& rtl, const CoreOutputs& model) override {
     if (rtl_) rtl_->on_clock(clock, rtl);
     if (model_) model_->on_clock(clock, model);
+    if (fst_) fst_->on_clock(clock, model);
   }
   void close(uint64_t end_clock) override {
     if (rtl_) rtl_->close(end_clock);
     if (model_) model_->close(end_clock);
+    if (fst_) fst_->close(end_clock);
   }
 
  private:
   std::unique_ptr<KinTraceWriter> rtl_, model_;
+  std::unique_ptr<ModelFstWriter> fst_;
 };
 
 // ---- stimulus -----------------------------------------------------------------
@@ -235,11 +255,11 @@ class BenchRunImpl : public BenchRun {
         timing_(timing),
         limits_(limits),
         model_(opt_.inject_model_fault),
-        scoreboard_(opt_.max_mismatches),
+        scoreboard_(model_.axis(), opt_.max_mismatches),
         plant_(timing_, opt_.sync_period),
         stimulus_(plan_, timing_) {
-    if (!opt_.trace_rtl.empty() || !opt_.trace_model.empty()) {
-      tracer_ = std::make_unique<KinTracer>(opt_.trace_rtl, opt_.trace_model, opt_.trace_decimate);
+    if (!opt_.trace_rtl.empty() || !opt_.trace_model.empty() || !opt_.fst_model_path.empty()) {
+      tracer_ = std::make_unique<KinTracer>(opt_);
     }
   }
   const BenchOptions& options() const override { return opt_; }
@@ -355,6 +375,7 @@ class PinCoreImpl : public PinCore {
  public:
   void reset(int) override {}
   void step(const CoreInputs&) override {}  // clocked by the sc_clock, not here
+  void tick() override {}
   const CoreOutputs& outputs() const override { return out_; }
   bool done() const override { return out_.done; }
   uint32_t phase() const override { return out_.phase; }
@@ -439,6 +460,7 @@ std::unique_ptr<BenchRun> BenchRun::from_args(int argc, char** argv, bool batche
     app.add_option("--sync-period", opt.sync_period, "quanta end on multiples of this many clocks (control period)")
         ->check(CLI::Range(uint64_t(1), uint64_t(1) << 40));
     app.add_option("--fst", opt.fst_path, "FST waveform of the RTL (GTKWave)");
+    app.add_option("--fst-model", opt.fst_model_path, "FST of the model's outputs (RTL port names, same window)");
     app.add_option("--fst-from", opt.fst_from, "first clock in the waveform");
     app.add_option("--fst-to", opt.fst_to, "clock after the last one in the waveform");
     app.add_option("--max-mismatches", opt.max_mismatches, "stop after this many mismatching signals")

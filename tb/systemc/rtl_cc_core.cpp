@@ -16,7 +16,11 @@ class RtlCcCore : public Core {
   void reset(int cycles) override { rtl_.reset(cycles); }
   void step(const CoreInputs& in) override {
     rtl_.step(in);
-    out_ = rtl_.outputs();
+    rtl_.read_outputs(out_);
+  }
+  void tick() override {
+    rtl_.tick();
+    rtl_.read_outputs(out_);
   }
   const CoreOutputs& outputs() const override { return out_; }
   bool done() const override { return out_.done; }

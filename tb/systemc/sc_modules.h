@@ -156,20 +156,26 @@ class BatchSequencer : public sc_core::sc_module {
   uint64_t syncs() const { return syncs_; }
 
  private:
-  void tick(const CoreInputs& in) {
-    rtl_->step(in);
-    model_->step(in);
+  // One clock: `in` is driven, or (held) the previous inputs stay.
+  void tick(const CoreInputs* in) {
+    if (in) {
+      rtl_->step(*in);
+      model_->step(*in);
+    } else {
+      rtl_->tick();
+      model_->tick();
+    }
     const CoreOutputs& r = rtl_->outputs();
-    const CoreOutputs& m = model_->outputs();
-    if (!sb_->compare(clock_, r, m) && sb_->should_stop()) stop_ = true;
+    if (!sb_->compare(clock_, r) && sb_->should_stop()) stop_ = true;
     plant_->on_clock(clock_, r);  // open loop: no feedback inputs on this core yet
-    if (trace_) trace_->on_clock(clock_, r, m);
+    if (trace_) trace_->on_clock(clock_, r, model_->outputs());
     ++clock_;
   }
-  void run_quantum(const CoreInputs& in, uint64_t end, bool until_done) {
+  // Held inputs for clocks [clock_, end), or until done (an event boundary).
+  void run_quantum(uint64_t end, bool until_done) {
     while (clock_ < end && !stop_) {
-      tick(in);
-      if (until_done && rtl_->done()) break;  // event boundary
+      tick(nullptr);
+      if (until_done && rtl_->done()) break;
     }
   }
   uint64_t quantum_end(uint64_t cap) const {
@@ -194,16 +200,16 @@ class BatchSequencer : public sc_core::sc_module {
 
     rtl_->reset(4);
     model_->reset(4);
-    for (size_t i = 0; i < stim_.rows() && !stop_; ++i) tick(stim_.row_write(i));
-    if (!stop_) tick(stim_.start());
+    for (size_t i = 0; i < stim_.rows() && !stop_; ++i) tick(&stim_.row_write(i));
+    if (!stop_) tick(&stim_.start());
+    if (!stop_) tick(&stim_.run());  // drops start; the inputs stay as they are from here on
     const uint64_t start_clock = clock_;
     sync();
-    const CoreInputs& in = stim_.run();
     const uint64_t limit = start_clock + stim_.max_move_clocks();
     const double planned = double(stim_.planned_clocks()) + 1.0;
     // Decisions use the published signals only, at synchronisation points.
     while (!stop_ && clock_ < limit && !rtl_done_i.read()) {
-      run_quantum(in, quantum_end(limit), true);
+      run_quantum(quantum_end(limit), true);
       sync();
       if (failed_i.read() && sb_->should_stop()) break;
       if (cfg_.progress) cfg_.progress(double(clock_ - start_clock) / planned);
@@ -213,7 +219,7 @@ class BatchSequencer : public sc_core::sc_module {
     // Quiet tail: nothing may move after done.
     const uint64_t tail_end = clock_ + stim_.tail_clocks();
     while (!stop_ && clock_ < tail_end) {
-      run_quantum(in, quantum_end(tail_end), false);
+      run_quantum(quantum_end(tail_end), false);
       sync();
     }
     plant_->finish(clock_);

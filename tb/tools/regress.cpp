@@ -174,6 +174,7 @@ TestResult run_one(const TestCase& t, const RunOptions& opt) {
     const auto p = a.find(bin);
     if (p != std::string::npos) a.replace(p, bin.size(), opt.bin_dir);
   }
+  for (const std::string& a : argv) r.command += (r.command.empty() ? "" : " ") + a;
   const std::string out_path = fmt::format("{}/{}.json", opt.out_dir, t.name);
   r.log_path = fmt::format("{}/{}.log", opt.out_dir, t.name);
   posix_spawn_file_actions_t fa;
@@ -227,7 +228,9 @@ TestResult run_one(const TestCase& t, const RunOptions& opt) {
     if (r.timed_out) {
       r.failure = fmt::format("timeout after {:.0f} s", t.timeout_s);
     } else if (r.result.is_object() && r.result.contains("failures") && !r.result["failures"].empty()) {
-      r.failure = r.result["failures"][0].get<std::string>();
+      // First line only: the mismatch context stays in the JSON and JUnit output.
+      const std::string f = r.result["failures"][0].get<std::string>();
+      r.failure = f.substr(0, f.find('\n'));
     } else {
       r.failure = fmt::format("exit code {} (log: {})", r.exit_code, r.log_path);
     }
@@ -350,7 +353,10 @@ std::string summary_table(const std::vector<TestResult>& results) {
   }
   s += fmt::format("\n{} of {} tests passed\n", pass, results.size());
   for (const TestResult& r : results) {
-    if (!r.pass) s += fmt::format("FAIL {}: {}\n  rerun: {}\n", r.test.name, r.failure, command_line(r.test.argv));
+    if (!r.pass) {
+      s += fmt::format("FAIL {}: {}\n  rerun: {}\n", r.test.name, r.failure,
+                       r.command.empty() ? command_line(r.test.argv) : r.command);
+    }
   }
   return s;
 }
@@ -374,7 +380,8 @@ std::string junit_xml(const std::vector<TestResult>& results, const std::string&
       s += fmt::format("      <failure message=\"{}\">{}</failure>\n", xml_escape(r.failure),
                        xml_escape(r.result.is_object() ? r.result.dump(2) : r.failure));
     }
-    s += fmt::format("      <system-out>{}</system-out>\n", xml_escape(command_line(r.test.argv)));
+    s += fmt::format("      <system-out>{}</system-out>\n",
+                     xml_escape(r.command.empty() ? command_line(r.test.argv) : r.command));
     s += "    </testcase>\n";
   }
   s += "  </testsuite>\n</testsuites>\n";
@@ -400,6 +407,7 @@ nlohmann::json results_json(const std::vector<TestResult>& results, const std::s
                    {"wall_s", r.wall_s},
                    {"failure", r.failure},
                    {"log", r.log_path},
+                   {"command", r.command},
                    {"result", r.result}});
   }
   return {{"shard", shard}, {"tests", results.size()}, {"passed", pass}, {"pass", pass == results.size()},
@@ -424,6 +432,7 @@ std::vector<TestResult> results_from_json(const nlohmann::json& j) {
     r.wall_s = e.value("wall_s", 0.0);
     r.failure = e.value("failure", "");
     r.log_path = e.value("log", "");
+    r.command = e.value("command", "");
     r.result = e.value("result", nlohmann::json());
     out.push_back(std::move(r));
   }

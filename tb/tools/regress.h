@@ -32,6 +32,7 @@ struct TestResult {
   nlohmann::json result;  // the bench's JSON (null if it printed none)
   std::string failure;    // one line when failing
   std::string log_path;   // stderr of the run
+  std::string command;    // argv as run ({bin} resolved), for a rerun by hand
 };
 
 // Expands a list (see tests/regress_list.json) into test cases. Labels:

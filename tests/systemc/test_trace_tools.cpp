@@ -239,3 +239,23 @@ TEST(Regress, CommandEntriesAreExtensible) {
   ASSERT_EQ(t.size(), 1u);
   EXPECT_EQ(t[0].argv.front(), "{bin}/scurve");
 }
+
+TEST(ScBench, ModelFstMatchesRtlFstAndAnInjectedFaultIsFoundAtItsClock) {
+  const fs::path d = temp_dir("fst_model");
+  const std::string rtl = (d / "rtl.fst").string(), model = (d / "model.fst").string();
+  const std::string waves = " --fst " + rtl + " --fst-model " + model + " --fst-from 100000 --fst-to 130000";
+  ASSERT_EQ(run(std::string(SC_BENCH) + kShortMove + waves), 0);
+  const DiffReport clean = diff_traces(rtl, model);
+  EXPECT_TRUE(clean.identical()) << clean.to_text();
+  EXPECT_EQ(clean.compared_signals, 16u);  // every output port of sc_axis_core
+
+  const uint64_t k = 123457;
+  EXPECT_EQ(run(std::string(SC_BENCH) + kShortMove + waves + " --max-mismatches 1000000 --inject-model-fault " +
+                std::to_string(k)),
+            1);
+  const DiffReport r = diff_traces(rtl, model);
+  ASSERT_EQ(r.signals.size(), 1u) << r.to_text();
+  EXPECT_EQ(r.signals[0].signal, "sc_axis_core.pulse_count_o [31:0]");
+  EXPECT_EQ(r.signals[0].first_clock, k);
+  EXPECT_EQ(r.signals[0].differing_clocks, 130000 - k);
+}
