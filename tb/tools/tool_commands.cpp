@@ -46,9 +46,14 @@ std::shared_ptr<ToolCommands> add_tool_commands(CLI::App& app) {
   t->diff->add_flag("--json", t->diff_json, "print the report as JSON");
 
   t->regress = app.add_subcommand("regress", "run a regression list in parallel; JUnit XML + JSON");
-  t->regress->add_option("--list", t->list, "test list (default: tests/regress_list.json)");
-  t->regress->add_option("--jobs", t->jobs, "parallel runs (default: cores)")->check(CLI::Range(1, 256));
-  t->regress->add_option("--out-dir", t->out_dir, "results, logs, junit.xml, results.json");
+  // The last of repeated flags wins, so scripts/regress.sh's defaults can be overridden.
+  const auto last = CLI::MultiOptionPolicy::TakeLast;
+  t->regress->add_option("--list", t->list, "test list (default: tests/regress_list.json)")->multi_option_policy(last);
+  t->regress->add_option("--jobs", t->jobs, "parallel runs (default: cores)")
+      ->check(CLI::Range(1, 256))
+      ->multi_option_policy(last);
+  t->regress->add_option("--out-dir", t->out_dir, "results, logs, junit.xml, results.json")
+      ->multi_option_policy(last);
   t->regress->add_option("--shard", t->shard, "run part i of n (i/n): tests k with k % n == i-1");
   t->regress->add_option("--label", t->labels, "only tests with this label (repeatable)");
   t->regress->add_option("--exclude-label", t->exclude_labels, "skip tests with this label (repeatable)");
