@@ -33,6 +33,7 @@ struct Transition {
   std::vector<Row> rows;
   i128 v_end = 0;
   i128 gain = 0;       // position LSBs covered
+  i128 shortfall_bound = 0;  // the realised change falls short of dv by <= this
   bool too_far = false;
 };
 
@@ -60,9 +61,12 @@ Transition make_transition(i128 v_a, i128 dv, int s, int64_t j_in, int64_t j_out
       t.too_far = true;
       return t;
     }
-    const uint64_t n = uint64_t(dv / a_max);
-    if (n == 0) return t;
-    t.rows.push_back({ph_const, n, 0, int64_t(s) * a_max, v_a});
+    // Fewest clocks at <= a_max; a change below one clock of a_max still
+    // takes one clock (at a lower acceleration), it is never dropped.
+    const i128 n = (dv + a_max - 1) / a_max;
+    const int64_t a = int64_t(dv / n);
+    t.rows.push_back({ph_const, uint64_t(n), 0, int64_t(s) * a, v_a});
+    t.shortfall_bound = n;  // dv - n*floor(dv/n) < n
   } else {
     const double a_full = double(a_max);
     const double thresh = a_full * a_full * (0.5 / double(j_in) + 0.5 / double(j_out));
@@ -74,18 +78,30 @@ Transition make_transition(i128 v_a, i128 dv, int s, int64_t j_in, int64_t j_out
       t.too_far = true;
       return t;
     }
-    int64_t n1 = std::min<int64_t>(int64_t(a_peak / double(j_in)), a_max / j_in);
-    for (; n1 > 0; --n1) {
-      const int64_t a = n1 * j_in;
-      const int64_t n3 = (a + j_out - 1) / j_out;
-      const int64_t j3 = a / n3;
-      const int64_t r = a - n3 * j3;  // first r clocks at j3+1: a ends at exactly 0
+    // Peak acceleration a (<= a_max): the ramps take ceil(a / j) clocks at
+    // jerk floor(a / clocks) <= j, so a ramp shorter than one clock still
+    // takes one clock. If the jerk phases alone overshoot dv, shrink a.
+    int64_t a = std::clamp<int64_t>(int64_t(a_peak), 1, a_max);
+    for (int iter = 0; iter < 400; ++iter) {
+      // Ramp clocks: floor(a/j) keeps the jerk at exactly j (long ramps),
+      // ceil(a/j) at a slightly lower jerk reaches nearer to a (ramps of a
+      // few clocks); take whichever peaks higher.
+      const int64_t n_floor = std::max<int64_t>(1, a / j_in);
+      const int64_t n_ceil = (a + j_in - 1) / j_in;
+      const int64_t a_floor = n_floor * std::min(j_in, a / n_floor);
+      const int64_t a_ceil = n_ceil * (a / n_ceil);
+      const int64_t n1 = a_floor >= a_ceil ? n_floor : n_ceil;
+      const int64_t j1 = std::min(j_in, a / n1);
+      const int64_t a1 = n1 * j1;  // realised peak, <= a
+      const int64_t n3 = (a1 + j_out - 1) / j_out;
+      const int64_t j3 = a1 / n3;
+      const int64_t r = a1 - n3 * j3;  // first r clocks at j3+1: a ends at exactly 0
       std::vector<Row> rows;
-      rows.push_back({ph_up, uint64_t(n1), s * j_in, 0, 0});
-      rows.push_back({ph_const, 0, 0, s * a, 0});
+      rows.push_back({ph_up, uint64_t(n1), s * j1, 0, 0});
+      rows.push_back({ph_const, 0, 0, s * a1, 0});
       if (r > 0) rows.push_back({ph_down, uint64_t(r), -s * (j3 + 1), 0, 0});
       rows.push_back({ph_down, uint64_t(n3 - r), -s * j3, 0, 0});
-      // Velocity gained by the jerk rows alone (the constant row adds n2*a).
+      // Velocity gained by the jerk rows alone (the constant row adds n2*a1).
       i128 dv_jerk = 0;
       int64_t acc = 0;
       for (const Row& row : rows) {
@@ -94,9 +110,14 @@ Transition make_transition(i128 v_a, i128 dv, int s, int64_t j_in, int64_t j_out
         acc = int64_t(acc_after(acc, row.jerk, row.clocks));
       }
       dv_jerk = s > 0 ? dv_jerk : -dv_jerk;
-      if (dv_jerk > dv) continue;
-      rows[1].clocks = uint64_t((dv - dv_jerk) / a);
-      t.rows.clear();
+      if (dv_jerk > dv) {
+        if (a == 1) break;  // dv below one LSB of velocity change: nothing to do
+        const double shrink = std::sqrt(double(dv) / double(dv_jerk));
+        a = std::clamp<int64_t>(int64_t(double(a) * shrink * 0.999), 1, a - 1);
+        continue;
+      }
+      rows[1].clocks = uint64_t((dv - dv_jerk) / a1);
+      t.shortfall_bound = a1;  // less than one more clock at the peak
       for (const Row& row : rows) {
         if (row.clocks > 0) t.rows.push_back(row);
       }
@@ -209,9 +230,8 @@ PlanResult plan_move(const MoveRequest& req, const PulseTiming& timing) {
   // ---- limits checked before solving ------------------------------------
   if (timing.high < 1) return PlanError{"pulse_high", "pulse_high=0: must be >= 1 clock"};
   if (timing.low < 1) return PlanError{"pulse_low", "pulse_low=0: must be >= 1 clock"};
-  const int64_t dist_abs = req.distance < 0 ? -req.distance : req.distance;
   if (req.distance == 0) return PlanError{"distance", "distance=0: must be non-zero"};
-  if (dist_abs > PlannerLimits::kMaxDistance) {
+  if (req.distance > PlannerLimits::kMaxDistance || req.distance < -PlannerLimits::kMaxDistance) {
     return PlanError{"distance", fmt::format("distance={}: exceeds the limit +-{} pulses",
                                              req.distance, PlannerLimits::kMaxDistance)};
   }
@@ -220,7 +240,9 @@ PlanResult plan_move(const MoveRequest& req, const PulseTiming& timing) {
       " pulses/s (step-rate limit: pulse high {} + low {} clocks at {} MHz)", timing.high,
       timing.low, ClkHz / 1e6);
   if (auto e = check_range("v_start", req.v_start, 0, v_lim, rate_note.c_str())) return *e;
-  if (auto e = check_range("v_cruise", req.v_cruise, 0, v_lim, rate_note.c_str(), true)) return *e;
+  if (auto e = check_range("v_cruise", req.v_cruise, PlannerLimits::kMinCruise, v_lim, rate_note.c_str())) {
+    return *e;
+  }
   if (auto e = check_range("v_end", req.v_end, 0, v_lim, rate_note.c_str())) return *e;
   if (auto e = check_range("a_max", req.a_max, PlannerLimits::kMinAccel, PlannerLimits::kMaxAccel,
                            "pulses/s^2")) {
@@ -301,16 +323,17 @@ PlanResult plan_magnitude(const MoveRequest& req, const PulseTiming& timing, dou
     const Candidate far = evaluate(vs, v_far, ve, target, lim);
     const bool far_is_stop = v_far == 0.0;  // vs = ve = 0: a tiny plateau always fits
     if (!far_is_stop && !far.feasible) {
+      const char* hint = req.adjust_end_speed ? "" : " (or allow --adjust-end-speed)";
       const std::string need =
           far.too_far ? std::string("more than 1e12") : fmt::format("{}", needed_distance(far, target));
       if (v_end > req.v_start) {
         return PlanError{"v_end", fmt::format("v_end={} unreachable from v_start={}: needs distance >= {} "
-                                              "pulses, got {} (or allow --adjust-end-speed)",
-                                              num(v_end), num(req.v_start), need, dist)};
+                                              "pulses, got {}{}",
+                                              num(v_end), num(req.v_start), need, dist, hint)};
       }
       return PlanError{"v_end", fmt::format("v_end={} unreachable: slowing from v_start={} needs distance "
-                                            ">= {} pulses, got {} (or allow --adjust-end-speed)",
-                                            num(v_end), num(req.v_start), need, dist)};
+                                            ">= {} pulses, got {}{}",
+                                            num(v_end), num(req.v_start), need, dist, hint)};
     }
     // Walk geometrically from v_cruise toward v_far, then bisect.
     double bad = req.v_cruise, good = -1;
@@ -395,6 +418,10 @@ PlanResult plan_magnitude(const MoveRequest& req, const PulseTiming& timing, dou
 
   // ---- re-check the result by executing it (Ruckig style) ----------------
   const TableReport rep = run_table(plan.segments, plan.pos_frac0, dir);
+  // Transitions fall short of their target by less than one clock at the
+  // peak acceleration; anything more is a planner bug (a dropped transition).
+  const i128 v_end_real = c.t2.v_end;
+  const i128 end_miss = v_end_real > ve ? v_end_real - ve : ve - v_end_real;
   const i128 v_cap = std::min(i128(std::floor(std::max({req.v_cruise, req.v_start, v_end}) * kVelScale)),
                               lim.v_rate);
   const i128 v_rate = lim.v_rate;
@@ -407,6 +434,7 @@ PlanResult plan_magnitude(const MoveRequest& req, const PulseTiming& timing, dou
   else if (rep.peak_vel > v_cap || rep.peak_vel > v_rate) why = "velocity limit exceeded";
   else if (rep.peak_acc > lim.a_max) why = "acceleration limit exceeded";
   else if (!trap && rep.peak_jerk > j_cap) why = "jerk limit exceeded";
+  else if (end_miss > c.t2.shortfall_bound) why = "end speed missed";
   if (!why.empty()) {
     return PlanError{"internal", fmt::format("internal planner error ({}); please report the request", why)};
   }

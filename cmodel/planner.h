@@ -43,6 +43,8 @@ struct PlannerLimits {
   static constexpr int64_t kMaxDistance = (int64_t(1) << 31) - 2;
   static constexpr double kMinAccel = 0.01, kMaxAccel = 1e8;
   static constexpr double kMinJerk = 10.0, kMaxJerk = 1e11;
+  // Slower cruises cannot cover a pulse within the table's 16 rows of 214 s.
+  static constexpr double kMinCruise = 1e-3;
 };
 
 struct Plan {

@@ -68,12 +68,16 @@ void PinMonitor::on_change(uint64_t clock, const CoreOutputs& o) {
         runs_.push_back(r);
       }
       PhaseRun& r = runs_.back();
-      // The first interval of a run straddles the phase change: not judged.
+      // The first interval of a run straddles the phase change (the pulse
+      // that opens it was requested a few clocks earlier, in the previous
+      // phase), so it is neither judged nor used as the reference.
       if (r.pulses > 0) {
         const DutyTrend tr = trend_of_phase(ph);
-        // One clock of jitter: edges sit on the clock grid.
-        if (tr == DutyTrend::Rising && iv > r.last_interval + 1) ++r.trend_violations;
-        if (tr == DutyTrend::Falling && iv + 1 < r.last_interval) ++r.trend_violations;
+        if (r.pulses > 1) {
+          // One clock of jitter: edges sit on the clock grid.
+          if (tr == DutyTrend::Rising && iv > r.last_interval + 1) ++r.trend_violations;
+          if (tr == DutyTrend::Falling && iv + 1 < r.last_interval) ++r.trend_violations;
+        }
         r.min_interval = std::min(r.min_interval, iv);
         r.max_interval = std::max(r.max_interval, iv);
       } else {

