@@ -8,13 +8,29 @@ void AxisCore::reset() {
   exec_.reset();
   sg_.reset();
   in_q_ = InputRegs{};
+  first_fwd_ = true;
+  arm_ = false;
+  arm_fwd_ = true;
+  arm_cnt_ = 0;
 }
 
 bool AxisCore::busy() const {
-  return exec_.state().run || exec_.state().step_req || sg_.busy();
+  return exec_.state().run || exec_.state().step_req || sg_.busy() || arm_;
 }
 
+namespace {
+// Direction of a table row: its velocity's sign, else its acceleration's,
+// else its jerk's (a move from rest starts with v = a = 0).
+bool row_forward(const Segment& s) {
+  const i128 v = wrap_signed(s.vel0, VelW);
+  const int64_t a = wrap_signed64(s.acc0, AccW);
+  const int64_t j = wrap_signed64(s.jerk, JerkW);
+  return v != 0 ? v > 0 : a != 0 ? a > 0 : j >= 0;
+}
+}  // namespace
+
 void AxisCore::step(const CoreInputs& in) {
+  const bool capture_row0 = in.seg_we && (in.seg_waddr & (MaxSegs - 1)) == 0 && !exec_.state().run;
   ProfileExec::Inputs& ei = exec_in_;
   ei.seg_we = in.seg_we;
   if (in.seg_we) {
@@ -23,6 +39,7 @@ void AxisCore::step(const CoreInputs& in) {
   }
   clock_edge();
   ei.seg_we = false;
+  if (capture_row0) first_fwd_ = row_forward(in.seg_wdata);
   in_q_.enable = in.enable;
   in_q_.start = in.start;
   in_q_.abort = in.abort;
@@ -33,23 +50,44 @@ void AxisCore::step(const CoreInputs& in) {
 
 void AxisCore::clock_edge() {
   // Every sub-block input below is a register output (the core's input
-  // stage or the executor's step request), as in the RTL.
+  // stage, the arming state or the executor's step request), as in the RTL.
   const ProfileExec::State& e = exec_.state();
   const bool start_ok = in_q_.start && !busy() && in_q_.enable;
+  bool arm_d = arm_, arm_fwd_d = arm_fwd_, exec_start = false;
+  uint16_t arm_cnt_d = arm_cnt_;
+  if (start_ok) {
+    arm_d = true;
+    arm_fwd_d = first_fwd_;
+    arm_cnt_d = 0;
+  } else if (arm_) {
+    if (in_q_.abort) {
+      arm_d = false;
+    } else if (sg_.state().dir != arm_fwd_) {
+      arm_cnt_d = 0;
+    } else if (arm_cnt_ >= in_q_.cfg.setup) {
+      arm_d = false;
+      exec_start = true;
+    } else {
+      arm_cnt_d = uint16_t(arm_cnt_ + 1);
+    }
+  }
   StepGen::Inputs si;
   si.cfg = in_q_.cfg;
   si.clear = start_ok;
   si.step_req = e.step_req;
   si.step_fwd = e.step_fwd;
-  si.dir_hint_valid = e.run && e.vel != 0;
-  si.dir_hint = e.vel >= 0;
+  si.dir_hint_valid = arm_ || (e.run && e.vel != 0);
+  si.dir_hint = arm_ ? arm_fwd_ : e.vel >= 0;
   ProfileExec::Inputs& ei = exec_in_;
   ei.seg_count = in_q_.seg_count;
   ei.pos_frac0 = in_q_.pos_frac0;
-  ei.start = start_ok;
+  ei.start = exec_start;
   ei.abort = in_q_.abort;
   sg_.step(si);  // uses the executor's current (registered) outputs
   exec_.step(ei);
+  arm_ = arm_d;
+  arm_fwd_ = arm_fwd_d;
+  arm_cnt_ = arm_cnt_d;
 }
 
 bool AxisCore::inputs_settled(const CoreInputs& in) const {
@@ -58,7 +96,6 @@ bool AxisCore::inputs_settled(const CoreInputs& in) const {
          in_q_.seg_count == (in.seg_count & ((1u << SegCntW) - 1)) &&
          in_q_.pos_frac0 == mask_bits(in.pos_frac0, FracBits);
 }
-
 CoreOutputs AxisCore::outputs() const {
   const ProfileExec::State& e = exec_.state();
   const StepGen::State& s = sg_.state();
@@ -99,7 +136,7 @@ void AxisCore::fast_forward(const CoreInputs& in, uint64_t n) {
   while (n > 0) {
     const ProfileExec::State& e = exec_.state();
     const bool dir_settled = !(e.run && e.vel != 0) || (e.vel >= 0) == sg_.state().dir;
-    if (sg_.idle() && dir_settled && !e.step_req && inputs_settled(in)) {
+    if (sg_.idle() && dir_settled && !e.step_req && !arm_ && inputs_settled(in)) {
       uint64_t ev = exec_.clocks_to_next_event();
       if (ev == 0 && !exec_.state().run) ev = UINT64_MAX;  // idle: only counters move
       if (ev > 1) {

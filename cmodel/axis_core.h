@@ -83,6 +83,11 @@ class AxisCore {
   ProfileExec exec_;
   StepGen sg_;
   InputRegs in_q_;
+  // Start arming (mirrors first_fwd_q, arm_q, arm_fwd_q, arm_cnt_q).
+  bool first_fwd_ = true;
+  bool arm_ = false;
+  bool arm_fwd_ = true;
+  uint16_t arm_cnt_ = 0;
   ProfileExec::Inputs exec_in_{};  // reused every clock: no per-clock construction
   void clock_edge();
 };

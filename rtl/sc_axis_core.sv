@@ -7,6 +7,11 @@
 // latency), so no logic inside depends combinationally on a top-level input:
 // short input-to-flop paths on the FPGA, and Verilator evaluates the logic
 // once per rising edge instead of on every input change.
+//
+// An accepted start first arms: DIR is turned to the move's direction (the
+// sign of table row 0, captured when row 0 is written) and held for the
+// setup time, and only then does the executor start. Steps therefore never
+// pile up in the step generator's queue behind a DIR change.
 module sc_axis_core (
   input  logic                        clk_i,
   input  logic                        rst_ni,
@@ -58,15 +63,49 @@ module sc_axis_core (
   logic   exec_running, exec_finished, exec_fault;
   logic   exec_step_req, exec_step_fwd;
   logic [PhaseW-1:0] exec_phase;
-  logic   sg_busy;
-  logic   start_ok;
+  logic   sg_busy, sg_dir;
+  logic   start_ok, exec_start;
   logic   en_q, start_q, abort_q;
+  logic   first_fwd_q;                   // direction of table row 0
+  logic   arm_q, arm_d;                  // start accepted, waiting for DIR
+  logic   arm_fwd_q, arm_fwd_d;
+  logic [PulseTimeW-1:0] arm_cnt_q, arm_cnt_d;  // clocks DIR has pointed the right way
+  logic   row0_fwd;
   logic [PulseTimeW-1:0] cfg_high_q, cfg_low_q, cfg_setup_q, cfg_hold_q;
   logic [SegCntW-1:0]    seg_count_q;
   logic [FracBits-1:0]   pos_frac0_q;
 
-  assign busy_o   = exec_running || exec_step_req || sg_busy;
+  assign busy_o   = exec_running || exec_step_req || sg_busy || arm_q;
   assign start_ok = start_q && !busy_o && en_q;
+
+  // Direction of a row: its velocity's sign, else its acceleration's, else
+  // its jerk's (a move from rest starts with v = a = 0).
+  assign row0_fwd = (seg_vel0_i != '0) ? !seg_vel0_i[sc_pkg::VelW-1] :
+                    (seg_acc0_i != '0) ? !seg_acc0_i[sc_pkg::AccW-1] :
+                                         !seg_jerk_i[sc_pkg::JerkW-1];
+
+  always_comb begin
+    arm_d      = arm_q;
+    arm_fwd_d  = arm_fwd_q;
+    arm_cnt_d  = arm_cnt_q;
+    exec_start = 1'b0;
+    if (start_ok) begin
+      arm_d     = 1'b1;
+      arm_fwd_d = first_fwd_q;
+      arm_cnt_d = '0;
+    end else if (arm_q) begin
+      if (abort_q) begin
+        arm_d = 1'b0;
+      end else if (sg_dir != arm_fwd_q) begin
+        arm_cnt_d = '0;
+      end else if (arm_cnt_q >= cfg_setup_q) begin
+        arm_d      = 1'b0;
+        exec_start = 1'b1;
+      end else begin
+        arm_cnt_d = arm_cnt_q + PulseTimeW'(1);
+      end
+    end
+  end
 
   sc_profile_exec u_exec (
     .clk_i,
@@ -80,7 +119,7 @@ module sc_axis_core (
     .seg_vel0_i,
     .seg_count_i (seg_count_q),
     .pos_frac0_i (pos_frac0_q),
-    .start_i     (start_ok),
+    .start_i     (exec_start),
     .abort_i     (abort_q),
     .running_o   (exec_running),
     .finished_o  (exec_finished),
@@ -106,10 +145,10 @@ module sc_axis_core (
     .clear_i     (start_ok),
     .step_req_i  (exec_step_req),
     .step_fwd_i  (exec_step_fwd),
-    .dir_hint_valid_i (exec_running && ref_vel_o != '0),
-    .dir_hint_i  (!ref_vel_o[sc_pkg::VelW-1]),
+    .dir_hint_valid_i (arm_q || (exec_running && ref_vel_o != '0)),
+    .dir_hint_i  (arm_q ? arm_fwd_q : !ref_vel_o[sc_pkg::VelW-1]),
     .step_o,
-    .dir_o,
+    .dir_o       (sg_dir),
     .busy_o      (sg_busy),
     .overrun_o   (fault_overrun_o),
     .pending_o   (step_pending_o),
@@ -119,6 +158,10 @@ module sc_axis_core (
   always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
       en_q        <= 1'b0;
+      first_fwd_q <= 1'b1;
+      arm_q       <= 1'b0;
+      arm_fwd_q   <= 1'b1;
+      arm_cnt_q   <= '0;
       start_q     <= 1'b0;
       abort_q     <= 1'b0;
       cfg_high_q  <= '0;
@@ -129,6 +172,10 @@ module sc_axis_core (
       pos_frac0_q <= '0;
     end else begin
       en_q        <= enable_i;
+      if (seg_we_i && seg_waddr_i == '0 && !exec_running) first_fwd_q <= row0_fwd;
+      arm_q       <= arm_d;
+      arm_fwd_q   <= arm_fwd_d;
+      arm_cnt_q   <= arm_cnt_d;
       start_q     <= start_i;
       abort_q     <= abort_i;
       cfg_high_q  <= cfg_high_i;
@@ -141,6 +188,7 @@ module sc_axis_core (
   end
 
   assign en_o          = en_q;
+  assign dir_o         = sg_dir;
   assign done_o        = exec_finished && !busy_o;
   assign phase_o       = done_o ? sc_pkg::PhDone : exec_phase;
   assign fault_table_o = exec_fault;

@@ -73,7 +73,9 @@ struct PeakTracker {
     if (o.ref_acc < a_min) a_min = o.ref_acc;
     if (o.ref_jerk > j_max) j_max = o.ref_jerk;
     if (o.ref_jerk < j_min) j_min = o.ref_jerk;
-    if (have_prev && o.seg_idx != prev_idx) [[unlikely]] {
+    // Reloads only; the jump from rest to the start speed (after the arming
+    // clocks, busy but at rest) is not an acceleration of the move.
+    if (have_prev && o.seg_idx != prev_idx && (prev_vel != 0 || prev_acc != 0)) [[unlikely]] {
       const i128 dv = o.ref_vel - prev_vel;
       const i128 da = i128(o.ref_acc) - prev_acc;
       jump_a = std::max(jump_a, dv < 0 ? -dv : dv);

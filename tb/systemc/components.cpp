@@ -80,7 +80,10 @@ struct ReferencePeaks {
     v = std::max(v, mag(o.ref_vel));
     a = std::max(a, mag(i128(o.ref_acc)));
     j = std::max(j, mag(i128(o.ref_jerk)));
-    if (have_prev) {
+    // The jump from rest to the start speed (and the arming clocks before
+    // it, busy but at rest) is not an acceleration of the move.
+    const bool prev_at_rest = prev_vel == 0 && prev_acc == 0;
+    if (have_prev && !prev_at_rest) {
       a = std::max(a, mag(o.ref_vel - prev_vel));
       j = std::max(j, mag(i128(o.ref_acc) - prev_acc));
     }

@@ -1,6 +1,6 @@
 // Red-team regression tests (adversarial review of planner, model, RTL).
-// Passing tests record what held; DISABLED_ tests reproduce open findings
-// (see tests/redteam/FINDINGS.md) and should pass once they are fixed.
+// Passing tests record what held; the F* tests reproduce the findings (all fixed)
+// (see tests/redteam/FINDINGS.md).
 #include <gtest/gtest.h>
 
 #include <random>
@@ -155,18 +155,18 @@ TEST(RedTeam, F1_RestToRestWithHugeJerkIsPlannedNotBlamedOnDistance) {
 // DIR setup time: the executor runs on, requests pile up in the 4-bit step
 // queue (+-7), overflow drops steps. RTL and model agree (0 mismatches), the
 // pins emit fewer than |distance| steps.
-TEST(RedTeam, DISABLED_F2_BackwardMoveWithLongDirSetupEmitsEveryStep) {
+TEST(RedTeam, F2_BackwardMoveWithLongDirSetupEmitsEveryStep) {
   const SimResult s = sim(mk(-20000, 0, 200000, 0, 1e8, 1e11), PulseTiming{50, 50, 65535, 100});
   EXPECT_EQ(s.pulses, -20000) << failures(s);
 }
-TEST(RedTeam, DISABLED_F2_BackwardAtRateLimitWithModestSetupEmitsEveryStep) {
+TEST(RedTeam, F2_BackwardAtRateLimitWithModestSetupEmitsEveryStep) {
   const SimResult s = sim(mk(-19, 2857142.8571428573, 2857142.8571428573, 2857142.8571428573, 59299052.318841696, 1e11),
                           PulseTiming{4, 3, 135, 44216});
   EXPECT_EQ(s.pulses, -19) << failures(s);
 }
 // Same cause, no loss: the queued steps leave back to back at 2x the planned
 // step rate, the sim fails its steady-cruise check.
-TEST(RedTeam, DISABLED_F2_BackwardCruiseStaysSteadyWithDirSetup) {
+TEST(RedTeam, F2_BackwardCruiseStaysSteadyWithDirSetup) {
   const SimResult s = sim(mk(-3000, 100000, 100000, 0, 1e7, 1e10), PulseTiming{50, 50, 800, 100});
   EXPECT_TRUE(s.pass()) << failures(s);
 }
