@@ -259,3 +259,30 @@ TEST(ScBench, ModelFstMatchesRtlFstAndAnInjectedFaultIsFoundAtItsClock) {
   EXPECT_EQ(r.signals[0].first_clock, k);
   EXPECT_EQ(r.signals[0].differing_clocks, 130000 - k);
 }
+
+TEST(Cli, BadInputExitsWithTwo) {
+  const fs::path d = temp_dir("cli");
+  write_synthetic(d / "a.csv", "rtl", 1000, no_tweak);
+  const std::string scurve = SCURVE;
+  EXPECT_EQ(run(scurve + " diff " + (d / "a.csv").string() + " " + (d / "missing.csv").string()), 2);
+  EXPECT_EQ(run(scurve + " regress --list " + (d / "missing.json").string() + " --out-dir " + d.string()), 2);
+  EXPECT_EQ(run(scurve + " regress --shard 3/2 --list-only --out-dir " + d.string()), 2);
+  EXPECT_EQ(run(std::string(SC_BENCH) + " --group 5"), 2);
+  EXPECT_EQ(run(std::string(SC_BENCH) + " --distance 100 --v-cruise 1000 --a-max 0 --j-max 100"), 2);
+}
+
+TEST(Regress, CommandResultsWithRunsAreSummarised) {
+  regress::TestResult r;
+  r.test.name = "cl";
+  r.test.entry = "cl";
+  r.test.kind = "command";
+  r.pass = true;
+  r.result = nlohmann::json::parse(R"({"runs": [
+      {"clocks": 10, "pulses": 5, "final_error": 0, "max_tracking_error": 1.5, "rmse": 0.3, "mismatches": 0},
+      {"clocks": 20, "pulses": 7, "final_error": -2, "max_tracking_error": 2.5, "rmse": 0.2, "mismatches": 1}],
+      "pass": true})");
+  const std::string table = regress::summary_table({r});
+  EXPECT_NE(table.find("30"), std::string::npos) << table;      // clocks summed
+  EXPECT_NE(table.find("2.500"), std::string::npos) << table;   // worst max error
+  EXPECT_NE(table.find("-2"), std::string::npos) << table;      // worst final error
+}
