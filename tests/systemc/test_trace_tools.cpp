@@ -219,6 +219,7 @@ TEST(Regress, DefaultListHasTheFourPaperGroupsRandomSeedsAndCorners) {
   for (int g = 1; g <= 4; ++g) EXPECT_TRUE(names.count("paper_group" + std::to_string(g)));
   EXPECT_TRUE(kinds.count("random"));
   EXPECT_TRUE(kinds.count("move"));
+  EXPECT_TRUE(kinds.count("command"));  // closed-loop scenarios through scurve sim --closed-loop
   const auto quick = regress::expand_list(default_list(), {}, {"long"});
   EXPECT_EQ(quick.size(), tests.size() - 4);
 }
