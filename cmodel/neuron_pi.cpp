@@ -1,5 +1,7 @@
 #include "neuron_pi.h"
 
+#include <algorithm>
+
 namespace sc {
 
 namespace {
@@ -24,17 +26,14 @@ int32_t NeuronPi::mul_round_sat(int32_t a, int32_t b, unsigned sh) {
 
 void NeuronPi::step(const NeuronConfig& cfg, const Inputs& in) {
   State& q = q_;
-  if (!in.start && !in.stop && counting_only()) [[likely]] {
-    if (q.active) {
-      if (q.cnt != 0) {
-        q.cnt = uint16_t(q.cnt - 1);
-        return;
-      }
-    } else {
-      return;
-    }
+  if (!in.start && !in.stop && counting_only() && (q.corr == 0 || !in.nco_req)) [[likely]] {
+    q.mv = q.mv || in.cmd_busy;
+    if (q.active) q.cnt = uint16_t(q.cnt - 1);
+    return;
   }
   State d = q;
+  d.mv = q.mv || in.cmd_busy;
+  if (q.corr != 0 && in.nco_req) d.corr = sext(int64_t(q.corr) + (q.corr < 0 ? 1 : -1), CorrW);
   const int s = q.sel ? 1 : 0;
   const Loop& L = q.lp[s];
   const int32_t bias = (q.sel && cfg.ff_en) ? q.vff : 0;
@@ -47,18 +46,22 @@ void NeuronPi::step(const NeuronConfig& cfg, const Inputs& in) {
   const unsigned shift = cfg.shift & ((1u << EncShiftW) - 1);
   const unsigned ls = cfg.learn_shift & ((1u << LearnShW) - 1);
   const unsigned hebb_sh = unsigned(CoefFrac + CtlFrac - WgtFrac) + ls;
-  const int32_t e_b = q.e > kBMax ? kBMax : q.e < -kBMax ? -kBMax : q.e;
+  const uint32_t abs_eq = q.e < 0 ? uint32_t(-int64_t(q.e)) : uint32_t(q.e);
+  const int32_t e_b = abs_eq <= (q.sel ? cfg.learn_dz_v : cfg.learn_dz_p) ? 0 : q.e > kBMax ? kBMax : q.e < -kBMax ? -kBMax : q.e;
 
   if (q.active) {
     if (q.cnt == 0) {
       d.cnt = uint16_t(cfg.div - 1);
       if (q.st == StIdle) {
-        const uint32_t r8 = (u32(in.ref_int) << CtlFrac) | in.ref_frac;
-        d.ref = int32_t((r8 - (in.ref_done ? 0u : (1u << (CtlFrac - 1)))) << shift);
+        const uint32_t r = in.ref_done ? u32(in.ref_int) << CtlFrac
+                                       : ((u32(in.ref_int) << CtlFrac) | in.ref_frac) - (1u << (CtlFrac - 1));
+        d.ref = int32_t(r << shift);
         d.pfb = int32_t(u32(in.enc_pos) << CtlFrac);
         d.vmeas = int32_t((u32(in.enc_pos) << CtlFrac) - u32(q.pfb));
         d.vq = in.ref_vel;
         d.fin = in.ref_done;
+        d.mvs = q.mv || in.cmd_busy;
+        d.mv = false;
         d.st = StVff;
       }
     } else {
@@ -108,25 +111,37 @@ void NeuronPi::step(const NeuronConfig& cfg, const Inputs& in) {
       break;
     }
     case StErr: {
-      const int32_t e = wrap32(int64_t(cur_ref) - cur_fb);
+      const int32_t e_raw = wrap32(int64_t(cur_ref) - cur_fb);
+      const uint32_t abs_e = e_raw < 0 ? uint32_t(-int64_t(e_raw)) : uint32_t(e_raw);
+      const bool hush = !q.sel && q.fin;
+      const int32_t e = hush ? 0 : e_raw;
+      if (!q.sel) d.hush = hush;
       d.e = e;
       d.x2 = wrap32(int64_t(e) - L.ep);
-      d.lp[s].ep = e;
+      d.lp[s].ep = q.sel ? e : e_raw;  // e_p_o: the raw position error
       d.st = StT1;
       if (!q.sel) {
-        const uint32_t abs_e = e < 0 ? uint32_t(-int64_t(e)) : uint32_t(e);
         if (abs_e > cfg.ferr_lim) {
           d.ferr = true;
           d.active = false;
           d.u = 0;
           d.st = StIdle;
-        } else if (q.fin && abs_e <= cfg.inpos_win) {
+        } else if (q.fin && !q.mvs && q.corr == 0 && e_raw == L.ep) {
           d.hold = uint16_t(q.hold + 1);
           if (d.hold >= cfg.inpos_hold) {
-            d.in_pos = true;
-            d.active = false;
-            d.u = 0;
-            d.st = StIdle;
+            d.hold = 0;
+            const unsigned sh = CtlFrac + shift;
+            const int64_t full = (int64_t(e_raw) + (int64_t(1) << (sh - 1))) >> sh;
+            const int64_t cmax = (int64_t(1) << (CorrW - 1)) - 1;
+            const int32_t steps = int32_t(std::clamp<int64_t>(full, -cmax, cmax));
+            if (abs_e <= cfg.inpos_win || steps == 0) {
+              d.in_pos = true;
+              d.active = false;
+              d.u = 0;
+              d.st = StIdle;
+            } else {
+              d.corr = steps;
+            }
           }
         } else {
           d.hold = 0;
@@ -149,7 +164,7 @@ void NeuronPi::step(const NeuronConfig& cfg, const Inputs& in) {
     case StBc: {
       const int32_t bc = mul_round_sat(L.es, int32_t(cfg.kb), CoefFrac);
       const int32_t acc_du = sat32(int64_t(L.acc) + q.du);
-      const int32_t acc_new = sat32(int64_t(acc_du) - bc);
+      const int32_t acc_new = q.hush ? 0 : sat32(int64_t(acc_du) - bc);
       const int32_t tot = sat32(int64_t(acc_new) + bias);
       const int64_t lim = int64_t(cur_lim);
       const int32_t out = tot > lim ? wrap32(lim) : tot < -lim ? wrap32(-lim) : tot;
@@ -172,7 +187,8 @@ void NeuronPi::step(const NeuronConfig& cfg, const Inputs& in) {
     case StDw2: {
       const int32_t dw = mul_round_sat(q.h, int32_t(q.st == StDw1 ? eta1 : eta2), hebb_sh);
       const int64_t sum = int64_t(q.st == StDw1 ? L.w1 : L.w2) + dw;
-      const int32_t wn = sum > cfg.w_max ? cfg.w_max : sum < cfg.w_min ? cfg.w_min : sext(sum, WgtW);
+      const int32_t hi = q.st == StDw1 ? (q.sel ? cfg.w_v1_max : cfg.w_p1_max) : (q.sel ? cfg.w_v2_max : cfg.w_p2_max);
+      const int32_t wn = sum > hi ? hi : sum < cfg.w_min ? cfg.w_min : sext(sum, WgtW);
       if (q.st == StDw1) {
         d.lp[s].w1 = wn;
         d.st = StH2;
@@ -192,6 +208,11 @@ void NeuronPi::step(const NeuronConfig& cfg, const Inputs& in) {
       break;
   }
 
+  if (q.fin && d.active) {
+    const int32_t r = int32_t(cfg.settle_rate);
+    d.u = d.corr == 0 ? 0 : d.corr < 0 ? int32_t(-int64_t(r)) : r;
+  }
+
   if (in.start) {
     d.active = true;
     d.in_pos = false;
@@ -200,6 +221,9 @@ void NeuronPi::step(const NeuronConfig& cfg, const Inputs& in) {
     d.st = StIdle;
     d.sel = false;
     d.hold = 0;
+    d.hush = false;
+    d.corr = 0;
+    d.fin = false;
     d.pfb = int32_t(u32(in.enc_pos) << CtlFrac);
     d.vmeas = 0;
     d.vff = 0;

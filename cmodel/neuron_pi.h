@@ -17,16 +17,20 @@ struct NeuronConfig {
   uint8_t shift = 0;           // log2(encoder counts per pulse)
   bool ff_en = true;           // velocity feed-forward from V*
   uint8_t learn_shift = 0;     // Hebb scale 2^-learn_shift
+  uint32_t learn_dz_p = 0;     // no learning while |e| <= dz (Q.CtlFrac), position loop
+  uint32_t learn_dz_v = 0;     //   speed loop
   uint32_t k_p = 0, k_v = 0;   // neuron gains, Q.CoefFrac
   uint32_t kb = 0;             // back-calculation gain, Q.CoefFrac
   uint32_t eta_p1 = 0, eta_p2 = 0, eta_v1 = 0, eta_v2 = 0;  // learning rates, Q.CoefFrac
   int32_t w_p1 = 0, w_p2 = 0, w_v1 = 0, w_v2 = 0;           // initial weights, Q.WgtFrac
-  int32_t w_min = 0, w_max = 0;                             // weight bounds
+  int32_t w_min = 0;                                        // lower bound, all weights
+  int32_t w_p1_max = 0, w_p2_max = 0, w_v1_max = 0, w_v2_max = 0;  // upper bounds
   uint32_t v_lim = 0;          // |position-loop output| limit, counts/period Q.CtlFrac
   uint32_t u_lim = 0;          // |u| limit
   uint32_t ferr_lim = 0;       // following-error limit, counts Q.CtlFrac
   uint32_t inpos_win = 0;      // in-position window, counts Q.CtlFrac
   uint16_t inpos_hold = 1;     // control periods
+  uint32_t settle_rate = 0;    // settle-phase corrective step rate, counts/period Q.CtlFrac
   bool operator==(const NeuronConfig&) const = default;
 };
 
@@ -37,10 +41,12 @@ class NeuronPi {
     bool start = false;
     bool stop = false;
     int32_t ref_int = 0;   // P* integer pulses
-    uint8_t ref_frac = 0;  // top CtlFrac bits of the P* fraction
+    uint32_t ref_frac = 0;  // top CtlFrac bits of the P* fraction
     int32_t ref_vel = 0;   // V*, Q.VffFrac pulses/clock
     bool ref_done = false;
     int32_t enc_pos = 0;
+    bool cmd_busy = false;  // a step is requested/owed/on the pin
+    bool nco_req = false;   // the NCO requests a step this clock
   };
   struct Loop {  // per-loop registers: [0] position, [1] speed
     int32_t w1 = 0, w2 = 0;   // WgtW
@@ -60,8 +66,11 @@ class NeuronPi {
     uint16_t hold = 0;
     int32_t ref = 0, pfb = 0, vmeas = 0, vq = 0;
     bool fin = false;
+    bool mv = false, mvs = false;
     int32_t vff = 0;
     Loop lp[2];
+    bool hush = false;
+    int32_t corr = 0;  // CorrW, corrective steps still to issue
     int32_t out_p = 0, u = 0;
     int32_t e = 0, x2 = 0, t1 = 0, t2 = 0, du = 0, h = 0;
     bool operator==(const State&) const = default;

@@ -30,6 +30,33 @@ package sc_pkg;
   localparam int PulseTimeW = 16;  // high/low/setup/hold in clocks
   localparam int PendW      = 4;   // signed queue of requested steps
 
+  // ---- closed loop: encoder, neuron-PI cascade, step NCO (issue 3) -------
+  // Controller word: Q(CtlW-CtlFrac).CtlFrac, in encoder counts (positions,
+  // errors) or counts per control period (speeds, u). Weights Q.WgtFrac,
+  // normalised weights Q1.NWgtFrac, coefficients (K, eta, Kb) unsigned
+  // Q.CoefFrac. One multiplier MulAW x MulBW (signed). See docs/closed_loop.md.
+  localparam int EncCntW   = 32;  // signed encoder position, counts
+  localparam int EncFiltW  = 4;   // glitch filter length, clocks (0..15)
+  localparam int EncIllW   = 16;  // illegal-transition counter (saturating)
+  localparam int EncShiftW = 3;   // log2(encoder counts per pulse), 0..7
+  localparam int CtlDivW   = 16;  // control period in clocks
+  localparam int CtlW      = 32;
+  localparam int CtlFrac   = 16;
+  localparam int WgtW      = 24;
+  localparam int WgtFrac   = 16;
+  localparam int NWgtW     = 18;
+  localparam int NWgtFrac  = 16;
+  localparam int CoefW     = 24;
+  localparam int CoefFrac  = 20;
+  localparam int MulAW     = 32;
+  localparam int MulBW     = 25;
+  localparam int VffFrac   = 31;  // V* as Q.31 pulses/clock on the multiplier
+  localparam int LearnShW  = 5;   // Hebb scale: dw = eta e x / 2^learn_shift
+  localparam int HoldW     = 16;  // in-position hold, control periods
+  localparam int NcoW      = 42;  // step NCO phase (signed, holds acc + u)
+  localparam int CtlStW    = 4;   // controller FSM state code
+  localparam int CorrW     = 16;  // settle-phase corrective steps (signed)
+
   // ---- status ------------------------------------------------------------
   localparam int PhaseW = 4;
 

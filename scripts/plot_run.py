@@ -2,6 +2,8 @@
 """PNG figures of one run, like paper 000's Figures 9-13.
 
   scripts/plot_run.py --group 1                 # runs the SystemC bench, then plots
+  scripts/plot_run.py --group 1 --closed-loop   # also runs scurve sim --closed-loop for the
+                                                # neuron weights and the closed-loop error
   scripts/plot_run.py --trace run.rtl.csv       # plots an existing kinematics trace
         [--weights weights.csv] [--out-dir DIR] [--require-phases rising,steady,falling,zero]
 
@@ -9,9 +11,11 @@ Figures (in --out-dir, default build/plots/<name>/):
   pulses.png        STEP pulse train with the phases shaded, duty cycle per pulse,
                     and a zoom into each phase (the paper's "PWM", Figure 9)
   velocity.png, acceleration.png, jerk.png   reference kinematics (Figures 10-12)
-  error.png         tracking error: reference - position (stepper counts in open
-                    loop; encoder position when the trace has an enc_pos column)
-  weights.png       neuron weights, when --weights names a CSV (closed loop)
+  error.png         tracking error: reference - stepper position from the STEP
+                    pulses (open loop); with a weights CSV that has e_p (scurve sim
+                    --closed-loop --weights-csv) also the closed-loop error P* - P
+  weights.png       neuron weights w_* and normalised weights wn_* (closed loop),
+                    when --weights names such a CSV
 Uses Debian's python3-matplotlib (hence /usr/bin/python3).
 """
 import argparse
@@ -93,12 +97,30 @@ def run_bench(args, trace):
         sys.exit("the bench run failed its checks")
 
 
+def run_closed_loop(args, weights):
+    scurve = os.path.join(args.build_dir, "bin", "scurve")
+    cmd = [scurve, "sim", "--closed-loop", "--group", str(args.group), "--weights-csv", weights]
+    print(" ".join(cmd), flush=True)
+    if subprocess.call(cmd, stdout=subprocess.DEVNULL) != 0:
+        sys.exit("the closed-loop run failed its checks")
+
+
+def read_weights(path):
+    with open(path) as f:
+        rdr = csv.reader(line for line in f if not line.startswith("#"))
+        head = next(rdr)
+        data = [list(map(float, r)) for r in rdr if r]
+    return head, data
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     src = ap.add_mutually_exclusive_group(required=True)
     src.add_argument("--group", type=int, choices=[1, 2, 3, 4], help="run paper group N through sc_bench first")
     src.add_argument("--trace", help="kinematics trace CSV (sc_bench --trace-rtl/--trace-model)")
     ap.add_argument("--weights", help="neuron weight trajectories CSV (closed loop), optional")
+    ap.add_argument("--closed-loop", action="store_true",
+                    help="with --group: also run the group in closed loop for the weights and its error")
     ap.add_argument("--out-dir", help="where the PNGs go (default build/plots/<name>)")
     ap.add_argument("--build-dir", default=os.path.join(ROOT, "build"), help="build with bin/sc_bench")
     ap.add_argument("--decimate", type=int, default=20000, help="reference sample period, clocks (with --group)")
@@ -112,6 +134,11 @@ def main():
     if args.group:
         trace = os.path.join(out, f"{name}.rtl.csv")
         run_bench(args, trace)
+        if args.closed_loop:
+            args.weights = os.path.join(out, f"{name}.weights.csv")
+            run_closed_loop(args, args.weights)
+    weights = read_weights(args.weights) if args.weights else None
+    closed = bool(weights and "e_p" in weights[0])  # the closed loop's position error is in the CSV
 
     meta, c = read_trace(trace)
     clk_hz = float(meta.get("clk_hz", 20e6))
@@ -188,11 +215,8 @@ def main():
     # ---- tracking error (Figure 13) --------------------------------------------------
     ref = [pi + pf / one for pi, pf in zip(c["ref_pos_int"], c["ref_pos_frac"])]
     origin = next((c["ref_pos_int"][i] for i in range(len(t)) if c["busy"][i]), 0)
-    if "enc_pos" in c:
-        pos, what = c["enc_pos"], "encoder position (closed loop)"
-    else:
-        pos, what = c["pulse_count"], "stepper position from the STEP pulses (open loop)"
-    err = [r - origin - p for r, p in zip(ref, pos)]
+    what = "stepper position from the STEP pulses (open loop)"
+    err = [r - origin - p for r, p in zip(ref, c["pulse_count"])]
     # Binned envelope: a per-pulse sawtooth over 30,000 pulses would fill the
     # plot solid; min/max/mean per bin keep its extent and trend readable.
     nbins = 400
@@ -206,10 +230,14 @@ def main():
     shade(ax, runs)
     ax.fill_between(centre, [min(b) for b in full], [max(b) for b in full], color="C2", alpha=0.35,
                     label="min..max per bin")
-    ax.plot(centre, [sum(b) / len(b) for b in full], lw=1.0, color="C2", label="mean")
+    ax.plot(centre, [sum(b) / len(b) for b in full], lw=1.0, color="C2", label="open loop: mean")
+    if closed:
+        k = weights[0].index("e_p")
+        ax.plot([r[0] for r in weights[1]], [r[k] for r in weights[1]], lw=0.8, color="C3",
+                label="closed loop: P* - P (encoder)")
     ax.legend(loc="lower left", fontsize=8)
     print(f"tracking error: max |e| {max(abs(e) for e in err):.3f} pulses, final {err[-1]:.3f}")
-    ax.set_title(f"{name}: tracking error, reference - {what}")
+    ax.set_title(f"{name}: tracking error, reference - {what}" + (" and closed loop" if closed else ""), fontsize=10)
     ax.set_xlabel("time, s")
     ax.set_ylabel("pulses")
     fig.tight_layout()
@@ -217,23 +245,24 @@ def main():
     plt.close(fig)
 
     # ---- neuron weights (closed loop, optional) -----------------------------------------
-    if args.weights:
-        with open(args.weights) as f:
-            rdr = csv.reader(line for line in f if not line.startswith("#"))
-            head = next(rdr)
-            data = [list(map(float, r)) for r in rdr if r]
-        fig, ax = plt.subplots(figsize=(10, 4))
+    if weights:
+        head, data = weights
         x = [r[0] for r in data]
-        for j in range(1, len(head)):
-            ax.plot(x, [r[j] for r in data], lw=1.0, label=head[j])
-        ax.set_xlabel(head[0])
-        ax.set_title(f"{name}: neuron weights")
-        ax.legend(fontsize=8)
+        panels = [("weights w", [j for j, h in enumerate(head) if h.startswith("w_")]),
+                  ("normalised weights w' = w / sum|w|", [j for j, h in enumerate(head) if h.startswith("wn_")])]
+        panels = [p for p in panels if p[1]] or [("columns", list(range(1, len(head))))]
+        fig, axes = plt.subplots(len(panels), 1, figsize=(10, 3.2 * len(panels)), sharex=True, squeeze=False)
+        for ax, (title, cols) in zip(axes[:, 0], panels):
+            for j in cols:
+                ax.plot(x, [r[j] for r in data], lw=1.0, label=head[j])
+            ax.set_title(f"{name}: neuron {title}")
+            ax.legend(fontsize=8, loc="right")
+        axes[-1, 0].set_xlabel(head[0])
         fig.tight_layout()
         fig.savefig(os.path.join(out, "weights.png"), dpi=110)
         plt.close(fig)
     else:
-        print("no --weights CSV: weights.png not drawn (open loop has no neuron weights)")
+        print("no weights CSV: weights.png not drawn (open loop has no neuron weights; see --closed-loop)")
 
     print(f"figures in {out}")
     if args.require_phases:

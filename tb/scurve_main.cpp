@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 #include <thread>
 
+#include "closed_loop_cli.h"
 #include "planner.h"
 #include "regs_cli.h"
 #include "report.h"
@@ -166,6 +167,8 @@ int main(int argc, char** argv) {
   sim_cmd->add_option("--fst-from", fst_from, "first clock to trace");
   sim_cmd->add_option("--fst-to", fst_to, "clock after the last one to trace");
   sim_cmd->add_option("--jobs", jobs, "parallel runs (default: cores)")->check(CLI::Range(1, 64));
+  ClosedLoopCli closed_loop;  // --closed-loop and its plant/controller flags (tb/closed_loop_cli.h)
+  add_closed_loop_flags(sim_cmd, closed_loop);
 
   auto tools = add_tool_commands(app);  // diff, regress (issue 4, tb/tools/tool_commands.h)
 
@@ -214,6 +217,11 @@ int main(int argc, char** argv) {
     jobs_list.push_back({"move", to_request(sf)});
   }
   const PulseTiming timing = to_timing(sf);
+  if (closed_loop.enabled || closed_loop.compare) {
+    std::vector<std::pair<std::string, MoveRequest>> cl_jobs;
+    for (const Job& j : jobs_list) cl_jobs.emplace_back(j.name, j.req);
+    return run_closed_loop_cli(closed_loop, cl_jobs, timing, engine, jobs, sf.json);
+  }
   std::vector<Plan> plans;
   for (const Job& j : jobs_list) {
     const PlanResult r = plan_move(j.req, timing);

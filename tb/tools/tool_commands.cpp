@@ -136,9 +136,6 @@ std::pair<uint64_t, uint64_t> wave_window(const regress::TestResult& r) {
 int run_regress(const ToolCommands& t) {
   namespace fs = std::filesystem;
   using namespace regress;
-  std::error_code ec;
-  fs::create_directories(t.out_dir, ec);
-  if (ec) return bad_input(fmt::format("--out-dir {}: {}", t.out_dir, ec.message()));
 
   std::vector<TestResult> results;
   std::string shard_text = "1/1";
@@ -183,6 +180,9 @@ int run_regress(const ToolCommands& t) {
     }
     RunOptions ro;
     ro.jobs = t.jobs;
+    std::error_code ec;
+    fs::create_directories(t.out_dir, ec);
+    if (ec) return bad_input(fmt::format("--out-dir {}: {}", t.out_dir, ec.message()));
     ro.bin_dir = t.bin_dir.empty() ? self_dir() : t.bin_dir;
     ro.out_dir = t.out_dir;
     results = run_tests(tests, ro);
@@ -215,6 +215,7 @@ int run_regress(const ToolCommands& t) {
   }
   std::cout << summary_table(results);
   try {
+    fs::create_directories(t.out_dir);
     write_file(t.out_dir + "/junit.xml", junit_xml(results, t.suite));
     write_file(t.out_dir + "/results.json", results_json(results, shard_text).dump(2) + "\n");
   } catch (const std::exception& e) {

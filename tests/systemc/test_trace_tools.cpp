@@ -20,11 +20,23 @@ namespace fs = std::filesystem;
 
 namespace {
 
-fs::path temp_dir(const std::string& name) {
-  const fs::path d = fs::temp_directory_path() / ("scurve_tools_" + name + "_" + std::to_string(getpid()));
-  fs::create_directories(d);
-  return d;
-}
+// A scratch directory removed with everything in it when the test ends.
+class TempDir {
+ public:
+  explicit TempDir(const std::string& name)
+      : path_(fs::temp_directory_path() / ("scurve_tools_" + name + "_" + std::to_string(getpid()))) {
+    fs::create_directories(path_);
+  }
+  ~TempDir() {
+    std::error_code ec;
+    fs::remove_all(path_, ec);
+  }
+  fs::path operator/(const std::string& f) const { return path_ / f; }
+  std::string string() const { return path_.string(); }
+
+ private:
+  fs::path path_;
+};
 
 // A synthetic run: a pulse every 1000 clocks (high for 50), the velocity
 // changing every clock. `tweak` may corrupt the outputs of one clock.
@@ -58,7 +70,7 @@ int run(const std::string& cmd) {
 }  // namespace
 
 TEST(KinTrace, WritesOnChangeAndDecimatedAndReadsBack) {
-  const fs::path d = temp_dir("rw");
+  const TempDir d("rw");
   write_synthetic(d / "a.csv", "rtl", 100000, no_tweak);
   const KinTrace t = read_kin_trace((d / "a.csv").string());
   EXPECT_EQ(t.meta.at("source"), "rtl");
@@ -72,7 +84,7 @@ TEST(KinTrace, WritesOnChangeAndDecimatedAndReadsBack) {
 }
 
 TEST(TraceDiff, IdenticalTracesReportNothing) {
-  const fs::path d = temp_dir("same");
+  const TempDir d("same");
   write_synthetic(d / "a.csv", "rtl", 50000, no_tweak);
   write_synthetic(d / "b.csv", "model", 50000, no_tweak);
   const DiffReport r = diff_traces((d / "a.csv").string(), (d / "b.csv").string());
@@ -82,7 +94,7 @@ TEST(TraceDiff, IdenticalTracesReportNothing) {
 }
 
 TEST(TraceDiff, FindsInjectedHeldDivergenceAtItsClock) {
-  const fs::path d = temp_dir("held");
+  const TempDir d("held");
   write_synthetic(d / "a.csv", "rtl", 50000, no_tweak);
   // From clock 23456 on, B counts one pulse more.
   write_synthetic(d / "b.csv", "model", 50000, [](uint64_t c, CoreOutputs& o) {
@@ -101,7 +113,7 @@ TEST(TraceDiff, FindsInjectedHeldDivergenceAtItsClock) {
 }
 
 TEST(TraceDiff, FindsSampledDivergenceAndLengthDifference) {
-  const fs::path d = temp_dir("sampled");
+  const TempDir d("sampled");
   write_synthetic(d / "a.csv", "rtl", 50000, no_tweak);
   // Velocity off at one clock that is a sample row (multiple of 5000).
   write_synthetic(d / "b.csv", "model", 40000, [](uint64_t c, CoreOutputs& o) {
@@ -117,7 +129,7 @@ TEST(TraceDiff, FindsSampledDivergenceAndLengthDifference) {
 }
 
 TEST(TraceDiff, RejectsMalformedTraces) {
-  const fs::path d = temp_dir("bad");
+  const TempDir d("bad");
   std::ofstream(d / "bad.csv") << "clock,step\n5,1\n3,0\n";
   write_synthetic(d / "a.csv", "rtl", 1000, no_tweak);
   EXPECT_THROW(diff_traces((d / "bad.csv").string(), (d / "a.csv").string()), std::runtime_error);
@@ -129,7 +141,7 @@ const std::string kShortMove =
     " --distance 300 --v-start 0 --v-cruise 3000 --v-end 0 --a-max 50000 --j-max 500000";
 
 TEST(ScBench, ModelAndRtlTracesOfACleanRunAreIdentical) {
-  const fs::path d = temp_dir("clean");
+  const TempDir d("clean");
   const std::string rtl = (d / "rtl.csv").string(), model = (d / "model.csv").string();
   ASSERT_EQ(run(std::string(SC_BENCH) + kShortMove + " --trace-rtl " + rtl + " --trace-model " + model), 0);
   const DiffReport r = diff_traces(rtl, model);
@@ -139,7 +151,7 @@ TEST(ScBench, ModelAndRtlTracesOfACleanRunAreIdentical) {
 }
 
 TEST(ScBench, InjectedModelFaultIsFoundAtItsClockByScoreboardAndDiff) {
-  const fs::path d = temp_dir("inject");
+  const TempDir d("inject");
   const std::string rtl = (d / "rtl.csv").string(), model = (d / "model.csv").string();
   const std::string json = (d / "run.json").string();
   const uint64_t k = 123457;
@@ -164,7 +176,7 @@ TEST(ScBench, InjectedModelFaultIsFoundAtItsClockByScoreboardAndDiff) {
 }
 
 TEST(ScBench, FstWindowsOfTwoIdenticalRunsAreIdenticalAndADifferentWindowIsNot) {
-  const fs::path d = temp_dir("fst");
+  const TempDir d("fst");
   const std::string a = (d / "a.fst").string(), b = (d / "b.fst").string(), c = (d / "c.fst").string();
   const std::string win = " --fst-from 100000 --fst-to 104000";
   ASSERT_EQ(run(std::string(SC_BENCH) + kShortMove + " --fst " + a + win), 0);
@@ -207,6 +219,7 @@ TEST(Regress, DefaultListHasTheFourPaperGroupsRandomSeedsAndCorners) {
   for (int g = 1; g <= 4; ++g) EXPECT_TRUE(names.count("paper_group" + std::to_string(g)));
   EXPECT_TRUE(kinds.count("random"));
   EXPECT_TRUE(kinds.count("move"));
+  EXPECT_TRUE(kinds.count("command"));  // closed-loop scenarios through scurve sim --closed-loop
   const auto quick = regress::expand_list(default_list(), {}, {"long"});
   EXPECT_EQ(quick.size(), tests.size() - 4);
 }
@@ -241,7 +254,7 @@ TEST(Regress, CommandEntriesAreExtensible) {
 }
 
 TEST(ScBench, ModelFstMatchesRtlFstAndAnInjectedFaultIsFoundAtItsClock) {
-  const fs::path d = temp_dir("fst_model");
+  const TempDir d("fst_model");
   const std::string rtl = (d / "rtl.fst").string(), model = (d / "model.fst").string();
   const std::string waves = " --fst " + rtl + " --fst-model " + model + " --fst-from 100000 --fst-to 130000";
   ASSERT_EQ(run(std::string(SC_BENCH) + kShortMove + waves), 0);
@@ -258,4 +271,31 @@ TEST(ScBench, ModelFstMatchesRtlFstAndAnInjectedFaultIsFoundAtItsClock) {
   EXPECT_EQ(r.signals[0].signal, "sc_axis_core.pulse_count_o [31:0]");
   EXPECT_EQ(r.signals[0].first_clock, k);
   EXPECT_EQ(r.signals[0].differing_clocks, 130000 - k);
+}
+
+TEST(Cli, BadInputExitsWithTwo) {
+  const TempDir d("cli");
+  write_synthetic(d / "a.csv", "rtl", 1000, no_tweak);
+  const std::string scurve = SCURVE;
+  EXPECT_EQ(run(scurve + " diff " + (d / "a.csv").string() + " " + (d / "missing.csv").string()), 2);
+  EXPECT_EQ(run(scurve + " regress --list " + (d / "missing.json").string() + " --out-dir " + d.string()), 2);
+  EXPECT_EQ(run(scurve + " regress --shard 3/2 --list-only --out-dir " + d.string()), 2);
+  EXPECT_EQ(run(std::string(SC_BENCH) + " --group 5"), 2);
+  EXPECT_EQ(run(std::string(SC_BENCH) + " --distance 100 --v-cruise 1000 --a-max 0 --j-max 100"), 2);
+}
+
+TEST(Regress, CommandResultsWithRunsAreSummarised) {
+  regress::TestResult r;
+  r.test.name = "cl";
+  r.test.entry = "cl";
+  r.test.kind = "command";
+  r.pass = true;
+  r.result = nlohmann::json::parse(R"({"runs": [
+      {"clocks": 10, "pulses": 5, "final_error": 0, "max_tracking_error": 1.5, "rmse": 0.3, "mismatches": 0},
+      {"clocks": 20, "pulses": 7, "final_error": -2, "max_tracking_error": 2.5, "rmse": 0.2, "mismatches": 1}],
+      "pass": true})");
+  const std::string table = regress::summary_table({r});
+  EXPECT_NE(table.find("30"), std::string::npos) << table;      // clocks summed
+  EXPECT_NE(table.find("2.500"), std::string::npos) << table;   // worst max error
+  EXPECT_NE(table.find("-2"), std::string::npos) << table;      // worst final error
 }

@@ -1,0 +1,114 @@
+// Bit-exact model of rtl/sc_servo_axis.sv: profile executor + quadrature
+// decoder + neuron-PI cascade + step NCO + step generator, one clock per
+// step(). The plant is outside: the caller drives enc_a/enc_b.
+#pragma once
+
+#include <cstdint>
+
+#include "neuron_pi.h"
+#include "profile_exec.h"
+#include "quad_decoder.h"
+#include "step_gen.h"
+#include "step_nco.h"
+
+namespace sc {
+
+// Quasi-static configuration of sc_servo_axis (its cfg_* inputs).
+struct ServoConfig {
+  bool enable = true;
+  bool closed_loop = true;
+  PulseTiming timing{};
+  uint8_t enc_filt = 3;
+  NeuronConfig ctl{};
+  bool operator==(const ServoConfig&) const = default;
+};
+
+// Inputs of sc_servo_axis for one clock.
+struct ServoInputs {
+  ServoConfig cfg{};
+  bool seg_we = false;
+  uint8_t seg_waddr = 0;
+  Segment seg_wdata{};
+  uint8_t seg_count = 0;
+  u128 pos_frac0 = 0;
+  bool start = false;
+  bool abort = false;
+  bool enc_a = false;
+  bool enc_b = false;
+};
+
+// Every output of sc_servo_axis, as the lockstep checker compares them.
+struct ServoOutputs {
+  bool step = false, dir = false, en = false;
+  bool busy = false, done = false;
+  uint8_t phase = 0;
+  bool fault_table = false, fault_overrun = false, fault_ferr = false, in_pos = false;
+  int32_t pulse_count = 0;
+  int32_t enc_pos = 0;
+  uint16_t enc_illegal = 0;
+  int32_t ref_pos_int = 0;
+  uint32_t ref_frac_hi = 0;
+  int32_t ref_vel = 0;  // Q.VffFrac pulses/clock
+  bool ref_done = false;
+  bool ctl_active = false;
+  uint8_t ctl_state = 0;
+  int32_t u = 0, v_cmd = 0, e_p = 0, e_v = 0;
+  int32_t w_p1 = 0, w_p2 = 0, w_v1 = 0, w_v2 = 0;
+  int32_t wn_p1 = 0, wn_p2 = 0, wn_v1 = 0, wn_v2 = 0;
+  int64_t nco_phase = 0;
+  int8_t step_pending = 0;
+  bool operator==(const ServoOutputs&) const = default;
+};
+
+class ServoAxis {
+ public:
+  ServoAxis() { reset(); }
+  void reset();
+  void step(const ServoInputs& in);
+  ServoOutputs outputs() const;
+
+  bool busy() const;
+  bool done() const;
+  // The reference position P* - 1/2 in pulses (double; for metrics).
+  double ref_position() const;
+
+  const ProfileExec& exec() const { return exec_; }
+  const QuadDecoder& decoder() const { return dec_; }
+  const NeuronPi& ctl() const { return ctl_; }
+  const StepNco& nco() const { return nco_; }
+  const StepGen& step_gen() const { return sg_; }
+  NeuronPi& mutable_ctl() { return ctl_; }
+
+  // Register-stage view of a configuration (what the RTL's _q flops hold).
+  static ServoConfig registered(const ServoConfig& c);
+
+ private:
+  static ServoConfig zero_config() {
+    ServoConfig c;
+    c.enable = false;
+    c.closed_loop = false;
+    c.timing = PulseTiming{0, 0, 0, 0};
+    c.enc_filt = 0;
+    c.ctl = NeuronConfig{};
+    c.ctl.div = 0;
+    c.ctl.ff_en = false;
+    c.ctl.inpos_hold = 0;
+    return c;
+  }
+  struct InputRegs {
+    bool start = false, abort = false;
+    uint8_t seg_count = 0;
+    u128 pos_frac0 = 0;
+    ServoConfig cfg = zero_config();
+  };
+  ProfileExec exec_;
+  QuadDecoder dec_;
+  NeuronPi ctl_;
+  StepNco nco_;
+  StepGen sg_;
+  InputRegs in_q_;
+  ServoConfig last_cfg_in_{};
+  bool have_last_cfg_ = false;
+};
+
+}  // namespace sc

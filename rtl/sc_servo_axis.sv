@@ -1,0 +1,395 @@
+// sc_servo_axis: one closed-loop axis.
+//
+//   sc_profile_exec --P*,V*--> sc_neuron_pi --u--> sc_step_nco --> sc_step_gen --> STEP/DIR
+//   encoder A/B --> sc_quad_decoder --P--^
+//
+// closed_loop_i = 0 runs the open-loop path of sc_axis_core (executor carry
+// -> step generator) through the same pins, for comparison.
+// Closed loop: done_o = in position (|P - L| <= window for the hold time)
+// and no pulse owed. A following-error fault stops the controller (u = 0),
+// aborts the reference, latches fault_ferr_o and keeps every count.
+// All control and configuration inputs are registered first (one clock of
+// latency); the encoder inputs go through the decoder's synchronisers.
+module sc_servo_axis (
+  input  logic                                clk_i,
+  input  logic                                rst_ni,
+
+  input  logic                                enable_i,
+  input  logic                                closed_loop_i,
+  input  logic [sc_pkg::PulseTimeW-1:0]       cfg_high_i,
+  input  logic [sc_pkg::PulseTimeW-1:0]       cfg_low_i,
+  input  logic [sc_pkg::PulseTimeW-1:0]       cfg_setup_i,
+  input  logic [sc_pkg::PulseTimeW-1:0]       cfg_hold_i,
+
+  input  logic                                seg_we_i,
+  input  logic [sc_pkg::SegIdxW-1:0]          seg_waddr_i,
+  input  logic [sc_pkg::PhaseW-1:0]           seg_phase_i,
+  input  logic [sc_pkg::SegClkW-1:0]          seg_clocks_i,
+  input  logic signed [sc_pkg::JerkW-1:0]     seg_jerk_i,
+  input  logic signed [sc_pkg::AccW-1:0]      seg_acc0_i,
+  input  logic signed [sc_pkg::VelW-1:0]      seg_vel0_i,
+  input  logic [sc_pkg::SegCntW-1:0]          seg_count_i,
+  input  logic [sc_pkg::FracBits-1:0]         pos_frac0_i,
+  input  logic                                start_i,
+  input  logic                                abort_i,
+
+  input  logic                                enc_a_i,
+  input  logic                                enc_b_i,
+
+  input  logic [sc_pkg::EncFiltW-1:0]         cfg_enc_filt_i,
+  input  logic [sc_pkg::EncShiftW-1:0]        cfg_enc_shift_i,
+  input  logic [sc_pkg::CtlDivW-1:0]          cfg_div_i,
+  input  logic                                cfg_ff_en_i,
+  input  logic [sc_pkg::LearnShW-1:0]         cfg_learn_shift_i,
+  input  logic [sc_pkg::CtlW-1:0]             cfg_learn_dz_p_i,
+  input  logic [sc_pkg::CtlW-1:0]             cfg_learn_dz_v_i,
+  input  logic [sc_pkg::CoefW-1:0]            cfg_k_p_i,
+  input  logic [sc_pkg::CoefW-1:0]            cfg_k_v_i,
+  input  logic [sc_pkg::CoefW-1:0]            cfg_kb_i,
+  input  logic [sc_pkg::CoefW-1:0]            cfg_eta_p1_i,
+  input  logic [sc_pkg::CoefW-1:0]            cfg_eta_p2_i,
+  input  logic [sc_pkg::CoefW-1:0]            cfg_eta_v1_i,
+  input  logic [sc_pkg::CoefW-1:0]            cfg_eta_v2_i,
+  input  logic signed [sc_pkg::WgtW-1:0]      cfg_w_p1_i,
+  input  logic signed [sc_pkg::WgtW-1:0]      cfg_w_p2_i,
+  input  logic signed [sc_pkg::WgtW-1:0]      cfg_w_v1_i,
+  input  logic signed [sc_pkg::WgtW-1:0]      cfg_w_v2_i,
+  input  logic signed [sc_pkg::WgtW-1:0]      cfg_w_min_i,
+  input  logic signed [sc_pkg::WgtW-1:0]      cfg_w_p1_max_i,
+  input  logic signed [sc_pkg::WgtW-1:0]      cfg_w_p2_max_i,
+  input  logic signed [sc_pkg::WgtW-1:0]      cfg_w_v1_max_i,
+  input  logic signed [sc_pkg::WgtW-1:0]      cfg_w_v2_max_i,
+  input  logic [sc_pkg::CtlW-1:0]             cfg_v_lim_i,
+  input  logic [sc_pkg::CtlW-1:0]             cfg_u_lim_i,
+  input  logic [sc_pkg::CtlW-1:0]             cfg_ferr_lim_i,
+  input  logic [sc_pkg::CtlW-1:0]             cfg_inpos_win_i,
+  input  logic [sc_pkg::HoldW-1:0]            cfg_inpos_hold_i,
+  input  logic [sc_pkg::CtlW-1:0]             cfg_settle_rate_i,
+
+  output logic                                step_o,
+  output logic                                dir_o,
+  output logic                                en_o,
+
+  output logic                                busy_o,
+  output logic                                done_o,
+  output logic [sc_pkg::PhaseW-1:0]           phase_o,
+  output logic                                fault_table_o,
+  output logic                                fault_overrun_o,
+  output logic                                fault_ferr_o,
+  output logic                                in_pos_o,
+  output logic signed [sc_pkg::PosIntW-1:0]   pulse_count_o,
+  output logic signed [sc_pkg::EncCntW-1:0]   enc_pos_o,
+  output logic [sc_pkg::EncIllW-1:0]          enc_illegal_o,
+
+  output logic signed [sc_pkg::PosIntW-1:0]   ref_pos_int_o,
+  output logic [sc_pkg::MulAW-1:0]            ref_frac_hi_o,  // top MulAW bits of the fraction
+  output logic signed [sc_pkg::MulAW-1:0]     ref_vel_o,      // V*, Q.VffFrac pulses/clock
+  output logic                                ref_done_o,
+
+  output logic                                ctl_active_o,
+  output logic [sc_pkg::CtlStW-1:0]           ctl_state_o,
+  output logic signed [sc_pkg::CtlW-1:0]      u_o,
+  output logic signed [sc_pkg::CtlW-1:0]      v_cmd_o,
+  output logic signed [sc_pkg::CtlW-1:0]      e_p_o,
+  output logic signed [sc_pkg::CtlW-1:0]      e_v_o,
+  output logic signed [sc_pkg::WgtW-1:0]      w_p1_o,
+  output logic signed [sc_pkg::WgtW-1:0]      w_p2_o,
+  output logic signed [sc_pkg::WgtW-1:0]      w_v1_o,
+  output logic signed [sc_pkg::WgtW-1:0]      w_v2_o,
+  output logic signed [sc_pkg::NWgtW-1:0]     wn_p1_o,
+  output logic signed [sc_pkg::NWgtW-1:0]     wn_p2_o,
+  output logic signed [sc_pkg::NWgtW-1:0]     wn_v1_o,
+  output logic signed [sc_pkg::NWgtW-1:0]     wn_v2_o,
+  output logic signed [sc_pkg::NcoW-1:0]      nco_phase_o,
+  output logic signed [sc_pkg::PendW-1:0]     step_pending_o
+);
+
+  localparam int PulseTimeW = sc_pkg::PulseTimeW;
+  localparam int SegCntW    = sc_pkg::SegCntW;
+  localparam int FracBits   = sc_pkg::FracBits;
+  localparam int PhaseW     = sc_pkg::PhaseW;
+  localparam int VelW       = sc_pkg::VelW;
+  localparam int MulAW      = sc_pkg::MulAW;
+  localparam int CtlFrac    = sc_pkg::CtlFrac;
+  localparam int EncFiltW   = sc_pkg::EncFiltW;
+  localparam int EncShiftW  = sc_pkg::EncShiftW;
+  localparam int CtlDivW    = sc_pkg::CtlDivW;
+  localparam int LearnShW   = sc_pkg::LearnShW;
+  localparam int CoefW      = sc_pkg::CoefW;
+  localparam int WgtW       = sc_pkg::WgtW;
+  localparam int CtlW       = sc_pkg::CtlW;
+  localparam int HoldW      = sc_pkg::HoldW;
+
+  // ---- registered inputs ---------------------------------------------------
+  logic                   en_q, closed_q, start_q, abort_q, ff_en_q;
+  logic [PulseTimeW-1:0]  cfg_high_q, cfg_low_q, cfg_setup_q, cfg_hold_q;
+  logic [SegCntW-1:0]     seg_count_q;
+  logic [FracBits-1:0]    pos_frac0_q;
+  logic [EncFiltW-1:0]    enc_filt_q;
+  logic [EncShiftW-1:0]   enc_shift_q;
+  logic [CtlDivW-1:0]     div_q;
+  logic [LearnShW-1:0]    learn_shift_q;
+  logic [CoefW-1:0]       k_p_q, k_v_q, kb_q, eta_p1_q, eta_p2_q, eta_v1_q, eta_v2_q;
+  logic signed [WgtW-1:0] w_p1_q, w_p2_q, w_v1_q, w_v2_q, w_min_q;
+  logic signed [WgtW-1:0] w_p1_max_q, w_p2_max_q, w_v1_max_q, w_v2_max_q;
+  logic [CtlW-1:0]        v_lim_q, u_lim_q, ferr_lim_q, inpos_win_q, learn_dz_p_q, learn_dz_v_q, settle_rate_q;
+  logic [HoldW-1:0]       inpos_hold_q;
+
+  // ---- internal ------------------------------------------------------------
+  logic                   exec_running, exec_finished, exec_fault;
+  logic                   exec_step_req, exec_step_fwd;
+  logic [PhaseW-1:0]      exec_phase;
+  logic [FracBits-1:0]    exec_frac;
+  logic signed [VelW-1:0] exec_vel;
+  logic                   sg_busy, start_ok, exec_abort;
+  logic                   ctl_active, ctl_in_pos, ctl_ferr;
+  logic signed [CtlW-1:0] ctl_u;
+  logic                   nco_req, nco_fwd;
+  logic                   sg_req, sg_fwd;
+  logic signed [MulAW-1:0] ref_vel_q31;
+  logic                   sg_hint_valid, sg_hint;
+  logic signed [sc_pkg::AccW-1:0]  unused_acc;
+  logic signed [sc_pkg::JerkW-1:0] unused_jerk;
+  logic [sc_pkg::SegIdxW-1:0]      unused_seg_idx;
+  logic                   unused_enc_a, unused_enc_b;
+  logic [FracBits-MulAW-1:0] unused_frac_lo;
+
+  assign busy_o      = exec_running || exec_step_req || sg_busy || ctl_active || nco_req;
+  assign start_ok    = start_q && !busy_o && en_q;
+  assign exec_abort  = abort_q || ctl_ferr;
+  assign ref_vel_q31 = exec_vel[VelW-1 -: MulAW];
+  assign sg_req      = closed_q ? nco_req : exec_step_req;
+  assign sg_fwd      = closed_q ? nco_fwd : exec_step_fwd;
+  // DIR is pre-positioned to the commanded direction while no step is owed.
+  assign sg_hint_valid = closed_q ? (ctl_active && ctl_u != '0) : (exec_running && exec_vel != '0);
+  assign sg_hint       = closed_q ? !ctl_u[CtlW-1] : !exec_vel[VelW-1];
+  assign unused_frac_lo = exec_frac[FracBits-MulAW-1:0];
+
+  sc_profile_exec u_exec (
+    .clk_i,
+    .rst_ni,
+    .seg_we_i,
+    .seg_waddr_i,
+    .seg_phase_i,
+    .seg_clocks_i,
+    .seg_jerk_i,
+    .seg_acc0_i,
+    .seg_vel0_i,
+    .seg_count_i (seg_count_q),
+    .pos_frac0_i (pos_frac0_q),
+    .start_i     (start_ok),
+    .abort_i     (exec_abort),
+    .running_o   (exec_running),
+    .finished_o  (exec_finished),
+    .fault_o     (exec_fault),
+    .step_req_o  (exec_step_req),
+    .step_fwd_o  (exec_step_fwd),
+    .pos_int_o   (ref_pos_int_o),
+    .pos_frac_o  (exec_frac),
+    .vel_o       (exec_vel),
+    .acc_o       (unused_acc),
+    .jerk_o      (unused_jerk),
+    .phase_o     (exec_phase),
+    .seg_idx_o   (unused_seg_idx)
+  );
+
+  sc_quad_decoder u_dec (
+    .clk_i,
+    .rst_ni,
+    .enc_a_i,
+    .enc_b_i,
+    .cfg_filt_i (enc_filt_q),
+    .count_o    (enc_pos_o),
+    .illegal_o  (enc_illegal_o),
+    .a_o        (unused_enc_a),
+    .b_o        (unused_enc_b)
+  );
+
+  sc_neuron_pi u_ctl (
+    .clk_i,
+    .rst_ni,
+    .cfg_div_i         (div_q),
+    .cfg_shift_i       (enc_shift_q),
+    .cfg_ff_en_i       (ff_en_q),
+    .cfg_learn_shift_i (learn_shift_q),
+    .cfg_learn_dz_p_i  (learn_dz_p_q),
+    .cfg_learn_dz_v_i  (learn_dz_v_q),
+    .cfg_k_p_i         (k_p_q),
+    .cfg_k_v_i         (k_v_q),
+    .cfg_kb_i          (kb_q),
+    .cfg_eta_p1_i      (eta_p1_q),
+    .cfg_eta_p2_i      (eta_p2_q),
+    .cfg_eta_v1_i      (eta_v1_q),
+    .cfg_eta_v2_i      (eta_v2_q),
+    .cfg_w_p1_i        (w_p1_q),
+    .cfg_w_p2_i        (w_p2_q),
+    .cfg_w_v1_i        (w_v1_q),
+    .cfg_w_v2_i        (w_v2_q),
+    .cfg_w_min_i       (w_min_q),
+    .cfg_w_p1_max_i    (w_p1_max_q),
+    .cfg_w_p2_max_i    (w_p2_max_q),
+    .cfg_w_v1_max_i    (w_v1_max_q),
+    .cfg_w_v2_max_i    (w_v2_max_q),
+    .cfg_v_lim_i       (v_lim_q),
+    .cfg_u_lim_i       (u_lim_q),
+    .cfg_ferr_lim_i    (ferr_lim_q),
+    .cfg_inpos_win_i   (inpos_win_q),
+    .cfg_inpos_hold_i  (inpos_hold_q),
+    .cfg_settle_rate_i (settle_rate_q),
+    .start_i           (start_ok && closed_q),
+    .stop_i            (abort_q),
+    .ref_int_i         (ref_pos_int_o),
+    .ref_frac_i        (exec_frac[FracBits-1 -: CtlFrac]),
+    .ref_vel_i         (ref_vel_q31),
+    .ref_done_i        (exec_finished),
+    .enc_pos_i         (enc_pos_o),
+    .cmd_busy_i        (nco_req || sg_busy),
+    .nco_req_i         (nco_req),
+    .active_o          (ctl_active),
+    .in_pos_o          (ctl_in_pos),
+    .fault_ferr_o      (ctl_ferr),
+    .u_o               (ctl_u),
+    .v_cmd_o,
+    .e_p_o,
+    .e_v_o,
+    .w_p1_o,
+    .w_p2_o,
+    .w_v1_o,
+    .w_v2_o,
+    .wn_p1_o,
+    .wn_p2_o,
+    .wn_v1_o,
+    .wn_v2_o,
+    .state_o           (ctl_state_o)
+  );
+
+  sc_step_nco u_nco (
+    .clk_i,
+    .rst_ni,
+    .cfg_div_i   (div_q),
+    .cfg_shift_i (enc_shift_q),
+    .load_i      (start_ok),
+    .run_i       (ctl_active),
+    .u_i         (ctl_u),
+    .step_req_o  (nco_req),
+    .step_fwd_o  (nco_fwd),
+    .phase_o     (nco_phase_o)
+  );
+
+  sc_step_gen u_step_gen (
+    .clk_i,
+    .rst_ni,
+    .cfg_high_i  (cfg_high_q),
+    .cfg_low_i   (cfg_low_q),
+    .cfg_setup_i (cfg_setup_q),
+    .cfg_hold_i  (cfg_hold_q),
+    .clear_i     (start_ok),
+    .step_req_i  (sg_req),
+    .step_fwd_i  (sg_fwd),
+    .dir_hint_valid_i (sg_hint_valid),
+    .dir_hint_i  (sg_hint),
+    .step_o,
+    .dir_o,
+    .busy_o      (sg_busy),
+    .overrun_o   (fault_overrun_o),
+    .pending_o   (step_pending_o),
+    .count_o     (pulse_count_o)
+  );
+
+  always_ff @(posedge clk_i) begin
+    if (!rst_ni) begin
+      en_q          <= 1'b0;
+      closed_q      <= 1'b0;
+      start_q       <= 1'b0;
+      abort_q       <= 1'b0;
+      ff_en_q       <= 1'b0;
+      cfg_high_q    <= '0;
+      cfg_low_q     <= '0;
+      cfg_setup_q   <= '0;
+      cfg_hold_q    <= '0;
+      seg_count_q   <= '0;
+      pos_frac0_q   <= '0;
+      enc_filt_q    <= '0;
+      enc_shift_q   <= '0;
+      div_q         <= '0;
+      learn_shift_q <= '0;
+      learn_dz_p_q  <= '0;
+      learn_dz_v_q  <= '0;
+      k_p_q         <= '0;
+      k_v_q         <= '0;
+      kb_q          <= '0;
+      eta_p1_q      <= '0;
+      eta_p2_q      <= '0;
+      eta_v1_q      <= '0;
+      eta_v2_q      <= '0;
+      w_p1_q        <= '0;
+      w_p2_q        <= '0;
+      w_v1_q        <= '0;
+      w_v2_q        <= '0;
+      w_min_q       <= '0;
+      w_p1_max_q    <= '0;
+      w_p2_max_q    <= '0;
+      w_v1_max_q    <= '0;
+      w_v2_max_q    <= '0;
+      v_lim_q       <= '0;
+      u_lim_q       <= '0;
+      ferr_lim_q    <= '0;
+      inpos_win_q   <= '0;
+      inpos_hold_q  <= '0;
+      settle_rate_q <= '0;
+    end else begin
+      en_q          <= enable_i;
+      closed_q      <= closed_loop_i;
+      start_q       <= start_i;
+      abort_q       <= abort_i;
+      ff_en_q       <= cfg_ff_en_i;
+      cfg_high_q    <= cfg_high_i;
+      cfg_low_q     <= cfg_low_i;
+      cfg_setup_q   <= cfg_setup_i;
+      cfg_hold_q    <= cfg_hold_i;
+      seg_count_q   <= seg_count_i;
+      pos_frac0_q   <= pos_frac0_i;
+      enc_filt_q    <= cfg_enc_filt_i;
+      enc_shift_q   <= cfg_enc_shift_i;
+      div_q         <= cfg_div_i;
+      learn_shift_q <= cfg_learn_shift_i;
+      learn_dz_p_q  <= cfg_learn_dz_p_i;
+      learn_dz_v_q  <= cfg_learn_dz_v_i;
+      k_p_q         <= cfg_k_p_i;
+      k_v_q         <= cfg_k_v_i;
+      kb_q          <= cfg_kb_i;
+      eta_p1_q      <= cfg_eta_p1_i;
+      eta_p2_q      <= cfg_eta_p2_i;
+      eta_v1_q      <= cfg_eta_v1_i;
+      eta_v2_q      <= cfg_eta_v2_i;
+      w_p1_q        <= cfg_w_p1_i;
+      w_p2_q        <= cfg_w_p2_i;
+      w_v1_q        <= cfg_w_v1_i;
+      w_v2_q        <= cfg_w_v2_i;
+      w_min_q       <= cfg_w_min_i;
+      w_p1_max_q    <= cfg_w_p1_max_i;
+      w_p2_max_q    <= cfg_w_p2_max_i;
+      w_v1_max_q    <= cfg_w_v1_max_i;
+      w_v2_max_q    <= cfg_w_v2_max_i;
+      v_lim_q       <= cfg_v_lim_i;
+      u_lim_q       <= cfg_u_lim_i;
+      ferr_lim_q    <= cfg_ferr_lim_i;
+      inpos_win_q   <= cfg_inpos_win_i;
+      inpos_hold_q  <= cfg_inpos_hold_i;
+      settle_rate_q <= cfg_settle_rate_i;
+    end
+  end
+
+  assign en_o          = en_q;
+  assign done_o        = closed_q ? (ctl_in_pos && !busy_o) : (exec_finished && !busy_o);
+  assign phase_o       = ctl_ferr ? sc_pkg::PhFault : done_o ? sc_pkg::PhDone : exec_phase;
+  assign fault_table_o = exec_fault;
+  assign fault_ferr_o  = ctl_ferr;
+  assign in_pos_o      = ctl_in_pos;
+  assign ref_frac_hi_o = exec_frac[FracBits-1 -: MulAW];
+  assign ref_vel_o     = ref_vel_q31;
+  assign ref_done_o    = exec_finished;
+  assign ctl_active_o  = ctl_active;
+  assign u_o           = ctl_u;
+
+endmodule

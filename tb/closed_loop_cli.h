@@ -1,0 +1,51 @@
+// `scurve sim --closed-loop`: flags, dispatch, tables and JSON for the
+// closed-loop runs (kept out of scurve_main.cpp, which only forwards).
+#pragma once
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "closed_loop_run.h"
+#include "planner.h"
+
+namespace CLI {
+class App;
+}
+
+namespace sc {
+
+struct ClosedLoopCli {
+  bool enabled = false;
+  bool compare = false;
+  ControllerParams ctl{};
+  PlantConfig plant{};
+  std::string plant_kind = "stepper";
+  std::string weights_csv;
+  std::string scenario;  // JSON file with plant/controller keys
+  double tail_s = 0.1;
+};
+
+void add_closed_loop_flags(CLI::App* sim, ClosedLoopCli& f);
+
+// Runs every job (name, request) in closed loop; prints the results table,
+// the paper's Table 3 layout for paper groups, and with compare the
+// controller comparison. Returns the exit code (0 pass, 1 fail, 2 bad input).
+int run_closed_loop_cli(ClosedLoopCli f, const std::vector<std::pair<std::string, MoveRequest>>& jobs,
+                        const PulseTiming& timing, const std::string& engine, unsigned n_threads, bool json);
+
+// Paper 000 Table 3 (hardware): max error, RMSE, relative error (%), per group.
+struct PaperRow {
+  double max_error, rmse, relative_pct;
+};
+inline constexpr PaperRow kPaperTable3[4] = {
+    {15.6, 1.83, 0.0061}, {7.3, 0.653, 0.0022}, {25.3, 2.34, 0.0448}, {13.9, 1.68, 0.0056}};
+
+std::string closed_loop_table(const std::vector<ClosedLoopResult>& r);
+std::string table3_layout(const std::vector<ClosedLoopResult>& r);  // rows named groupN
+std::string comparison_table(const std::vector<ClosedLoopResult>& r);
+
+// Applies a JSON scenario ({"plant": {...}, "controller": {...}}); error text or "".
+std::string apply_scenario_json(const std::string& text, ControllerParams& c, PlantConfig& p);
+
+}  // namespace sc

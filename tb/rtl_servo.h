@@ -1,0 +1,44 @@
+// Thin adapter between the Verilated sc_servo_axis and the model's types
+// (ServoInputs / ServoOutputs): packs wide ports, sign-extends outputs.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "servo_axis.h"
+
+class VerilatedContext;
+class Vsc_servo_axis;
+class VerilatedFstC;
+
+namespace sc {
+
+class RtlServo {
+ public:
+  RtlServo();
+  ~RtlServo();
+  RtlServo(const RtlServo&) = delete;
+  RtlServo& operator=(const RtlServo&) = delete;
+
+  void reset(int cycles = 4);
+  void step(const ServoInputs& in);
+  ServoOutputs outputs() const;
+
+  bool trace_supported() const;
+  void trace_open(const std::string& path, uint64_t from_clock, uint64_t to_clock);
+  void trace_close();
+
+ private:
+  void eval_edge(int clk);
+  void apply_cfg(const ServoConfig& c);
+  std::unique_ptr<VerilatedContext> ctx_;
+  std::unique_ptr<Vsc_servo_axis> m_;
+  std::unique_ptr<VerilatedFstC> fst_;
+  uint64_t clock_ = 0;
+  u128 pos_frac0_ = 0;
+  ServoConfig cfg_{};
+  bool cfg_set_ = false;
+  uint64_t trace_from_ = 0, trace_to_ = 0;
+};
+
+}  // namespace sc

@@ -1,0 +1,194 @@
+// Closed loop through sc_servo_axis: RTL vs model lockstep with the plant
+// outside the DUT (short moves, several plants and controller settings,
+// noisy/glitchy encoder), the checker proven able to fail, the following-
+// error fault, and weight boundedness/convergence over a paper group.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "closed_loop_run.h"
+#include "scenarios.h"
+
+namespace sc {
+namespace {
+
+Plan plan_or_die(const MoveRequest& r) {
+  const PlanResult p = plan_move(r, PulseTiming{});
+  if (const auto* e = std::get_if<PlanError>(&p)) {
+    ADD_FAILURE() << e->message;
+    return Plan{};
+  }
+  return std::get<Plan>(p);
+}
+
+MoveRequest short_move(int64_t L, double vs, double vc, double ve) {
+  MoveRequest r;
+  r.distance = L;
+  r.v_start = vs;
+  r.v_cruise = vc;
+  r.v_end = ve;
+  r.a_max = 20000;
+  r.j_max = 400000;
+  return r;
+}
+
+struct Case {
+  const char* name;
+  MoveRequest req;
+  void (*tweak)(ClosedLoopOptions&);
+};
+
+void none(ClosedLoopOptions&) {}
+void no_ff(ClosedLoopOptions& o) { o.ctl.ff = false; }
+void fixed(ClosedLoopOptions& o) { o.ctl.adaptive = false; }
+void first_order(ClosedLoopOptions& o) { o.plant.kind = PlantConfig::Kind::FirstOrder; }
+void noisy(ClosedLoopOptions& o) {
+  o.plant.noise_counts = 0.1;
+  o.plant.glitch_rate = 2000;
+  o.plant.glitch_clocks = 2;
+  o.ctl.enc_filt = 3;
+  // A noisy encoder reads +-1 count at rest now and then: in position
+  // within one count (the final error below is allowed one count too).
+  o.ctl.inpos_win = 1;
+}
+void fine_encoder(ClosedLoopOptions& o) {
+  o.plant.counts_per_step = 4;
+  o.ctl.inpos_win = 0.25;
+}
+void missed(ClosedLoopOptions& o) {
+  o.plant.missed_steps = true;
+  o.ctl.rate_hz = 5000;
+}
+void open_loop(ClosedLoopOptions& o) { o.ctl.closed_loop = false; }
+
+// Every clock compared (all outputs incl. weights, FSM state, NCO phase).
+TEST(ClosedLoopLockstep, ShortMovesMatchEveryClock) {
+  const Case cases[] = {
+      {"fwd", short_move(3000, 0, 4000, 0), none},
+      {"back", short_move(-2500, 500, 3000, 0), none},
+      {"no-ff", short_move(2000, 0, 3000, 0), no_ff},
+      {"fixed-gain", short_move(2000, 1000, 3000, 500), fixed},
+      {"first-order", short_move(1500, 0, 2500, 0), first_order},
+      {"noise+glitches", short_move(2000, 0, 3000, 0), noisy},
+      {"4 counts/pulse", short_move(1200, 0, 2000, 0), fine_encoder},
+      {"missed-step plant", short_move(1500, 0, 3000, 0), missed},
+      {"open-loop mode", short_move(1000, 0, 3000, 0), open_loop},
+  };
+  for (const Case& c : cases) {
+    ClosedLoopOptions o;
+    o.engine = ClEngine::Lockstep;
+    o.tail_s = 0.01;
+    c.tweak(o);
+    const ClosedLoopResult r = run_closed_loop(plan_or_die(c.req), o);
+    EXPECT_EQ(r.mismatches, 0u) << c.name << ": " << r.first_mismatch;
+    EXPECT_GT(r.matched_clocks, 1000000u) << c.name;
+    const bool noisy_enc = c.tweak == noisy;
+    if (noisy_enc) {
+      EXPECT_TRUE(r.in_pos) << c.name;
+      EXPECT_LE(std::abs(r.final_error), 1) << c.name;
+    } else {
+      EXPECT_TRUE(r.pass()) << c.name << ": " << (r.failures.empty() ? "" : r.failures.front());
+      EXPECT_EQ(r.final_error, 0) << c.name;
+    }
+    if (c.tweak == noisy) {
+      EXPECT_GT(r.glitches, 10u);
+      EXPECT_EQ(r.enc_illegal, 0u) << "the glitch filter must hide every glitch";
+    }
+    std::printf("%-18s clocks %9llu max_err %6.3f rmse %6.4f final %lld settle %.4f s\n", c.name,
+                (unsigned long long)r.clocks, r.max_error, r.rmse, (long long)r.final_error, r.settle_time_s);
+  }
+}
+
+// The checker must be able to fail: a one-LSB change of a weight in the
+// model is reported at the clock it appears, with the signal named.
+TEST(ClosedLoopLockstep, InjectedDifferenceIsReported) {
+  ClosedLoopOptions o;
+  o.engine = ClEngine::Lockstep;
+  o.tail_s = 0;
+  const uint64_t at = 300000;
+  o.inject = [&](uint64_t clock, ServoAxis& m) {
+    if (clock == at) m.mutable_ctl().mutable_state().lp[0].w2 += 1;
+  };
+  const ClosedLoopResult r = run_closed_loop(plan_or_die(short_move(1000, 0, 3000, 0)), o);
+  EXPECT_EQ(r.mismatches, 1u);
+  EXPECT_NE(r.first_mismatch.find("clock " + std::to_string(at) + " signal w_p2_o"), std::string::npos)
+      << r.first_mismatch;
+  EXPECT_FALSE(r.pass());
+}
+
+// Encoder glitches longer than the filter would be counted; with the filter
+// off, A/B glitches show as illegal transitions (the counter works).
+TEST(ClosedLoopLockstep, GlitchesWithoutFilterAreCountedIllegal) {
+  ClosedLoopOptions o;
+  o.engine = ClEngine::Lockstep;
+  o.tail_s = 0;
+  o.plant.glitch_rate = 5000;
+  o.plant.glitch_clocks = 3;
+  o.ctl.enc_filt = 0;
+  o.ctl.ferr_lim = 1e4;
+  const ClosedLoopResult r = run_closed_loop(plan_or_die(short_move(800, 0, 2000, 0)), o);
+  EXPECT_EQ(r.mismatches, 0u) << r.first_mismatch;
+  EXPECT_GT(r.enc_illegal, 0u);
+}
+
+// A stalled rotor (huge load) lets the following error grow past the limit:
+// the DUT stops (u = 0, no more steps), flags the fault, aborts the
+// reference, and keeps its counts; RTL and model agree throughout.
+TEST(ClosedLoopLockstep, FollowingErrorFault) {
+  ClosedLoopOptions o;
+  o.engine = ClEngine::Lockstep;
+  o.tail_s = 0.02;
+  o.plant.missed_steps = true;
+  o.plant.load_torque = 3.0;  // above the 1.26 N m holding torque: the rotor cannot follow
+  o.ctl.ferr_lim = 50;
+  const ClosedLoopResult r = run_closed_loop(plan_or_die(short_move(3000, 0, 3000, 0)), o);
+  EXPECT_EQ(r.mismatches, 0u) << r.first_mismatch;
+  EXPECT_TRUE(r.fault_ferr);
+  EXPECT_FALSE(r.in_pos);
+  EXPECT_GT(r.max_error, 50.0);
+  EXPECT_LT(r.max_error, 60.0);  // stopped promptly (one control period after)
+}
+
+// Weights over a full paper group (model engine, bit-exact with the RTL):
+// bounded at every sample, they adapt fast during the start transient and
+// then settle (Figure 7 of paper 000): the mean rate of change from 1 s to
+// 80 % of the move is below a tenth of the rate over the first 0.2 s.
+TEST(ClosedLoopWeights, BoundedAndConvergingOverPaperGroup1) {
+  ClosedLoopOptions o;
+  o.engine = ClEngine::ModelOnly;
+  o.tail_s = 0;
+  o.weight_every = 10;
+  const ClosedLoopResult r = run_closed_loop(plan_or_die(paper_group(1)), o);
+  ASSERT_TRUE(r.pass()) << r.failures.front();
+  ASSERT_GT(r.weights.size(), 1000u);
+  for (const WeightSample& s : r.weights) {
+    for (int i = 0; i < 4; ++i) {
+      ASSERT_GE(s.w[i], o.ctl.w_min);
+      ASSERT_LE(s.w[i], std::max({o.ctl.w_p1_max, o.ctl.w_p2_max, o.ctl.w_v1_max, o.ctl.w_v2_max}));
+      ASSERT_LE(std::fabs(s.wn[i]), 1.0);
+    }
+  }
+  auto change = [&](double t0, double t1) {
+    const WeightSample* a = nullptr;
+    const WeightSample* b = nullptr;
+    for (const WeightSample& s : r.weights) {
+      if (!a && s.t >= t0) a = &s;
+      if (s.t <= t1) b = &s;
+    }
+    double d = 0;
+    for (int i = 0; i < 4; ++i) d = std::max(d, std::fabs(b->wn[i] - a->wn[i]));
+    return d;
+  };
+  const double T = r.weights.back().t;
+  const double early_rate = change(0, 0.2) / 0.2, mid_rate = change(1.0, 0.8 * T) / (0.8 * T - 1.0);
+  std::printf("normalised-weight rate of change: first 0.2 s %.3g /s, 1 s .. 80 %% %.3g /s; "
+              "final wn_p1 %.4f wn_p2 %.4f wn_v1 %.4f wn_v2 %.4f\n",
+              early_rate, mid_rate, r.weights.back().wn[0], r.weights.back().wn[1], r.weights.back().wn[2],
+              r.weights.back().wn[3]);
+  EXPECT_GT(early_rate, 1e-3) << "the weights never adapted";
+  EXPECT_LT(mid_rate, 0.1 * early_rate);
+}
+
+}  // namespace
+}  // namespace sc

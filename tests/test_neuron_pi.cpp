@@ -1,0 +1,303 @@
+// sc_neuron_pi model: the fixed-point update against a double-precision
+// reference of the same equations, saturation and back-calculation
+// anti-windup, the dead zone, the in-position and following-error logic.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "neuron_pi.h"
+
+namespace sc {
+namespace {
+
+constexpr double kQ = double(1 << CtlFrac);
+constexpr double kW = double(1 << WgtFrac);
+constexpr double kN = double(1 << NWgtFrac);
+constexpr double kC = double(1 << CoefFrac);
+
+NeuronConfig base_cfg() {
+  NeuronConfig c;
+  c.div = 400;
+  c.shift = 0;
+  c.ff_en = true;
+  c.learn_shift = 10;
+  c.learn_dz_p = 0;
+  c.learn_dz_v = 0;
+  c.k_p = uint32_t(0.05 * kC);
+  c.k_v = uint32_t(0.10 * kC);
+  c.kb = uint32_t(1.0 * kC);
+  c.eta_p1 = uint32_t(0.20 * kC);
+  c.eta_p2 = uint32_t(0.20 * kC);
+  c.eta_v1 = uint32_t(0.15 * kC);
+  c.eta_v2 = uint32_t(0.10 * kC);
+  c.w_p1 = int32_t(2.0 * kW);
+  c.w_p2 = int32_t(30.0 * kW);
+  c.w_v1 = int32_t(40.0 * kW);
+  c.w_v2 = int32_t(10.0 * kW);
+  c.w_min = int32_t(-100.0 * kW);
+  c.w_p1_max = c.w_p2_max = c.w_v1_max = c.w_v2_max = int32_t(100.0 * kW);
+  c.v_lim = uint32_t(50.0 * kQ);
+  c.u_lim = uint32_t(60.0 * kQ);
+  c.ferr_lim = uint32_t(1000.0 * kQ);
+  c.inpos_win = 0;
+  c.inpos_hold = 3;
+  c.settle_rate = uint32_t(0.05 * kQ);
+  return c;
+}
+
+// Run one control period (strobe + FSM to idle); returns the clocks used.
+int run_period(NeuronPi& n, const NeuronConfig& c, const NeuronPi::Inputs& in) {
+  int clocks = 0;
+  for (int i = 0; i < c.div; ++i) {
+    n.step(c, in);
+    ++clocks;
+  }
+  return clocks;
+}
+
+// The same equations in double precision (docs/closed_loop.md).
+struct RefLoop {
+  double w1, w2, ep, acc, es;
+};
+struct RefOut {
+  double wn1, wn2, e, out, acc, es, w1, w2;
+};
+RefOut ref_update(const RefLoop& L, double r, double y, double bias, double k, double kb, double lim, double eta1,
+                  double eta2, double ls, double dz, double wmin, double wmax) {
+  RefOut o;
+  const double sum = std::fabs(L.w1) + std::fabs(L.w2);
+  o.wn1 = sum > 0 ? L.w1 / sum : 0;
+  o.wn2 = sum > 0 ? L.w2 / sum : 0;
+  o.e = r - y;
+  const double x2 = o.e - L.ep;
+  const double du = k * (o.wn1 * o.e + o.wn2 * x2);
+  o.acc = L.acc + du - kb * L.es;
+  const double tot = o.acc + bias;
+  o.out = std::clamp(tot, -lim, lim);
+  o.es = tot - o.out;
+  // Hebb products: e on the multiplier's B port saturates at 2^(MulBW-1-CtlFrac)
+  // counts and e*x at the CtlW word (2^(CtlW-1-CtlFrac) counts^2).
+  const bool learn = std::fabs(o.e) > dz;
+  const double eb_max = std::ldexp(1.0, MulBW - 1 - CtlFrac), h_max = std::ldexp(1.0, CtlW - 1 - CtlFrac);
+  const double eb = std::clamp(o.e, -eb_max, eb_max);
+  const double h1 = std::clamp(o.e * eb, -h_max, h_max), h2 = std::clamp(x2 * eb, -h_max, h_max);
+  o.w1 = std::clamp(L.w1 + (learn ? eta1 * h1 / std::ldexp(1.0, int(ls)) : 0.0), wmin, wmax);
+  o.w2 = std::clamp(L.w2 + (learn ? eta2 * h2 / std::ldexp(1.0, int(ls)) : 0.0), wmin, wmax);
+  return o;
+}
+
+// Fixed point vs double, one period at a time from the same state, over
+// random errors from a fraction of a count to hundreds of counts.
+// Tolerances (stated): normalised weights 2 LSB (2^-15), loop outputs
+// 1e-4 counts/period + 2^-15 relative, weights 1e-4 + 1e-5 relative.
+TEST(NeuronPi, FixedPointMatchesDoubleReference) {
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> uni(-1.0, 1.0);
+  NeuronConfig c = base_cfg();
+  NeuronPi n;
+  NeuronPi::Inputs in;
+  in.start = true;
+  n.step(c, in);
+  in.start = false;
+  double max_dn = 0, max_dout = 0, max_dw = 0;
+  int32_t enc = 0;
+  int64_t refq = 0;  // reference in Q.CtlFrac counts + 1/2
+  for (int k = 0; k < 3000; ++k) {
+    const NeuronPi::State s0 = n.state();
+    // next snapshot inputs
+    const double scale = std::pow(10.0, 3.0 * std::fabs(uni(rng)) - 1.0);  // 0.1 .. 100 counts
+    refq += int64_t(std::llround(uni(rng) * scale * kQ));
+    enc += int32_t(std::llround(uni(rng) * 2.0));
+    in.ref_int = int32_t(refq >> CtlFrac);
+    in.ref_frac = uint32_t(refq & ((1 << CtlFrac) - 1));
+    in.enc_pos = enc;
+    in.ref_vel = int32_t(uni(rng) * 1e-3 * std::ldexp(1.0, VffFrac));
+    run_period(n, c, in);
+    const NeuronPi::State& s1 = n.state();
+    ASSERT_EQ(s1.st, NeuronPi::StIdle);
+    if (k == 0) continue;  // the first period only sets P_prev
+    // position loop
+    const double r = (double(refq) - kQ / 2) / kQ;
+    const double y = double(enc);
+    const RefLoop Lp{s0.lp[0].w1 / kW, s0.lp[0].w2 / kW, s0.lp[0].ep / kQ, s0.lp[0].acc / kQ, s0.lp[0].es / kQ};
+    const RefOut op = ref_update(Lp, r, y, 0.0, c.k_p / kC, c.kb / kC, c.v_lim / kQ, c.eta_p1 / kC, c.eta_p2 / kC,
+                                 c.learn_shift, c.learn_dz_p / kQ, c.w_min / kW, c.w_p1_max / kW);
+    // speed loop (its inputs from the fixed-point pos loop, so errors do not compound)
+    const double vff = s1.vff / kQ;
+    EXPECT_NEAR(vff, in.ref_vel / std::ldexp(1.0, VffFrac) * c.div, 2.0 / kQ);
+    const double vmeas = s1.vmeas / kQ;
+    const RefLoop Lv{s0.lp[1].w1 / kW, s0.lp[1].w2 / kW, s0.lp[1].ep / kQ, s0.lp[1].acc / kQ, s0.lp[1].es / kQ};
+    const RefOut ov = ref_update(Lv, s1.out_p / kQ + vff, vmeas, vff, c.k_v / kC, c.kb / kC, c.u_lim / kQ,
+                                 c.eta_v1 / kC, c.eta_v2 / kC, c.learn_shift, c.learn_dz_v / kQ, c.w_min / kW,
+                                 c.w_v1_max / kW);
+    const double dn = std::max({std::fabs(s1.lp[0].n1 / kN - op.wn1), std::fabs(s1.lp[0].n2 / kN - op.wn2),
+                                std::fabs(s1.lp[1].n1 / kN - ov.wn1), std::fabs(s1.lp[1].n2 / kN - ov.wn2)});
+    const double dout_p = std::fabs(s1.out_p / kQ - op.out);
+    const double dout_v = std::fabs(s1.u / kQ - ov.out);
+    const double dw = std::max({std::fabs(s1.lp[0].w1 / kW - op.w1), std::fabs(s1.lp[0].w2 / kW - op.w2),
+                                std::fabs(s1.lp[1].w1 / kW - ov.w1), std::fabs(s1.lp[1].w2 / kW - ov.w2)});
+    ASSERT_LE(dn, 2.0 / kN) << "period " << k;
+    ASSERT_LE(dout_p, 1e-4 + std::fabs(op.out) * std::ldexp(1.0, -15)) << "period " << k;
+    ASSERT_LE(dout_v, 1e-4 + std::fabs(ov.out) * std::ldexp(1.0, -15)) << "period " << k;
+    ASSERT_LE(dw, 1e-4 + 1e-5 * std::fabs(op.w1)) << "period " << k;
+    max_dn = std::max(max_dn, dn);
+    max_dout = std::max({max_dout, dout_p, dout_v});
+    max_dw = std::max(max_dw, dw);
+  }
+  std::printf("max |fixed - double|: normalised weight %.3g, loop output %.3g counts/period, weight %.3g\n", max_dn,
+              max_dout, max_dw);
+}
+
+TEST(NeuronPi, DatapathFitsTheControlPeriod) {
+  NeuronConfig c = base_cfg();
+  NeuronPi n;
+  NeuronPi::Inputs in;
+  in.start = true;
+  n.step(c, in);
+  in.start = false;
+  int busy = 0;
+  for (int i = 0; i < c.div; ++i) {
+    n.step(c, in);
+    if (n.state().st != NeuronPi::StIdle) ++busy;
+  }
+  // VFF + 2 x (2 divisions of 17 clocks + ERR + 8 multiplier states)
+  EXPECT_EQ(busy, 1 + 2 * (2 * (NWgtFrac + 1) + 1 + 8));
+}
+
+// A large constant error drives the output into saturation. With Kb = 1 the
+// accumulator stays at the limit (back-calculation); with Kb = 0 it winds up
+// far beyond and takes much longer to come back once the error reverses.
+TEST(NeuronPi, SaturationAndBackCalculationAntiWindup) {
+  auto run = [](uint32_t kb, int32_t& acc_peak, int& recover_periods) {
+    NeuronConfig c = base_cfg();
+    c.kb = kb;
+    c.eta_p1 = c.eta_p2 = c.eta_v1 = c.eta_v2 = 0;
+    c.v_lim = uint32_t(5.0 * kQ);
+    NeuronPi n;
+    NeuronPi::Inputs in;
+    in.start = true;
+    n.step(c, in);
+    in.start = false;
+    in.ref_int = 200;  // 200 counts of error, held
+    acc_peak = 0;
+    for (int k = 0; k < 300; ++k) {
+      run_period(n, c, in);
+      acc_peak = std::max(acc_peak, n.state().lp[0].acc);
+      EXPECT_LE(n.state().out_p, int32_t(c.v_lim));
+    }
+    EXPECT_EQ(n.state().out_p, int32_t(c.v_lim));
+    in.ref_int = -200;  // error reverses
+    recover_periods = 0;
+    while (n.state().out_p > 0 && recover_periods < 100000) {
+      run_period(n, c, in);
+      ++recover_periods;
+    }
+  };
+  int32_t peak_aw = 0, peak_wu = 0;
+  int rec_aw = 0, rec_wu = 0;
+  run(uint32_t(1.0 * kC), peak_aw, rec_aw);
+  run(0, peak_wu, rec_wu);
+  EXPECT_LT(peak_aw, int32_t(12.0 * kQ));  // limit (5) + one period's increment at most
+  EXPECT_GT(peak_wu, int32_t(50.0 * kQ));  // winds up without back-calculation
+  EXPECT_LT(rec_aw * 5, rec_wu);
+  std::printf("peak accumulator: Kb=1 %.2f, Kb=0 %.2f counts/period; recovery %d vs %d periods\n", peak_aw / kQ,
+              peak_wu / kQ, rec_aw, rec_wu);
+}
+
+TEST(NeuronPi, WeightsStayWithinBounds) {
+  NeuronConfig c = base_cfg();
+  c.learn_shift = 0;  // very fast learning
+  c.w_min = int32_t(0.5 * kW);
+  c.w_p1_max = int32_t(20.0 * kW);
+  c.w_p2_max = int32_t(15.0 * kW);
+  c.w_v1_max = int32_t(10.0 * kW);
+  c.w_v2_max = int32_t(5.0 * kW);
+  NeuronPi n;
+  NeuronPi::Inputs in;
+  in.start = true;
+  n.step(c, in);
+  in.start = false;
+  std::mt19937 rng(5);
+  for (int k = 0; k < 500; ++k) {
+    in.ref_int = int32_t(rng() % 400) - 200;
+    run_period(n, c, in);
+    for (const auto& l : n.state().lp) {
+      for (int32_t w : {l.w1, l.w2}) {
+        ASSERT_GE(w, c.w_min);
+        ASSERT_LE(w, std::max({c.w_p1_max, c.w_p2_max, c.w_v1_max, c.w_v2_max}));
+      }
+      ASSERT_LE(std::abs(l.n1) + std::abs(l.n2), (1 << NWgtFrac) + 1);
+    }
+  }
+}
+
+TEST(NeuronPi, DeadZoneStopsLearning) {
+  NeuronConfig c = base_cfg();
+  c.learn_dz_p = uint32_t(1.0 * kQ);
+  NeuronPi n;
+  NeuronPi::Inputs in;
+  in.start = true;
+  n.step(c, in);
+  in.start = false;
+  for (int k = 0; k < 50; ++k) {
+    in.ref_int = (k & 1);  // |e| <= 1/2 count
+    run_period(n, c, in);
+  }
+  EXPECT_EQ(n.state().lp[0].w1, c.w_p1);
+  EXPECT_EQ(n.state().lp[0].w2, c.w_p2);
+}
+
+TEST(NeuronPi, FollowingErrorFaultStopsAndLatches) {
+  NeuronConfig c = base_cfg();
+  c.ferr_lim = uint32_t(10.0 * kQ);
+  NeuronPi n;
+  NeuronPi::Inputs in;
+  in.start = true;
+  n.step(c, in);
+  in.start = false;
+  in.ref_int = 5;
+  for (int k = 0; k < 3; ++k) run_period(n, c, in);
+  EXPECT_TRUE(n.state().active);
+  EXPECT_FALSE(n.state().ferr);
+  in.ref_int = 11;  // |e| = 10.5 counts > 10
+  for (int k = 0; k < 2; ++k) run_period(n, c, in);
+  EXPECT_TRUE(n.state().ferr);
+  EXPECT_FALSE(n.state().active);
+  EXPECT_EQ(n.state().u, 0);
+  in.ref_int = 0;
+  for (int k = 0; k < 3; ++k) run_period(n, c, in);
+  EXPECT_TRUE(n.state().ferr);  // latched until the next start
+  in.start = true;
+  n.step(c, in);
+  EXPECT_FALSE(n.state().ferr);
+  EXPECT_TRUE(n.state().active);
+}
+
+TEST(NeuronPi, InPositionNeedsHoldWithoutSteps) {
+  NeuronConfig c = base_cfg();
+  c.inpos_hold = 4;
+  NeuronPi n;
+  NeuronPi::Inputs in;
+  in.start = true;
+  n.step(c, in);
+  in.start = false;
+  in.ref_done = true;
+  in.ref_int = 0;
+  in.cmd_busy = true;  // steps still being commanded: never in position
+  for (int k = 0; k < 10; ++k) run_period(n, c, in);
+  EXPECT_FALSE(n.state().in_pos);
+  in.cmd_busy = false;
+  int periods = 0;
+  while (!n.state().in_pos && periods < 20) {
+    run_period(n, c, in);
+    ++periods;
+  }
+  EXPECT_TRUE(n.state().in_pos);
+  EXPECT_FALSE(n.state().active);
+  EXPECT_EQ(n.state().u, 0);
+  EXPECT_EQ(periods, 5);  // one period to clear the "moved" flag, then 4 of hold
+}
+
+}  // namespace
+}  // namespace sc
