@@ -150,6 +150,9 @@ bool RtlCore::trace_supported() const { return VM_TRACE_FST != 0; }
 void RtlCore::trace_open(const std::string& path, uint64_t from_clock, uint64_t to_clock) {
 #if VM_TRACE_FST
   ctx_->traceEverOn(true);
+  // Dump times are in ns (50 per 20 MHz clock): make the file say so.
+  ctx_->timeunit(-9);
+  ctx_->timeprecision(-9);
   fst_ = std::make_unique<VerilatedFstC>();
   m_->trace(fst_.get(), 99);
   fst_->open(path.c_str());

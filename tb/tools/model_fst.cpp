@@ -52,7 +52,7 @@ std::vector<std::string> values(const CoreOutputs& o) {
 ModelFstWriter::ModelFstWriter(const std::string& path, uint64_t from, uint64_t to) : from_(from), to_(to) {
   ctx_ = fstWriterCreate(path.c_str(), 1);
   if (!ctx_) throw std::runtime_error(fmt::format("cannot write FST {}", path));
-  fstWriterSetTimescale(ctx_, -12);  // as Verilator's default; times are 50 units per clock like tb/rtl_core.cpp
+  fstWriterSetTimescale(ctx_, -9);  // ns, as tb/rtl_core.cpp: 50 per 20 MHz clock
   fstWriterSetScope(ctx_, FST_ST_VCD_MODULE, "sc_axis_core", nullptr);
   for (const Port& p : kPorts) {
     const std::string name = p.bits > 1 ? fmt::format("{} [{}:0]", p.name, p.bits - 1) : p.name;
