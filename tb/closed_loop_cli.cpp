@@ -246,8 +246,7 @@ std::string comparison_table(const std::vector<ClosedLoopResult>& rs) {
   s += "max_err/rmse: |P* - 1/2 - P| in pulses, every clock from start to done (settling included);\n"
        "jerk/acc (pulses/s^3, /s^2): position sampled at 1 kHz, two 50 ms moving averages, differences over 50 ms,\n"
        "from start to reference done, on the encoder (_enc) and, same filter, on the reference (_ref);\n"
-       "resid_vib: peak-to-peak rotor angle\n"
-       "(plant) in the tail after done, pulses.\n";
+       "resid_vib: peak-to-peak rotor angle (plant) in the tail after done, pulses.\n";
   return s;
 }
 
