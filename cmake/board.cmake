@@ -6,6 +6,17 @@ set(SC_AXI_RTL_SOURCES
   ${SC_RTL_SOURCES}
   ${RTL_DIR}/sc_axi_regs.sv
   ${RTL_DIR}/sc_axi_axis.sv)
+# closed-loop axis behind the register file (sc_axi_servo)
+set(SC_AXI_SERVO_RTL_SOURCES
+  ${RTL_DIR}/sc_pkg.sv
+  ${RTL_DIR}/sc_profile_exec.sv
+  ${RTL_DIR}/sc_step_gen.sv
+  ${RTL_DIR}/sc_quad_decoder.sv
+  ${RTL_DIR}/sc_neuron_pi.sv
+  ${RTL_DIR}/sc_step_nco.sv
+  ${RTL_DIR}/sc_servo_axis.sv
+  ${RTL_DIR}/sc_axi_regs.sv
+  ${RTL_DIR}/sc_axi_servo.sv)
 set(SC_BOARD_RTL_SOURCES
   ${SC_AXI_RTL_SOURCES}
   ${RTL_DIR}/sc_sync.sv
@@ -32,17 +43,25 @@ add_library(sc_board_model STATIC
   cmodel/reg_encode.cpp)
 add_dependencies(sc_board_model sc_regmap sc_params)
 target_include_directories(sc_board_model PUBLIC cmodel ${GEN_DIR})
-target_link_libraries(sc_board_model PUBLIC sc_model fmt::fmt)
+target_link_libraries(sc_board_model PUBLIC sc_model sc_cl_model fmt::fmt)
 target_compile_options(sc_board_model PRIVATE ${SC_WARN})
 
 # ---- Verilated sc_axi_axis and sc_board_top -------------------------------------
 add_library(sc_board_rtl STATIC tb/rtl_axi_axis.cpp tb/axi_bench.cpp)
 target_include_directories(sc_board_rtl PUBLIC tb)
-target_link_libraries(sc_board_rtl PUBLIC sc_board_model)
+target_link_libraries(sc_board_rtl PUBLIC sc_board_model sc_cl_tb)
 verilate(sc_board_rtl
   SOURCES ${SC_AXI_RTL_SOURCES}
   TOP_MODULE sc_axi_axis
   PREFIX Vsc_axi_axis
+  VERILATOR_ARGS ${SC_VERILATOR_ARGS}
+  OPT_FAST -O3 -fno-tree-slp-vectorize
+  OPT_SLOW -O1
+  OPT_GLOBAL -O3)
+verilate(sc_board_rtl
+  SOURCES ${SC_AXI_SERVO_RTL_SOURCES}
+  TOP_MODULE sc_axi_servo
+  PREFIX Vsc_axi_servo
   VERILATOR_ARGS ${SC_VERILATOR_ARGS}
   OPT_FAST -O3 -fno-tree-slp-vectorize
   OPT_SLOW -O1
@@ -64,14 +83,15 @@ target_compile_options(sc_regs_cli PRIVATE ${SC_WARN})
 target_link_libraries(scurve PRIVATE sc_regs_cli)
 
 # ---- tests ----------------------------------------------------------------------------
-add_executable(board_tests tests/test_board.cpp)
+add_executable(board_tests tests/test_board.cpp tests/test_board_servo.cpp)
 target_link_libraries(board_tests PRIVATE sc_board_rtl sc_tb GTest::gtest_main)
 target_compile_options(board_tests PRIVATE ${SC_WARN})
 
 add_test(NAME board_axi_regs COMMAND board_tests --gtest_filter=AxiRegs.*)
 add_test(NAME board_uart_bridge COMMAND board_tests --gtest_filter=BoardUart.*)
 add_test(NAME board_axi_paper_group COMMAND board_tests --gtest_filter=BoardLong.*)
-set_tests_properties(board_axi_regs board_uart_bridge PROPERTIES TIMEOUT 600)
+add_test(NAME board_axi_servo COMMAND board_tests --gtest_filter=AxiServo.*)
+set_tests_properties(board_axi_regs board_uart_bridge board_axi_servo PROPERTIES TIMEOUT 600)
 set_tests_properties(board_axi_paper_group PROPERTIES TIMEOUT 1800 LABELS long)
 
 add_test(NAME regmap_docs_in_sync
@@ -83,6 +103,9 @@ add_test(NAME scurve_regs_cli
 add_test(NAME rtl_lint_board
   COMMAND verilator --lint-only -Wall ${RTL_DIR}/lint/verilator_waiver.vlt
           ${SC_BOARD_RTL_SOURCES} --top-module sc_board_top)
+add_test(NAME rtl_lint_axi_servo
+  COMMAND verilator --lint-only -Wall ${RTL_DIR}/lint/verilator_waiver.vlt
+          ${SC_AXI_SERVO_RTL_SOURCES} --top-module sc_axi_servo)
 add_test(NAME rtl_compile_icarus_board
   COMMAND iverilog -g2012 -s sc_board_top -o ${CMAKE_BINARY_DIR}/sc_board_top.vvp ${SC_BOARD_RTL_SOURCES})
 # yosys synth_xilinx of the board top (no latches); the core's area budget is

@@ -75,3 +75,7 @@ add_test(NAME cl.rtl_compile_icarus
 add_test(NAME cl.synth_yosys_servo
   COMMAND ${CMAKE_SOURCE_DIR}/scripts/synth_yosys.sh sc_servo_axis ${CMAKE_BINARY_DIR}/synth-servo)
 set_tests_properties(cl.rtl_lint_verilator cl.rtl_compile_icarus cl.synth_yosys_servo PROPERTIES LABELS "closed_loop")
+
+add_test(NAME cl.cli_contract
+  COMMAND ${CMAKE_SOURCE_DIR}/tests/cl_cli_test.sh $<TARGET_FILE:scurve> ${CMAKE_SOURCE_DIR})
+set_tests_properties(cl.cli_contract PROPERTIES LABELS "closed_loop")

@@ -34,17 +34,55 @@ bool locked_addr(uint8_t a) {
 
 }  // namespace
 
+constexpr uint32_t fm(int width, int lsb) { return uint32_t(((uint64_t(1) << width) - 1) << lsb); }
+
+uint32_t AxiRegs::cl_mask(int i) {
+  switch (i) {
+    case 0: return fm(EncFiltW, ClEncFiltLsb) | fm(EncShiftW, ClEncShiftLsb) | fm(1, ClFfEnBit) | fm(LearnShW, ClLearnShLsb);
+    case 1: return fm(CtlDivW, ClDivLsb) | fm(HoldW, ClInposHoldLsb);
+    case 2: case 3: return fm(CtlW, 0);
+    case 4: case 5: case 6: case 7: case 8: case 9: case 10: return fm(CoefW, 0);
+    case 11: case 12: case 13: case 14: case 15: case 16: case 17: case 18: case 19: return fm(WgtW, 0);
+    default: return fm(CtlW, 0);  // 20..24: V_LIM U_LIM FERR_LIM INPOS_WIN SETTLE_RATE
+  }
+}
+
+uint32_t AxiRegs::cl_reset(int i) {
+  static constexpr uint32_t kRst[ClCfgWords] = {
+      (uint32_t(RstEncFilt) << ClEncFiltLsb) | (uint32_t(RstFfEn) << ClFfEnBit) | (uint32_t(RstLearnShift) << ClLearnShLsb),
+      (uint32_t(RstCtlDiv) << ClDivLsb) | (uint32_t(RstInposHold) << ClInposHoldLsb),
+      uint32_t(RstLearnDzP), uint32_t(RstLearnDzV),
+      uint32_t(RstKp), uint32_t(RstKv), uint32_t(RstKb),
+      uint32_t(RstEtaP1), uint32_t(RstEtaP2), uint32_t(RstEtaV1), uint32_t(RstEtaV2),
+      uint32_t(RstWp1), uint32_t(RstWp2), uint32_t(RstWv1), uint32_t(RstWv2), uint32_t(RstWmin),
+      uint32_t(RstWp1Max), uint32_t(RstWp2Max), uint32_t(RstWv1Max), uint32_t(RstWv2Max),
+      uint32_t(RstVLim), uint32_t(RstULim), uint32_t(RstFerrLim), uint32_t(RstInposWin), uint32_t(RstSettleRate)};
+  return kRst[i];
+}
+
 void AxiRegs::reset() {
   q_ = State{};
   q_.cfg = PulseTiming{uint16_t(RstPulseHigh), uint16_t(RstPulseLow), uint16_t(RstDirSetup), uint16_t(RstDirHold)};
+  for (int i = 0; i < ClCfgWords; ++i) q_.cl[size_t(i)] = cl_reset(i);
 }
 
-uint32_t AxiRegs::read_word(uint8_t a, const RegsSide& side, const CoreOutputs& core, uint8_t& resp) const {
+int AxiRegs::cfg_index(uint8_t a) const {
+  const uint8_t off = uint8_t(a - RegClFirst);
+  return (servo_ && (off & 3) == 0 && (off >> 2) < ClCfgWords) ? (off >> 2) : -1;
+}
+
+int AxiRegs::stat_index(uint8_t a) const {
+  const uint8_t off = uint8_t(a - RegClStat);
+  return (servo_ && (off & 3) == 0 && (off >> 2) < ClStatWords) ? (off >> 2) : -1;
+}
+
+uint32_t AxiRegs::read_word(uint8_t a, const RegsSide& side, const CoreOutputs& core, const ServoStatus& st,
+                            uint8_t& resp) const {
   resp = kOkay;
   const bool busy_eff = busy(core);
   switch (a) {
     case RegId: return (uint32_t(RegIdMagic) << 16) | uint32_t(RegMapVersion);
-    case RegCtrl: return q_.en ? bit(CtrlEnableBit) : 0;
+    case RegCtrl: return (q_.en ? bit(CtrlEnableBit) : 0) | (q_.closed ? bit(CtrlClosedBit) : 0);
     case RegCmd: return 0;
     case RegStatus: {
       uint32_t s = uint32_t(core.phase & ((1u << PhaseW) - 1)) << StatusPhaseLsb;
@@ -55,6 +93,8 @@ uint32_t AxiRegs::read_word(uint8_t a, const RegsSide& side, const CoreOutputs& 
       if (core.fault_overrun) s |= bit(StatusFaultOverrunBit);
       if (q_.err_estop) s |= bit(StatusEstopBit);
       if (q_.err_reject || q_.err_bad || q_.err_estop) s |= bit(StatusErrBit);
+      if (st.fault_ferr) s |= bit(StatusFaultFerrBit);
+      if (st.in_pos) s |= bit(StatusInPosBit);
       s |= uint32_t(side.enc_ab & 3) << StatusEncALsb;
       s |= uint32_t(core.seg_idx & ((1u << SegIdxW) - 1)) << StatusSegIdxLsb;
       return s;
@@ -82,11 +122,15 @@ uint32_t AxiRegs::read_word(uint8_t a, const RegsSide& side, const CoreOutputs& 
     case RegSegVel0 + 4: return get_word(q_.st_vel0, 32);
     case RegSegVel0 + 8: return get_word(q_.st_vel0, 64);
     case RegSegCommit: return 0;
-    default: resp = kDecErr; return 0;
+    default:
+      if (const int i = cfg_index(a); i >= 0) return q_.cl[size_t(i)];
+      if (const int i = stat_index(a); i >= 0) return st.words[size_t(i)];
+      resp = kDecErr;
+      return 0;
   }
 }
 
-void AxiRegs::step(const AxiIn& in, const RegsSide& side, const CoreOutputs& core) {
+void AxiRegs::step(const AxiIn& in, const RegsSide& side, const CoreOutputs& core, const ServoStatus& st) {
   const State q = q_;
   State d = q;
   d.seg_we = false;
@@ -117,7 +161,8 @@ void AxiRegs::step(const AxiIn& in, const RegsSide& side, const CoreOutputs& cor
     d.bvalid = true;
     d.bresp = kOkay;
     const uint8_t a = q.awaddr;
-    if (locked_addr(a) && busy_eff) {
+    const bool closed_change = a == RegCtrl && (q.wstrb & 1) && (((wd >> CtrlClosedBit) & 1) != uint32_t(q.closed));
+    if (busy_eff && (locked_addr(a) || cfg_index(a) >= 0 || closed_change)) {
       d.bresp = kSlvErr;
       set_reject = true;
     } else {
@@ -127,7 +172,10 @@ void AxiRegs::step(const AxiIn& in, const RegsSide& side, const CoreOutputs& cor
           set_bad = true;
           break;
         case RegCtrl:
-          if (q.wstrb & 1) d.en = (wd >> CtrlEnableBit) & 1;
+          if (q.wstrb & 1) {
+            d.en = (wd >> CtrlEnableBit) & 1;
+            d.closed = (wd >> CtrlClosedBit) & 1;
+          }
           break;
         case RegCmd:
           if (q.wstrb & 1) {
@@ -194,8 +242,15 @@ void AxiRegs::step(const AxiIn& in, const RegsSide& side, const CoreOutputs& cor
           }
           break;
         default:
-          d.bresp = kDecErr;
-          set_bad = true;
+          if (const int i = cfg_index(a); i >= 0) {
+            d.cl[size_t(i)] = wmerge(q.cl[size_t(i)], wd, wmask) & cl_mask(i);
+          } else if (stat_index(a) >= 0) {
+            d.bresp = kSlvErr;
+            set_bad = true;
+          } else {
+            d.bresp = kDecErr;
+            set_bad = true;
+          }
           break;
       }
     }
@@ -204,7 +259,7 @@ void AxiRegs::step(const AxiIn& in, const RegsSide& side, const CoreOutputs& cor
   if (do_read) {
     uint8_t resp = kOkay;
     d.rvalid = true;
-    d.rdata = read_word(uint8_t(in.araddr & ((1u << RegAddrW) - 1)), side, core, resp);
+    d.rdata = read_word(uint8_t(in.araddr & ((1u << RegAddrW) - 1)), side, core, st, resp);
     d.rresp = resp;
     if (resp != kOkay) set_bad = true;
   }
@@ -265,6 +320,123 @@ AxiAxisOutputs AxiAxis::outputs() const {
   o.phase = c.phase;
   o.pulse_count = c.pulse_count;
   o.ref_pos = c.ref_pos_int;
+  return o;
+}
+
+// ---- sc_axi_servo ----------------------------------------------------------------
+
+ServoConfig AxiServo::decode_config(bool enable, bool closed, const PulseTiming& t,
+                                    const std::array<uint32_t, ClCfgWords>& w) {
+  auto u = [](uint32_t v, int lsb, int width) { return field(v, lsb, width); };
+  auto sw = [&](int i) { return int32_t(wrap_signed64(int64_t(u(w[size_t(i)], 0, WgtW)), WgtW)); };
+  ServoConfig c;
+  c.enable = enable;
+  c.closed_loop = closed;
+  c.timing = t;
+  c.enc_filt = uint8_t(u(w[0], ClEncFiltLsb, EncFiltW));
+  NeuronConfig& n = c.ctl;
+  n.shift = uint8_t(u(w[0], ClEncShiftLsb, EncShiftW));
+  n.ff_en = u(w[0], ClFfEnBit, 1) != 0;
+  n.learn_shift = uint8_t(u(w[0], ClLearnShLsb, LearnShW));
+  n.div = uint16_t(u(w[1], ClDivLsb, CtlDivW));
+  n.inpos_hold = uint16_t(u(w[1], ClInposHoldLsb, HoldW));
+  n.learn_dz_p = w[2];
+  n.learn_dz_v = w[3];
+  n.k_p = u(w[4], 0, CoefW);
+  n.k_v = u(w[5], 0, CoefW);
+  n.kb = u(w[6], 0, CoefW);
+  n.eta_p1 = u(w[7], 0, CoefW);
+  n.eta_p2 = u(w[8], 0, CoefW);
+  n.eta_v1 = u(w[9], 0, CoefW);
+  n.eta_v2 = u(w[10], 0, CoefW);
+  n.w_p1 = sw(11);
+  n.w_p2 = sw(12);
+  n.w_v1 = sw(13);
+  n.w_v2 = sw(14);
+  n.w_min = sw(15);
+  n.w_p1_max = sw(16);
+  n.w_p2_max = sw(17);
+  n.w_v1_max = sw(18);
+  n.w_v2_max = sw(19);
+  n.v_lim = w[20];
+  n.u_lim = w[21];
+  n.ferr_lim = w[22];
+  n.inpos_win = w[23];
+  n.settle_rate = w[24];
+  return c;
+}
+
+ServoInputs AxiServo::servo_inputs() const {
+  const CoreInputs ci = regs_.core_inputs();
+  const AxiRegs::State& q = regs_.state();
+  ServoInputs si;
+  si.cfg = decode_config(ci.enable, q.closed, ci.cfg, q.cl);
+  si.seg_we = ci.seg_we;
+  si.seg_waddr = ci.seg_waddr;
+  si.seg_wdata = ci.seg_wdata;
+  si.seg_count = ci.seg_count;
+  si.pos_frac0 = ci.pos_frac0;
+  si.start = ci.start;
+  si.abort = ci.abort;
+  return si;
+}
+
+void AxiServo::step(const AxiIn& in, const RegsSide& side) {
+  const ServoOutputs so = servo_.outputs();
+  CoreOutputs co;
+  co.en = so.en;
+  co.busy = so.busy;
+  co.done = so.done;
+  co.phase = so.phase;
+  co.fault_table = so.fault_table;
+  co.fault_overrun = so.fault_overrun;
+  co.pulse_count = so.pulse_count;
+  co.ref_pos_int = so.ref_pos_int;
+  co.seg_idx = 0;
+  ServoStatus st;
+  st.in_pos = so.in_pos;
+  st.fault_ferr = so.fault_ferr;
+  st.words[0] = (so.in_pos ? bit(ClStInPosBit) : 0) | (so.fault_ferr ? bit(ClStFerrBit) : 0) |
+                (so.ctl_active ? bit(ClStActiveBit) : 0) | (uint32_t(so.ctl_state & ((1u << CtlStW) - 1)) << ClStStateLsb) |
+                (uint32_t(so.enc_illegal) << ClStIllLsb);
+  st.words[1] = uint32_t(so.u);
+  st.words[2] = uint32_t(so.v_cmd);
+  st.words[3] = uint32_t(so.e_p);
+  st.words[4] = uint32_t(so.e_v);
+  st.words[5] = uint32_t(so.w_p1);
+  st.words[6] = uint32_t(so.w_p2);
+  st.words[7] = uint32_t(so.w_v1);
+  st.words[8] = uint32_t(so.w_v2);
+  ServoInputs si = servo_inputs();
+  si.enc_a = side.enc_ab & 1;
+  si.enc_b = (side.enc_ab >> 1) & 1;
+  RegsSide rs = side;
+  rs.enc_ab = enc_s2_;
+  rs.enc_pos = so.enc_pos;
+  regs_.step(in, rs, co, st);
+  servo_.step(si);
+  enc_s2_ = enc_s1_;
+  enc_s1_ = side.enc_ab & 3;
+}
+
+AxiServoOutputs AxiServo::outputs() const {
+  const ServoOutputs s = servo_.outputs();
+  AxiServoOutputs o;
+  o.axi = regs_.axi_outputs();
+  o.step = s.step;
+  o.dir = s.dir;
+  o.en = s.en;
+  CoreOutputs co;
+  co.busy = s.busy;
+  o.busy = regs_.busy(co);
+  o.done = s.done && !o.busy;
+  o.fault = s.fault_table || s.fault_overrun || s.fault_ferr;
+  o.phase = s.phase;
+  o.pulse_count = s.pulse_count;
+  o.ref_pos = s.ref_pos_int;
+  o.enc_pos = s.enc_pos;
+  o.in_pos = s.in_pos;
+  o.fault_ferr = s.fault_ferr;
   return o;
 }
 

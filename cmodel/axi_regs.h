@@ -3,9 +3,11 @@
 // order, one step() per clock; no Verilator or SystemC types.
 #pragma once
 
+#include <array>
 #include <cstdint>
 
 #include "axis_core.h"
+#include "servo_axis.h"
 
 namespace sc {
 
@@ -43,6 +45,14 @@ struct RegsSide {
   int32_t enc_pos = 0;
 };
 
+// Closed-loop inputs of the register file (sc_axi_servo): STATUS bits and
+// the read-only words CL_STATUS .. CTL_W_V2 (cl_stat_i).
+struct ServoStatus {
+  bool in_pos = false;
+  bool fault_ferr = false;
+  std::array<uint32_t, ClStatWords> words{};
+};
+
 class AxiRegs {
  public:
   struct State {
@@ -57,6 +67,8 @@ class AxiRegs {
     uint8_t rresp = 0;
     uint32_t rdata = 0;
     bool en = false;
+    bool closed = false;                    // CTRL.CLOSED_LOOP
+    std::array<uint32_t, ClCfgWords> cl{};  // controller settings (servo)
     uint8_t seg_count = 0;
     PulseTiming cfg{};
     u128 frac0 = 0;
@@ -76,10 +88,14 @@ class AxiRegs {
     bool operator==(const State&) const = default;
   };
 
-  AxiRegs() { reset(); }
+  // servo = true: the closed-loop words of sc_axi_servo (Servo = 1).
+  explicit AxiRegs(bool servo = false) : servo_(servo) { reset(); }
   void reset();
   // One clock. `core` = the core's outputs during this clock.
-  void step(const AxiIn& in, const RegsSide& side, const CoreOutputs& core);
+  void step(const AxiIn& in, const RegsSide& side, const CoreOutputs& core, const ServoStatus& st = ServoStatus{});
+  // Implemented bits and reset value of controller-settings word i.
+  static uint32_t cl_mask(int i);
+  static uint32_t cl_reset(int i);
 
   AxiOut axi_outputs() const;
   CoreInputs core_inputs() const;
@@ -88,7 +104,11 @@ class AxiRegs {
   const State& state() const { return q_; }
 
  private:
-  uint32_t read_word(uint8_t addr, const RegsSide& side, const CoreOutputs& core, uint8_t& resp) const;
+  uint32_t read_word(uint8_t addr, const RegsSide& side, const CoreOutputs& core, const ServoStatus& st,
+                     uint8_t& resp) const;
+  int cfg_index(uint8_t addr) const;   // -1: not a controller-settings word
+  int stat_index(uint8_t addr) const;  // -1: not a closed-loop status word
+  bool servo_;
   State q_;
 };
 
@@ -122,6 +142,47 @@ class AxiAxis {
  private:
   AxiRegs regs_;
   AxisCore core_;
+};
+
+// Outputs of sc_axi_servo compared by the lockstep checker.
+struct AxiServoOutputs {
+  AxiOut axi;
+  bool step = false, dir = false, en = false;
+  bool busy = false, done = false, fault = false;
+  uint8_t phase = 0;
+  int32_t pulse_count = 0;
+  int32_t ref_pos = 0;
+  int32_t enc_pos = 0;
+  bool in_pos = false, fault_ferr = false;
+  bool operator==(const AxiServoOutputs&) const = default;
+};
+
+// Model of rtl/sc_axi_servo.sv: AxiRegs(servo) + ServoAxis. The encoder
+// inputs are side.enc_ab (bit 0 = A, bit 1 = B) at this clock's edge;
+// side.enc_pos is not used (ENC_POS reads the decoder).
+class AxiServo {
+ public:
+  AxiServo() : regs_(true) { reset(); }
+  void reset() {
+    regs_.reset();
+    servo_.reset();
+    enc_s1_ = enc_s2_ = 0;
+  }
+  void step(const AxiIn& in, const RegsSide& side);
+  AxiServoOutputs outputs() const;
+  const AxiRegs& regs() const { return regs_; }
+  const ServoAxis& servo() const { return servo_; }
+  ServoAxis& mutable_servo() { return servo_; }
+  // The sc_servo_axis inputs the register file drives (encoder pins aside).
+  ServoInputs servo_inputs() const;
+  // Controller settings words -> sc_servo_axis configuration.
+  static ServoConfig decode_config(bool enable, bool closed, const PulseTiming& t,
+                                   const std::array<uint32_t, ClCfgWords>& w);
+
+ private:
+  AxiRegs regs_;
+  ServoAxis servo_;
+  uint8_t enc_s1_ = 0, enc_s2_ = 0;
 };
 
 }  // namespace sc

@@ -70,6 +70,8 @@ module sc_axi_axis (
   logic signed [AccW-1:0]      unused_ref_acc;
   logic signed [JerkW-1:0]     unused_ref_jerk;
   logic signed [PendW-1:0]     unused_pending;
+  logic                        unused_closed;
+  logic [sc_pkg::ClCfgWords*32-1:0] unused_cl_cfg;
 
   sc_axi_regs u_regs (
     .clk_i,
@@ -110,6 +112,8 @@ module sc_axi_axis (
     .pos_frac0_o     (pos_frac0),
     .start_o         (start),
     .abort_o         (abort),
+    .closed_loop_o   (unused_closed),
+    .cl_cfg_o        (unused_cl_cfg),
     .busy_i          (core_busy),
     .done_i          (core_done),
     .phase_i         (phase_o),
@@ -119,6 +123,9 @@ module sc_axi_axis (
     .pulse_count_i   (pulse_count_o),
     .ref_pos_i       (ref_pos_o),
     .seg_idx_i       (seg_idx),
+    .in_pos_i        (1'b0),
+    .fault_ferr_i    (1'b0),
+    .cl_stat_i       ({(sc_pkg::ClStatWords*32){1'b0}}),
     .busy_o
   );
 

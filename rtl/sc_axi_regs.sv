@@ -16,7 +16,17 @@
 // change nothing but the sticky ERR flags. Reserved bits read 0. WSTRB
 // selects bytes; CMD, ERR and SEG_COMMIT act on byte 0 only. AWPROT/ARPROT
 // are not used and not present.
-module sc_axi_regs (
+//
+// Servo = 1 (sc_axi_servo) adds the closed-loop words: ClCfgWords
+// controller settings from RegClFirst on (each masked to its fields,
+// locked while busy like the table, packed on cl_cfg_o, word i at bits
+// 32i+31:32i) and ClStatWords read-only status words from RegClStat on
+// (cl_stat_i). With Servo = 0 those addresses answer DECERR.
+// CTRL.CLOSED_LOOP is a plain flop in both (closed_loop_o); a CTRL write
+// that would change it while busy is refused.
+module sc_axi_regs #(
+  parameter bit Servo = 1'b0
+) (
   input  logic                                clk_i,
   input  logic                                rst_ni,
 
@@ -61,6 +71,8 @@ module sc_axi_regs (
   output logic [sc_pkg::FracBits-1:0]         pos_frac0_o,
   output logic                                start_o,
   output logic                                abort_o,
+  output logic                                closed_loop_o,
+  output logic [sc_pkg::ClCfgWords*32-1:0]    cl_cfg_o,
 
   // from sc_axis_core
   input  logic                                busy_i,
@@ -72,6 +84,9 @@ module sc_axi_regs (
   input  logic signed [sc_pkg::PosIntW-1:0]   pulse_count_i,
   input  logic signed [sc_pkg::PosIntW-1:0]   ref_pos_i,
   input  logic [sc_pkg::SegIdxW-1:0]          seg_idx_i,
+  input  logic                                in_pos_i,
+  input  logic                                fault_ferr_i,
+  input  logic [sc_pkg::ClStatWords*32-1:0]   cl_stat_i,
 
   output logic                                busy_o       // STATUS.BUSY
 );
@@ -86,6 +101,8 @@ module sc_axi_regs (
   localparam int JerkW      = sc_pkg::JerkW;
   localparam int AccW       = sc_pkg::AccW;
   localparam int VelW       = sc_pkg::VelW;
+  localparam int NCfg       = sc_pkg::ClCfgWords;
+  localparam int NStat      = sc_pkg::ClStatWords;
 
   localparam logic [1:0] RespOkay   = 2'b00;
   localparam logic [1:0] RespSlvErr = 2'b10;
@@ -118,12 +135,56 @@ module sc_axi_regs (
   localparam logic [AW-1:0] ASegCommit = AW'(sc_pkg::RegSegCommit);
 
   localparam int CtrlEnableBit = sc_pkg::CtrlEnableBit;
+  localparam int CtrlClosedBit = sc_pkg::CtrlClosedBit;
   localparam int CmdStartBit   = sc_pkg::CmdStartBit;
   localparam int CmdStopBit    = sc_pkg::CmdStopBit;
   localparam int CmdEstopBit   = sc_pkg::CmdEstopBit;
   localparam int ErrRejectBit  = sc_pkg::ErrRejectBit;
   localparam int ErrBadAddrBit = sc_pkg::ErrBadAddrBit;
   localparam int ErrEstopBit   = sc_pkg::ErrEstopBit;
+
+  // implemented bits of a field
+  function automatic logic [31:0] fmask(input int width, input int lsb);
+    fmask = 32'(((64'd1 << width) - 64'd1) << lsb);
+  endfunction
+  function automatic logic [31:0] w32(input int v);
+    w32 = 32'(v);
+  endfunction
+
+  // Closed-loop words: implemented bits and reset values, word 0 lowest.
+  localparam logic [NCfg*32-1:0] ClMask = {
+      fmask(sc_pkg::CtlW, 0),                                  // SETTLE_RATE
+      fmask(sc_pkg::CtlW, 0),                                  // INPOS_WIN
+      fmask(sc_pkg::CtlW, 0),                                  // FERR_LIM
+      fmask(sc_pkg::CtlW, 0),                                  // U_LIM
+      fmask(sc_pkg::CtlW, 0),                                  // V_LIM
+      fmask(sc_pkg::WgtW, 0), fmask(sc_pkg::WgtW, 0),          // W_V2_MAX, W_V1_MAX
+      fmask(sc_pkg::WgtW, 0), fmask(sc_pkg::WgtW, 0),          // W_P2_MAX, W_P1_MAX
+      fmask(sc_pkg::WgtW, 0),                                  // W_MIN
+      fmask(sc_pkg::WgtW, 0), fmask(sc_pkg::WgtW, 0),          // W_V2, W_V1
+      fmask(sc_pkg::WgtW, 0), fmask(sc_pkg::WgtW, 0),          // W_P2, W_P1
+      fmask(sc_pkg::CoefW, 0), fmask(sc_pkg::CoefW, 0),        // ETA_V2, ETA_V1
+      fmask(sc_pkg::CoefW, 0), fmask(sc_pkg::CoefW, 0),        // ETA_P2, ETA_P1
+      fmask(sc_pkg::CoefW, 0), fmask(sc_pkg::CoefW, 0),        // KB, K_V
+      fmask(sc_pkg::CoefW, 0),                                 // K_P
+      fmask(sc_pkg::CtlW, 0), fmask(sc_pkg::CtlW, 0),          // LEARN_DZ_V, LEARN_DZ_P
+      fmask(sc_pkg::HoldW, sc_pkg::ClInposHoldLsb) | fmask(sc_pkg::CtlDivW, sc_pkg::ClDivLsb),
+      fmask(sc_pkg::LearnShW, sc_pkg::ClLearnShLsb) | fmask(1, sc_pkg::ClFfEnBit) |
+      fmask(sc_pkg::EncShiftW, sc_pkg::ClEncShiftLsb) | fmask(sc_pkg::EncFiltW, sc_pkg::ClEncFiltLsb)
+  };
+  localparam logic [NCfg*32-1:0] ClReset = {
+      w32(sc_pkg::RstSettleRate), w32(sc_pkg::RstInposWin), w32(sc_pkg::RstFerrLim),
+      w32(sc_pkg::RstULim), w32(sc_pkg::RstVLim),
+      w32(sc_pkg::RstWv2Max), w32(sc_pkg::RstWv1Max), w32(sc_pkg::RstWp2Max), w32(sc_pkg::RstWp1Max),
+      w32(sc_pkg::RstWmin),
+      w32(sc_pkg::RstWv2), w32(sc_pkg::RstWv1), w32(sc_pkg::RstWp2), w32(sc_pkg::RstWp1),
+      w32(sc_pkg::RstEtaV2), w32(sc_pkg::RstEtaV1), w32(sc_pkg::RstEtaP2), w32(sc_pkg::RstEtaP1),
+      w32(sc_pkg::RstKb), w32(sc_pkg::RstKv), w32(sc_pkg::RstKp),
+      w32(sc_pkg::RstLearnDzV), w32(sc_pkg::RstLearnDzP),
+      (w32(sc_pkg::RstInposHold) << sc_pkg::ClInposHoldLsb) | (w32(sc_pkg::RstCtlDiv) << sc_pkg::ClDivLsb),
+      (w32(sc_pkg::RstLearnShift) << sc_pkg::ClLearnShLsb) | (w32(sc_pkg::RstFfEn) << sc_pkg::ClFfEnBit) |
+      (w32(sc_pkg::RstEncFilt) << sc_pkg::ClEncFiltLsb)
+  };
 
   // byte-strobe merge of a 32-bit register word
   function automatic logic [31:0] wmerge(input logic [31:0] old_v, input logic [31:0] new_v,
@@ -144,6 +205,8 @@ module sc_axi_regs (
   logic [31:0]               rdata_q, rdata_d;
 
   logic                      en_q, en_d;
+  logic                      closed_q, closed_d;
+  logic [NCfg*32-1:0]        cl_q, cl_d;
   logic [SegCntW-1:0]        seg_count_q, seg_count_d;
   logic [PulseTimeW-1:0]     high_q, high_d, low_q, low_d, setup_q, setup_d, hold_q, hold_d;
   logic [FracBits-1:0]       frac0_q, frac0_d;
@@ -169,6 +232,24 @@ module sc_axi_regs (
   logic        w_locked;          // the written register is locked while busy
   logic [31:0] status_word, rd_word;
   logic [1:0]  rd_resp;
+  // closed-loop window decode (write address held, read address on the bus)
+  logic [AW-1:0] w_cfg_off, w_st_off, r_cfg_off, r_st_off;
+  logic          w_cfg_hit, w_st_hit, r_cfg_hit, r_st_hit;
+  logic [AW-3:0] w_cfg_idx, r_cfg_idx, r_st_idx;
+  logic [31:0]   w_cfg_mask;
+
+  assign w_cfg_off = awaddr_q - AW'(sc_pkg::RegClFirst);
+  assign w_st_off  = awaddr_q - AW'(sc_pkg::RegClStat);
+  assign r_cfg_off = s_axi_araddr_i - AW'(sc_pkg::RegClFirst);
+  assign r_st_off  = s_axi_araddr_i - AW'(sc_pkg::RegClStat);
+  assign w_cfg_hit = Servo && (w_cfg_off[1:0] == 2'b00) && (w_cfg_off[AW-1:2] < (AW-2)'(NCfg));
+  assign w_st_hit  = Servo && (w_st_off[1:0] == 2'b00) && (w_st_off[AW-1:2] < (AW-2)'(NStat));
+  assign r_cfg_hit = Servo && (r_cfg_off[1:0] == 2'b00) && (r_cfg_off[AW-1:2] < (AW-2)'(NCfg));
+  assign r_st_hit  = Servo && (r_st_off[1:0] == 2'b00) && (r_st_off[AW-1:2] < (AW-2)'(NStat));
+  assign w_cfg_idx = w_cfg_off[AW-1:2];
+  assign r_cfg_idx = r_cfg_off[AW-1:2];
+  assign r_st_idx  = r_st_off[AW-1:2];
+  assign w_cfg_mask = ClMask[32*w_cfg_idx +: 32];
 
   assign busy_eff = busy_i || start_q || start_d1_q;
   assign do_write = aw_full_q && w_full_q && !bvalid_q;
@@ -180,7 +261,7 @@ module sc_axi_regs (
     unique case (awaddr_q)
       ASegCount, APulseTime, ADirTime, AFrac0, AFrac1, AFrac2, ASegPhase, ASegClocks,
       AJerk0, AJerk1, AAcc0, AAcc1, AVel0, AVel1, AVel2, ASegCommit: w_locked = 1'b1;
-      default:                                                        w_locked = 1'b0;
+      default:                                                        w_locked = w_cfg_hit;
     endcase
   end
 
@@ -194,6 +275,8 @@ module sc_axi_regs (
     status_word[sc_pkg::StatusFaultOverrunBit]      = fault_overrun_i;
     status_word[sc_pkg::StatusEstopBit]             = err_estop_q;
     status_word[sc_pkg::StatusErrBit]               = err_reject_q || err_bad_q || err_estop_q;
+    status_word[sc_pkg::StatusFaultFerrBit]         = fault_ferr_i;
+    status_word[sc_pkg::StatusInPosBit]             = in_pos_i;
     status_word[sc_pkg::StatusEncALsb +: 2]         = enc_ab_i;
     status_word[sc_pkg::StatusSegIdxLsb +: SegIdxW] = seg_idx_i;
   end
@@ -204,7 +287,10 @@ module sc_axi_regs (
     rd_resp = RespOkay;
     unique case (s_axi_araddr_i)
       AId:        rd_word = {16'(sc_pkg::RegIdMagic), 16'(sc_pkg::RegMapVersion)};
-      ACtrl:      rd_word[CtrlEnableBit] = en_q;
+      ACtrl: begin
+        rd_word[CtrlEnableBit] = en_q;
+        rd_word[CtrlClosedBit] = closed_q;
+      end
       ACmd:       rd_word = '0;
       AStatus:    rd_word = status_word;
       AErr: begin
@@ -238,7 +324,15 @@ module sc_axi_regs (
       AVel1:      rd_word = st_vel0_q[63:32];
       AVel2:      rd_word = 32'(st_vel0_q[VelW-1:64]);
       ASegCommit: rd_word = '0;
-      default:    rd_resp = RespDecErr;
+      default: begin
+        if (r_cfg_hit) begin
+          rd_word = cl_q[32*r_cfg_idx +: 32];
+        end else if (r_st_hit) begin
+          rd_word = cl_stat_i[32*r_st_idx +: 32];
+        end else begin
+          rd_resp = RespDecErr;
+        end
+      end
     endcase
   end
 
@@ -255,6 +349,8 @@ module sc_axi_regs (
     rresp_d      = rresp_q;
     rdata_d      = rdata_q;
     en_d         = en_q;
+    closed_d     = closed_q;
+    cl_d         = cl_q;
     seg_count_d  = seg_count_q;
     high_d       = high_q;
     low_d        = low_q;
@@ -299,7 +395,8 @@ module sc_axi_regs (
       w_full_d  = 1'b0;
       bvalid_d  = 1'b1;
       bresp_d   = RespOkay;
-      if (w_locked && busy_eff) begin
+      if (busy_eff && (w_locked || (awaddr_q == ACtrl && wstrb_q[0] &&
+                                    wd[CtrlClosedBit] != closed_q))) begin
         bresp_d    = RespSlvErr;
         set_reject = 1'b1;
       end else begin
@@ -309,7 +406,10 @@ module sc_axi_regs (
             set_bad = 1'b1;
           end
           ACtrl: begin
-            if (wstrb_q[0]) en_d = wd[CtrlEnableBit];
+            if (wstrb_q[0]) begin
+              en_d     = wd[CtrlEnableBit];
+              closed_d = wd[CtrlClosedBit];
+            end
           end
           ACmd: begin
             if (wstrb_q[0]) begin
@@ -371,8 +471,15 @@ module sc_axi_regs (
             end
           end
           default: begin
-            bresp_d = RespDecErr;
-            set_bad = 1'b1;
+            if (w_cfg_hit) begin
+              cl_d[32*w_cfg_idx +: 32] = wmerge(cl_q[32*w_cfg_idx +: 32], wd, wmask) & w_cfg_mask;
+            end else if (w_st_hit) begin
+              bresp_d = RespSlvErr;
+              set_bad = 1'b1;
+            end else begin
+              bresp_d = RespDecErr;
+              set_bad = 1'b1;
+            end
           end
         endcase
       end
@@ -412,6 +519,8 @@ module sc_axi_regs (
       rresp_q      <= RespOkay;
       rdata_q      <= '0;
       en_q         <= 1'b0;
+      closed_q     <= 1'b0;
+      cl_q         <= ClReset;
       seg_count_q  <= '0;
       high_q       <= PulseTimeW'(sc_pkg::RstPulseHigh);
       low_q        <= PulseTimeW'(sc_pkg::RstPulseLow);
@@ -443,6 +552,8 @@ module sc_axi_regs (
       rresp_q      <= rresp_d;
       rdata_q      <= rdata_d;
       en_q         <= en_d;
+      closed_q     <= closed_d;
+      cl_q         <= cl_d;
       seg_count_q  <= seg_count_d;
       high_q       <= high_d;
       low_q        <= low_d;
@@ -490,6 +601,8 @@ module sc_axi_regs (
   assign pos_frac0_o = frac0_q;
   assign start_o     = start_q;
   assign abort_o     = abort_q;
+  assign closed_loop_o = closed_q;
+  assign cl_cfg_o    = cl_q;
   assign busy_o      = busy_eff;
 
 endmodule

@@ -102,6 +102,7 @@ package sc_pkg;
   localparam int IdMagicLsb    = 16;     //@field ID MAGIC 16 reset=21315 "0x5343, ASCII 'SC'"
   localparam int RegCtrl       = 32'h0000_0004;  //@reg CTRL RW "control"
   localparam int CtrlEnableBit = 0;      //@field CTRL ENABLE 1 "drives the EN pin; START is refused while 0; ESTOP clears it"
+  localparam int CtrlClosedBit = 1;      //@field CTRL CLOSED_LOOP 1 "sc_axi_servo: 1 = closed loop (encoder feedback), 0 = open loop; a write changing it while busy is refused (ignored by sc_axi_axis)"
   localparam int RegCmd        = 32'h0000_0008;  //@reg CMD WO "commands: write 1 to act; reads 0"
   localparam int CmdStartBit   = 0;      //@field CMD START 1 "start the loaded table (refused with SLVERR + ERR.REJECT while busy, e-stopped or disabled)"
   localparam int CmdStopBit    = 1;      //@field CMD STOP 1 "abort the move: the profile stops at once, a STEP pulse in flight completes"
@@ -115,7 +116,9 @@ package sc_pkg;
   localparam int StatusFaultOverrunBit = 8;   //@field STATUS FAULT_OVERRUN 1 "step requests overflowed the pulse queue"
   localparam int StatusEstopBit        = 9;   //@field STATUS ESTOP 1 "ERR.ESTOP is set (START refused)"
   localparam int StatusErrBit          = 10;  //@field STATUS ERR 1 "some ERR flag is set"
+  localparam int StatusFaultFerrBit    = 11;  //@field STATUS FAULT_FERR 1 "closed loop: following-error fault latched (|P* - P| > FERR_LIM); 0 in sc_axi_axis"
   localparam int StatusEncALsb         = 12;  //@field STATUS ENC_AB 2 "synchronised encoder inputs: bit 12 = A, bit 13 = B"
+  localparam int StatusInPosBit        = 14;  //@field STATUS IN_POS 1 "closed loop: in position (|P - L| <= INPOS_WIN for INPOS_HOLD periods); 0 in sc_axi_axis"
   localparam int StatusSegIdxLsb       = 16;  //@field STATUS SEG_IDX SegIdxW "table row being executed"
   localparam int RegErr        = 32'h0000_0010;  //@reg ERR W1C "sticky error flags: write 1 to clear"
   localparam int ErrRejectBit  = 0;      //@field ERR REJECT 1 "a table/config/START write was refused (busy, e-stopped or disabled): SLVERR, nothing changed"
@@ -142,8 +145,116 @@ package sc_pkg;
   localparam int RegSegVel0    = 32'h0000_0058;  //@reg SEG_VEL0 RW wide=VelW "row staging: start velocity, signed SQ1.80, 3 words"
   localparam int RegSegCommit  = 32'h0000_0064;  //@reg SEG_COMMIT WO "write the staged row into the table; reads 0"
   localparam int SegCommitLsb  = 0;      //@field SEG_COMMIT ROW SegIdxW "table row (0..15) to write"
+  // Closed-loop controller settings (sc_axi_servo only; DECERR in
+  // sc_axi_axis): one 32-bit word per cfg_* input of sc_servo_axis, words
+  // RegClFirst .. RegClFirst + 4 * (ClCfgWords - 1) in this order. Reset
+  // values = the closed-loop runner's defaults (tb/closed_loop_run.h,
+  // 1 encoder count per pulse, 10 kHz control rate, 50/50-clock STEP).
+  // Units: docs/closed_loop.md (Q.CtlFrac counts or counts per control
+  // period, coefficients Q.CoefFrac, weights signed Q.WgtFrac).
+  localparam int ClCfgWords    = 25;
+  localparam int ClStatWords   = 9;
+  localparam int RstEncFilt    = 3;
+  localparam int RstFfEn       = 1;
+  localparam int RstLearnShift = 10;
+  localparam int RstCtlDiv     = 2000;
+  localparam int RstInposHold  = 50;
+  localparam int RstLearnDzP   = 49152;
+  localparam int RstLearnDzV   = 98304;
+  localparam int RstKp         = 4194;
+  localparam int RstKv         = 20972;
+  localparam int RstKb         = 1048576;
+  localparam int RstEtaP1      = 209715;
+  localparam int RstEtaP2      = 209715;
+  localparam int RstEtaV1      = 157286;
+  localparam int RstEtaV2      = 104858;
+  localparam int RstWp1        = 0;
+  localparam int RstWp2        = 4194304;
+  localparam int RstWv1        = 4194304;
+  localparam int RstWv2        = 1048576;
+  localparam int RstWmin       = 0;
+  localparam int RstWp1Max     = 32768;
+  localparam int RstWp2Max     = 8323072;
+  localparam int RstWv1Max     = 8323072;
+  localparam int RstWv2Max     = 2097152;
+  localparam int RstVLim       = 32768;
+  localparam int RstULim       = 1179648;
+  localparam int RstFerrLim    = 32768000;
+  localparam int RstInposWin   = 0;
+  localparam int RstSettleRate = 3277;
+  localparam int RegClFirst    = 32'h0000_0068;
+  localparam int RegClCfg      = 32'h0000_0068;  //@reg CL_CFG RW servo "closed loop: encoder and learning options"
+  localparam int ClEncFiltLsb  = 0;      //@field CL_CFG ENC_FILT EncFiltW reset=RstEncFilt "encoder glitch filter, clocks (0..15)"
+  localparam int ClEncShiftLsb = 4;      //@field CL_CFG ENC_SHIFT EncShiftW reset=0 "log2(encoder counts per STEP pulse)"
+  localparam int ClFfEnBit     = 8;      //@field CL_CFG FF_EN 1 reset=RstFfEn "velocity feed-forward from V*"
+  localparam int ClLearnShLsb  = 12;     //@field CL_CFG LEARN_SHIFT LearnShW reset=RstLearnShift "Hebb scale: dw = eta e x / 2^LEARN_SHIFT"
+  localparam int RegClPeriod   = 32'h0000_006C;  //@reg CL_PERIOD RW servo "closed loop: control period and in-position hold"
+  localparam int ClDivLsb      = 0;      //@field CL_PERIOD DIV CtlDivW reset=RstCtlDiv "control period, clocks (2000 = 10 kHz)"
+  localparam int ClInposHoldLsb = 16;    //@field CL_PERIOD INPOS_HOLD HoldW reset=RstInposHold "in-position hold, control periods"
+  localparam int RegClLearnDzP = 32'h0000_0070;  //@reg LEARN_DZ_P RW servo "no position-loop learning while |e_p| <= this, counts Q.16"
+  localparam int ClLearnDzPLsb = 0;      //@field LEARN_DZ_P VALUE CtlW reset=RstLearnDzP "counts, Q.CtlFrac"
+  localparam int RegClLearnDzV = 32'h0000_0074;  //@reg LEARN_DZ_V RW servo "no speed-loop learning while |e_v| <= this, counts/period Q.16"
+  localparam int ClLearnDzVLsb = 0;      //@field LEARN_DZ_V VALUE CtlW reset=RstLearnDzV "counts per control period, Q.CtlFrac"
+  localparam int RegClKp       = 32'h0000_0078;  //@reg K_P RW servo "position neuron gain K_p, unsigned Q.20"
+  localparam int ClKpLsb       = 0;      //@field K_P VALUE CoefW reset=RstKp "Q.CoefFrac"
+  localparam int RegClKv       = 32'h0000_007C;  //@reg K_V RW servo "speed neuron gain K_v, unsigned Q.20"
+  localparam int ClKvLsb       = 0;      //@field K_V VALUE CoefW reset=RstKv "Q.CoefFrac"
+  localparam int RegClKb       = 32'h0000_0080;  //@reg KB RW servo "back-calculation (anti-windup) gain, unsigned Q.20"
+  localparam int ClKbLsb       = 0;      //@field KB VALUE CoefW reset=RstKb "Q.CoefFrac"
+  localparam int RegClEtaP1    = 32'h0000_0084;  //@reg ETA_P1 RW servo "learning rate, position loop, integral weight, Q.20"
+  localparam int ClEtaP1Lsb    = 0;      //@field ETA_P1 VALUE CoefW reset=RstEtaP1 "Q.CoefFrac (0: fixed gain)"
+  localparam int RegClEtaP2    = 32'h0000_0088;  //@reg ETA_P2 RW servo "learning rate, position loop, proportional weight, Q.20"
+  localparam int ClEtaP2Lsb    = 0;      //@field ETA_P2 VALUE CoefW reset=RstEtaP2 "Q.CoefFrac"
+  localparam int RegClEtaV1    = 32'h0000_008C;  //@reg ETA_V1 RW servo "learning rate, speed loop, integral weight, Q.20"
+  localparam int ClEtaV1Lsb    = 0;      //@field ETA_V1 VALUE CoefW reset=RstEtaV1 "Q.CoefFrac"
+  localparam int RegClEtaV2    = 32'h0000_0090;  //@reg ETA_V2 RW servo "learning rate, speed loop, proportional weight, Q.20"
+  localparam int ClEtaV2Lsb    = 0;      //@field ETA_V2 VALUE CoefW reset=RstEtaV2 "Q.CoefFrac"
+  localparam int RegClWp1      = 32'h0000_0094;  //@reg W_P1 RW servo "initial weight, position loop, integral (signed Q.16)"
+  localparam int ClWp1Lsb      = 0;      //@field W_P1 VALUE WgtW reset=RstWp1 "signed Q.WgtFrac, 24 bits"
+  localparam int RegClWp2      = 32'h0000_0098;  //@reg W_P2 RW servo "initial weight, position loop, proportional (signed Q.16)"
+  localparam int ClWp2Lsb      = 0;      //@field W_P2 VALUE WgtW reset=RstWp2 "signed Q.WgtFrac, 24 bits"
+  localparam int RegClWv1      = 32'h0000_009C;  //@reg W_V1 RW servo "initial weight, speed loop, integral (signed Q.16)"
+  localparam int ClWv1Lsb      = 0;      //@field W_V1 VALUE WgtW reset=RstWv1 "signed Q.WgtFrac, 24 bits"
+  localparam int RegClWv2      = 32'h0000_00A0;  //@reg W_V2 RW servo "initial weight, speed loop, proportional (signed Q.16)"
+  localparam int ClWv2Lsb      = 0;      //@field W_V2 VALUE WgtW reset=RstWv2 "signed Q.WgtFrac, 24 bits"
+  localparam int RegClWmin     = 32'h0000_00A4;  //@reg W_MIN RW servo "lower bound of every weight (signed Q.16)"
+  localparam int ClWminLsb     = 0;      //@field W_MIN VALUE WgtW reset=RstWmin "signed Q.WgtFrac, 24 bits"
+  localparam int RegClWp1Max   = 32'h0000_00A8;  //@reg W_P1_MAX RW servo "upper bound of W_P1 (signed Q.16)"
+  localparam int ClWp1MaxLsb   = 0;      //@field W_P1_MAX VALUE WgtW reset=RstWp1Max "signed Q.WgtFrac, 24 bits"
+  localparam int RegClWp2Max   = 32'h0000_00AC;  //@reg W_P2_MAX RW servo "upper bound of W_P2 (signed Q.16)"
+  localparam int ClWp2MaxLsb   = 0;      //@field W_P2_MAX VALUE WgtW reset=RstWp2Max "signed Q.WgtFrac, 24 bits"
+  localparam int RegClWv1Max   = 32'h0000_00B0;  //@reg W_V1_MAX RW servo "upper bound of W_V1 (signed Q.16)"
+  localparam int ClWv1MaxLsb   = 0;      //@field W_V1_MAX VALUE WgtW reset=RstWv1Max "signed Q.WgtFrac, 24 bits"
+  localparam int RegClWv2Max   = 32'h0000_00B4;  //@reg W_V2_MAX RW servo "upper bound of W_V2 (signed Q.16)"
+  localparam int ClWv2MaxLsb   = 0;      //@field W_V2_MAX VALUE WgtW reset=RstWv2Max "signed Q.WgtFrac, 24 bits"
+  localparam int RegClVLim     = 32'h0000_00B8;  //@reg V_LIM RW servo "|position-loop output| limit, counts/period Q.16"
+  localparam int ClVLimLsb     = 0;      //@field V_LIM VALUE CtlW reset=RstVLim "Q.CtlFrac (32768 = 5000 pulses/s at 10 kHz)"
+  localparam int RegClULim     = 32'h0000_00BC;  //@reg U_LIM RW servo "|u| limit (commanded step rate), counts/period Q.16"
+  localparam int ClULimLsb     = 0;      //@field U_LIM VALUE CtlW reset=RstULim "Q.CtlFrac (1179648 = 180,000 pulses/s at 10 kHz)"
+  localparam int RegClFerrLim  = 32'h0000_00C0;  //@reg FERR_LIM RW servo "following-error fault limit, counts Q.16"
+  localparam int ClFerrLimLsb  = 0;      //@field FERR_LIM VALUE CtlW reset=RstFerrLim "Q.CtlFrac (500 counts)"
+  localparam int RegClInposWin = 32'h0000_00C4;  //@reg INPOS_WIN RW servo "in-position window |P - L|, counts Q.16"
+  localparam int ClInposWinLsb = 0;      //@field INPOS_WIN VALUE CtlW reset=RstInposWin "Q.CtlFrac"
+  localparam int RegClSettle   = 32'h0000_00C8;  //@reg SETTLE_RATE RW servo "corrective step rate after the reference is done, counts/period Q.16"
+  localparam int ClSettleLsb   = 0;      //@field SETTLE_RATE VALUE CtlW reset=RstSettleRate "Q.CtlFrac (3277 = 500 pulses/s at 10 kHz)"
+  // Closed-loop status (sc_axi_servo only), words RegClStat .. + 4 * (ClStatWords - 1).
+  localparam int RegClStat     = 32'h0000_00D0;  //@reg CL_STATUS RO servo "closed-loop status"
+  localparam int ClStInPosBit  = 0;      //@field CL_STATUS IN_POS 1 "in position"
+  localparam int ClStFerrBit   = 1;      //@field CL_STATUS FAULT_FERR 1 "following-error fault latched (cleared by the next START)"
+  localparam int ClStActiveBit = 2;      //@field CL_STATUS CTL_ACTIVE 1 "controller running"
+  localparam int ClStStateLsb  = 4;      //@field CL_STATUS CTL_STATE CtlStW "controller FSM state"
+  localparam int ClStIllLsb    = 16;     //@field CL_STATUS ENC_ILLEGAL EncIllW "illegal encoder transitions (saturating)"
+  localparam int RegClU        = 32'h0000_00D4;  //@reg CTL_U RO servo "controller output u, signed counts/period Q.16"
+  localparam int RegClVCmd     = 32'h0000_00D8;  //@reg CTL_V_CMD RO servo "position-loop output v_cmd, signed counts/period Q.16"
+  localparam int RegClEp       = 32'h0000_00DC;  //@reg CTL_E_P RO servo "position error e_p, signed counts Q.16"
+  localparam int RegClEv       = 32'h0000_00E0;  //@reg CTL_E_V RO servo "speed error e_v, signed counts/period Q.16"
+  localparam int RegClWp1Now   = 32'h0000_00E4;  //@reg CTL_W_P1 RO servo "learned weight w_p1, signed Q.16 (sign-extended)"
+  localparam int RegClWp2Now   = 32'h0000_00E8;  //@reg CTL_W_P2 RO servo "learned weight w_p2, signed Q.16 (sign-extended)"
+  localparam int RegClWv1Now   = 32'h0000_00EC;  //@reg CTL_W_V1 RO servo "learned weight w_v1, signed Q.16 (sign-extended)"
+  localparam int RegClWv2Now   = 32'h0000_00F0;  //@reg CTL_W_V2 RO servo "learned weight w_v2, signed Q.16 (sign-extended)"
   // Writes to SEG_COUNT, PULSE_TIME, DIR_TIME, POS_FRAC0, SEG_* and
-  // CMD.START while STATUS.BUSY is set are refused (SLVERR, ERR.REJECT).
+  // CMD.START while STATUS.BUSY is set are refused (SLVERR, ERR.REJECT);
+  // so are writes to the controller settings (CL_CFG .. SETTLE_RATE).
 
   // ---- UART bridge (115200 8N1 at ClkHz; protocol in docs/regmap.md) -----
   localparam int UartClksPerBit = 174;    // 20 MHz / 115200 = 173.6 (0.2 % fast)

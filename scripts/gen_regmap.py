@@ -21,8 +21,8 @@ import re
 import sys
 
 LP = re.compile(r"localparam\s+int\s+(\w+)\s*=\s*([0-9_]+|[0-9]+'h[0-9a-fA-F_]+)\s*;\s*(//.*)?$")
-REG = re.compile(r'//@reg\s+(\w+)\s+(RO|RW|WO|W1C)\s*(?:wide=(\w+))?\s*"([^"]*)"\s*$')
-FIELD = re.compile(r'//@field\s+(\w+)\s+(\w+)\s+(\w+)\s*(?:reset=(\d+))?\s*"([^"]*)"\s*$')
+REG = re.compile(r'//@reg\s+(\w+)\s+(RO|RW|WO|W1C)\s*(?:wide=(\w+))?\s*(servo)?\s*"([^"]*)"\s*$')
+FIELD = re.compile(r'//@field\s+(\w+)\s+(\w+)\s+(\w+)\s*(?:reset=(\w+))?\s*"([^"]*)"\s*$')
 
 
 def num(v):
@@ -48,7 +48,7 @@ def parse(path):
             if not r:
                 sys.exit(f"{path}:{lineno}: bad //@reg tag: {comment}")
             reg = {"name": r.group(1), "access": r.group(2), "wide": r.group(3),
-                   "desc": r.group(4), "addr": value, "param": name, "fields": []}
+                   "servo": bool(r.group(4)), "desc": r.group(5), "addr": value, "param": name, "fields": []}
             if reg["name"] in by_name:
                 sys.exit(f"{path}:{lineno}: register {reg['name']} defined twice")
             by_name[reg["name"]] = reg
@@ -64,8 +64,12 @@ def parse(path):
             width = int(w) if w.isdigit() else params.get(w)
             if width is None:
                 sys.exit(f"{path}:{lineno}: unknown width {w}")
+            rv = f.group(4) or "0"
+            reset = int(rv) if rv.isdigit() else params.get(rv)
+            if reset is None:
+                sys.exit(f"{path}:{lineno}: unknown reset value {rv}")
             reg["fields"].append({"name": f.group(2), "lsb": value, "width": width,
-                                  "reset": int(f.group(4) or 0), "desc": f.group(5),
+                                  "reset": reset, "desc": f.group(5),
                                   "param": name})
     if not regs:
         sys.exit(f"{path}: no //@reg tags found")
@@ -81,7 +85,8 @@ def parse(path):
                 bits = min(32, width - 32 * i)
                 words.append({"name": f"{reg['name']}_{i}", "addr": reg["addr"] + 4 * i,
                               "access": reg["access"], "desc": f"{reg['desc']} (bits {32*i+bits-1}:{32*i})",
-                              "mask": (1 << bits) - 1, "reset": 0, "fields": [], "group": reg["name"]})
+                              "mask": (1 << bits) - 1, "reset": 0, "fields": [], "group": reg["name"],
+                              "servo": reg["servo"]})
         else:
             mask, reset = 0, 0
             for f in reg["fields"]:
@@ -94,7 +99,7 @@ def parse(path):
                 mask = 0xFFFFFFFF
             words.append({"name": reg["name"], "addr": reg["addr"], "access": reg["access"],
                           "desc": reg["desc"], "mask": mask, "reset": reset,
-                          "fields": reg["fields"], "group": reg["name"]})
+                          "fields": reg["fields"], "group": reg["name"], "servo": reg["servo"]})
     for w in words:
         if w["addr"] % 4 or w["addr"] >= (1 << params["RegAddrW"]):
             sys.exit(f"{path}: {w['name']} address 0x{w['addr']:x} unaligned or outside the window")
@@ -118,6 +123,7 @@ def header(params, words):
            "struct Reg {", "  const char* name;", "  uint32_t addr;", "  Access access;",
            "  uint32_t mask;   // implemented bits (the rest read 0)",
            "  uint32_t reset;", "  const char* desc;", "  const Field* fields;", "  int nfields;",
+           "  bool servo;      // closed-loop register: sc_axi_servo only (DECERR in sc_axi_axis)",
            "};", ""]
     for w in words:
         if w["fields"]:
@@ -130,7 +136,7 @@ def header(params, words):
     for w in words:
         fl = f"k{w['name'].title().replace('_', '')}Fields" if w["fields"] else "nullptr"
         out.append(f"    {{{cstr(w['name'])}, 0x{w['addr']:02X}u, Access::{w['access']}, 0x{w['mask']:08X}u, "
-                   f"0x{w['reset']:08X}u, {cstr(w['desc'])}, {fl}, {len(w['fields'])}}},")
+                   f"0x{w['reset']:08X}u, {cstr(w['desc'])}, {fl}, {len(w['fields'])}, {'true' if w['servo'] else 'false'}}},")
     out.append("};")
     out.append(f"inline constexpr int kNumRegs = {len(words)};")
     out += ["", "}  // namespace sc::regmap", ""]
@@ -142,18 +148,23 @@ def doc(params, words):
     out = ["# Register map and UART protocol", "",
            "<!-- Generated from rtl/sc_pkg.sv by scripts/gen_regmap.py - do not edit;",
            "     ctest regmap_docs_in_sync fails when this file is stale. -->", "",
-           f"AXI4-Lite slave `sc_axi_regs` (in `sc_axi_axis`), {p['RegAddrW']}-bit byte addresses, "
+           f"AXI4-Lite slave `sc_axi_regs` (in `sc_axi_axis` and `sc_axi_servo`), {p['RegAddrW']}-bit byte addresses, "
            "32-bit registers. Any other address answers DECERR; a write to a read-only register "
            "answers SLVERR. Both set ERR.BAD_ACCESS and change nothing else. Reserved bits read 0 "
            "and ignore writes. WSTRB selects bytes (CMD, ERR and SEG_COMMIT act on byte 0).", "",
            "Writes to SEG_COUNT, PULSE_TIME, DIR_TIME, POS_FRAC0_*, SEG_* and CMD.START while "
            "STATUS.BUSY is set are refused: SLVERR, ERR.REJECT set, the running move is not touched. "
            "CMD.START is also refused while ERR.ESTOP is set or CTRL.ENABLE is 0.", "",
+           "Registers marked (servo) exist in `sc_axi_servo` (closed-loop axis, the board top's) only; "
+           "`sc_axi_axis` (open loop) answers DECERR there. The controller settings (CL_CFG .. "
+           "SETTLE_RATE) are locked while STATUS.BUSY is set like the table, and so is CTRL.CLOSED_LOOP "
+           "(a CTRL write changing it while busy is refused). Their units: docs/closed_loop.md; reset "
+           "values = the closed-loop runner's defaults (`scurve sim --closed-loop`).", "",
            "| offset | name | access | reset | implemented bits | description |",
            "|---|---|---|---|---|---|"]
     for w in words:
-        out.append(f"| 0x{w['addr']:02X} | {w['name']} | {w['access']} | 0x{w['reset']:08X} | "
-                   f"0x{w['mask']:08X} | {w['desc']} |")
+        out.append(f"| 0x{w['addr']:02X} | {w['name']}{' (servo)' if w['servo'] else ''} | {w['access']} | "
+                   f"0x{w['reset']:08X} | 0x{w['mask']:08X} | {w['desc']} |")
     out += ["", "## Fields", ""]
     for w in words:
         if not w["fields"]:

@@ -14,7 +14,17 @@ std::string render(const AxiAxisOutputs& o) {
       o.axi.rresp, o.step, o.dir, o.en, o.busy, o.done, o.fault, o.phase, o.pulse_count, o.ref_pos);
 }
 
-AxiBench::AxiBench(bool with_rtl, uint32_t seed) : rng_(seed) {
+std::string render(const AxiServoOutputs& o) {
+  return fmt::format(
+      "awready={} wready={} bvalid={} bresp={} arready={} rvalid={} rdata=0x{:08x} rresp={} "
+      "step={} dir={} en={} busy={} done={} fault={} phase={} pulse_count={} ref_pos={} enc_pos={} "
+      "in_pos={} fault_ferr={}",
+      o.axi.awready, o.axi.wready, o.axi.bvalid, o.axi.bresp, o.axi.arready, o.axi.rvalid, o.axi.rdata,
+      o.axi.rresp, o.step, o.dir, o.en, o.busy, o.done, o.fault, o.phase, o.pulse_count, o.ref_pos, o.enc_pos,
+      o.in_pos, o.fault_ferr);
+}
+
+AxiBench::AxiBench(bool with_rtl, uint32_t seed) : AxiMaster(seed) {
   if (with_rtl) rtl_ = std::make_unique<RtlAxiAxis>();
   reset();
 }
@@ -51,12 +61,46 @@ void AxiBench::tick() {
   ++clock_;
 }
 
-int AxiBench::delay() {
+// ---- sc_axi_servo ------------------------------------------------------------------
+
+AxiServoBench::AxiServoBench(bool with_rtl, uint32_t seed) : AxiMaster(seed) {
+  if (with_rtl) rtl_ = std::make_unique<RtlAxiServo>();
+  reset();
+}
+
+void AxiServoBench::reset() {
+  if (rtl_) rtl_->reset(4);
+  model_.reset();
+  in_ = AxiIn{};
+  out_ = model_.outputs();
+  last_step_ = out_.step;
+}
+
+void AxiServoBench::tick() {
+  if (plant_) side_.enc_ab = uint8_t((plant_->enc_a() ? 1 : 0) | (plant_->enc_b() ? 2 : 0));
+  if (rtl_) rtl_->step(in_, side_);
+  RegsSide ms = side_;
+  if (inject_) ms.enc_ab ^= 1;
+  model_.step(in_, ms);
+  const AxiServoOutputs m = model_.outputs();
+  out_ = rtl_ ? rtl_->outputs() : m;
+  if (rtl_ && !(out_ == m) && error_.empty()) {
+    error_ = fmt::format("clock {}: RTL and model differ\n  rtl:   {}\n  model: {}", clock_, render(out_), render(m));
+  } else if (rtl_) {
+    ++matched_;
+  }
+  if (out_.step && !last_step_) net_steps_ += out_.dir ? 1 : -1;
+  last_step_ = out_.step;
+  if (plant_) plant_->clock(out_.step, out_.dir);
+  ++clock_;
+}
+
+int AxiMaster::delay() {
   if (!jitter_) return 0;
   return std::uniform_int_distribution<int>(0, 3)(rng_);
 }
 
-uint8_t AxiBench::write(uint32_t addr, uint32_t data, uint8_t strb) {
+uint8_t AxiMaster::write(uint32_t addr, uint32_t data, uint8_t strb) {
   int aw_wait = delay(), w_wait = delay(), b_wait = delay();
   bool aw_done = false, w_done = false;
   in_.awaddr = uint8_t(addr);
@@ -66,7 +110,7 @@ uint8_t AxiBench::write(uint32_t addr, uint32_t data, uint8_t strb) {
     in_.awvalid = !aw_done && aw_wait <= 0;
     in_.wvalid = !w_done && w_wait <= 0;
     in_.bready = b_wait <= 0;
-    const AxiOut o = out_.axi;  // ready/valid during this clock
+    const AxiOut o = axi_out();  // ready/valid during this clock
     const bool aw_hs = in_.awvalid && o.awready;
     const bool w_hs = in_.wvalid && o.wready;
     const bool b_hs = in_.bready && o.bvalid && aw_done && w_done;
@@ -85,14 +129,14 @@ uint8_t AxiBench::write(uint32_t addr, uint32_t data, uint8_t strb) {
   return 0xff;
 }
 
-std::pair<uint32_t, uint8_t> AxiBench::read(uint32_t addr) {
+std::pair<uint32_t, uint8_t> AxiMaster::read(uint32_t addr) {
   int ar_wait = delay(), r_wait = delay();
   bool ar_done = false;
   in_.araddr = uint8_t(addr);
   for (int guard = 0; guard < 1000 && !failed(); ++guard) {
     in_.arvalid = !ar_done && ar_wait <= 0;
     in_.rready = ar_done && r_wait <= 0;
-    const AxiOut o = out_.axi;
+    const AxiOut o = axi_out();
     const bool ar_hs = in_.arvalid && o.arready;
     const bool r_hs = in_.rready && o.rvalid;
     tick();

@@ -13,21 +13,23 @@
 #include <vector>
 
 #include "axi_regs.h"
+#include "plant.h"
 #include "reg_encode.h"
 #include "rtl_axi_axis.h"
 
 namespace sc {
 
 std::string render(const AxiAxisOutputs& o);
+std::string render(const AxiServoOutputs& o);
 
-class AxiBench {
+// AXI4-Lite master of the register-level benches: blocking transactions
+// on top of the bench's tick().
+class AxiMaster {
  public:
-  // with_rtl = false runs the model alone (for speed comparisons).
-  explicit AxiBench(bool with_rtl = true, uint32_t seed = 1);
-
-  void reset();
+  explicit AxiMaster(uint32_t seed) : rng_(seed) {}
+  virtual ~AxiMaster() = default;
   // One clock with the current bus and side inputs; compares RTL and model.
-  void tick();
+  virtual void tick() = 0;
   void idle(uint64_t n) {
     for (uint64_t i = 0; i < n && !failed(); ++i) tick();
   }
@@ -38,6 +40,25 @@ class AxiBench {
   uint8_t write(uint32_t addr, uint32_t data, uint8_t strb = 0xf);
   std::pair<uint32_t, uint8_t> read(uint32_t addr);
   void set_jitter(bool on) { jitter_ = on; }
+  bool failed() const { return !error_.empty(); }
+  const std::string& error() const { return error_; }
+
+ protected:
+  virtual AxiOut axi_out() const = 0;
+  int delay();
+  AxiIn in_;
+  bool jitter_ = false;
+  std::mt19937 rng_;
+  std::string error_;
+};
+
+class AxiBench : public AxiMaster {
+ public:
+  // with_rtl = false runs the model alone (for speed comparisons).
+  explicit AxiBench(bool with_rtl = true, uint32_t seed = 1);
+
+  void reset();
+  void tick() override;
   // Checker self-test: the model sees the encoder position off by `d`.
   void inject_model_enc_offset(int32_t d) { model_enc_offset_ = d; }
 
@@ -50,25 +71,53 @@ class AxiBench {
   uint64_t clock() const { return clock_; }
   int64_t net_steps() const { return net_steps_; }
   uint64_t matched() const { return matched_; }
-  bool failed() const { return !error_.empty(); }
-  const std::string& error() const { return error_; }
 
  private:
-  int delay();
+  AxiOut axi_out() const override { return out_.axi; }
   std::unique_ptr<RtlAxiAxis> rtl_;
   AxiAxis model_;
-  AxiIn in_;
   RegsSide side_;
   AxiAxisOutputs out_;
   uint64_t clock_ = 0, matched_ = 0;
   int64_t net_steps_ = 0;
   bool last_step_ = false;
-  bool jitter_ = false;
   int32_t model_enc_offset_ = 0;
   uint64_t start_clock_ = 0;
   std::vector<uint64_t> rise_times_;
-  std::mt19937 rng_;
-  std::string error_;
+};
+
+// The same for sc_axi_servo (closed-loop axis): Verilated RTL and AxiServo
+// in lockstep every clock. With a plant attached, the STEP/DIR pins drive
+// the plant and its encoder A/B go back to the DUT (as tb/closed_loop_run);
+// without one, side().enc_ab drives the encoder inputs.
+class AxiServoBench : public AxiMaster {
+ public:
+  explicit AxiServoBench(bool with_rtl = true, uint32_t seed = 1);
+  void reset();
+  void tick() override;
+  void attach_plant(const PlantConfig& cfg) { plant_ = std::make_unique<Plant>(cfg, double(ClkHz)); }
+  const Plant* plant() const { return plant_.get(); }
+  // Checker self-test: from now on the model sees encoder A inverted.
+  void inject_model_fault() { inject_ = true; }
+
+  RegsSide& side() { return side_; }
+  const AxiServoOutputs& out() const { return out_; }
+  const AxiServo& model() const { return model_; }
+  uint64_t clock() const { return clock_; }
+  int64_t net_steps() const { return net_steps_; }
+  uint64_t matched() const { return matched_; }
+
+ private:
+  AxiOut axi_out() const override { return out_.axi; }
+  std::unique_ptr<RtlAxiServo> rtl_;
+  std::unique_ptr<Plant> plant_;
+  AxiServo model_;
+  RegsSide side_;
+  AxiServoOutputs out_;
+  uint64_t clock_ = 0, matched_ = 0;
+  int64_t net_steps_ = 0;
+  bool last_step_ = false;
+  bool inject_ = false;
 };
 
 // Host end of the UART bridge on the Verilated board top: 8N1 at

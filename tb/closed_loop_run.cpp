@@ -275,7 +275,9 @@ ClosedLoopResult run_closed_loop(const Plan& plan, const ClosedLoopOptions& opt)
   uint64_t n_err = 0;
   uint64_t ref_done_clock = 0;
   const uint32_t kin_every = ClkHz / 1000;  // 1 ms samples
-  KinEstimator kin_enc(1e-3, 10, 5), kin_ref(1e-3, 10, 5);
+  // 50 ms windows: the 1-count encoder quantisation stays below the
+  // S-curve's 2500 pulses/s^3 (a 10 ms filter reads millions on it).
+  KinEstimator kin_enc(1e-3, 50, 50), kin_ref(1e-3, 50, 50);
   uint32_t kin_cnt = 0;
   const uint64_t wper = uint64_t(cfg.ctl.div) * std::max<uint32_t>(1, opt.weight_every);
   uint64_t wcnt = 0;
@@ -294,7 +296,7 @@ ClosedLoopResult run_closed_loop(const Plan& plan, const ClosedLoopOptions& opt)
     sum_sq += e * e;
     ++n_err;
     if (out.ref_done && ref_done_clock == 0) ref_done_clock = clock;
-    if (++kin_cnt == kin_every) [[unlikely]] {
+    if (++kin_cnt == kin_every && !out.ref_done) [[unlikely]] {  // the move itself, not the settling
       kin_cnt = 0;
       kin_enc.add(double(out.enc_pos) * inv_cps);
       kin_ref.add(ref_pos(out));

@@ -8,6 +8,7 @@
 
 class VerilatedContext;
 class Vsc_axi_axis;
+class Vsc_axi_servo;
 class Vsc_board_top;
 
 namespace sc {
@@ -25,6 +26,22 @@ class RtlAxiAxis {
  private:
   std::unique_ptr<VerilatedContext> ctx_;
   std::unique_ptr<Vsc_axi_axis> m_;
+};
+
+// Verilated sc_axi_servo; side.enc_ab drives enc_a_i (bit 0) / enc_b_i (bit 1).
+class RtlAxiServo {
+ public:
+  RtlAxiServo();
+  ~RtlAxiServo();
+  RtlAxiServo(const RtlAxiServo&) = delete;
+  RtlAxiServo& operator=(const RtlAxiServo&) = delete;
+  void reset(int cycles = 4);
+  void step(const AxiIn& in, const RegsSide& side);
+  AxiServoOutputs outputs() const;
+
+ private:
+  std::unique_ptr<VerilatedContext> ctx_;
+  std::unique_ptr<Vsc_axi_servo> m_;
 };
 
 // The whole board: 100 MHz pin clock (the simulation stand-in of the MMCM

@@ -1,0 +1,272 @@
+// sc_axi_servo: one closed-loop axis behind an AXI4-Lite slave
+// (sc_axi_regs with the closed-loop words + sc_servo_axis). The register
+// file loads the move, the controller settings (CL_CFG .. SETTLE_RATE,
+// one word per cfg_* input) and CTRL.CLOSED_LOOP, and reads back the
+// encoder position, the following error, IN_POS / FAULT_FERR and the
+// controller's u, v_cmd, errors and learned weights. Encoder A/B go to the
+// quadrature decoder of sc_servo_axis (which synchronises them); STATUS.ENC_AB
+// shows them through a two-flop synchroniser of its own. The model is
+// cmodel/axi_regs.h (AxiServo); the testbench drives both in lockstep.
+module sc_axi_servo (
+  input  logic                                clk_i,
+  input  logic                                rst_ni,
+
+  input  logic [sc_pkg::RegAddrW-1:0]         s_axi_awaddr_i,
+  input  logic                                s_axi_awvalid_i,
+  output logic                                s_axi_awready_o,
+  input  logic [31:0]                         s_axi_wdata_i,
+  input  logic [3:0]                          s_axi_wstrb_i,
+  input  logic                                s_axi_wvalid_i,
+  output logic                                s_axi_wready_o,
+  output logic [1:0]                          s_axi_bresp_o,
+  output logic                                s_axi_bvalid_o,
+  input  logic                                s_axi_bready_i,
+  input  logic [sc_pkg::RegAddrW-1:0]         s_axi_araddr_i,
+  input  logic                                s_axi_arvalid_i,
+  output logic                                s_axi_arready_o,
+  output logic [31:0]                         s_axi_rdata_o,
+  output logic [1:0]                          s_axi_rresp_o,
+  output logic                                s_axi_rvalid_o,
+  input  logic                                s_axi_rready_i,
+
+  input  logic                                estop_i,
+  input  logic                                enc_a_i,
+  input  logic                                enc_b_i,
+
+  output logic                                step_o,
+  output logic                                dir_o,
+  output logic                                en_o,
+
+  // status for LEDs and the lockstep checker
+  output logic                                busy_o,
+  output logic                                done_o,
+  output logic                                fault_o,
+  output logic [sc_pkg::PhaseW-1:0]           phase_o,
+  output logic signed [sc_pkg::PosIntW-1:0]   pulse_count_o,
+  output logic signed [sc_pkg::PosIntW-1:0]   ref_pos_o,
+  output logic signed [sc_pkg::EncCntW-1:0]   enc_pos_o,
+  output logic                                in_pos_o,
+  output logic                                fault_ferr_o
+);
+
+  localparam int PulseTimeW = sc_pkg::PulseTimeW;
+  localparam int SegIdxW    = sc_pkg::SegIdxW;
+  localparam int PhaseW     = sc_pkg::PhaseW;
+  localparam int SegClkW    = sc_pkg::SegClkW;
+  localparam int JerkW      = sc_pkg::JerkW;
+  localparam int AccW       = sc_pkg::AccW;
+  localparam int VelW       = sc_pkg::VelW;
+  localparam int SegCntW    = sc_pkg::SegCntW;
+  localparam int FracBits   = sc_pkg::FracBits;
+  localparam int PendW      = sc_pkg::PendW;
+  localparam int CtlW       = sc_pkg::CtlW;
+  localparam int WgtW       = sc_pkg::WgtW;
+  localparam int CoefW      = sc_pkg::CoefW;
+  localparam int NWgtW      = sc_pkg::NWgtW;
+  localparam int MulAW      = sc_pkg::MulAW;
+  localparam int NCfg       = sc_pkg::ClCfgWords;
+  localparam int NStat      = sc_pkg::ClStatWords;
+
+  logic                        enable, closed_loop, seg_we, start, abort;
+  logic [PulseTimeW-1:0]       cfg_high, cfg_low, cfg_setup, cfg_hold;
+  logic [SegIdxW-1:0]          seg_waddr;
+  logic [PhaseW-1:0]           seg_phase;
+  logic [SegClkW-1:0]          seg_clocks;
+  logic signed [JerkW-1:0]     seg_jerk;
+  logic signed [AccW-1:0]      seg_acc0;
+  logic signed [VelW-1:0]      seg_vel0;
+  logic [SegCntW-1:0]          seg_count;
+  logic [FracBits-1:0]         pos_frac0;
+  logic                        core_busy, core_done, fault_table, fault_overrun;
+  logic [NCfg*32-1:0]          cl_cfg;
+  logic [NStat*32-1:0]         cl_stat;
+  logic [1:0]                  enc_s1_q, enc_s2_q;
+
+  logic [sc_pkg::EncIllW-1:0]  enc_illegal;
+  logic                        ctl_active;
+  logic [sc_pkg::CtlStW-1:0]   ctl_state;
+  logic signed [CtlW-1:0]      ctl_u, ctl_v_cmd, ctl_e_p, ctl_e_v;
+  logic signed [WgtW-1:0]      w_p1, w_p2, w_v1, w_v2;
+
+  // sc_servo_axis outputs not used here
+  logic [MulAW-1:0]            unused_ref_frac_hi;
+  logic signed [MulAW-1:0]     unused_ref_vel;
+  logic                        unused_ref_done;
+  logic signed [NWgtW-1:0]     unused_wn_p1, unused_wn_p2, unused_wn_v1, unused_wn_v2;
+  logic signed [sc_pkg::NcoW-1:0] unused_nco_phase;
+  logic signed [PendW-1:0]     unused_pending;
+
+  // status words (order: CL_STATUS, CTL_U, CTL_V_CMD, CTL_E_P, CTL_E_V, CTL_W_*)
+  always_comb begin
+    cl_stat = '0;
+    cl_stat[sc_pkg::ClStInPosBit]                      = in_pos_o;
+    cl_stat[sc_pkg::ClStFerrBit]                       = fault_ferr_o;
+    cl_stat[sc_pkg::ClStActiveBit]                     = ctl_active;
+    cl_stat[sc_pkg::ClStStateLsb +: sc_pkg::CtlStW]    = ctl_state;
+    cl_stat[sc_pkg::ClStIllLsb +: sc_pkg::EncIllW]     = enc_illegal;
+    cl_stat[32*1 +: 32] = 32'(ctl_u);
+    cl_stat[32*2 +: 32] = 32'(ctl_v_cmd);
+    cl_stat[32*3 +: 32] = 32'(ctl_e_p);
+    cl_stat[32*4 +: 32] = 32'(ctl_e_v);
+    cl_stat[32*5 +: 32] = 32'(w_p1);
+    cl_stat[32*6 +: 32] = 32'(w_p2);
+    cl_stat[32*7 +: 32] = 32'(w_v1);
+    cl_stat[32*8 +: 32] = 32'(w_v2);
+  end
+
+  always_ff @(posedge clk_i) begin
+    if (!rst_ni) begin
+      enc_s1_q <= 2'b00;
+      enc_s2_q <= 2'b00;
+    end else begin
+      enc_s1_q <= {enc_b_i, enc_a_i};
+      enc_s2_q <= enc_s1_q;
+    end
+  end
+
+  sc_axi_regs #(.Servo(1'b1)) u_regs (
+    .clk_i,
+    .rst_ni,
+    .s_axi_awaddr_i,
+    .s_axi_awvalid_i,
+    .s_axi_awready_o,
+    .s_axi_wdata_i,
+    .s_axi_wstrb_i,
+    .s_axi_wvalid_i,
+    .s_axi_wready_o,
+    .s_axi_bresp_o,
+    .s_axi_bvalid_o,
+    .s_axi_bready_i,
+    .s_axi_araddr_i,
+    .s_axi_arvalid_i,
+    .s_axi_arready_o,
+    .s_axi_rdata_o,
+    .s_axi_rresp_o,
+    .s_axi_rvalid_o,
+    .s_axi_rready_i,
+    .estop_i,
+    .enc_ab_i        (enc_s2_q),
+    .enc_pos_i       (enc_pos_o),
+    .enable_o        (enable),
+    .cfg_high_o      (cfg_high),
+    .cfg_low_o       (cfg_low),
+    .cfg_setup_o     (cfg_setup),
+    .cfg_hold_o      (cfg_hold),
+    .seg_we_o        (seg_we),
+    .seg_waddr_o     (seg_waddr),
+    .seg_phase_o     (seg_phase),
+    .seg_clocks_o    (seg_clocks),
+    .seg_jerk_o      (seg_jerk),
+    .seg_acc0_o      (seg_acc0),
+    .seg_vel0_o      (seg_vel0),
+    .seg_count_o     (seg_count),
+    .pos_frac0_o     (pos_frac0),
+    .start_o         (start),
+    .abort_o         (abort),
+    .closed_loop_o   (closed_loop),
+    .cl_cfg_o        (cl_cfg),
+    .busy_i          (core_busy),
+    .done_i          (core_done),
+    .phase_i         (phase_o),
+    .en_i            (en_o),
+    .fault_table_i   (fault_table),
+    .fault_overrun_i (fault_overrun),
+    .pulse_count_i   (pulse_count_o),
+    .ref_pos_i       (ref_pos_o),
+    .seg_idx_i       ({SegIdxW{1'b0}}),
+    .in_pos_i        (in_pos_o),
+    .fault_ferr_i    (fault_ferr_o),
+    .cl_stat_i       (cl_stat),
+    .busy_o
+  );
+
+  sc_servo_axis u_servo (
+    .clk_i,
+    .rst_ni,
+    .enable_i          (enable),
+    .closed_loop_i     (closed_loop),
+    .cfg_high_i        (cfg_high),
+    .cfg_low_i         (cfg_low),
+    .cfg_setup_i       (cfg_setup),
+    .cfg_hold_i        (cfg_hold),
+    .seg_we_i          (seg_we),
+    .seg_waddr_i       (seg_waddr),
+    .seg_phase_i       (seg_phase),
+    .seg_clocks_i      (seg_clocks),
+    .seg_jerk_i        (seg_jerk),
+    .seg_acc0_i        (seg_acc0),
+    .seg_vel0_i        (seg_vel0),
+    .seg_count_i       (seg_count),
+    .pos_frac0_i       (pos_frac0),
+    .start_i           (start),
+    .abort_i           (abort),
+    .enc_a_i,
+    .enc_b_i,
+    .cfg_enc_filt_i    (cl_cfg[32*0 + sc_pkg::ClEncFiltLsb +: sc_pkg::EncFiltW]),
+    .cfg_enc_shift_i   (cl_cfg[32*0 + sc_pkg::ClEncShiftLsb +: sc_pkg::EncShiftW]),
+    .cfg_div_i         (cl_cfg[32*1 + sc_pkg::ClDivLsb +: sc_pkg::CtlDivW]),
+    .cfg_ff_en_i       (cl_cfg[32*0 + sc_pkg::ClFfEnBit]),
+    .cfg_learn_shift_i (cl_cfg[32*0 + sc_pkg::ClLearnShLsb +: sc_pkg::LearnShW]),
+    .cfg_learn_dz_p_i  (cl_cfg[32*2 +: CtlW]),
+    .cfg_learn_dz_v_i  (cl_cfg[32*3 +: CtlW]),
+    .cfg_k_p_i         (cl_cfg[32*4 +: CoefW]),
+    .cfg_k_v_i         (cl_cfg[32*5 +: CoefW]),
+    .cfg_kb_i          (cl_cfg[32*6 +: CoefW]),
+    .cfg_eta_p1_i      (cl_cfg[32*7 +: CoefW]),
+    .cfg_eta_p2_i      (cl_cfg[32*8 +: CoefW]),
+    .cfg_eta_v1_i      (cl_cfg[32*9 +: CoefW]),
+    .cfg_eta_v2_i      (cl_cfg[32*10 +: CoefW]),
+    .cfg_w_p1_i        (cl_cfg[32*11 +: WgtW]),
+    .cfg_w_p2_i        (cl_cfg[32*12 +: WgtW]),
+    .cfg_w_v1_i        (cl_cfg[32*13 +: WgtW]),
+    .cfg_w_v2_i        (cl_cfg[32*14 +: WgtW]),
+    .cfg_w_min_i       (cl_cfg[32*15 +: WgtW]),
+    .cfg_w_p1_max_i    (cl_cfg[32*16 +: WgtW]),
+    .cfg_w_p2_max_i    (cl_cfg[32*17 +: WgtW]),
+    .cfg_w_v1_max_i    (cl_cfg[32*18 +: WgtW]),
+    .cfg_w_v2_max_i    (cl_cfg[32*19 +: WgtW]),
+    .cfg_v_lim_i       (cl_cfg[32*20 +: CtlW]),
+    .cfg_u_lim_i       (cl_cfg[32*21 +: CtlW]),
+    .cfg_ferr_lim_i    (cl_cfg[32*22 +: CtlW]),
+    .cfg_inpos_win_i   (cl_cfg[32*23 +: CtlW]),
+    .cfg_inpos_hold_i  (cl_cfg[32*1 + sc_pkg::ClInposHoldLsb +: sc_pkg::HoldW]),
+    .cfg_settle_rate_i (cl_cfg[32*24 +: CtlW]),
+    .step_o,
+    .dir_o,
+    .en_o,
+    .busy_o            (core_busy),
+    .done_o            (core_done),
+    .phase_o,
+    .fault_table_o     (fault_table),
+    .fault_overrun_o   (fault_overrun),
+    .fault_ferr_o,
+    .in_pos_o,
+    .pulse_count_o,
+    .enc_pos_o,
+    .enc_illegal_o     (enc_illegal),
+    .ref_pos_int_o     (ref_pos_o),
+    .ref_frac_hi_o     (unused_ref_frac_hi),
+    .ref_vel_o         (unused_ref_vel),
+    .ref_done_o        (unused_ref_done),
+    .ctl_active_o      (ctl_active),
+    .ctl_state_o       (ctl_state),
+    .u_o               (ctl_u),
+    .v_cmd_o           (ctl_v_cmd),
+    .e_p_o             (ctl_e_p),
+    .e_v_o             (ctl_e_v),
+    .w_p1_o            (w_p1),
+    .w_p2_o            (w_p2),
+    .w_v1_o            (w_v1),
+    .w_v2_o            (w_v2),
+    .wn_p1_o           (unused_wn_p1),
+    .wn_p2_o           (unused_wn_p2),
+    .wn_v1_o           (unused_wn_v1),
+    .wn_v2_o           (unused_wn_v2),
+    .nco_phase_o       (unused_nco_phase),
+    .step_pending_o    (unused_pending)
+  );
+
+  assign done_o  = core_done && !busy_o;
+  assign fault_o = fault_table || fault_overrun || fault_ferr_o;
+
+endmodule
