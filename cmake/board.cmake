@@ -18,11 +18,10 @@ set(SC_AXI_SERVO_RTL_SOURCES
   ${RTL_DIR}/sc_axi_regs.sv
   ${RTL_DIR}/sc_axi_servo.sv)
 set(SC_BOARD_RTL_SOURCES
-  ${SC_AXI_RTL_SOURCES}
+  ${SC_AXI_SERVO_RTL_SOURCES}
   ${RTL_DIR}/sc_sync.sv
   ${RTL_DIR}/sc_rst_sync.sv
   ${RTL_DIR}/sc_clkgen.sv
-  ${RTL_DIR}/sc_enc_count.sv
   ${RTL_DIR}/sc_uart_rx.sv
   ${RTL_DIR}/sc_uart_tx.sv
   ${RTL_DIR}/sc_uart_bridge.sv
@@ -78,7 +77,7 @@ verilate(sc_board_rtl
 # `scurve regs`: a planned move as register writes / UART frames
 add_library(sc_regs_cli STATIC tb/regs_cli.cpp)
 target_include_directories(sc_regs_cli PUBLIC tb)
-target_link_libraries(sc_regs_cli PUBLIC sc_board_model sc_model nlohmann_json::nlohmann_json)
+target_link_libraries(sc_regs_cli PUBLIC sc_board_model sc_model sc_cl_tb nlohmann_json::nlohmann_json)
 target_compile_options(sc_regs_cli PRIVATE ${SC_WARN})
 target_link_libraries(scurve PRIVATE sc_regs_cli)
 
@@ -99,6 +98,9 @@ add_test(NAME regmap_docs_in_sync
           --check ${CMAKE_SOURCE_DIR}/docs/regmap.md)
 add_test(NAME scurve_regs_cli
   COMMAND sh -c "$<TARGET_FILE:scurve> regs --distance 1000 --v-cruise 20000 --a-max 1e6 --j-max 1e9 --uart | grep -q '^A5 01 08 01 00 00 00 '")
+
+add_test(NAME scurve_regs_cli_closed_loop
+  COMMAND sh -c "$<TARGET_FILE:scurve> regs --distance 1000 --v-cruise 20000 --a-max 1e6 --j-max 1e9 --closed-loop | grep -q '^0x04 CTRL         0x00000003'")
 
 add_test(NAME rtl_lint_board
   COMMAND verilator --lint-only -Wall ${RTL_DIR}/lint/verilator_waiver.vlt

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "planner.h"
+#include "servo_axis.h"
 #include "step_gen.h"
 
 namespace sc {
@@ -23,6 +24,10 @@ std::string reg_name(uint32_t addr);
 // CTRL enable, pulse timing, every table row (staging + SEG_COMMIT),
 // SEG_COUNT, POS_FRAC0 and, if `start`, CMD.START.
 std::vector<RegWrite> encode_move(const Plan& plan, const PulseTiming& timing, bool start = true);
+// The controller settings of sc_axi_servo (CL_CFG .. SETTLE_RATE, in
+// address order) for a closed-loop configuration (inverse of
+// AxiServo::decode_config; enable/closed_loop/timing are not in them).
+std::vector<RegWrite> encode_servo_config(const ServoConfig& c);
 // One row's staging writes and its commit.
 std::vector<RegWrite> encode_row(const Segment& s, unsigned row);
 

@@ -236,7 +236,7 @@ module sc_axi_regs #(
   logic [AW-1:0] w_cfg_off, w_st_off, r_cfg_off, r_st_off;
   logic          w_cfg_hit, w_st_hit, r_cfg_hit, r_st_hit;
   logic [AW-3:0] w_cfg_idx, r_cfg_idx, r_st_idx;
-  logic [31:0]   w_cfg_mask;
+  logic [31:0]   cl_rd_word;
 
   assign w_cfg_off = awaddr_q - AW'(sc_pkg::RegClFirst);
   assign w_st_off  = awaddr_q - AW'(sc_pkg::RegClStat);
@@ -249,7 +249,17 @@ module sc_axi_regs #(
   assign w_cfg_idx = w_cfg_off[AW-1:2];
   assign r_cfg_idx = r_cfg_off[AW-1:2];
   assign r_st_idx  = r_st_off[AW-1:2];
-  assign w_cfg_mask = ClMask[32*w_cfg_idx +: 32];
+
+  // AND-OR read muxes over the closed-loop words (constant part-selects)
+  always_comb begin
+    cl_rd_word = '0;
+    for (int i = 0; i < NCfg; i++) begin
+      if (r_cfg_hit && r_cfg_idx == (AW-2)'(i)) cl_rd_word = cl_rd_word | cl_q[32*i +: 32];
+    end
+    for (int i = 0; i < NStat; i++) begin
+      if (r_st_hit && r_st_idx == (AW-2)'(i)) cl_rd_word = cl_rd_word | cl_stat_i[32*i +: 32];
+    end
+  end
 
   assign busy_eff = busy_i || start_q || start_d1_q;
   assign do_write = aw_full_q && w_full_q && !bvalid_q;
@@ -325,10 +335,8 @@ module sc_axi_regs #(
       AVel2:      rd_word = 32'(st_vel0_q[VelW-1:64]);
       ASegCommit: rd_word = '0;
       default: begin
-        if (r_cfg_hit) begin
-          rd_word = cl_q[32*r_cfg_idx +: 32];
-        end else if (r_st_hit) begin
-          rd_word = cl_stat_i[32*r_st_idx +: 32];
+        if (r_cfg_hit || r_st_hit) begin
+          rd_word = cl_rd_word;
         end else begin
           rd_resp = RespDecErr;
         end
@@ -472,7 +480,11 @@ module sc_axi_regs #(
           end
           default: begin
             if (w_cfg_hit) begin
-              cl_d[32*w_cfg_idx +: 32] = wmerge(cl_q[32*w_cfg_idx +: 32], wd, wmask) & w_cfg_mask;
+              for (int i = 0; i < NCfg; i++) begin
+                if (w_cfg_idx == (AW-2)'(i)) begin
+                  cl_d[32*i +: 32] = wmerge(cl_q[32*i +: 32], wd, wmask) & ClMask[32*i +: 32];
+                end
+              end
             end else if (w_st_hit) begin
               bresp_d = RespSlvErr;
               set_bad = 1'b1;

@@ -4,10 +4,13 @@
 //   CLK100MHZ --[sc_clkgen: MMCM]--> 20 MHz system clock
 //   ck_rst button AND MMCM locked --[sc_rst_sync]--> rst_n
 //   USB-UART (115200 8N1) --[sc_uart_rx/tx + sc_uart_bridge]--> AXI4-Lite
-//       --> sc_axi_axis (sc_axi_regs + sc_axis_core) --> STEP/DIR/EN on Pmod JA
-//   encoder A/B on Pmod JB --[sc_sync, sc_enc_count]--> ENC_POS / FOLLOW_ERR
+//       --> sc_axi_servo (sc_axi_regs + sc_servo_axis) --> STEP/DIR/EN on Pmod JA
+//   encoder A/B on Pmod JB --> sc_servo_axis's quadrature decoder (its own
+//       two-flop synchronisers and glitch filter) --> closed loop, ENC_POS /
+//       FOLLOW_ERR; CTRL.CLOSED_LOOP = 0 runs the move open loop
 //   BTN0 --[sc_sync]--> e-stop (abort, EN off, ERR.ESTOP latched)
-//   LD4 heartbeat, LD5 busy, LD6 done, LD7 fault / e-stop / error flag
+//   LD4 heartbeat, LD5 busy, LD6 done (closed loop: in position),
+//   LD7 fault (table, overrun, following error) / e-stop
 // Every input pin is asynchronous and goes through a two-flop synchroniser;
 // every output pin comes from a flop of the system clock domain.
 module sc_board_top #(
@@ -28,6 +31,7 @@ module sc_board_top #(
 
   localparam int AW      = sc_pkg::RegAddrW;
   localparam int PosIntW = sc_pkg::PosIntW;
+  localparam int EncCntW = sc_pkg::EncCntW;
   localparam int PhaseW  = sc_pkg::PhaseW;
   localparam int HeartW  = 24;    // 2^23 clocks = 0.42 s per LED toggle
 
@@ -47,28 +51,12 @@ module sc_board_top #(
 
   // ---- asynchronous inputs --------------------------------------------------
   logic       rx_sync, estop_sync;
-  logic [1:0] enc_ab;
 
   sc_sync #(.Width(1), .ResetVal(1'b1)) u_sync_rx (
     .clk_i (clk), .rst_ni (rst_n), .d_i (uart_rx_i), .q_o (rx_sync)
   );
   sc_sync #(.Width(1), .ResetVal(1'b0)) u_sync_estop (
     .clk_i (clk), .rst_ni (rst_n), .d_i (estop_i), .q_o (estop_sync)
-  );
-  sc_sync #(.Width(2), .ResetVal(1'b0)) u_sync_enc (
-    .clk_i (clk), .rst_ni (rst_n), .d_i ({enc_b_i, enc_a_i}), .q_o (enc_ab)
-  );
-
-  // ---- encoder (placeholder for the closed-loop quadrature decoder) ----------
-  logic signed [PosIntW-1:0] enc_pos;
-  logic [7:0]                unused_enc_illegal;
-
-  sc_enc_count u_enc (
-    .clk_i     (clk),
-    .rst_ni    (rst_n),
-    .ab_i      (enc_ab),
-    .pos_o     (enc_pos),
-    .illegal_o (unused_enc_illegal)
   );
 
   // ---- UART bridge -------------------------------------------------------------
@@ -133,8 +121,10 @@ module sc_board_top #(
   logic                      busy, done, fault;
   logic [PhaseW-1:0]         unused_phase;
   logic signed [PosIntW-1:0] unused_pulse_count, unused_ref_pos;
+  logic signed [EncCntW-1:0] unused_enc_pos;
+  logic                      unused_in_pos, unused_fault_ferr;
 
-  sc_axi_axis u_axis (
+  sc_axi_servo u_axis (
     .clk_i           (clk),
     .rst_ni          (rst_n),
     .s_axi_awaddr_i  (awaddr),
@@ -155,8 +145,8 @@ module sc_board_top #(
     .s_axi_rvalid_o  (rvalid),
     .s_axi_rready_i  (rready),
     .estop_i         (estop_sync),
-    .enc_ab_i        (enc_ab),
-    .enc_pos_i       (enc_pos),
+    .enc_a_i,
+    .enc_b_i,
     .step_o,
     .dir_o,
     .en_o,
@@ -165,7 +155,10 @@ module sc_board_top #(
     .fault_o         (fault),
     .phase_o         (unused_phase),
     .pulse_count_o   (unused_pulse_count),
-    .ref_pos_o       (unused_ref_pos)
+    .ref_pos_o       (unused_ref_pos),
+    .enc_pos_o       (unused_enc_pos),
+    .in_pos_o        (unused_in_pos),
+    .fault_ferr_o    (unused_fault_ferr)
   );
 
   // ---- LEDs ------------------------------------------------------------------------

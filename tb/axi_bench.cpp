@@ -157,7 +157,7 @@ std::pair<uint32_t, uint8_t> AxiMaster::read(uint32_t addr) {
 UartHost::UartHost(RtlBoard& board, int clks_per_bit) : b_(board), bit100_(5 * clks_per_bit) {}
 
 void UartHost::tick() {
-  b_.tick100(line_, true, estop);
+  b_.tick100(line_, true, estop, enc_ab & 1, (enc_ab >> 1) & 1);
   const RtlBoard::Pins p = b_.pins();
   if (p.step && !last_step_) {
     ++rises_;

@@ -134,6 +134,7 @@ class UartHost {
   // Keep the clock running with the line idle.
   void idle(uint64_t clocks100);
   bool estop = false;
+  uint8_t enc_ab = 0;  // encoder pins: bit 0 = A, bit 1 = B
   int64_t net_steps() const { return net_steps_; }
   uint64_t pulses() const { return rises_; }
 

@@ -5,6 +5,7 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 
+#include "closed_loop_run.h"
 #include "reg_encode.h"
 
 namespace sc {
@@ -12,10 +13,24 @@ namespace sc {
 void add_regs_flags(CLI::App* cmd, RegsCliFlags& f) {
   cmd->add_flag("--uart", f.uart, "print the UART bridge frames (hex bytes, CRC-8) instead of address = data");
   cmd->add_flag("--no-start", f.no_start, "leave out the final CMD.START write");
+  cmd->add_flag("--closed-loop", f.closed_loop,
+                "closed-loop axis (board top): write the controller settings (the closed-loop runner's "
+                "defaults for this pulse timing) and CTRL.CLOSED_LOOP before the table");
 }
 
 int run_regs_cli(const RegsCliFlags& f, const Plan& plan, const PulseTiming& timing, bool json) {
-  const std::vector<RegWrite> writes = encode_move(plan, timing, !f.no_start);
+  std::vector<RegWrite> writes = encode_move(plan, timing, !f.no_start);
+  if (f.closed_loop) {
+    ServoConfig cfg;
+    if (const std::string err = to_servo_config(ControllerParams{}, PlantConfig{}, timing, cfg); !err.empty()) {
+      std::cerr << "scurve regs --closed-loop: " << err << "\n";
+      return 2;
+    }
+    std::vector<RegWrite> cl = encode_servo_config(cfg);
+    cl.insert(cl.begin(), RegWrite{uint32_t(RegCtrl), (1u << CtrlEnableBit) | (1u << CtrlClosedBit)});
+    writes.erase(writes.begin());  // CTRL = enable: replaced by the closed-loop CTRL write
+    writes.insert(writes.begin(), cl.begin(), cl.end());
+  }
   if (json) {
     nlohmann::json out = nlohmann::json::array();
     for (const RegWrite& w : writes) {

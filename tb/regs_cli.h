@@ -12,6 +12,7 @@ namespace sc {
 struct RegsCliFlags {
   bool uart = false;      // print UART frames (hex) instead of address/data
   bool no_start = false;  // leave out the final CMD.START
+  bool closed_loop = false;  // sc_axi_servo: controller settings + CTRL.CLOSED_LOOP
 };
 
 void add_regs_flags(CLI::App* cmd, RegsCliFlags& f);

@@ -1,7 +1,7 @@
 // scurve: plan S-curve moves and run them on the RTL and the bit-exact model.
 //   scurve plan --distance L --v-start VS --v-cruise VC --v-end VE --a-max A --j-max J [--json]
 //   scurve sim  (same move flags | --group 1 2 3 4) [--engine ...] [--json]
-//   scurve regs (same move flags) [--uart] [--no-start] [--json]   register writes
+//   scurve regs (same move flags) [--uart] [--no-start] [--closed-loop] [--json]   register writes
 // Exit codes: 0 ok, 1 a check failed, 2 bad input (one line on stderr).
 #include <fmt/format.h>
 #include <unistd.h>

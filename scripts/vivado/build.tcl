@@ -21,14 +21,16 @@ file mkdir $out
 set rtl_files {
   sc_pkg.sv
   sc_step_gen.sv
+  sc_step_nco.sv
+  sc_neuron_pi.sv
+  sc_quad_decoder.sv
   sc_profile_exec.sv
-  sc_axis_core.sv
+  sc_servo_axis.sv
   sc_axi_regs.sv
-  sc_axi_axis.sv
+  sc_axi_servo.sv
   sc_uart_bridge.sv
   sc_uart_tx.sv
   sc_uart_rx.sv
-  sc_enc_count.sv
   sc_sync.sv
   sc_rst_sync.sv
   sc_clkgen.sv
