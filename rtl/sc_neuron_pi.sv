@@ -347,11 +347,16 @@ module sc_neuron_pi (
   assign w_new = (w_sum > (CtlW+1)'(w_hi)) ? w_hi :
                  (w_sum < (CtlW+1)'(cfg_w_min_i)) ? cfg_w_min_i : w_sum[WgtW-1:0];
 
-  logic [WgtW-1:0] aw1_p, aw2_p, aw1_v, aw2_v;
-  assign aw1_p = abs_w(w1_p_q);
-  assign aw2_p = abs_w(w2_p_q);
-  assign aw1_v = abs_w(w1_v_q);
-  assign aw2_v = abs_w(w2_v_q);
+  // divider set-up (StVff: position weights; StDw2: speed weights; StDiv:
+  // |w2| of the current loop) on one pair of |.| and one adder
+  logic signed [WgtW-1:0] ws1, ws2;
+  logic [WgtW-1:0]        aws1, aws2;
+  logic [SumW-1:0]        aws_sum;
+  assign ws1     = (st_q == StVff) ? w1_p_q : w1_v_q;
+  assign ws2     = (st_q == StVff || (st_q == StDiv && !sel_q)) ? w2_p_q : w2_v_q;
+  assign aws1    = abs_w(ws1);
+  assign aws2    = abs_w(ws2);
+  assign aws_sum = SumW'(aws1) + SumW'(aws2);
 
   // ---- FSM and datapath ---------------------------------------------------------------
   always_comb begin
@@ -430,8 +435,8 @@ module sc_neuron_pi (
         dsel_d = 1'b0;
         dbit_d = DbitW'(NWgtFrac);
         dquo_d = '0;
-        drem_d = RemW'(aw1_p);
-        dsum_d = SumW'(aw1_p) + SumW'(aw2_p);
+        drem_d = RemW'(aws1);
+        dsum_d = aws_sum;
         st_d   = StDiv;
       end
       StDiv: begin
@@ -444,7 +449,7 @@ module sc_neuron_pi (
             dsel_d = 1'b1;
             dbit_d = DbitW'(NWgtFrac);
             dquo_d = '0;
-            drem_d = RemW'(abs_w(cur_w2));
+            drem_d = RemW'(aws2);
           end else begin
             if (sel_q) n2_v_d = div_wn; else n2_p_d = div_wn;
             st_d = StErr;
@@ -528,8 +533,8 @@ module sc_neuron_pi (
           dsel_d = 1'b0;
           dbit_d = DbitW'(NWgtFrac);
           dquo_d = '0;
-          drem_d = RemW'(aw1_v);
-          dsum_d = SumW'(aw1_v) + SumW'(aw2_v);
+          drem_d = RemW'(aws1);
+          dsum_d = aws_sum;
           st_d   = StDiv;
         end
       end
