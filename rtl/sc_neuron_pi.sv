@@ -93,7 +93,6 @@ module sc_neuron_pi (
   localparam int CtlW     = sc_pkg::CtlW;
   localparam int CtlFrac  = sc_pkg::CtlFrac;
   localparam int WgtW     = sc_pkg::WgtW;
-  localparam int WgtFrac  = sc_pkg::WgtFrac;
   localparam int NWgtW    = sc_pkg::NWgtW;
   localparam int NWgtFrac = sc_pkg::NWgtFrac;
   localparam int CoefW    = sc_pkg::CoefW;
@@ -107,7 +106,6 @@ module sc_neuron_pi (
   localparam int QuoW     = NWgtFrac + 1;   // |wn| <= 1.0
   localparam int RemW     = WgtW + 2;
   localparam int SumW     = WgtW + 1;
-  localparam int ShW      = 6;
   localparam int DbitW    = 5;
 
   // FSM states (state_o)
@@ -127,8 +125,6 @@ module sc_neuron_pi (
   localparam logic signed [CtlW-1:0]  CtlMax = {1'b0, {(CtlW-1){1'b1}}};
   localparam logic signed [CtlW-1:0]  CtlMin = {1'b1, {(CtlW-1){1'b0}}};
   localparam logic signed [MulBW-1:0] BMax   = {1'b0, {(MulBW-1){1'b1}}};
-  localparam logic signed [CtlW-1:0]  BMaxC  = CtlW'(BMax);
-  localparam logic signed [CtlW-1:0]  BMinC  = -BMaxC;
 
   // ---- state ---------------------------------------------------------------
   logic                      active_q, active_d;
@@ -166,21 +162,19 @@ module sc_neuron_pi (
   logic signed [CtlW-1:0]    e_q, e_d, x2_q, x2_d, t1_q, t1_d, t2_q, t2_d, du_q, du_d, h_q, h_d;
 
   // ---- helpers ---------------------------------------------------------------
+  // Saturation as sign-bit checks (no magnitude comparators): a value is in
+  // the CtlW range iff its bits above CtlW-2 are all equal.
   function automatic logic signed [CtlW-1:0] sat_c33(input logic signed [CtlW:0] v);
-    if (v > $signed({CtlMax[CtlW-1], CtlMax})) begin
-      sat_c33 = CtlMax;
-    end else if (v < $signed({CtlMin[CtlW-1], CtlMin})) begin
-      sat_c33 = CtlMin;
+    if (v[CtlW] != v[CtlW-1]) begin
+      sat_c33 = v[CtlW] ? CtlMin : CtlMax;
     end else begin
       sat_c33 = v[CtlW-1:0];
     end
   endfunction
 
   function automatic logic signed [CtlW-1:0] sat_prod(input logic signed [ProdW-1:0] v);
-    if (v > $signed(ProdW'(CtlMax))) begin
-      sat_prod = CtlMax;
-    end else if (v < $signed(ProdW'(CtlMin))) begin
-      sat_prod = CtlMin;
+    if (v[ProdW-1:CtlW-1] != '0 && v[ProdW-1:CtlW-1] != '1) begin
+      sat_prod = v[ProdW-1] ? CtlMin : CtlMax;
     end else begin
       sat_prod = v[CtlW-1:0];
     end
@@ -215,8 +209,7 @@ module sc_neuron_pi (
   // ---- the one multiplier ---------------------------------------------------------
   logic signed [MulAW-1:0] mul_a;
   logic signed [MulBW-1:0] mul_b;
-  logic [ShW-1:0]          mul_sh;
-  logic signed [ProdW-1:0] mul_p, mul_rnd, mul_r;
+  logic signed [ProdW-1:0] mul_p, mul_r;
   logic signed [CtlW-1:0]  mul_y;     // rounded, shifted, saturated
   logic signed [MulBW-1:0] e_b;       // e saturated to the B port
 
@@ -224,65 +217,86 @@ module sc_neuron_pi (
   logic                    learn;
   assign abs_eq = e_q[CtlW-1] ? CtlW'(-e_q) : CtlW'(e_q);
   assign learn  = abs_eq > (sel_q ? cfg_learn_dz_v_i : cfg_learn_dz_p_i);
-  assign e_b    = !learn ? '0 : (e_q > BMaxC) ? BMax : (e_q < BMinC) ? -BMax : e_q[MulBW-1:0];
+  // |e| <= BMax iff bits CtlW-1..MulBW-1 are all equal and e != -2^(MulBW-1)
+  logic                    e_in_b;
+  assign e_in_b = ((e_q[CtlW-1:MulBW-1] == '0) || (e_q[CtlW-1:MulBW-1] == '1))
+                  && (e_q[MulBW-2:0] != '0 || !e_q[CtlW-1]);
+  assign e_b    = !learn ? '0 : !e_in_b ? (e_q[CtlW-1] ? -BMax : BMax) : e_q[MulBW-1:0];
 
+  // Every product is rounded half up and shifted by s = 16 (Vff, T1, T2, H1,
+  // H2), 20 (Du, Bc) or 20 + learn_shift (Dw1, Dw2). Vff's shift
+  // (VffFrac - CtlFrac - shift = 15 - shift) is brought to 16 by scaling the
+  // B operand by 2^(shift+1) (exact: floor((p 2^k + 2^15) / 2^16) =
+  // floor((p + 2^(15-k)) / 2^(16-k))). (p + 2^(s-1)) >>> s is computed as
+  // ((p >>> (s-1)) + 1) >>> 1 = (v >>> 1) + v[0], with v = p >>> (s-1) = (p >>> (b-1)) >>> ls.
+  logic                    mul_s20;   // base shift 20 (else 16)
+  logic                    mul_ls;    // plus learn_shift
   always_comb begin
-    mul_a  = '0;
-    mul_b  = '0;
-    mul_sh = ShW'(CtlFrac);
+    mul_a   = '0;
+    mul_b   = '0;
+    mul_s20 = 1'b0;
+    mul_ls  = 1'b0;
     unique case (st_q)
       StVff: begin
         mul_a  = vq_q;
-        mul_b  = MulBW'({1'b0, cfg_div_i});
-        mul_sh = ShW'(VffFrac - CtlFrac) - ShW'(cfg_shift_i);
+        mul_b  = MulBW'({1'b0, cfg_div_i}) << (4'(ShLo - (VffFrac - CtlFrac)) + 4'(cfg_shift_i));
       end
       StT1: begin
         mul_a  = e_q;
         mul_b  = MulBW'(cur_n1);
-        mul_sh = ShW'(NWgtFrac);
       end
       StT2: begin
         mul_a  = x2_q;
         mul_b  = MulBW'(cur_n2);
-        mul_sh = ShW'(NWgtFrac);
       end
       StDu: begin
-        mul_a  = sat_c33((CtlW+1)'(t1_q) + (CtlW+1)'(t2_q));
-        mul_b  = MulBW'({1'b0, cur_k});
-        mul_sh = ShW'(CoefFrac);
+        mul_a   = sat_c33((CtlW+1)'(t1_q) + (CtlW+1)'(t2_q));
+        mul_b   = MulBW'({1'b0, cur_k});
+        mul_s20 = 1'b1;
       end
       StBc: begin
-        mul_a  = cur_es;
-        mul_b  = MulBW'({1'b0, cfg_kb_i});
-        mul_sh = ShW'(CoefFrac);
+        mul_a   = cur_es;
+        mul_b   = MulBW'({1'b0, cfg_kb_i});
+        mul_s20 = 1'b1;
       end
       StH1: begin
         mul_a  = e_q;
         mul_b  = e_b;
-        mul_sh = ShW'(CtlFrac);
       end
       StDw1: begin
-        mul_a  = h_q;
-        mul_b  = MulBW'({1'b0, cur_eta1});
-        mul_sh = ShW'(CoefFrac + CtlFrac - WgtFrac) + ShW'(cfg_learn_shift_i);
+        mul_a   = h_q;
+        mul_b   = MulBW'({1'b0, cur_eta1});
+        mul_s20 = 1'b1;
+        mul_ls  = 1'b1;
       end
       StH2: begin
         mul_a  = x2_q;
         mul_b  = e_b;
-        mul_sh = ShW'(CtlFrac);
       end
       StDw2: begin
-        mul_a  = h_q;
-        mul_b  = MulBW'({1'b0, cur_eta2});
-        mul_sh = ShW'(CoefFrac + CtlFrac - WgtFrac) + ShW'(cfg_learn_shift_i);
+        mul_a   = h_q;
+        mul_b   = MulBW'({1'b0, cur_eta2});
+        mul_s20 = 1'b1;
+        mul_ls  = 1'b1;
       end
       default: ;
     endcase
   end
 
+  // ShLo = NWgtFrac = CtlFrac, ShHi = CoefFrac = CoefFrac + CtlFrac - WgtFrac
+  localparam int ShLo = NWgtFrac;
+  localparam int ShHi = CoefFrac;
+  localparam int TW   = ProdW - (ShLo - 1);   // p >>> (ShLo - 1)
+  logic signed [TW-1:0]    mul_t, mul_v;
+  logic signed [TW-2:0]    mul_h;
   assign mul_p   = ProdW'(mul_a) * ProdW'(mul_b);
-  assign mul_rnd = $signed(ProdW'(1) << (mul_sh - ShW'(1)));
-  assign mul_r   = (mul_p + mul_rnd) >>> mul_sh;
+  assign mul_t   = mul_s20 ? TW'(mul_p >>> (ShHi - 1)) : TW'(mul_p >>> (ShLo - 1));
+  assign mul_v   = mul_ls ? (mul_t >>> cfg_learn_shift_i) : mul_t;
+  // floor((v + 1) / 2) = (v >>> 1) + v[0]
+  assign mul_h   = mul_v[TW-1:1];
+  logic signed [TW-2:0]    mul_rn;    // cannot overflow: |p| < 2^(ProdW-2)
+  assign mul_rn  = mul_h + (TW-1)'({1'b0, mul_v[0]});
+  assign mul_r   = ProdW'(mul_rn);
   assign mul_y   = sat_prod(mul_r);
 
   // ---- divider step -------------------------------------------------------------------
@@ -317,11 +331,18 @@ module sc_neuron_pi (
   localparam int CorrW = sc_pkg::CorrW;
   logic signed [CtlW-1:0]  corr_full;
   logic signed [CorrW-1:0] corr_steps, corr_step_dir;
-  logic [5:0]              step_sh;
-  assign step_sh    = 6'(CtlFrac) + 6'(cfg_shift_i);
-  assign corr_full  = (e_now + (CtlW'(1) <<< (step_sh - 6'd1))) >>> step_sh;
-  assign corr_steps = (corr_full > CtlW'(2**(CorrW-1) - 1)) ? CorrW'(2**(CorrW-1) - 1) :
-                      (corr_full < -CtlW'(2**(CorrW-1) - 1)) ? -CorrW'(2**(CorrW-1) - 1) :
+  // (e + 2^(sh-1)) >>> sh, sh = CtlFrac + shift: v = (e >>> (CtlFrac-1)) >>> shift,
+  // then floor((v + 1) / 2) = (v >>> 1) + v[0]
+  localparam int CvW = CtlW - CtlFrac + 1;
+  logic signed [CvW-1:0]   corr_v;
+  logic signed [CvW-2:0]   corr_h;
+  assign corr_v     = CvW'(e_now >>> (CtlFrac - 1)) >>> cfg_shift_i;
+  assign corr_h     = corr_v[CvW-1:1];
+  assign corr_full  = CtlW'(corr_h) + CtlW'({1'b0, corr_v[0]});
+  logic                    corr_in;   // |corr_full| <= 2^(CorrW-1) - 1
+  assign corr_in    = ((corr_full[CtlW-1:CorrW-1] == '0) || (corr_full[CtlW-1:CorrW-1] == '1))
+                      && (corr_full[CorrW-2:0] != '0 || !corr_full[CtlW-1]);
+  assign corr_steps = !corr_in ? (corr_full[CtlW-1] ? -CorrW'(2**(CorrW-1) - 1) : CorrW'(2**(CorrW-1) - 1)) :
                       corr_full[CorrW-1:0];
   assign corr_step_dir = corr_q[CorrW-1] ? CorrW'(1) : -CorrW'(1);
 
