@@ -46,8 +46,7 @@ void NeuronPi::step(const NeuronConfig& cfg, const Inputs& in) {
   const unsigned shift = cfg.shift & ((1u << EncShiftW) - 1);
   const unsigned ls = cfg.learn_shift & ((1u << LearnShW) - 1);
   const unsigned hebb_sh = unsigned(CoefFrac + CtlFrac - WgtFrac) + ls;
-  const uint32_t abs_eq = q.e < 0 ? uint32_t(-int64_t(q.e)) : uint32_t(q.e);
-  const int32_t e_b = abs_eq <= (q.sel ? cfg.learn_dz_v : cfg.learn_dz_p) ? 0 : q.e > kBMax ? kBMax : q.e < -kBMax ? -kBMax : q.e;
+  const int32_t e_b = !q.learn ? 0 : q.e > kBMax ? kBMax : q.e < -kBMax ? -kBMax : q.e;
 
   if (q.active) {
     if (q.cnt == 0) {
@@ -87,9 +86,10 @@ void NeuronPi::step(const NeuronConfig& cfg, const Inputs& in) {
       d.st = StDiv;
       break;
     case StDiv: {
+      // restoring division, quotient bits shifted in at the LSB (MSB first)
       const bool ge = q.drem >= q.dsum;
       const uint32_t sub = ge ? q.drem - q.dsum : q.drem;
-      const uint32_t quo = (q.dquo | (uint32_t(ge) << q.dbit)) & ((1u << kQuoW) - 1);
+      const uint32_t quo = ((q.dquo << 1) | uint32_t(ge)) & ((1u << kQuoW) - 1);
       d.drem = (sub << 1) & ((1u << kRemW) - 1);
       d.dquo = quo;
       d.dbit = uint8_t((q.dbit - 1) & kDbitMask);
@@ -117,6 +117,7 @@ void NeuronPi::step(const NeuronConfig& cfg, const Inputs& in) {
       const int32_t e = hush ? 0 : e_raw;
       if (!q.sel) d.hush = hush;
       d.e = e;
+      d.learn = !hush && abs_e > (q.sel ? cfg.learn_dz_v : cfg.learn_dz_p);
       d.x2 = wrap32(int64_t(e) - L.ep);
       d.lp[s].ep = q.sel ? e : e_raw;  // e_p_o: the raw position error
       d.st = StT1;

@@ -73,6 +73,7 @@ class NeuronPi {
     int32_t corr = 0;  // CorrW, corrective steps still to issue
     int32_t out_p = 0, u = 0;
     int32_t e = 0, x2 = 0, t1 = 0, t2 = 0, du = 0, h = 0;
+    bool learn = false;  // |e| > learning dead zone, set in StErr
     bool operator==(const State&) const = default;
   };
 

@@ -213,10 +213,11 @@ module sc_neuron_pi (
   logic signed [CtlW-1:0]  mul_y;     // rounded, shifted, saturated
   logic signed [MulBW-1:0] e_b;       // e saturated to the B port
 
-  logic [CtlW-1:0]         abs_eq;
+  // learn = |e| > dead zone, registered in StErr (from |e_now|, which is
+  // |e_q| from then on, or e_q = 0 while settling)
+  logic                    learn_q, learn_d;
   logic                    learn;
-  assign abs_eq = e_q[CtlW-1] ? CtlW'(-e_q) : CtlW'(e_q);
-  assign learn  = abs_eq > (sel_q ? cfg_learn_dz_v_i : cfg_learn_dz_p_i);
+  assign learn  = learn_q;
   // |e| <= BMax iff bits CtlW-1..MulBW-1 are all equal and e != -2^(MulBW-1)
   logic                    e_in_b;
   assign e_in_b = ((e_q[CtlW-1:MulBW-1] == '0) || (e_q[CtlW-1:MulBW-1] == '1))
@@ -308,9 +309,13 @@ module sc_neuron_pi (
   logic             div_neg;
   logic signed [NWgtW-1:0] div_pos;
 
-  assign div_ge      = drem_q >= RemW'(dsum_q);
-  assign div_rem_sub = div_ge ? drem_q - RemW'(dsum_q) : drem_q;
-  assign div_quo     = dquo_q | (QuoW'(div_ge) << dbit_q);
+  // restoring division: the borrow of one subtraction decides the quotient
+  // bit; bits enter at the LSB, MSB first (NWgtFrac+1 steps fill dquo)
+  logic [RemW:0]    div_diff;
+  assign div_diff    = {1'b0, drem_q} - {1'b0, RemW'(dsum_q)};
+  assign div_ge      = !div_diff[RemW];
+  assign div_rem_sub = div_ge ? div_diff[RemW-1:0] : drem_q;
+  assign div_quo     = {dquo_q[QuoW-2:0], div_ge};
   assign div_neg     = dsel_q ? cur_w2[WgtW-1] : cur_w1[WgtW-1];
   assign div_res     = (dsum_q == '0) ? '0 : div_quo;
   assign div_pos     = NWgtW'(div_res);
@@ -347,15 +352,24 @@ module sc_neuron_pi (
   assign corr_step_dir = corr_q[CorrW-1] ? CorrW'(1) : -CorrW'(1);
 
   // ---- accumulate and saturate (StBc) -------------------------------------------------
+  // out = clamp(tot, +-lim), es = tot - out: with o_hi = tot - lim and
+  // o_lo = tot + lim (CtlW+2 bits, exact), tot > lim iff o_hi > 0 and then
+  // es = o_hi (in range: 0 < o_hi < 2^(CtlW-1)), tot < -lim iff o_lo < 0 and
+  // es = o_lo; a lim >= 2^(CtlW-1) never limits. No comparator, no saturation.
+  localparam int LimW = CtlW + 2;
   logic signed [CtlW-1:0] acc_du, acc_new, tot, out_sat, es_new;
-  logic signed [CtlW:0]   lim_s;
+  logic signed [LimW-1:0] lim_s, o_hi, o_lo;
+  logic                   lim_hi, lim_lo;
   assign acc_du  = sat_c33((CtlW+1)'(cur_acc) + (CtlW+1)'(du_q));
   assign acc_new = hush_q ? '0 : sat_c33((CtlW+1)'(acc_du) - (CtlW+1)'(mul_y));
   assign tot     = sat_c33((CtlW+1)'(acc_new) + (CtlW+1)'(cur_bias));
-  assign lim_s   = $signed({1'b0, cur_lim});
-  assign out_sat = ((CtlW+1)'(tot) > lim_s) ? CtlW'(lim_s) :
-                   ((CtlW+1)'(tot) < -lim_s) ? CtlW'(-lim_s) : tot;
-  assign es_new  = sat_c33((CtlW+1)'(tot) - (CtlW+1)'(out_sat));
+  assign lim_s   = $signed({2'b00, cur_lim});
+  assign o_hi    = LimW'(tot) - lim_s;
+  assign o_lo    = LimW'(tot) + lim_s;
+  assign lim_hi  = !o_hi[LimW-1] && (o_hi != '0);
+  assign lim_lo  = o_lo[LimW-1];
+  assign out_sat = lim_hi ? CtlW'(cur_lim) : lim_lo ? CtlW'(-lim_s) : tot;
+  assign es_new  = lim_hi ? o_hi[CtlW-1:0] : lim_lo ? o_lo[CtlW-1:0] : '0;
 
   // ---- weight update (StDw1/StDw2) ----------------------------------------------------
   logic signed [CtlW:0]   w_sum;
@@ -426,6 +440,7 @@ module sc_neuron_pi (
     t2_d     = t2_q;
     du_d     = du_q;
     h_d      = h_q;
+    learn_d  = learn_q;
 
     if (active_q) begin
       if (cnt_q == '0) begin
@@ -479,6 +494,7 @@ module sc_neuron_pi (
       end
       StErr: begin
         e_d  = e_db;
+        learn_d = !hush_now && (abs_e > (sel_q ? cfg_learn_dz_v_i : cfg_learn_dz_p_i));
         x2_d = e_db - cur_ep;
         // e_p_o keeps the raw position error (also while settling)
         if (sel_q) ep_v_d = e_db; else ep_p_d = e_now;
@@ -646,6 +662,7 @@ module sc_neuron_pi (
       t2_q     <= '0;
       du_q     <= '0;
       h_q      <= '0;
+      learn_q  <= 1'b0;
     end else begin
       active_q <= active_d;
       in_pos_q <= in_pos_d;
@@ -691,6 +708,7 @@ module sc_neuron_pi (
       t2_q     <= t2_d;
       du_q     <= du_d;
       h_q      <= h_d;
+      learn_q  <= learn_d;
     end
   end
 
