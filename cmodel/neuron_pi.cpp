@@ -164,8 +164,7 @@ void NeuronPi::step(const NeuronConfig& cfg, const Inputs& in) {
       break;
     case StBc: {
       const int32_t bc = mul_round_sat(L.es, int32_t(cfg.kb), CoefFrac);
-      const int32_t acc_du = sat32(int64_t(L.acc) + q.du);
-      const int32_t acc_new = q.hush ? 0 : sat32(int64_t(acc_du) - bc);
+      const int32_t acc_new = q.hush ? 0 : sat32(int64_t(L.acc) + q.du - bc);  // one saturation
       const int32_t tot = sat32(int64_t(acc_new) + bias);
       const int64_t lim = int64_t(cur_lim);
       const int32_t out = tot > lim ? wrap32(lim) : tot < -lim ? wrap32(-lim) : tot;

@@ -9,7 +9,7 @@
 //   wn_i   = w_i / (|w_1| + |w_2|)                     (divider, Q1.16)
 //   e      = r - y ;  x1 = e ;  x2 = e - e_prev
 //   du     = K * (wn_1 x1 + wn_2 x2)                   (incremental PI)
-//   acc    = acc + du - Kb * es_prev                   (back-calculation)
+//   acc    = sat(acc + du - Kb * es_prev)              (back-calculation)
 //   tot    = acc + b ;  out = clamp(tot, +-lim) ;  es = tot - out
 //   w_i    = clamp(w_i + eta_i * e * x_i / 2^ls, wmin, wmax)   (Hebb;
 //            no update while |e| <= learn_dz: dead-zone modification)
@@ -86,7 +86,10 @@ module sc_neuron_pi (
   output logic signed [sc_pkg::NWgtW-1:0]     wn_p2_o,
   output logic signed [sc_pkg::NWgtW-1:0]     wn_v1_o,
   output logic signed [sc_pkg::NWgtW-1:0]     wn_v2_o,
-  output logic [sc_pkg::CtlStW-1:0]           state_o
+  output logic [sc_pkg::CtlStW-1:0]           state_o,
+  // cfg_div_i << cfg_shift_i (clocks per period x counts per pulse), for the
+  // step NCO's modulus: one shifter for both
+  output logic [sc_pkg::CtlDivW+(1<<sc_pkg::EncShiftW)-2:0] div_sh_o
 );
 
   localparam int CtlDivW  = sc_pkg::CtlDivW;
@@ -102,6 +105,7 @@ module sc_neuron_pi (
   localparam int VffFrac  = sc_pkg::VffFrac;
   localparam int HoldW    = sc_pkg::HoldW;
   localparam int CtlStW   = sc_pkg::CtlStW;
+  localparam int LearnShW = sc_pkg::LearnShW;
   localparam int ProdW    = MulAW + MulBW;
   localparam int QuoW     = NWgtFrac + 1;   // |wn| <= 1.0
   localparam int RemW     = WgtW + 2;
@@ -206,6 +210,12 @@ module sc_neuron_pi (
   assign cur_eta1 = sel_q ? cfg_eta_v1_i : cfg_eta_p1_i;
   assign cur_eta2 = sel_q ? cfg_eta_v2_i : cfg_eta_p2_i;
 
+  // ---- cfg_div_i << cfg_shift_i ---------------------------------------------------
+  localparam int DivShW = CtlDivW + (1 << sc_pkg::EncShiftW) - 1;
+  logic [DivShW-1:0] div_sh;
+  assign div_sh   = DivShW'(cfg_div_i) << cfg_shift_i;
+  assign div_sh_o = div_sh;
+
   // ---- the one multiplier ---------------------------------------------------------
   logic signed [MulAW-1:0] mul_a;
   logic signed [MulBW-1:0] mul_b;
@@ -240,7 +250,7 @@ module sc_neuron_pi (
     unique case (st_q)
       StVff: begin
         mul_a  = vq_q;
-        mul_b  = MulBW'({1'b0, cfg_div_i}) << (4'(ShLo - (VffFrac - CtlFrac)) + 4'(cfg_shift_i));
+        mul_b  = MulBW'(div_sh) << (ShLo - (VffFrac - CtlFrac));
       end
       StT1: begin
         mul_a  = e_q;
@@ -292,7 +302,26 @@ module sc_neuron_pi (
   logic signed [TW-2:0]    mul_h;
   assign mul_p   = ProdW'(mul_a) * ProdW'(mul_b);
   assign mul_t   = mul_s20 ? TW'(mul_p >>> (ShHi - 1)) : TW'(mul_p >>> (ShLo - 1));
-  assign mul_v   = mul_ls ? (mul_t >>> cfg_learn_shift_i) : mul_t;
+  // learn shift: log shifter in explicit 4:1 stages (one LUT6 per bit and
+  // stage; yosys's generic >>> maps to twice as many LUTs here)
+  logic [LearnShW-1:0]  mul_sa;
+  logic signed [TW-1:0] mul_s1, mul_s2;
+  assign mul_sa = mul_ls ? cfg_learn_shift_i : LearnShW'(0);
+  always_comb begin
+    unique case (mul_sa[1:0])
+      2'd0: mul_s1 = mul_t;
+      2'd1: mul_s1 = mul_t >>> 1;
+      2'd2: mul_s1 = mul_t >>> 2;
+      default: mul_s1 = mul_t >>> 3;
+    endcase
+    unique case (mul_sa[3:2])
+      2'd0: mul_s2 = mul_s1;
+      2'd1: mul_s2 = mul_s1 >>> 4;
+      2'd2: mul_s2 = mul_s1 >>> 8;
+      default: mul_s2 = mul_s1 >>> 12;
+    endcase
+    mul_v = mul_sa[4] ? mul_s2 >>> 16 : mul_s2;
+  end
   // floor((v + 1) / 2) = (v >>> 1) + v[0]
   assign mul_h   = mul_v[TW-1:1];
   logic signed [TW-2:0]    mul_rn;    // cannot overflow: |p| < 2^(ProdW-2)
@@ -357,11 +386,14 @@ module sc_neuron_pi (
   // es = o_hi (in range: 0 < o_hi < 2^(CtlW-1)), tot < -lim iff o_lo < 0 and
   // es = o_lo; a lim >= 2^(CtlW-1) never limits. No comparator, no saturation.
   localparam int LimW = CtlW + 2;
-  logic signed [CtlW-1:0] acc_du, acc_new, tot, out_sat, es_new;
+  logic signed [CtlW-1:0] acc_new, tot, out_sat, es_new;
+  logic signed [CtlW+1:0] acc3;      // acc + du - bc, exact; saturated once
   logic signed [LimW-1:0] lim_s, o_hi, o_lo;
   logic                   lim_hi, lim_lo;
-  assign acc_du  = sat_c33((CtlW+1)'(cur_acc) + (CtlW+1)'(du_q));
-  assign acc_new = hush_q ? '0 : sat_c33((CtlW+1)'(acc_du) - (CtlW+1)'(mul_y));
+  assign acc3    = (CtlW+2)'(cur_acc) + (CtlW+2)'(du_q) - (CtlW+2)'(mul_y);
+  assign acc_new = hush_q ? '0 :
+                   (acc3[CtlW+1:CtlW-1] != '0 && acc3[CtlW+1:CtlW-1] != '1) ?
+                   (acc3[CtlW+1] ? CtlMin : CtlMax) : acc3[CtlW-1:0];
   assign tot     = sat_c33((CtlW+1)'(acc_new) + (CtlW+1)'(cur_bias));
   assign lim_s   = $signed({2'b00, cur_lim});
   assign o_hi    = LimW'(tot) - lim_s;

@@ -205,6 +205,8 @@ module sc_servo_axis (
     .b_o        (unused_enc_b)
   );
 
+  logic [sc_pkg::CtlDivW+(1<<sc_pkg::EncShiftW)-2:0] div_sh;  // div << shift
+
   sc_neuron_pi u_ctl (
     .clk_i,
     .rst_ni,
@@ -260,14 +262,14 @@ module sc_servo_axis (
     .wn_p2_o,
     .wn_v1_o,
     .wn_v2_o,
-    .state_o           (ctl_state_o)
+    .state_o           (ctl_state_o),
+    .div_sh_o          (div_sh)
   );
 
   sc_step_nco u_nco (
     .clk_i,
     .rst_ni,
-    .cfg_div_i   (div_q),
-    .cfg_shift_i (enc_shift_q),
+    .div_sh_i    (div_sh),
     .load_i      (start_ok),
     .run_i       (ctl_active),
     .u_i         (ctl_u),

@@ -12,8 +12,8 @@ module sc_step_nco (
   input  logic                                clk_i,
   input  logic                                rst_ni,
 
-  input  logic [sc_pkg::CtlDivW-1:0]          cfg_div_i,
-  input  logic [sc_pkg::EncShiftW-1:0]        cfg_shift_i,
+  // cfg_div << cfg_shift (from sc_neuron_pi, which shifts it for V* too)
+  input  logic [sc_pkg::CtlDivW+(1<<sc_pkg::EncShiftW)-2:0] div_sh_i,
 
   input  logic                                load_i,   // phase := M/2
   input  logic                                run_i,    // integrate u
@@ -28,11 +28,13 @@ module sc_step_nco (
   localparam int CtlFrac = sc_pkg::CtlFrac;
 
   logic signed [NcoW-1:0] acc_q, acc_d;
-  logic signed [NcoW-1:0] modulus, sum;
+  logic signed [NcoW-1:0] modulus, sum, sum_hi;
   logic                   req_q, req_d, fwd_q, fwd_d;
 
-  assign modulus = NcoW'({cfg_div_i, CtlFrac'(0)}) <<< cfg_shift_i;
+  assign modulus = NcoW'({div_sh_i, CtlFrac'(0)});
   assign sum     = acc_q + NcoW'(u_i);
+  // sum >= M iff sum - M >= 0 (no overflow: |acc|, |u|, M < 2^(NcoW-2))
+  assign sum_hi  = sum - modulus;
 
   always_comb begin
     acc_d = acc_q;
@@ -41,11 +43,11 @@ module sc_step_nco (
     if (load_i) begin
       acc_d = modulus >>> 1;
     end else if (run_i) begin
-      if (sum >= modulus) begin
-        acc_d = sum - modulus;
+      if (!sum_hi[NcoW-1]) begin
+        acc_d = sum_hi;
         req_d = 1'b1;
         fwd_d = 1'b1;
-      end else if (sum < NcoW'(0)) begin
+      end else if (sum[NcoW-1]) begin
         acc_d = sum + modulus;
         req_d = 1'b1;
         fwd_d = 1'b0;
