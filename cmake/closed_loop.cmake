@@ -53,6 +53,27 @@ target_link_libraries(cl_tests PRIVATE sc_cl_tb GTest::gtest_main)
 target_compile_options(cl_tests PRIVATE ${SC_WARN})
 gtest_discover_tests(cl_tests DISCOVERY_TIMEOUT 60 TEST_PREFIX "cl." PROPERTIES LABELS "closed_loop")
 
+# sc_neuron_pi alone vs sc::NeuronPi, every clock: random configurations and
+# inputs reaching the controller's corner paths (tests/test_neuron_pi_rtl.cpp).
+set(SC_NPI_RTL_SOURCES
+  ${RTL_DIR}/sc_pkg.sv
+  ${RTL_DIR}/sc_neuron_pi.sv)
+add_library(sc_rtl_neuron_pi STATIC)
+target_link_libraries(sc_rtl_neuron_pi PUBLIC sc_cl_model)
+verilate(sc_rtl_neuron_pi
+  SOURCES ${SC_NPI_RTL_SOURCES}
+  TOP_MODULE sc_neuron_pi
+  PREFIX Vsc_neuron_pi
+  VERILATOR_ARGS ${SC_VERILATOR_ARGS}
+  OPT_FAST -O3 -fno-tree-slp-vectorize
+  OPT_SLOW -O1
+  OPT_GLOBAL -O3)
+
+add_executable(cl_neuron_pi_rtl_tests tests/test_neuron_pi_rtl.cpp)
+target_link_libraries(cl_neuron_pi_rtl_tests PRIVATE sc_rtl_neuron_pi sc_cl_model fmt::fmt GTest::gtest_main)
+target_compile_options(cl_neuron_pi_rtl_tests PRIVATE ${SC_WARN})
+gtest_discover_tests(cl_neuron_pi_rtl_tests DISCOVERY_TIMEOUT 60 TEST_PREFIX "cl." PROPERTIES LABELS "closed_loop" TIMEOUT 300)
+
 # Full-length paper groups in closed loop, RTL and model in lockstep.
 # Group 2 (the shortest) stays in the default suite; all four carry "long".
 add_test(NAME cl.paper_group2_lockstep
