@@ -1,22 +1,93 @@
 #include "neuron_pi.h"
 
-#include <algorithm>
-
 namespace sc {
 
 namespace {
 
+constexpr int kAluW = CtlW + 2;
 constexpr int32_t kBMax = (int32_t(1) << (MulBW - 1)) - 1;
 constexpr unsigned kQuoW = NWgtFrac + 1;
 constexpr unsigned kRemW = WgtW + 2;
+constexpr unsigned kSumW = WgtW + 1;
 constexpr unsigned kDbitMask = 31;
 
 inline int32_t wrap32(int64_t v) { return int32_t(uint32_t(uint64_t(v))); }
 inline int32_t sext(int64_t v, int bits) { return int32_t(wrap_signed64(v, bits)); }
-inline uint32_t abs_w(int32_t w) { return uint32_t(w < 0 ? -int64_t(w) : int64_t(w)) & ((1u << WgtW) - 1); }
 inline uint32_t u32(int32_t v) { return uint32_t(v); }
 
+// Operand sources, configuration words and write data (the RTL's A*/B*/Cf*/W*).
+enum ASrc { ARf, AT, ARef, AZero };
+enum BSrc { BRf, BCfg, BPfb, BVmeas, BZero };
+enum Cfg {
+  CfDzP, CfDzV, CfFerr, CfWin, CfVLim, CfULim, CfWMin, CfWP1Max, CfWV1Max, CfWP2Max, CfWV2Max,
+  CfWP1, CfWV1, CfWP2, CfWV2, CfKP, CfKV, CfKb, CfEtaP1, CfEtaV1, CfEtaP2, CfEtaV2
+};
+enum WSrc { WWrap, WSat, WMul, WDiv, WZero };
+enum MbSrc { MbRf, MbCfg, MbEb, MbDivSh };
+
+// Unsigned words zero-, weights sign-extended (as cfg_val).
+int64_t cfg_value(const NeuronConfig& c, int sel) {
+  switch (sel) {
+    case CfDzP: return c.learn_dz_p;
+    case CfDzV: return c.learn_dz_v;
+    case CfFerr: return c.ferr_lim;
+    case CfWin: return c.inpos_win;
+    case CfVLim: return c.v_lim;
+    case CfULim: return c.u_lim;
+    case CfWMin: return sext(c.w_min, WgtW);
+    case CfWP1Max: return sext(c.w_p1_max, WgtW);
+    case CfWV1Max: return sext(c.w_v1_max, WgtW);
+    case CfWP2Max: return sext(c.w_p2_max, WgtW);
+    case CfWV2Max: return sext(c.w_v2_max, WgtW);
+    case CfWP1: return sext(c.w_p1, WgtW);
+    case CfWV1: return sext(c.w_v1, WgtW);
+    case CfWP2: return sext(c.w_p2, WgtW);
+    case CfWV2: return sext(c.w_v2, WgtW);
+    case CfKP: return c.k_p & ((1u << CoefW) - 1);
+    case CfKV: return c.k_v & ((1u << CoefW) - 1);
+    case CfKb: return c.kb & ((1u << CoefW) - 1);
+    case CfEtaP1: return c.eta_p1 & ((1u << CoefW) - 1);
+    case CfEtaV1: return c.eta_v1 & ((1u << CoefW) - 1);
+    case CfEtaP2: return c.eta_p2 & ((1u << CoefW) - 1);
+    case CfEtaV2: return c.eta_v2 & ((1u << CoefW) - 1);
+    default: return 0;
+  }
+}
+
+// The control word of one micro-program step (the RTL's decode always_comb).
+struct Ctl {
+  uint8_t ra = 0, rb = 0;
+  ASrc a = AZero;
+  BSrc b = BZero;
+  int cfg = CfWMin;
+  bool sub = false, abs = false;
+  bool mul_a_vq = false;
+  MbSrc mb = MbRf;
+  bool s20 = false, ls = false;
+  bool we = false;
+  uint8_t wa = 0;
+  WSrc w = WWrap;
+  bool t_we = false;
+};
+
 }  // namespace
+
+// state_o: the phase of a micro-program step (the RTL's st)
+uint8_t NeuronPi::phase_of(uint8_t upc) {
+  if (upc == UIdle) return StIdle;
+  if (upc < UVff) return StInit;
+  if (upc == UVff) return StVff;
+  if (upc <= UDiv2) return StDiv;
+  if (upc <= UWin) return StErr;
+  if (upc == UT1) return StT1;
+  if (upc <= USum) return StT2;
+  if (upc == UDu) return StDu;
+  if (upc <= UOut) return StBc;
+  if (upc == UH1) return StH1;
+  if (upc <= UW4) return StDw1;
+  if (upc == UH2) return StH2;
+  return StDw2;
+}
 
 int32_t NeuronPi::mul_round_sat(int32_t a, int32_t b, unsigned sh) {
   const int64_t p = int64_t(a) * int64_t(b);
@@ -31,27 +102,200 @@ void NeuronPi::step(const NeuronConfig& cfg, const Inputs& in) {
     if (q.active) q.cnt = uint16_t(q.cnt - 1);
     return;
   }
+  const uint8_t s = q.sel ? 1 : 0;
+  const bool hush_now = !q.sel && q.fin;
+  const unsigned shift = cfg.shift & ((1u << EncShiftW) - 1);
+  const unsigned ls = cfg.learn_shift & ((1u << LearnShW) - 1);
+  const uint8_t upc = q.upc;
+  const bool w2nd = upc >= UH2;
+  const uint8_t u2 = w2nd ? uint8_t(upc - 6) : upc;
+
+  // ---- decode -------------------------------------------------------------------------
+  Ctl c;
+  switch (upc) {
+    case UIdle: break;
+    case UVff:
+      c.mul_a_vq = true; c.mb = MbDivSh; c.we = true; c.wa = RfVff; c.w = WMul;
+      break;
+    case USet1: case USet2: case USet3: case UDiv1: case UDiv2:
+      
+      c.rb = uint8_t(((upc == USet1 || upc == UDiv1) ? RfW1 : RfW2) | s);
+      c.a = upc == USet2 ? AT : AZero;
+      c.b = BRf;
+      c.abs = true;
+      c.t_we = upc == USet1;
+      c.we = (upc == UDiv1 || upc == UDiv2) && q.dbit == 0;
+      c.wa = uint8_t((upc == UDiv1 ? RfN1 : RfN2) | s);
+      c.w = WDiv;
+      break;
+    case URef:
+      c.a = q.sel ? ARf : ARef; c.ra = RfOutP; c.rb = RfVff;
+      c.b = (q.sel && cfg.ff_en) ? BRf : BZero; c.t_we = true;
+      break;
+    case UErr:
+      c.a = AT; c.b = q.sel ? BVmeas : BPfb; c.sub = true; c.we = true; c.wa = RfEraw;
+      break;
+    case UAbs:
+      c.rb = RfEraw; c.b = BRf; c.abs = true; c.t_we = true;
+      break;
+    case UEq: case UX2:
+      c.ra = RfEraw; c.rb = uint8_t(RfEp | s);
+      c.a = (upc == UX2 && hush_now) ? AZero : ARf; c.b = BRf; c.sub = true;
+      c.we = upc == UX2; c.wa = RfX2;
+      break;
+    case UE: case UEp:
+      c.ra = RfEraw; c.a = (upc == UE && hush_now) ? AZero : ARf;
+      c.we = true; c.wa = upc == UE ? uint8_t(RfE) : uint8_t(RfEp | s);
+      break;
+    case ULearn: case UFerr: case UWin:
+      c.a = AT; c.b = BCfg; c.sub = true;
+      c.cfg = upc == ULearn ? (q.sel ? CfDzV : CfDzP) : upc == UFerr ? CfFerr : CfWin;
+      break;
+    case UT1:
+      c.ra = RfE; c.rb = uint8_t(RfN1 | s); c.we = true; c.wa = RfT1; c.w = WMul;
+      break;
+    case UT2:
+      c.ra = RfX2; c.rb = uint8_t(RfN2 | s); c.we = true; c.wa = RfT2; c.w = WMul;
+      break;
+    case USum:
+      c.ra = RfT1; c.rb = RfT2; c.a = ARf; c.b = BRf; c.we = true; c.wa = RfSum; c.w = WSat;
+      break;
+    case UDu: case UBc:
+      
+      c.ra = upc == UDu ? uint8_t(RfSum) : uint8_t(RfEs | s);
+      c.mb = MbCfg; c.cfg = upc == UBc ? CfKb : q.sel ? CfKV : CfKP; c.s20 = true;
+      c.we = true; c.wa = upc == UDu ? RfDu : RfBc; c.w = WMul;
+      break;
+    case UAcc1:
+      c.ra = uint8_t(RfAcc | s); c.rb = RfDu; c.a = ARf; c.b = BRf; c.t_we = true;
+      break;
+    case UAcc2:
+      c.rb = RfBc; c.a = AT; c.b = BRf; c.sub = true;
+      c.we = true; c.wa = uint8_t(RfAcc | s); c.w = q.hush ? WZero : WSat;
+      break;
+    case UTot:
+      c.ra = uint8_t(RfAcc | s); c.rb = RfVff; c.a = ARf;
+      c.b = (q.sel && cfg.ff_en) ? BRf : BZero; c.we = true; c.wa = RfTot; c.w = WSat;
+      break;
+    case UHi: case ULo:
+      c.ra = RfTot; c.a = ARf; c.b = BCfg; c.cfg = q.sel ? CfULim : CfVLim;
+      c.sub = upc == UHi; c.wa = uint8_t(RfEs | s);
+      break;  // write enable and data depend on the sum (below)
+    case UOut:
+      c.ra = RfTot; c.rb = uint8_t(RfEs | s); c.a = ARf; c.b = BRf; c.sub = true;
+      c.we = !q.sel; c.wa = RfOutP;
+      break;
+    case UH1: case UH2:
+      c.ra = upc == UH1 ? RfE : RfX2; c.rb = RfE; c.mb = MbEb;
+      c.we = true; c.wa = RfH; c.w = WMul;
+      break;
+    case UDw1: case UDw2:
+      c.ra = RfH; c.mb = MbCfg;
+      c.cfg = upc == UDw1 ? (q.sel ? CfEtaV1 : CfEtaP1) : (q.sel ? CfEtaV2 : CfEtaP2);
+      c.s20 = true; c.ls = true; c.we = true; c.wa = RfDw; c.w = WMul;
+      break;
+    default:
+      if (upc >= UW1 && upc <= UW8) {
+        const uint8_t pair = uint8_t((w2nd ? RfW2 : RfW1) | s);
+        const int wmax = w2nd ? (q.sel ? CfWV2Max : CfWP2Max) : (q.sel ? CfWV1Max : CfWP1Max);
+        
+        c.cfg = u2 == UW3 ? CfWMin : u2 == UW4 ? (q.over ? wmax : CfWMin) : wmax;
+        if (u2 == UW1) {  // T = w + dw
+          c.ra = pair; c.rb = RfDw; c.a = ARf; c.b = BRf; c.t_we = true;
+        } else if (u2 == UW2 || u2 == UW3) {  // T - w_max > 0 ?  T - w_min < 0 ?
+          c.a = AT; c.b = BCfg; c.sub = true;
+        } else {  // w = w_max, w_min or T (then within both)
+          c.a = (q.over || q.under) ? AZero : AT;
+          c.b = (q.over || q.under) ? BCfg : BZero;
+          c.we = true; c.wa = pair;
+        }
+      } else if (upc >= UInit && upc < UInit + kInitSteps) {
+        // start: e_prev, acc, es, out_p, vff = 0; weights = their initial values
+        static constexpr uint8_t kWa[kInitSteps] = {RfEp, RfEp + 1, RfAcc, RfAcc + 1, RfEs, RfEs + 1,
+                                                   RfOutP, RfVff, RfW1, RfW1 + 1, RfW2, RfW2 + 1};
+        static constexpr int kCf[4] = {CfWP1, CfWV1, CfWP2, CfWV2};
+        const int k = upc - UInit;
+        c.we = true; c.wa = kWa[k];
+        c.b = k < 8 ? BZero : BCfg;
+        if (k >= 8) c.cfg = kCf[k - 8];
+      }
+      break;
+  }
+
+  // ---- datapath -----------------------------------------------------------------------
+  const int32_t rf_a = q.rf[c.ra];
+  const int32_t rf_b = q.rf[c.rb];
+  const int64_t cfg_val = cfg_value(cfg, c.cfg);
+  const int64_t alu_a = c.a == ARf ? rf_a : c.a == AT ? q.t : c.a == ARef ? q.ref : 0;
+  const int64_t alu_b = c.b == BRf ? rf_b : c.b == BCfg ? cfg_val : c.b == BPfb ? q.pfb : c.b == BVmeas ? q.vmeas : 0;
+  const bool sub = c.abs ? alu_b < 0 : c.sub;
+  const int64_t alu_r = wrap_signed64(sub ? alu_a - alu_b : alu_a + alu_b, kAluW);
+  const bool alu_n = alu_r < 0;
+  const bool alu_z = alu_r == 0;
+  const int32_t alu_sat = sat32(alu_r);
+
+  // multiplier
+  int32_t e_b = 0;
+  if (q.learn) e_b = rf_b > kBMax ? kBMax : rf_b < -kBMax ? -kBMax : rf_b;
+  const uint32_t div_sh = uint32_t(cfg.div) << shift;
+  const int32_t mul_a = c.mul_a_vq ? q.vq : rf_a;
+  const int32_t mul_b = c.mb == MbRf    ? sext(rf_b, MulBW)
+                        : c.mb == MbCfg ? sext(cfg_val, MulBW)
+                        : c.mb == MbEb  ? e_b
+                                        : sext(int64_t(div_sh) << (NWgtFrac - (VffFrac - CtlFrac)), MulBW);
+  const unsigned mul_sh = (c.s20 ? CoefFrac : NWgtFrac) + (c.ls ? ls : 0);
+  const int32_t mul_y = mul_round_sat(mul_a, mul_b, mul_sh);
+
+  // divider step (sign: the weight on port B)
+  const bool div_ge = q.drem >= q.dsum;
+  const uint32_t div_rem_sub = div_ge ? q.drem - q.dsum : q.drem;
+  const uint32_t div_quo = ((q.dquo << 1) | uint32_t(div_ge)) & ((1u << kQuoW) - 1);
+  const uint32_t div_res = q.dsum == 0 ? 0 : div_quo;
+  const int32_t div_wn = sext(rf_b < 0 ? -int64_t(div_res) : int64_t(div_res), NWgtW);
+
+  // e_p rounded to whole steps, saturated
+  const unsigned step_sh = CtlFrac + shift;
+  const int64_t corr_full = (int64_t(q.eraw) + (int64_t(1) << (step_sh - 1))) >> step_sh;
+  const int64_t cmax = (int64_t(1) << (CorrW - 1)) - 1;
+  const int32_t corr_steps = int32_t(corr_full > cmax ? cmax : corr_full < -cmax ? -cmax : corr_full);
+
+  // limit steps: es = tot - lim when > 0 (else 0); es = tot + lim when < 0
+  if (upc == UHi) {
+    c.we = true;
+    c.w = (alu_n || alu_z) ? WZero : WWrap;
+  } else if (upc == ULo) {
+    c.we = alu_n;
+  }
+
   State d = q;
   d.mv = q.mv || in.cmd_busy;
   if (q.corr != 0 && in.nco_req) d.corr = sext(int64_t(q.corr) + (q.corr < 0 ? 1 : -1), CorrW);
-  const int s = q.sel ? 1 : 0;
-  const Loop& L = q.lp[s];
-  const int32_t bias = (q.sel && cfg.ff_en) ? q.vff : 0;
-  const int32_t cur_ref = q.sel ? wrap32(int64_t(q.out_p) + bias) : q.ref;
-  const int32_t cur_fb = q.sel ? q.vmeas : q.pfb;
-  const uint32_t cur_lim = q.sel ? cfg.u_lim : cfg.v_lim;
-  const uint32_t cur_k = q.sel ? cfg.k_v : cfg.k_p;
-  const uint32_t eta1 = q.sel ? cfg.eta_v1 : cfg.eta_p1;
-  const uint32_t eta2 = q.sel ? cfg.eta_v2 : cfg.eta_p2;
-  const unsigned shift = cfg.shift & ((1u << EncShiftW) - 1);
-  const unsigned ls = cfg.learn_shift & ((1u << LearnShW) - 1);
-  const unsigned hebb_sh = unsigned(CoefFrac + CtlFrac - WgtFrac) + ls;
-  const int32_t e_b = !q.learn ? 0 : q.e > kBMax ? kBMax : q.e < -kBMax ? -kBMax : q.e;
+  if (c.t_we) d.t = alu_r;
+  if (c.we) {
+    const int32_t wd = c.w == WSat ? alu_sat : c.w == WMul ? mul_y : c.w == WDiv ? div_wn : c.w == WZero ? 0 : wrap32(alu_r);
+    d.rf[c.wa] = wd;
+    switch (c.wa) {
+      case RfOutP: d.out_p = wd; break;
+      case RfEp: d.lp[0].ep = wd; break;
+      case RfEp + 1: d.lp[1].ep = wd; break;
+      case RfW1: d.lp[0].w1 = sext(wd, WgtW); break;
+      case RfW1 + 1: d.lp[1].w1 = sext(wd, WgtW); break;
+      case RfW2: d.lp[0].w2 = sext(wd, WgtW); break;
+      case RfW2 + 1: d.lp[1].w2 = sext(wd, WgtW); break;
+      case RfN1: d.lp[0].n1 = sext(wd, NWgtW); break;
+      case RfN1 + 1: d.lp[1].n1 = sext(wd, NWgtW); break;
+      case RfN2: d.lp[0].n2 = sext(wd, NWgtW); break;
+      case RfN2 + 1: d.lp[1].n2 = sext(wd, NWgtW); break;
+      default: break;
+    }
+  }
 
+  // ---- sequencing, flags, snapshot, settling ----------------------------------------------
   if (q.active) {
     if (q.cnt == 0) {
       d.cnt = uint16_t(cfg.div - 1);
-      if (q.st == StIdle) {
+      if (upc == UIdle) {
+        // snapshot: P* - 1/2 (the integer target L once the reference is done), P, V
         const uint32_t r = in.ref_done ? u32(in.ref_int) << CtlFrac
                                        : ((u32(in.ref_int) << CtlFrac) | in.ref_frac) - (1u << (CtlFrac - 1));
         d.ref = int32_t(r << shift);
@@ -61,87 +305,59 @@ void NeuronPi::step(const NeuronConfig& cfg, const Inputs& in) {
         d.fin = in.ref_done;
         d.mvs = q.mv || in.cmd_busy;
         d.mv = false;
-        d.st = StVff;
+        d.sel = false;
+        d.upc = UVff;
       }
     } else {
       d.cnt = uint16_t(q.cnt - 1);
     }
   }
 
-  auto set_div = [&](int loop) {
-    d.sel = loop != 0;
-    d.dsel = false;
-    d.dbit = NWgtFrac;
-    d.dquo = 0;
-    d.drem = abs_w(q.lp[loop].w1);
-    d.dsum = abs_w(q.lp[loop].w1) + abs_w(q.lp[loop].w2);
-  };
-
-  switch (q.st) {
-    case StIdle:
+  if (upc != UIdle) d.upc = uint8_t(upc + 1);
+  if (upc == UInit + kInitSteps - 1) d.upc = UIdle;  // wait for the first snapshot
+  switch (upc) {
+    case USet1: d.drem = uint32_t(alu_r) & ((1u << kRemW) - 1); break;
+    case USet2:
+      d.dsum = uint32_t(alu_r) & ((1u << kSumW) - 1);
+      d.dbit = NWgtFrac;
+      d.dquo = 0;
       break;
-    case StVff:
-      d.vff = mul_round_sat(q.vq, int32_t(cfg.div), unsigned(VffFrac - CtlFrac) - shift);
-      set_div(0);
-      d.st = StDiv;
+    case USet3:
+      d.drem = uint32_t(alu_r) & ((1u << kRemW) - 1);
+      d.dbit = NWgtFrac;
+      d.dquo = 0;
       break;
-    case StDiv: {
-      // restoring division, quotient bits shifted in at the LSB (MSB first)
-      const bool ge = q.drem >= q.dsum;
-      const uint32_t sub = ge ? q.drem - q.dsum : q.drem;
-      const uint32_t quo = ((q.dquo << 1) | uint32_t(ge)) & ((1u << kQuoW) - 1);
-      d.drem = (sub << 1) & ((1u << kRemW) - 1);
-      d.dquo = quo;
+    case UDiv1: case UDiv2:
+      d.drem = (div_rem_sub << 1) & ((1u << kRemW) - 1);
+      d.dquo = div_quo;
       d.dbit = uint8_t((q.dbit - 1) & kDbitMask);
-      if (q.dbit == 0) {
-        const bool neg = q.dsel ? L.w2 < 0 : L.w1 < 0;
-        const uint32_t res = q.dsum == 0 ? 0 : quo;
-        const int32_t wn = sext(neg ? -int64_t(res) : int64_t(res), NWgtW);
-        if (!q.dsel) {
-          d.lp[s].n1 = wn;
-          d.dsel = true;
-          d.dbit = NWgtFrac;
-          d.dquo = 0;
-          d.drem = abs_w(L.w2);
-        } else {
-          d.lp[s].n2 = wn;
-          d.st = StErr;
-        }
+      if (q.dbit != 0) d.upc = upc;
+      break;
+    case UErr: d.eraw = wrap32(alu_r); break;
+    case UEq: d.eq = alu_z; break;
+    case UEp: if (!q.sel) d.hush = hush_now; break;
+    case ULearn: d.learn = !hush_now && !alu_n && !alu_z; break;
+    case UFerr:
+      if (!q.sel && !alu_n && !alu_z) {
+        d.ferr = true;
+        d.active = false;
+        d.u = 0;
+        d.upc = UIdle;
       }
       break;
-    }
-    case StErr: {
-      const int32_t e_raw = wrap32(int64_t(cur_ref) - cur_fb);
-      const uint32_t abs_e = e_raw < 0 ? uint32_t(-int64_t(e_raw)) : uint32_t(e_raw);
-      const bool hush = !q.sel && q.fin;
-      const int32_t e = hush ? 0 : e_raw;
-      if (!q.sel) d.hush = hush;
-      d.e = e;
-      d.learn = !hush && abs_e > (q.sel ? cfg.learn_dz_v : cfg.learn_dz_p);
-      d.x2 = wrap32(int64_t(e) - L.ep);
-      d.lp[s].ep = q.sel ? e : e_raw;  // e_p_o: the raw position error
-      d.st = StT1;
+    case UWin:
       if (!q.sel) {
-        if (abs_e > cfg.ferr_lim) {
-          d.ferr = true;
-          d.active = false;
-          d.u = 0;
-          d.st = StIdle;
-        } else if (q.fin && !q.mvs && q.corr == 0 && e_raw == L.ep) {
+        if (q.fin && !q.mvs && q.corr == 0 && q.eq) {
           d.hold = uint16_t(q.hold + 1);
           if (d.hold >= cfg.inpos_hold) {
             d.hold = 0;
-            const unsigned sh = CtlFrac + shift;
-            const int64_t full = (int64_t(e_raw) + (int64_t(1) << (sh - 1))) >> sh;
-            const int64_t cmax = (int64_t(1) << (CorrW - 1)) - 1;
-            const int32_t steps = int32_t(std::clamp<int64_t>(full, -cmax, cmax));
-            if (abs_e <= cfg.inpos_win || steps == 0) {
+            if (alu_n || alu_z || corr_steps == 0) {  // |e_p| <= win
               d.in_pos = true;
               d.active = false;
               d.u = 0;
-              d.st = StIdle;
+              d.upc = UIdle;
             } else {
-              d.corr = steps;
+              d.corr = corr_steps;
             }
           }
         } else {
@@ -149,63 +365,20 @@ void NeuronPi::step(const NeuronConfig& cfg, const Inputs& in) {
         }
       }
       break;
+    case UOut: if (q.sel) d.u = wrap32(alu_r); break;
+    default: break;
+  }
+  if (upc >= UW1 && upc <= UW8 && upc != UH2 && upc != UDw2) {
+    if (u2 == UW2) d.over = !alu_n && !alu_z;
+    if (u2 == UW3) d.under = alu_n;
+  }
+  if (upc == UW8) {
+    if (q.sel) {
+      d.upc = UIdle;
+    } else {
+      d.sel = true;
+      d.upc = USet1;
     }
-    case StT1:
-      d.t1 = mul_round_sat(q.e, L.n1, NWgtFrac);
-      d.st = StT2;
-      break;
-    case StT2:
-      d.t2 = mul_round_sat(q.x2, L.n2, NWgtFrac);
-      d.st = StDu;
-      break;
-    case StDu:
-      d.du = mul_round_sat(sat32(int64_t(q.t1) + q.t2), int32_t(cur_k), CoefFrac);
-      d.st = StBc;
-      break;
-    case StBc: {
-      const int32_t bc = mul_round_sat(L.es, int32_t(cfg.kb), CoefFrac);
-      const int32_t acc_new = q.hush ? 0 : sat32(int64_t(L.acc) + q.du - bc);  // one saturation
-      const int32_t tot = sat32(int64_t(acc_new) + bias);
-      const int64_t lim = int64_t(cur_lim);
-      const int32_t out = tot > lim ? wrap32(lim) : tot < -lim ? wrap32(-lim) : tot;
-      const int32_t es = sat32(int64_t(tot) - out);
-      d.lp[s].acc = acc_new;
-      d.lp[s].es = es;
-      if (q.sel) d.u = out; else d.out_p = out;
-      d.st = StH1;
-      break;
-    }
-    case StH1:
-      d.h = mul_round_sat(q.e, e_b, CtlFrac);
-      d.st = StDw1;
-      break;
-    case StH2:
-      d.h = mul_round_sat(q.x2, e_b, CtlFrac);
-      d.st = StDw2;
-      break;
-    case StDw1:
-    case StDw2: {
-      const int32_t dw = mul_round_sat(q.h, int32_t(q.st == StDw1 ? eta1 : eta2), hebb_sh);
-      const int64_t sum = int64_t(q.st == StDw1 ? L.w1 : L.w2) + dw;
-      const int32_t hi = q.st == StDw1 ? (q.sel ? cfg.w_v1_max : cfg.w_p1_max) : (q.sel ? cfg.w_v2_max : cfg.w_p2_max);
-      const int32_t wn = sum > hi ? hi : sum < cfg.w_min ? cfg.w_min : sext(sum, WgtW);
-      if (q.st == StDw1) {
-        d.lp[s].w1 = wn;
-        d.st = StH2;
-      } else {
-        d.lp[s].w2 = wn;
-        if (q.sel) {
-          d.st = StIdle;
-        } else {
-          set_div(1);
-          d.st = StDiv;
-        }
-      }
-      break;
-    }
-    default:
-      d.st = StIdle;
-      break;
   }
 
   if (q.fin && d.active) {
@@ -217,8 +390,8 @@ void NeuronPi::step(const NeuronConfig& cfg, const Inputs& in) {
     d.active = true;
     d.in_pos = false;
     d.ferr = false;
-    d.cnt = 0;
-    d.st = StIdle;
+    d.cnt = kInitSteps;  // the first snapshot follows the initialisation
+    d.upc = UInit;
     d.sel = false;
     d.hold = 0;
     d.hush = false;
@@ -226,23 +399,13 @@ void NeuronPi::step(const NeuronConfig& cfg, const Inputs& in) {
     d.fin = false;
     d.pfb = int32_t(u32(in.enc_pos) << CtlFrac);
     d.vmeas = 0;
-    d.vff = 0;
-    d.lp[0].w1 = cfg.w_p1;
-    d.lp[0].w2 = cfg.w_p2;
-    d.lp[1].w1 = cfg.w_v1;
-    d.lp[1].w2 = cfg.w_v2;
-    for (Loop& l : d.lp) {
-      l.ep = 0;
-      l.acc = 0;
-      l.es = 0;
-    }
-    d.out_p = 0;
     d.u = 0;
   } else if (in.stop) {
     d.active = false;
-    d.st = StIdle;
+    d.upc = UIdle;
     d.u = 0;
   }
+  d.st = phase_of(d.upc);
   q = d;
 }
 

@@ -1,8 +1,8 @@
 // Bit-exact model of rtl/sc_neuron_pi.sv: the position/speed single-neuron
-// adaptive PI cascade on one time-multiplexed datapath (one multiplier, a
-// restoring divider), clock by clock: same FSM states, same registers, same
-// rounding ((p + 2^(s-1)) >> s), wrap and saturation. See the RTL header and
-// docs/closed_loop.md for the equations.
+// adaptive PI cascade on one microcoded datapath (register file, one 34-bit
+// adder, one multiplier, a restoring divider), clock by clock: the same
+// micro-program, registers, rounding ((p + 2^(s-1)) >> s), wrap and
+// saturation. See the RTL header and docs/closed_loop.md for the equations.
 #pragma once
 
 #include <cstdint>
@@ -36,7 +36,26 @@ struct NeuronConfig {
 
 class NeuronPi {
  public:
-  enum St : uint8_t { StIdle = 0, StVff, StDiv, StErr, StT1, StT2, StDu, StBc, StH1, StDw1, StH2, StDw2 };
+  // Phase of the period (state_o), decoded from the micro-program step.
+  enum St : uint8_t { StIdle = 0, StVff, StDiv, StErr, StT1, StT2, StDu, StBc, StH1, StDw1, StH2, StDw2, StInit };
+  // Micro-program steps (the RTL's U* constants).
+  enum Upc : uint8_t {
+    UIdle = 0, UInit = 1, UVff = 13, USet1, USet2, UDiv1, USet3, UDiv2,
+    URef, UErr, UAbs, UEq, UX2, UE, UEp, ULearn, UFerr, UWin,
+    UT1, UT2, USum, UDu, UBc, UAcc1, UAcc2, UTot, UHi, ULo, UOut,
+    UH1, UDw1, UW1, UW2, UW3, UW4, UH2, UDw2, UW5, UW6, UW7, UW8
+  };
+  static constexpr int kInitSteps = 12;
+  // Register-file words; per-loop pairs at even addresses, + loop.
+  enum Rf : uint8_t {
+    RfEp = 0, RfAcc = 2, RfEs = 4, RfW1 = 6, RfW2 = 8, RfN1 = 10, RfN2 = 12, RfOutP = 14, RfVff = 15,
+    RfE = 16, RfX2 = 17, RfT1 = 18, RfSum = 19, RfDu = 20, RfBc = 21, RfH = 22, RfDw = 23, RfEraw = 24,
+    RfT2 = 25, RfTot = 26
+  };
+  // Clocks of work per control period (cfg.div must be larger).
+  static constexpr int kBusyClocks = 1 + 2 * (2 + 2 * (NWgtFrac + 1) + 1 + 10 + 5 + 6 + 2 * 6);
+  static constexpr int kMinDiv = 256;
+
   struct Inputs {
     bool start = false;
     bool stop = false;
@@ -48,32 +67,35 @@ class NeuronPi {
     bool cmd_busy = false;  // a step is requested/owed/on the pin
     bool nco_req = false;   // the NCO requests a step this clock
   };
-  struct Loop {  // per-loop registers: [0] position, [1] speed
+  struct Loop {  // output copies of the per-loop words: [0] position, [1] speed
     int32_t w1 = 0, w2 = 0;   // WgtW
     int32_t n1 = 0, n2 = 0;   // NWgtW normalised
     int32_t ep = 0;           // e(k-1)
-    int32_t acc = 0;
-    int32_t es = 0;
     bool operator==(const Loop&) const = default;
   };
   struct State {
     bool active = false, in_pos = false, ferr = false;
     uint16_t cnt = 0;
-    uint8_t st = StIdle;
-    bool sel = false, dsel = false;
+    uint8_t upc = UIdle;
+    uint8_t st = StIdle;  // phase of upc (state_o)
+    bool sel = false;
     uint8_t dbit = 0;
     uint32_t drem = 0, dquo = 0, dsum = 0;
     uint16_t hold = 0;
+    bool hush = false;
+    int32_t corr = 0;  // CorrW, corrective steps still to issue
+    bool learn = false, eq = false, over = false, under = false;
+    int64_t t = 0;     // AluW exact intermediate
+    int32_t eraw = 0;  // e_p for the corrective steps
     int32_t ref = 0, pfb = 0, vmeas = 0, vq = 0;
     bool fin = false;
     bool mv = false, mvs = false;
-    int32_t vff = 0;
+    int32_t u = 0, out_p = 0;  // outputs: u, v_cmd
     Loop lp[2];
-    bool hush = false;
-    int32_t corr = 0;  // CorrW, corrective steps still to issue
-    int32_t out_p = 0, u = 0;
-    int32_t e = 0, x2 = 0, t1 = 0, t2 = 0, du = 0, h = 0;
-    bool learn = false;  // |e| > learning dead zone, set in StErr
+    int32_t rf[32] = {};
+    int32_t acc(int l) const { return rf[RfAcc + l]; }
+    int32_t es(int l) const { return rf[RfEs + l]; }
+    int32_t vff() const { return rf[RfVff]; }
     bool operator==(const State&) const = default;
   };
 
@@ -81,7 +103,7 @@ class NeuronPi {
   void reset() { q_ = State{}; }
   void step(const NeuronConfig& cfg, const Inputs& in);
   // Nothing but the strobe counter moves this clock (no start/stop)?
-  bool counting_only() const { return !q_.active || (q_.st == StIdle && q_.cnt != 0); }
+  bool counting_only() const { return !q_.active || (q_.upc == UIdle && q_.cnt != 0); }
   // Clocks until the next strobe (0 = this clock or inactive).
   uint16_t clocks_to_strobe() const { return q_.active ? q_.cnt : 0; }
   // Skip k clocks that only count (k <= cnt, active, idle FSM, no start/stop).
@@ -90,6 +112,7 @@ class NeuronPi {
   const State& state() const { return q_; }
   State& mutable_state() { return q_; }
 
+  static uint8_t phase_of(uint8_t upc);
   // The datapath's multiplier: round half up, arithmetic shift, saturate.
   static int32_t mul_round_sat(int32_t a, int32_t b, unsigned sh);
   static int32_t sat32(int64_t v) {

@@ -1,9 +1,14 @@
 // sc_neuron_pi: the cascade of two single-neuron adaptive PI controllers
-// (outer: position, inner: speed) on ONE time-multiplexed datapath: one
-// signed MulAW x MulBW multiplier, one restoring divider (one quotient bit
-// per clock) for the weight normalisation, sequenced by an FSM once per
-// control period (cfg_div_i clocks, e.g. 2000 = 10 kHz). About 100 clocks
-// of work per period; cfg_div_i must be >= 128.
+// (outer: position, inner: speed) on ONE microcoded datapath: a register
+// file (LUT RAM, two read ports), one 34-bit adder/subtractor (saturating,
+// compare flags), one signed MulAW x MulBW multiplier and one restoring
+// divider (one quotient bit per clock) for the weight normalisation,
+// sequenced once per control period (cfg_div_i clocks, e.g. 2000 = 10 kHz)
+// by a micro-program of one operation per clock: 141 clocks of work per
+// period (12 more after start_i to initialise), so cfg_div_i must be >= 256.
+// Every word the datapath computes goes through the adder, the multiplier
+// or the divider, so the LUTs are operand selection and one of each unit,
+// not one unit per equation.
 //
 // Per period, for loop L = position then speed (docs/closed_loop.md):
 //   wn_i   = w_i / (|w_1| + |w_2|)                     (divider, Q1.16)
@@ -98,7 +103,6 @@ module sc_neuron_pi (
   localparam int WgtW     = sc_pkg::WgtW;
   localparam int NWgtW    = sc_pkg::NWgtW;
   localparam int NWgtFrac = sc_pkg::NWgtFrac;
-  localparam int CoefW    = sc_pkg::CoefW;
   localparam int CoefFrac = sc_pkg::CoefFrac;
   localparam int MulAW    = sc_pkg::MulAW;
   localparam int MulBW    = sc_pkg::MulBW;
@@ -106,13 +110,16 @@ module sc_neuron_pi (
   localparam int HoldW    = sc_pkg::HoldW;
   localparam int CtlStW   = sc_pkg::CtlStW;
   localparam int LearnShW = sc_pkg::LearnShW;
+  localparam int CorrW    = sc_pkg::CorrW;
   localparam int ProdW    = MulAW + MulBW;
   localparam int QuoW     = NWgtFrac + 1;   // |wn| <= 1.0
   localparam int RemW     = WgtW + 2;
   localparam int SumW     = WgtW + 1;
   localparam int DbitW    = 5;
+  localparam int AluW     = CtlW + 2;       // exact sum/difference of two CtlW+1-bit words
+  localparam int UpcW     = 6;
 
-  // FSM states (state_o)
+  // state_o: the phase of the period (as the equations above)
   localparam logic [CtlStW-1:0] StIdle = 4'd0;
   localparam logic [CtlStW-1:0] StVff  = 4'd1;
   localparam logic [CtlStW-1:0] StDiv  = 4'd2;
@@ -125,176 +132,234 @@ module sc_neuron_pi (
   localparam logic [CtlStW-1:0] StDw1  = 4'd9;
   localparam logic [CtlStW-1:0] StH2   = 4'd10;
   localparam logic [CtlStW-1:0] StDw2  = 4'd11;
+  localparam logic [CtlStW-1:0] StInit = 4'd12;
+
+  // micro-program steps (cmodel/neuron_pi.cpp runs the same list)
+  localparam logic [UpcW-1:0] UIdle  = 6'd0;
+  localparam logic [UpcW-1:0] UInit  = 6'd1;   // 1..12: clear/load the loop registers
+  localparam int              NInit  = 12;
+  localparam logic [UpcW-1:0] UVff   = 6'd13;
+  localparam logic [UpcW-1:0] USet1  = 6'd14;  // |w1| -> drem, T
+  localparam logic [UpcW-1:0] USet2  = 6'd15;  // T + |w2| -> dsum
+  localparam logic [UpcW-1:0] UDiv1  = 6'd16;  // w1 / dsum, NWgtFrac+1 clocks
+  localparam logic [UpcW-1:0] USet3  = 6'd17;  // |w2| -> drem
+  localparam logic [UpcW-1:0] UDiv2  = 6'd18;  // w2 / dsum
+  localparam logic [UpcW-1:0] URef   = 6'd19;  // T = r
+  localparam logic [UpcW-1:0] UErr   = 6'd20;  // eraw = T - y
+  localparam logic [UpcW-1:0] UAbs   = 6'd21;  // T = |eraw|
+  localparam logic [UpcW-1:0] UEq    = 6'd22;  // eraw == e_prev ?
+  localparam logic [UpcW-1:0] UX2    = 6'd23;  // x2 = e - e_prev
+  localparam logic [UpcW-1:0] UE     = 6'd24;  // e
+  localparam logic [UpcW-1:0] UEp    = 6'd25;  // e_prev = eraw
+  localparam logic [UpcW-1:0] ULearn = 6'd26;  // |e| > dead zone ?
+  localparam logic [UpcW-1:0] UFerr  = 6'd27;  // |e_p| > ferr_lim ? (position loop)
+  localparam logic [UpcW-1:0] UWin   = 6'd28;  // in position ? (position loop)
+  localparam logic [UpcW-1:0] UT1    = 6'd29;  // t1 = wn1 e
+  localparam logic [UpcW-1:0] UT2    = 6'd30;  // t2 = wn2 x2
+  localparam logic [UpcW-1:0] USum   = 6'd31;  // sum = sat(t1 + t2)
+  localparam logic [UpcW-1:0] UDu    = 6'd32;  // du = K sum
+  localparam logic [UpcW-1:0] UBc    = 6'd33;  // bc = Kb es
+  localparam logic [UpcW-1:0] UAcc1  = 6'd34;  // T = acc + du
+  localparam logic [UpcW-1:0] UAcc2  = 6'd35;  // acc = sat(T - bc)
+  localparam logic [UpcW-1:0] UTot   = 6'd36;  // tot = sat(acc + b)
+  localparam logic [UpcW-1:0] UHi    = 6'd37;  // es = tot - lim if > 0
+  localparam logic [UpcW-1:0] ULo    = 6'd38;  // es = tot + lim if < 0
+  localparam logic [UpcW-1:0] UOut   = 6'd39;  // out = tot - es
+  localparam logic [UpcW-1:0] UH1    = 6'd40;  // h = e e_b
+  localparam logic [UpcW-1:0] UDw1   = 6'd41;  // dw = eta1 h / 2^ls
+  localparam logic [UpcW-1:0] UW1    = 6'd42;  // T = w1 + dw
+  localparam logic [UpcW-1:0] UW2    = 6'd43;  // T > w1_max ?
+  localparam logic [UpcW-1:0] UW3    = 6'd44;  // T < w_min ?
+  localparam logic [UpcW-1:0] UW4    = 6'd45;  // w1 = clamp
+  localparam logic [UpcW-1:0] UH2    = 6'd46;
+  localparam logic [UpcW-1:0] UDw2   = 6'd47;
+  // 6'd48..6'd51: UW1..UW4 for w2
+  localparam logic [UpcW-1:0] UW8    = 6'd51;
+
+  // register file words; per-loop pairs at even addresses, + sel
+  localparam logic [4:0] RfEp   = 5'd0;
+  localparam logic [4:0] RfAcc  = 5'd2;
+  localparam logic [4:0] RfEs   = 5'd4;
+  localparam logic [4:0] RfW1   = 5'd6;
+  localparam logic [4:0] RfW2   = 5'd8;
+  localparam logic [4:0] RfN1   = 5'd10;
+  localparam logic [4:0] RfN2   = 5'd12;
+  localparam logic [4:0] RfOutP = 5'd14;
+  localparam logic [4:0] RfVff  = 5'd15;
+  localparam logic [4:0] RfE    = 5'd16;
+  localparam logic [4:0] RfX2   = 5'd17;
+  localparam logic [4:0] RfT1   = 5'd18;
+  localparam logic [4:0] RfSum  = 5'd19;
+  localparam logic [4:0] RfDu   = 5'd20;
+  localparam logic [4:0] RfBc   = 5'd21;
+  localparam logic [4:0] RfH    = 5'd22;
+  localparam logic [4:0] RfDw   = 5'd23;
+  localparam logic [4:0] RfEraw = 5'd24;
+  localparam logic [4:0] RfT2   = 5'd25;
+  localparam logic [4:0] RfTot  = 5'd26;
+
+  // operand sources
+  localparam logic [1:0] ARf = 2'd0, AT = 2'd1, ARef = 2'd2, AZero = 2'd3;
+  localparam logic [2:0] BRf = 3'd0, BCfg = 3'd1, BPfb = 3'd2, BVmeas = 3'd3, BZero = 3'd4;
+  // configuration words on the B port (and the multiplier's B operand)
+  localparam logic [4:0] CfDzP = 5'd0, CfDzV = 5'd1, CfFerr = 5'd2, CfWin = 5'd3, CfVLim = 5'd4,
+                         CfULim = 5'd5, CfWMin = 5'd6, CfWP1Max = 5'd7, CfWV1Max = 5'd8,
+                         CfWP2Max = 5'd9, CfWV2Max = 5'd10, CfWP1 = 5'd11, CfWV1 = 5'd12,
+                         CfWP2 = 5'd13, CfWV2 = 5'd14, CfKP = 5'd15, CfKV = 5'd16, CfKb = 5'd17,
+                         CfEtaP1 = 5'd18, CfEtaV1 = 5'd19, CfEtaP2 = 5'd20, CfEtaV2 = 5'd21;
+  // register-file write data
+  localparam logic [2:0] WWrap = 3'd0, WSat = 3'd1, WMul = 3'd2, WDiv = 3'd3, WZero = 3'd4;
+  // multiplier operands
+  localparam logic [1:0] MbRf = 2'd0, MbCfg = 2'd1, MbEb = 2'd2, MbDivSh = 2'd3;
 
   localparam logic signed [CtlW-1:0]  CtlMax = {1'b0, {(CtlW-1){1'b1}}};
   localparam logic signed [CtlW-1:0]  CtlMin = {1'b1, {(CtlW-1){1'b0}}};
   localparam logic signed [MulBW-1:0] BMax   = {1'b0, {(MulBW-1){1'b1}}};
 
-  // ---- state ---------------------------------------------------------------
+  // ---- state ---------------------------------------------------------------------
   logic                      active_q, active_d;
   logic                      in_pos_q, in_pos_d;
   logic                      ferr_q, ferr_d;
   logic [CtlDivW-1:0]        cnt_q, cnt_d;
-  logic [CtlStW-1:0]         st_q, st_d;
+  logic [UpcW-1:0]           upc_q, upc_d;
   logic                      sel_q, sel_d;      // 0 = position loop, 1 = speed loop
-  logic                      dsel_q, dsel_d;    // divider: 0 = w1, 1 = w2
   logic [DbitW-1:0]          dbit_q, dbit_d;
   logic [RemW-1:0]           drem_q, drem_d;
   logic [QuoW-1:0]           dquo_q, dquo_d;
   logic [SumW-1:0]           dsum_q, dsum_d;
   logic [HoldW-1:0]          hold_q, hold_d;
   logic                      hush_q, hush_d;    // settling: accumulators held at 0
-  logic signed [sc_pkg::CorrW-1:0] corr_q, corr_d;  // corrective steps still to issue
+  logic signed [CorrW-1:0]   corr_q, corr_d;    // corrective steps still to issue
+  logic                      learn_q, learn_d;  // |e| > learning dead zone
+  logic                      eq_q, eq_d;        // e_p unchanged since the last period
+  logic                      over_q, over_d;    // weight sum above its upper bound
+  logic                      under_q, under_d;  // ... below the lower bound
+  logic signed [AluW-1:0]    t_q, t_d;          // exact intermediate
+  logic signed [CtlW-1:0]    eraw_q, eraw_d;    // e_p for the corrective steps
   // control-period snapshot
-  logic signed [CtlW-1:0]    ref_q, ref_d;      // P* - 1/2, counts Q.8
-  logic signed [CtlW-1:0]    pfb_q, pfb_d;      // P, counts Q.8
-  logic signed [CtlW-1:0]    vmeas_q, vmeas_d;  // P - P_prev, counts/period Q.8
-  logic signed [MulAW-1:0]   vq_q, vq_d;        // V*, Q.31 pulses/clock
+  logic signed [CtlW-1:0]    ref_q, ref_d;      // P* - 1/2, counts Q.CtlFrac
+  logic signed [CtlW-1:0]    pfb_q, pfb_d;      // P
+  logic signed [CtlW-1:0]    vmeas_q, vmeas_d;  // P - P_prev
+  logic signed [MulAW-1:0]   vq_q, vq_d;        // V*, Q.VffFrac pulses/clock
   logic                      fin_q, fin_d;
   logic                      mv_q, mv_d;        // cmd_busy_i seen since the last snapshot
   logic                      mvs_q, mvs_d;      // ... in the period before the snapshot
-  logic signed [CtlW-1:0]    vff_q, vff_d;      // V*, counts/period Q.8
-  // per-loop state: index 0 position, 1 speed
-  logic signed [WgtW-1:0]    w1_p_q, w1_p_d, w2_p_q, w2_p_d, w1_v_q, w1_v_d, w2_v_q, w2_v_d;
-  logic signed [NWgtW-1:0]   n1_p_q, n1_p_d, n2_p_q, n2_p_d, n1_v_q, n1_v_d, n2_v_q, n2_v_d;
-  logic signed [CtlW-1:0]    ep_p_q, ep_p_d, ep_v_q, ep_v_d;     // e(k-1)
-  logic signed [CtlW-1:0]    acc_p_q, acc_p_d, acc_v_q, acc_v_d;
-  logic signed [CtlW-1:0]    es_p_q, es_p_d, es_v_q, es_v_d;     // tot - sat(tot)
-  logic signed [CtlW-1:0]    out_p_q, out_p_d;                  // v_cmd
-  logic signed [CtlW-1:0]    u_q, u_d;                          // speed-loop output
-  // datapath temporaries
-  logic signed [CtlW-1:0]    e_q, e_d, x2_q, x2_d, t1_q, t1_d, t2_q, t2_d, du_q, du_d, h_q, h_d;
+  // outputs (copies of register-file words, written with them)
+  logic signed [CtlW-1:0]    u_q, u_d, vcmd_q, vcmd_d, ep_p_q, ep_p_d, ep_v_q, ep_v_d;
+  logic signed [WgtW-1:0]    w_p1_q, w_p1_d, w_p2_q, w_p2_d, w_v1_q, w_v1_d, w_v2_q, w_v2_d;
+  logic signed [NWgtW-1:0]   n_p1_q, n_p1_d, n_p2_q, n_p2_d, n_v1_q, n_v1_d, n_v2_q, n_v2_d;
 
-  // ---- helpers ---------------------------------------------------------------
-  // Saturation as sign-bit checks (no magnitude comparators): a value is in
-  // the CtlW range iff its bits above CtlW-2 are all equal.
-  function automatic logic signed [CtlW-1:0] sat_c33(input logic signed [CtlW:0] v);
-    if (v[CtlW] != v[CtlW-1]) begin
-      sat_c33 = v[CtlW] ? CtlMin : CtlMax;
-    end else begin
-      sat_c33 = v[CtlW-1:0];
-    end
-  endfunction
+  // register file: LUT RAM, written once per clock, read combinationally
+  logic [CtlW-1:0] rf_q [32];
+  logic [4:0]      ra, rb, rf_wa;
+  logic            rf_we;
+  logic [CtlW-1:0] rf_a, rf_b, rf_wd;
+  assign rf_a = rf_q[ra];
+  assign rf_b = rf_q[rb];
 
-  function automatic logic signed [CtlW-1:0] sat_prod(input logic signed [ProdW-1:0] v);
-    if (v[ProdW-1:CtlW-1] != '0 && v[ProdW-1:CtlW-1] != '1) begin
-      sat_prod = v[ProdW-1] ? CtlMin : CtlMax;
-    end else begin
-      sat_prod = v[CtlW-1:0];
-    end
-  endfunction
+  always_ff @(posedge clk_i) begin
+    if (rf_we) rf_q[rf_wa] <= rf_wd;
+  end
 
-  function automatic logic [WgtW-1:0] abs_w(input logic signed [WgtW-1:0] v);
-    abs_w = v[WgtW-1] ? WgtW'(-v) : WgtW'(v);
-  endfunction
-
-  // ---- per-loop views (selected by sel_q) ---------------------------------------
-  logic signed [WgtW-1:0]  cur_w1, cur_w2;
-  logic signed [NWgtW-1:0] cur_n1, cur_n2;
-  logic signed [CtlW-1:0]  cur_ep, cur_acc, cur_es, cur_bias, cur_ref, cur_fb;
-  logic [CtlW-1:0]         cur_lim;
-  logic [CoefW-1:0]        cur_k, cur_eta1, cur_eta2;
-
-  assign cur_w1   = sel_q ? w1_v_q : w1_p_q;
-  assign cur_w2   = sel_q ? w2_v_q : w2_p_q;
-  assign cur_n1   = sel_q ? n1_v_q : n1_p_q;
-  assign cur_n2   = sel_q ? n2_v_q : n2_p_q;
-  assign cur_ep   = sel_q ? ep_v_q : ep_p_q;
-  assign cur_acc  = sel_q ? acc_v_q : acc_p_q;
-  assign cur_es   = sel_q ? es_v_q : es_p_q;
-  assign cur_bias = (sel_q && cfg_ff_en_i) ? vff_q : '0;
-  assign cur_ref  = sel_q ? out_p_q + cur_bias : ref_q;
-  assign cur_fb   = sel_q ? vmeas_q : pfb_q;
-  assign cur_lim  = sel_q ? cfg_u_lim_i : cfg_v_lim_i;
-  assign cur_k    = sel_q ? cfg_k_v_i : cfg_k_p_i;
-  assign cur_eta1 = sel_q ? cfg_eta_v1_i : cfg_eta_p1_i;
-  assign cur_eta2 = sel_q ? cfg_eta_v2_i : cfg_eta_p2_i;
-
-  // ---- cfg_div_i << cfg_shift_i ---------------------------------------------------
-  localparam int DivShW = CtlDivW + (1 << sc_pkg::EncShiftW) - 1;
-  logic [DivShW-1:0] div_sh;
-  assign div_sh   = DivShW'(cfg_div_i) << cfg_shift_i;
-  assign div_sh_o = div_sh;
-
-  // ---- the one multiplier ---------------------------------------------------------
-  logic signed [MulAW-1:0] mul_a;
-  logic signed [MulBW-1:0] mul_b;
-  logic signed [ProdW-1:0] mul_p, mul_r;
-  logic signed [CtlW-1:0]  mul_y;     // rounded, shifted, saturated
-  logic signed [MulBW-1:0] e_b;       // e saturated to the B port
-
-  // learn = |e| > dead zone, registered in StErr (from |e_now|, which is
-  // |e_q| from then on, or e_q = 0 while settling)
-  logic                    learn_q, learn_d;
-  logic                    learn;
-  assign learn  = learn_q;
-  // |e| <= BMax iff bits CtlW-1..MulBW-1 are all equal and e != -2^(MulBW-1)
-  logic                    e_in_b;
-  assign e_in_b = ((e_q[CtlW-1:MulBW-1] == '0) || (e_q[CtlW-1:MulBW-1] == '1))
-                  && (e_q[MulBW-2:0] != '0 || !e_q[CtlW-1]);
-  assign e_b    = !learn ? '0 : !e_in_b ? (e_q[CtlW-1] ? -BMax : BMax) : e_q[MulBW-1:0];
-
-  // Every product is rounded half up and shifted by s = 16 (Vff, T1, T2, H1,
-  // H2), 20 (Du, Bc) or 20 + learn_shift (Dw1, Dw2). Vff's shift
-  // (VffFrac - CtlFrac - shift = 15 - shift) is brought to 16 by scaling the
-  // B operand by 2^(shift+1) (exact: floor((p 2^k + 2^15) / 2^16) =
-  // floor((p + 2^(15-k)) / 2^(16-k))). (p + 2^(s-1)) >>> s is computed as
-  // ((p >>> (s-1)) + 1) >>> 1 = (v >>> 1) + v[0], with v = p >>> (s-1) = (p >>> (b-1)) >>> ls.
-  logic                    mul_s20;   // base shift 20 (else 16)
-  logic                    mul_ls;    // plus learn_shift
+  // ---- configuration word for the B port --------------------------------------------
+  logic [4:0]             cfg_sel;
+  logic signed [AluW-1:0] cfg_val;   // unsigned words zero-, weights sign-extended
   always_comb begin
-    mul_a   = '0;
-    mul_b   = '0;
-    mul_s20 = 1'b0;
-    mul_ls  = 1'b0;
-    unique case (st_q)
-      StVff: begin
-        mul_a  = vq_q;
-        mul_b  = MulBW'(div_sh) << (ShLo - (VffFrac - CtlFrac));
-      end
-      StT1: begin
-        mul_a  = e_q;
-        mul_b  = MulBW'(cur_n1);
-      end
-      StT2: begin
-        mul_a  = x2_q;
-        mul_b  = MulBW'(cur_n2);
-      end
-      StDu: begin
-        mul_a   = sat_c33((CtlW+1)'(t1_q) + (CtlW+1)'(t2_q));
-        mul_b   = MulBW'({1'b0, cur_k});
-        mul_s20 = 1'b1;
-      end
-      StBc: begin
-        mul_a   = cur_es;
-        mul_b   = MulBW'({1'b0, cfg_kb_i});
-        mul_s20 = 1'b1;
-      end
-      StH1: begin
-        mul_a  = e_q;
-        mul_b  = e_b;
-      end
-      StDw1: begin
-        mul_a   = h_q;
-        mul_b   = MulBW'({1'b0, cur_eta1});
-        mul_s20 = 1'b1;
-        mul_ls  = 1'b1;
-      end
-      StH2: begin
-        mul_a  = x2_q;
-        mul_b  = e_b;
-      end
-      StDw2: begin
-        mul_a   = h_q;
-        mul_b   = MulBW'({1'b0, cur_eta2});
-        mul_s20 = 1'b1;
-        mul_ls  = 1'b1;
-      end
-      default: ;
+    unique case (cfg_sel)
+      CfDzP:    cfg_val = AluW'({2'b00, cfg_learn_dz_p_i});
+      CfDzV:    cfg_val = AluW'({2'b00, cfg_learn_dz_v_i});
+      CfFerr:   cfg_val = AluW'({2'b00, cfg_ferr_lim_i});
+      CfWin:    cfg_val = AluW'({2'b00, cfg_inpos_win_i});
+      CfVLim:   cfg_val = AluW'({2'b00, cfg_v_lim_i});
+      CfULim:   cfg_val = AluW'({2'b00, cfg_u_lim_i});
+      CfWMin:   cfg_val = AluW'(cfg_w_min_i);
+      CfWP1Max: cfg_val = AluW'(cfg_w_p1_max_i);
+      CfWV1Max: cfg_val = AluW'(cfg_w_v1_max_i);
+      CfWP2Max: cfg_val = AluW'(cfg_w_p2_max_i);
+      CfWV2Max: cfg_val = AluW'(cfg_w_v2_max_i);
+      CfWP1:    cfg_val = AluW'(cfg_w_p1_i);
+      CfWV1:    cfg_val = AluW'(cfg_w_v1_i);
+      CfWP2:    cfg_val = AluW'(cfg_w_p2_i);
+      CfWV2:    cfg_val = AluW'(cfg_w_v2_i);
+      CfKP:     cfg_val = AluW'({1'b0, cfg_k_p_i});
+      CfKV:     cfg_val = AluW'({1'b0, cfg_k_v_i});
+      CfKb:     cfg_val = AluW'({1'b0, cfg_kb_i});
+      CfEtaP1:  cfg_val = AluW'({1'b0, cfg_eta_p1_i});
+      CfEtaV1:  cfg_val = AluW'({1'b0, cfg_eta_v1_i});
+      CfEtaP2:  cfg_val = AluW'({1'b0, cfg_eta_p2_i});
+      CfEtaV2:  cfg_val = AluW'({1'b0, cfg_eta_v2_i});
+      default:  cfg_val = '0;
     endcase
   end
 
-  // ShLo = NWgtFrac = CtlFrac, ShHi = CoefFrac = CoefFrac + CtlFrac - WgtFrac
+  // ---- the adder ---------------------------------------------------------------------
+  logic [1:0]             a_src;
+  logic [2:0]             b_src;
+  logic                   alu_sub;   // a - b (else a + b)
+  logic                   alu_abs;   // a + |b|
+  logic signed [AluW-1:0] alu_a, alu_b, alu_r;
+  logic                   alu_n, alu_z, alu_sub_eff;
+  logic signed [CtlW-1:0] alu_sat;
+
+  always_comb begin
+    unique case (a_src)
+      ARf:     alu_a = AluW'($signed(rf_a));
+      AT:      alu_a = t_q;
+      ARef:    alu_a = AluW'(ref_q);
+      default: alu_a = '0;
+    endcase
+    unique case (b_src)
+      BRf:     alu_b = AluW'($signed(rf_b));
+      BCfg:    alu_b = cfg_val;
+      BPfb:    alu_b = AluW'(pfb_q);
+      BVmeas:  alu_b = AluW'(vmeas_q);
+      default: alu_b = '0;
+    endcase
+  end
+  assign alu_sub_eff = alu_abs ? alu_b[AluW-1] : alu_sub;
+  assign alu_r       = alu_sub_eff ? alu_a - alu_b : alu_a + alu_b;
+  assign alu_n       = alu_r[AluW-1];
+  assign alu_z       = (alu_r == '0);
+  assign alu_sat     = (alu_r[AluW-1:CtlW-1] != '0 && alu_r[AluW-1:CtlW-1] != '1) ?
+                       (alu_r[AluW-1] ? CtlMin : CtlMax) : alu_r[CtlW-1:0];
+
+  // ---- the multiplier ----------------------------------------------------------------
+  // Every product is rounded half up and shifted by s = 16 (Vff, T1, T2, H1,
+  // H2), 20 (Du, Bc) or 20 + learn_shift (Dw1, Dw2). Vff's shift
+  // (VffFrac - CtlFrac - shift = 15 - shift) is brought to 16 by scaling the
+  // B operand by 2^(shift+1) (exact). (p + 2^(s-1)) >>> s is computed as
+  // ((p >>> (s-1)) + 1) >>> 1 = (v >>> 1) + v[0].
+  localparam int DivShW = CtlDivW + (1 << sc_pkg::EncShiftW) - 1;
+  logic [DivShW-1:0]       div_sh;
+  assign div_sh   = DivShW'(cfg_div_i) << cfg_shift_i;
+  assign div_sh_o = div_sh;
+
+  logic                    mul_a_vq;  // A operand: V* (else register-file port A)
+  logic [1:0]              mb_src;
+  logic                    mul_s20;   // base shift 20 (else 16)
+  logic                    mul_ls;    // plus learn_shift
+  logic signed [MulAW-1:0] mul_a;
+  logic signed [MulBW-1:0] mul_b, e_b;
+  logic signed [ProdW-1:0] mul_p, mul_r;
+  logic signed [CtlW-1:0]  mul_y;
+
+  // e (register-file port B) saturated to the B port, 0 while not learning;
+  // |e| <= BMax iff bits CtlW-1..MulBW-1 are all equal and e != -2^(MulBW-1)
+  logic                    e_in_b;
+  assign e_in_b = ((rf_b[CtlW-1:MulBW-1] == '0) || (rf_b[CtlW-1:MulBW-1] == '1))
+                  && (rf_b[MulBW-2:0] != '0 || !rf_b[CtlW-1]);
+  assign e_b    = !learn_q ? '0 : !e_in_b ? (rf_b[CtlW-1] ? -BMax : BMax) : rf_b[MulBW-1:0];
+
+  assign mul_a = mul_a_vq ? vq_q : $signed(rf_a);
+  always_comb begin
+    unique case (mb_src)
+      MbRf:    mul_b = rf_b[MulBW-1:0];
+      MbCfg:   mul_b = cfg_val[MulBW-1:0];
+      MbEb:    mul_b = e_b;
+      default: mul_b = MulBW'(div_sh) << (NWgtFrac - (VffFrac - CtlFrac));
+    endcase
+  end
+
   localparam int ShLo = NWgtFrac;
   localparam int ShHi = CoefFrac;
   localparam int TW   = ProdW - (ShLo - 1);   // p >>> (ShLo - 1)
@@ -327,42 +392,27 @@ module sc_neuron_pi (
   logic signed [TW-2:0]    mul_rn;    // cannot overflow: |p| < 2^(ProdW-2)
   assign mul_rn  = mul_h + (TW-1)'({1'b0, mul_v[0]});
   assign mul_r   = ProdW'(mul_rn);
-  assign mul_y   = sat_prod(mul_r);
+  assign mul_y   = (mul_r[ProdW-1:CtlW-1] != '0 && mul_r[ProdW-1:CtlW-1] != '1) ?
+                   (mul_r[ProdW-1] ? CtlMin : CtlMax) : mul_r[CtlW-1:0];
 
-  // ---- divider step -------------------------------------------------------------------
-  logic             div_ge;
-  logic [RemW-1:0]  div_rem_sub;
-  logic [QuoW-1:0]  div_quo;
-  logic [QuoW-1:0]  div_res;
-  logic signed [NWgtW-1:0] div_wn;
-  logic             div_neg;
-  logic signed [NWgtW-1:0] div_pos;
-
+  // ---- divider step ------------------------------------------------------------------
   // restoring division: the borrow of one subtraction decides the quotient
-  // bit; bits enter at the LSB, MSB first (NWgtFrac+1 steps fill dquo)
-  logic [RemW:0]    div_diff;
+  // bit; bits enter at the LSB, MSB first (NWgtFrac+1 steps fill dquo). The
+  // sign is the weight's (register-file port B during the division).
+  logic [RemW:0]           div_diff;
+  logic                    div_ge;
+  logic [RemW-1:0]         div_rem_sub;
+  logic [QuoW-1:0]         div_quo, div_res;
+  logic signed [NWgtW-1:0] div_pos, div_wn;
   assign div_diff    = {1'b0, drem_q} - {1'b0, RemW'(dsum_q)};
   assign div_ge      = !div_diff[RemW];
   assign div_rem_sub = div_ge ? div_diff[RemW-1:0] : drem_q;
   assign div_quo     = {dquo_q[QuoW-2:0], div_ge};
-  assign div_neg     = dsel_q ? cur_w2[WgtW-1] : cur_w1[WgtW-1];
   assign div_res     = (dsum_q == '0) ? '0 : div_quo;
   assign div_pos     = NWgtW'(div_res);
-  assign div_wn      = div_neg ? -div_pos : div_pos;
+  assign div_wn      = rf_b[CtlW-1] ? -div_pos : div_pos;
 
-  // ---- position error (checked in StErr) ----------------------------------------------
-  logic signed [CtlW-1:0] e_now, ae_now;
-  logic [CtlW-1:0]        abs_e;
-  assign e_now  = cur_ref - cur_fb;
-  assign ae_now = e_now[CtlW-1] ? -e_now : e_now;
-  assign abs_e  = ae_now;
-  logic signed [CtlW-1:0] e_db;
-  logic                   hush_now;
-  assign hush_now = !sel_q && fin_q;
-  assign e_db     = hush_now ? '0 : e_now;
-
-  // e_p rounded to whole steps (2^(CtlFrac+shift) per step), saturated
-  localparam int CorrW = sc_pkg::CorrW;
+  // ---- e_p rounded to whole steps (2^(CtlFrac+shift) per step), saturated -----------
   logic signed [CtlW-1:0]  corr_full;
   logic signed [CorrW-1:0] corr_steps, corr_step_dir;
   // (e + 2^(sh-1)) >>> sh, sh = CtlFrac + shift: v = (e >>> (CtlFrac-1)) >>> shift,
@@ -370,7 +420,7 @@ module sc_neuron_pi (
   localparam int CvW = CtlW - CtlFrac + 1;
   logic signed [CvW-1:0]   corr_v;
   logic signed [CvW-2:0]   corr_h;
-  assign corr_v     = CvW'(e_now >>> (CtlFrac - 1)) >>> cfg_shift_i;
+  assign corr_v     = CvW'(eraw_q >>> (CtlFrac - 1)) >>> cfg_shift_i;
   assign corr_h     = corr_v[CvW-1:1];
   assign corr_full  = CtlW'(corr_h) + CtlW'({1'b0, corr_v[0]});
   logic                    corr_in;   // |corr_full| <= 2^(CorrW-1) - 1
@@ -380,60 +430,284 @@ module sc_neuron_pi (
                       corr_full[CorrW-1:0];
   assign corr_step_dir = corr_q[CorrW-1] ? CorrW'(1) : -CorrW'(1);
 
-  // ---- accumulate and saturate (StBc) -------------------------------------------------
-  // out = clamp(tot, +-lim), es = tot - out: with o_hi = tot - lim and
-  // o_lo = tot + lim (CtlW+2 bits, exact), tot > lim iff o_hi > 0 and then
-  // es = o_hi (in range: 0 < o_hi < 2^(CtlW-1)), tot < -lim iff o_lo < 0 and
-  // es = o_lo; a lim >= 2^(CtlW-1) never limits. No comparator, no saturation.
-  localparam int LimW = CtlW + 2;
-  logic signed [CtlW-1:0] acc_new, tot, out_sat, es_new;
-  logic signed [CtlW+1:0] acc3;      // acc + du - bc, exact; saturated once
-  logic signed [LimW-1:0] lim_s, o_hi, o_lo;
-  logic                   lim_hi, lim_lo;
-  assign acc3    = (CtlW+2)'(cur_acc) + (CtlW+2)'(du_q) - (CtlW+2)'(mul_y);
-  assign acc_new = hush_q ? '0 :
-                   (acc3[CtlW+1:CtlW-1] != '0 && acc3[CtlW+1:CtlW-1] != '1) ?
-                   (acc3[CtlW+1] ? CtlMin : CtlMax) : acc3[CtlW-1:0];
-  assign tot     = sat_c33((CtlW+1)'(acc_new) + (CtlW+1)'(cur_bias));
-  assign lim_s   = $signed({2'b00, cur_lim});
-  assign o_hi    = LimW'(tot) - lim_s;
-  assign o_lo    = LimW'(tot) + lim_s;
-  assign lim_hi  = !o_hi[LimW-1] && (o_hi != '0);
-  assign lim_lo  = o_lo[LimW-1];
-  assign out_sat = lim_hi ? CtlW'(cur_lim) : lim_lo ? CtlW'(-lim_s) : tot;
-  assign es_new  = lim_hi ? o_hi[CtlW-1:0] : lim_lo ? o_lo[CtlW-1:0] : '0;
+  logic hush_now;   // settling: position error held at 0 for the PI
+  assign hush_now = !sel_q && fin_q;
 
-  // ---- weight update (StDw1/StDw2) ----------------------------------------------------
-  logic signed [CtlW:0]   w_sum;
-  logic signed [WgtW-1:0] w_new, w_old;
-  assign w_old = (st_q == StDw1) ? cur_w1 : cur_w2;
-  assign w_sum = (CtlW+1)'(w_old) + (CtlW+1)'(mul_y);
-  logic signed [WgtW-1:0] w_hi;
-  assign w_hi  = (st_q == StDw1) ? (sel_q ? cfg_w_v1_max_i : cfg_w_p1_max_i)
-                                 : (sel_q ? cfg_w_v2_max_i : cfg_w_p2_max_i);
-  assign w_new = (w_sum > (CtlW+1)'(w_hi)) ? w_hi :
-                 (w_sum < (CtlW+1)'(cfg_w_min_i)) ? cfg_w_min_i : w_sum[WgtW-1:0];
+  // ---- micro-program -------------------------------------------------------------------
+  logic [4:0]        pair;      // per-loop register of the step (even base)
+  logic [2:0]        w_src;
+  logic              t_we;      // T := alu_r
+  logic [UpcW-1:0]   u2;        // step within the weight update (w1: UW1.., w2: UW5..)
+  logic              w2nd;      // the weight update is for w2
+  logic [CtlStW-1:0] st;        // state_o
 
-  // divider set-up (StVff: position weights; StDw2: speed weights; StDiv:
-  // |w2| of the current loop) on one pair of |.| and one adder
-  logic signed [WgtW-1:0] ws1, ws2;
-  logic [WgtW-1:0]        aws1, aws2;
-  logic [SumW-1:0]        aws_sum;
-  assign ws1     = (st_q == StVff) ? w1_p_q : w1_v_q;
-  assign ws2     = (st_q == StVff || (st_q == StDiv && !sel_q)) ? w2_p_q : w2_v_q;
-  assign aws1    = abs_w(ws1);
-  assign aws2    = abs_w(ws2);
-  assign aws_sum = SumW'(aws1) + SumW'(aws2);
+  assign w2nd = (upc_q >= UH2);
+  assign u2   = w2nd ? upc_q - 6'd6 : upc_q;
 
-  // ---- FSM and datapath ---------------------------------------------------------------
+  always_comb begin
+    ra      = '0;
+    rb      = '0;
+    a_src   = AZero;
+    b_src   = BZero;
+    cfg_sel = CfWMin;
+    alu_sub = 1'b0;
+    alu_abs = 1'b0;
+    mul_a_vq = 1'b0;
+    mb_src  = MbRf;
+    mul_s20 = 1'b0;
+    mul_ls  = 1'b0;
+    rf_we   = 1'b0;
+    rf_wa   = '0;
+    w_src   = WWrap;
+    t_we    = 1'b0;
+    pair    = '0;
+    st      = StIdle;
+    unique case (upc_q)
+      UIdle: st = StIdle;
+      UVff: begin
+        st       = StVff;
+        mul_a_vq = 1'b1;
+        mb_src   = MbDivSh;
+        rf_we    = 1'b1;
+        rf_wa    = RfVff;
+        w_src    = WMul;
+      end
+      USet1, USet2, USet3, UDiv1, UDiv2: begin
+        st      = StDiv;
+        rb      = ((upc_q == USet1 || upc_q == UDiv1) ? RfW1 : RfW2) | {4'd0, sel_q};
+        a_src   = (upc_q == USet2) ? AT : AZero;
+        b_src   = BRf;
+        alu_abs = 1'b1;
+        t_we    = (upc_q == USet1);
+        rf_we   = (upc_q == UDiv1 || upc_q == UDiv2) && dbit_q == '0;
+        rf_wa   = ((upc_q == UDiv1) ? RfN1 : RfN2) | {4'd0, sel_q};
+        w_src   = WDiv;
+      end
+      URef: begin
+        st    = StErr;
+        a_src = sel_q ? ARf : ARef;
+        ra    = RfOutP;
+        rb    = RfVff;
+        b_src = (sel_q && cfg_ff_en_i) ? BRf : BZero;
+        t_we  = 1'b1;
+      end
+      UErr: begin
+        st      = StErr;
+        a_src   = AT;
+        b_src   = sel_q ? BVmeas : BPfb;
+        alu_sub = 1'b1;
+        rf_we   = 1'b1;
+        rf_wa   = RfEraw;
+      end
+      UAbs: begin
+        st      = StErr;
+        rb      = RfEraw;
+        b_src   = BRf;
+        alu_abs = 1'b1;
+        t_we    = 1'b1;
+      end
+      UEq, UX2: begin
+        st      = StErr;
+        ra      = RfEraw;
+        rb      = RfEp | {4'd0, sel_q};
+        a_src   = (upc_q == UX2 && hush_now) ? AZero : ARf;
+        b_src   = BRf;
+        alu_sub = 1'b1;
+        rf_we   = (upc_q == UX2);
+        rf_wa   = RfX2;
+      end
+      UE, UEp: begin
+        st      = StErr;
+        ra      = RfEraw;
+        a_src   = (upc_q == UE && hush_now) ? AZero : ARf;
+        rf_we   = 1'b1;
+        rf_wa   = (upc_q == UE) ? RfE : (RfEp | {4'd0, sel_q});
+      end
+      ULearn, UFerr, UWin: begin
+        st      = StErr;
+        a_src   = AT;
+        b_src   = BCfg;
+        cfg_sel = (upc_q == ULearn) ? (sel_q ? CfDzV : CfDzP) : (upc_q == UFerr) ? CfFerr : CfWin;
+        alu_sub = 1'b1;
+      end
+      UT1: begin
+        st    = StT1;
+        ra    = RfE;
+        rb    = RfN1 | {4'd0, sel_q};
+        rf_we = 1'b1;
+        rf_wa = RfT1;
+        w_src = WMul;
+      end
+      UT2: begin
+        st    = StT2;
+        ra    = RfX2;
+        rb    = RfN2 | {4'd0, sel_q};
+        rf_we = 1'b1;
+        rf_wa = RfT2;
+        w_src = WMul;
+      end
+      USum: begin
+        st    = StT2;
+        ra    = RfT1;
+        rb    = RfT2;
+        a_src = ARf;
+        b_src = BRf;
+        rf_we = 1'b1;
+        rf_wa = RfSum;
+        w_src = WSat;
+      end
+      UDu, UBc: begin
+        st      = (upc_q == UDu) ? StDu : StBc;
+        ra      = (upc_q == UDu) ? RfSum : (RfEs | {4'd0, sel_q});
+        mb_src  = MbCfg;
+        cfg_sel = (upc_q == UBc) ? CfKb : sel_q ? CfKV : CfKP;
+        mul_s20 = 1'b1;
+        rf_we   = 1'b1;
+        rf_wa   = (upc_q == UDu) ? RfDu : RfBc;
+        w_src   = WMul;
+      end
+      UAcc1: begin
+        st    = StBc;
+        ra    = RfAcc | {4'd0, sel_q};
+        rb    = RfDu;
+        a_src = ARf;
+        b_src = BRf;
+        t_we  = 1'b1;
+      end
+      UAcc2: begin
+        st      = StBc;
+        rb      = RfBc;
+        a_src   = AT;
+        b_src   = BRf;
+        alu_sub = 1'b1;
+        rf_we   = 1'b1;
+        rf_wa   = RfAcc | {4'd0, sel_q};
+        w_src   = hush_q ? WZero : WSat;
+      end
+      UTot: begin
+        st    = StBc;
+        ra    = RfAcc | {4'd0, sel_q};
+        rb    = RfVff;
+        a_src = ARf;
+        b_src = (sel_q && cfg_ff_en_i) ? BRf : BZero;
+        rf_we = 1'b1;
+        rf_wa = RfTot;
+        w_src = WSat;
+      end
+      UHi, ULo: begin
+        st      = StBc;
+        ra      = RfTot;
+        a_src   = ARf;
+        b_src   = BCfg;
+        cfg_sel = sel_q ? CfULim : CfVLim;
+        alu_sub = (upc_q == UHi);
+        // es = tot - lim when tot > lim (else 0), then tot + lim when < -lim
+        rf_we   = (upc_q == UHi) || alu_n;
+        rf_wa   = RfEs | {4'd0, sel_q};
+        w_src   = (upc_q == UHi && (alu_n || alu_z)) ? WZero : WWrap;
+      end
+      UOut: begin
+        st      = StBc;
+        ra      = RfTot;
+        rb      = RfEs | {4'd0, sel_q};
+        a_src   = ARf;
+        b_src   = BRf;
+        alu_sub = 1'b1;
+        rf_we   = !sel_q;
+        rf_wa   = RfOutP;
+      end
+      UH1, UH2: begin
+        st     = (upc_q == UH1) ? StH1 : StH2;
+        ra     = (upc_q == UH1) ? RfE : RfX2;
+        rb     = RfE;
+        mb_src = MbEb;
+        rf_we  = 1'b1;
+        rf_wa  = RfH;
+        w_src  = WMul;
+      end
+      UDw1, UDw2: begin
+        st      = (upc_q == UDw1) ? StDw1 : StDw2;
+        ra      = RfH;
+        mb_src  = MbCfg;
+        cfg_sel = (upc_q == UDw1) ? (sel_q ? CfEtaV1 : CfEtaP1) : (sel_q ? CfEtaV2 : CfEtaP2);
+        mul_s20 = 1'b1;
+        mul_ls  = 1'b1;
+        rf_we   = 1'b1;
+        rf_wa   = RfDw;
+        w_src   = WMul;
+      end
+      default: begin
+        // UW1..UW4 (w1), UW5..UW8 (w2)
+        if (upc_q >= UW1 && upc_q <= UW8 && upc_q != UH2 && upc_q != UDw2) begin
+          st      = w2nd ? StDw2 : StDw1;
+          pair    = (w2nd ? RfW2 : RfW1) | {4'd0, sel_q};
+          cfg_sel = (u2 == UW3) ? CfWMin :
+                    (u2 == UW4) ? (over_q ? (w2nd ? (sel_q ? CfWV2Max : CfWP2Max)
+                                                  : (sel_q ? CfWV1Max : CfWP1Max)) : CfWMin) :
+                    w2nd ? (sel_q ? CfWV2Max : CfWP2Max) : (sel_q ? CfWV1Max : CfWP1Max);
+          unique case (u2)
+            UW1: begin                      // T = w + dw
+              ra    = pair;
+              rb    = RfDw;
+              a_src = ARf;
+              b_src = BRf;
+              t_we  = 1'b1;
+            end
+            UW2, UW3: begin                 // T - w_max > 0 ?  T - w_min < 0 ?
+              a_src   = AT;
+              b_src   = BCfg;
+              alu_sub = 1'b1;
+            end
+            default: begin                  // w = w_max, w_min or T (then within both)
+              a_src = (over_q || under_q) ? AZero : AT;
+              b_src = (over_q || under_q) ? BCfg : BZero;
+              rf_we = 1'b1;
+              rf_wa = pair;
+            end
+          endcase
+        end else if (upc_q >= UInit && upc_q < UInit + 6'(NInit)) begin
+          // start: e_prev, acc, es, out_p, vff = 0; weights = their initial values
+          st    = StInit;
+          rf_we = 1'b1;
+          b_src = BCfg;
+          unique case (upc_q - UInit)
+            6'd0: rf_wa = RfEp;
+            6'd1: rf_wa = RfEp + 5'd1;
+            6'd2: rf_wa = RfAcc;
+            6'd3: rf_wa = RfAcc + 5'd1;
+            6'd4: rf_wa = RfEs;
+            6'd5: rf_wa = RfEs + 5'd1;
+            6'd6: rf_wa = RfOutP;
+            6'd7: rf_wa = RfVff;
+            6'd8: begin rf_wa = RfW1;        cfg_sel = CfWP1; end
+            6'd9: begin rf_wa = RfW1 + 5'd1; cfg_sel = CfWV1; end
+            6'd10: begin rf_wa = RfW2;        cfg_sel = CfWP2; end
+            default: begin rf_wa = RfW2 + 5'd1; cfg_sel = CfWV2; end
+          endcase
+          if (upc_q - UInit < 6'd8) b_src = BZero;
+        end
+      end
+    endcase
+  end
+
+  always_comb begin
+    unique case (w_src)
+      WSat:    rf_wd = alu_sat;
+      WMul:    rf_wd = mul_y;
+      WDiv:    rf_wd = CtlW'(div_wn);
+      WZero:   rf_wd = '0;
+      default: rf_wd = alu_r[CtlW-1:0];
+    endcase
+  end
+
+  // ---- sequencing, flags, snapshot, settling --------------------------------------------
   always_comb begin
     active_d = active_q;
     in_pos_d = in_pos_q;
     ferr_d   = ferr_q;
     cnt_d    = cnt_q;
-    st_d     = st_q;
+    upc_d    = upc_q;
     sel_d    = sel_q;
-    dsel_d   = dsel_q;
     dbit_d   = dbit_q;
     drem_d   = drem_q;
     dquo_d   = dquo_q;
@@ -442,6 +716,12 @@ module sc_neuron_pi (
     hush_d   = hush_q;
     corr_d   = corr_q;
     if (corr_q != '0 && nco_req_i) corr_d = corr_q + corr_step_dir;
+    learn_d  = learn_q;
+    eq_d     = eq_q;
+    over_d   = over_q;
+    under_d  = under_q;
+    t_d      = t_q;
+    eraw_d   = eraw_q;
     ref_d    = ref_q;
     pfb_d    = pfb_q;
     vmeas_d  = vmeas_q;
@@ -449,35 +729,13 @@ module sc_neuron_pi (
     fin_d    = fin_q;
     mv_d     = mv_q | cmd_busy_i;
     mvs_d    = mvs_q;
-    vff_d    = vff_q;
-    w1_p_d   = w1_p_q;
-    w2_p_d   = w2_p_q;
-    w1_v_d   = w1_v_q;
-    w2_v_d   = w2_v_q;
-    n1_p_d   = n1_p_q;
-    n2_p_d   = n2_p_q;
-    n1_v_d   = n1_v_q;
-    n2_v_d   = n2_v_q;
-    ep_p_d   = ep_p_q;
-    ep_v_d   = ep_v_q;
-    acc_p_d  = acc_p_q;
-    acc_v_d  = acc_v_q;
-    es_p_d   = es_p_q;
-    es_v_d   = es_v_q;
-    out_p_d  = out_p_q;
     u_d      = u_q;
-    e_d      = e_q;
-    x2_d     = x2_q;
-    t1_d     = t1_q;
-    t2_d     = t2_q;
-    du_d     = du_q;
-    h_d      = h_q;
-    learn_d  = learn_q;
+    if (t_we) t_d = alu_r;
 
     if (active_q) begin
       if (cnt_q == '0) begin
         cnt_d = cfg_div_i - CtlDivW'(1);
-        if (st_q == StIdle) begin
+        if (upc_q == UIdle) begin
           // snapshot: P* - 1/2 (the integer target L once the reference is done), P, V
           ref_d   = (ref_done_i ? CtlW'(ref_int_i) << CtlFrac
                                     : CtlW'({ref_int_i, ref_frac_i}) - (CtlW'(1) << (CtlFrac - 1)))
@@ -488,65 +746,58 @@ module sc_neuron_pi (
           fin_d   = ref_done_i;
           mvs_d   = mv_q | cmd_busy_i;
           mv_d    = 1'b0;
-          st_d    = StVff;
+          sel_d   = 1'b0;
+          upc_d   = UVff;
         end
       end else begin
         cnt_d = cnt_q - CtlDivW'(1);
       end
     end
 
-    unique case (st_q)
-      StIdle: ;
-      StVff: begin
-        vff_d  = mul_y;
-        sel_d  = 1'b0;
-        dsel_d = 1'b0;
+    if (upc_q != UIdle) upc_d = upc_q + 6'd1;
+    if (upc_q == UInit + 6'(NInit - 1)) upc_d = UIdle;   // wait for the first snapshot
+    unique case (upc_q)
+      UIdle: ;
+      USet1: drem_d = RemW'(alu_r);
+      USet2: begin
+        dsum_d = SumW'(alu_r);
         dbit_d = DbitW'(NWgtFrac);
         dquo_d = '0;
-        drem_d = RemW'(aws1);
-        dsum_d = aws_sum;
-        st_d   = StDiv;
       end
-      StDiv: begin
+      USet3: begin
+        drem_d = RemW'(alu_r);
+        dbit_d = DbitW'(NWgtFrac);
+        dquo_d = '0;
+      end
+      UDiv1, UDiv2: begin
         drem_d = div_rem_sub << 1;
         dquo_d = div_quo;
         dbit_d = dbit_q - DbitW'(1);
-        if (dbit_q == '0) begin
-          if (!dsel_q) begin
-            if (sel_q) n1_v_d = div_wn; else n1_p_d = div_wn;
-            dsel_d = 1'b1;
-            dbit_d = DbitW'(NWgtFrac);
-            dquo_d = '0;
-            drem_d = RemW'(aws2);
-          end else begin
-            if (sel_q) n2_v_d = div_wn; else n2_p_d = div_wn;
-            st_d = StErr;
-          end
+        if (dbit_q != '0) upc_d = upc_q;
+      end
+      UErr: eraw_d = alu_r[CtlW-1:0];
+      UEq: eq_d = alu_z;
+      UEp: if (!sel_q) hush_d = hush_now;
+      ULearn: learn_d = !hush_now && !alu_n && !alu_z;
+      UFerr: begin
+        if (!sel_q && !alu_n && !alu_z) begin
+          ferr_d   = 1'b1;
+          active_d = 1'b0;
+          u_d      = '0;
+          upc_d    = UIdle;
         end
       end
-      StErr: begin
-        e_d  = e_db;
-        learn_d = !hush_now && (abs_e > (sel_q ? cfg_learn_dz_v_i : cfg_learn_dz_p_i));
-        x2_d = e_db - cur_ep;
-        // e_p_o keeps the raw position error (also while settling)
-        if (sel_q) ep_v_d = e_db; else ep_p_d = e_now;
-        if (!sel_q) hush_d = hush_now;
-        st_d = StT1;
+      UWin: begin
         if (!sel_q) begin
-          if (abs_e > cfg_ferr_lim_i) begin
-            ferr_d   = 1'b1;
-            active_d = 1'b0;
-            u_d      = '0;
-            st_d     = StIdle;
-          end else if (fin_q && !mvs_q && corr_q == '0 && e_now == ep_p_q) begin
+          if (fin_q && !mvs_q && corr_q == '0 && eq_q) begin
             hold_d = hold_q + HoldW'(1);
             if (hold_d >= cfg_inpos_hold_i) begin
               hold_d = '0;
-              if (abs_e <= cfg_inpos_win_i || corr_steps == '0) begin
+              if (alu_n || alu_z || corr_steps == '0) begin   // |e_p| <= win
                 in_pos_d = 1'b1;
                 active_d = 1'b0;
                 u_d      = '0;
-                st_d     = StIdle;
+                upc_d    = UIdle;
               end else begin
                 corr_d = corr_steps;
               end
@@ -556,59 +807,19 @@ module sc_neuron_pi (
           end
         end
       end
-      StT1: begin
-        t1_d = mul_y;
-        st_d = StT2;
-      end
-      StT2: begin
-        t2_d = mul_y;
-        st_d = StDu;
-      end
-      StDu: begin
-        du_d = mul_y;
-        st_d = StBc;
-      end
-      StBc: begin
-        if (sel_q) begin
-          acc_v_d = acc_new;
-          es_v_d  = es_new;
-          u_d     = out_sat;
-        end else begin
-          acc_p_d = acc_new;
-          es_p_d  = es_new;
-          out_p_d = out_sat;
-        end
-        st_d = StH1;
-      end
-      StH1: begin
-        h_d  = mul_y;
-        st_d = StDw1;
-      end
-      StDw1: begin
-        if (sel_q) w1_v_d = w_new; else w1_p_d = w_new;
-        st_d = StH2;
-      end
-      StH2: begin
-        h_d  = mul_y;
-        st_d = StDw2;
-      end
-      StDw2: begin
-        if (sel_q) begin
-          w2_v_d = w_new;
-          st_d   = StIdle;
-        end else begin
-          w2_p_d = w_new;
-          sel_d  = 1'b1;
-          dsel_d = 1'b0;
-          dbit_d = DbitW'(NWgtFrac);
-          dquo_d = '0;
-          drem_d = RemW'(aws1);
-          dsum_d = aws_sum;
-          st_d   = StDiv;
-        end
-      end
-      default: st_d = StIdle;
+      UOut: if (sel_q) u_d = alu_r[CtlW-1:0];
+      default: ;
     endcase
+    if (u2 == UW2 && upc_q != UH2 && upc_q != UDw2) over_d = !alu_n && !alu_z;
+    if (u2 == UW3 && upc_q != UH2 && upc_q != UDw2) under_d = alu_n;
+    if (upc_q == UW8) begin
+      if (sel_q) begin
+        upc_d = UIdle;
+      end else begin
+        sel_d = 1'b1;
+        upc_d = USet1;
+      end
+    end
 
     // settling: the rate command is the corrective stepping only
     if (fin_q && active_d) begin
@@ -619,8 +830,8 @@ module sc_neuron_pi (
       active_d = 1'b1;
       in_pos_d = 1'b0;
       ferr_d   = 1'b0;
-      cnt_d    = '0;
-      st_d     = StIdle;
+      cnt_d    = CtlDivW'(NInit);   // the first snapshot follows the initialisation
+      upc_d    = UInit;
       sel_d    = 1'b0;
       hold_d   = '0;
       hush_d   = 1'b0;
@@ -628,23 +839,42 @@ module sc_neuron_pi (
       fin_d    = 1'b0;
       pfb_d    = CtlW'(enc_pos_i) <<< CtlFrac;
       vmeas_d  = '0;
-      vff_d    = '0;
-      w1_p_d   = cfg_w_p1_i;
-      w2_p_d   = cfg_w_p2_i;
-      w1_v_d   = cfg_w_v1_i;
-      w2_v_d   = cfg_w_v2_i;
-      ep_p_d   = '0;
-      ep_v_d   = '0;
-      acc_p_d  = '0;
-      acc_v_d  = '0;
-      es_p_d   = '0;
-      es_v_d   = '0;
-      out_p_d  = '0;
       u_d      = '0;
     end else if (stop_i) begin
       active_d = 1'b0;
-      st_d     = StIdle;
+      upc_d    = UIdle;
       u_d      = '0;
+    end
+  end
+
+  // output copies follow their register-file words
+  always_comb begin
+    vcmd_d = vcmd_q;
+    ep_p_d = ep_p_q;
+    ep_v_d = ep_v_q;
+    w_p1_d = w_p1_q;
+    w_v1_d = w_v1_q;
+    w_p2_d = w_p2_q;
+    w_v2_d = w_v2_q;
+    n_p1_d = n_p1_q;
+    n_v1_d = n_v1_q;
+    n_p2_d = n_p2_q;
+    n_v2_d = n_v2_q;
+    if (rf_we) begin
+      unique case (rf_wa)
+        RfOutP:          vcmd_d = rf_wd;
+        RfEp:            ep_p_d = rf_wd;
+        RfEp + 5'd1:     ep_v_d = rf_wd;
+        RfW1:            w_p1_d = rf_wd[WgtW-1:0];
+        RfW1 + 5'd1:     w_v1_d = rf_wd[WgtW-1:0];
+        RfW2:            w_p2_d = rf_wd[WgtW-1:0];
+        RfW2 + 5'd1:     w_v2_d = rf_wd[WgtW-1:0];
+        RfN1:            n_p1_d = rf_wd[NWgtW-1:0];
+        RfN1 + 5'd1:     n_v1_d = rf_wd[NWgtW-1:0];
+        RfN2:            n_p2_d = rf_wd[NWgtW-1:0];
+        RfN2 + 5'd1:     n_v2_d = rf_wd[NWgtW-1:0];
+        default: ;
+      endcase
     end
   end
 
@@ -654,9 +884,8 @@ module sc_neuron_pi (
       in_pos_q <= 1'b0;
       ferr_q   <= 1'b0;
       cnt_q    <= '0;
-      st_q     <= StIdle;
+      upc_q    <= UIdle;
       sel_q    <= 1'b0;
-      dsel_q   <= 1'b0;
       dbit_q   <= '0;
       drem_q   <= '0;
       dquo_q   <= '0;
@@ -664,6 +893,12 @@ module sc_neuron_pi (
       hold_q   <= '0;
       hush_q   <= 1'b0;
       corr_q   <= '0;
+      learn_q  <= 1'b0;
+      eq_q     <= 1'b0;
+      over_q   <= 1'b0;
+      under_q  <= 1'b0;
+      t_q      <= '0;
+      eraw_q   <= '0;
       ref_q    <= '0;
       pfb_q    <= '0;
       vmeas_q  <= '0;
@@ -671,38 +906,25 @@ module sc_neuron_pi (
       fin_q    <= 1'b0;
       mv_q     <= 1'b0;
       mvs_q    <= 1'b0;
-      vff_q    <= '0;
-      w1_p_q   <= '0;
-      w2_p_q   <= '0;
-      w1_v_q   <= '0;
-      w2_v_q   <= '0;
-      n1_p_q   <= '0;
-      n2_p_q   <= '0;
-      n1_v_q   <= '0;
-      n2_v_q   <= '0;
+      u_q      <= '0;
+      vcmd_q   <= '0;
       ep_p_q   <= '0;
       ep_v_q   <= '0;
-      acc_p_q  <= '0;
-      acc_v_q  <= '0;
-      es_p_q   <= '0;
-      es_v_q   <= '0;
-      out_p_q  <= '0;
-      u_q      <= '0;
-      e_q      <= '0;
-      x2_q     <= '0;
-      t1_q     <= '0;
-      t2_q     <= '0;
-      du_q     <= '0;
-      h_q      <= '0;
-      learn_q  <= 1'b0;
+      w_p1_q   <= '0;
+      w_v1_q   <= '0;
+      w_p2_q   <= '0;
+      w_v2_q   <= '0;
+      n_p1_q   <= '0;
+      n_v1_q   <= '0;
+      n_p2_q   <= '0;
+      n_v2_q   <= '0;
     end else begin
       active_q <= active_d;
       in_pos_q <= in_pos_d;
       ferr_q   <= ferr_d;
       cnt_q    <= cnt_d;
-      st_q     <= st_d;
+      upc_q    <= upc_d;
       sel_q    <= sel_d;
-      dsel_q   <= dsel_d;
       dbit_q   <= dbit_d;
       drem_q   <= drem_d;
       dquo_q   <= dquo_d;
@@ -710,6 +932,12 @@ module sc_neuron_pi (
       hold_q   <= hold_d;
       hush_q   <= hush_d;
       corr_q   <= corr_d;
+      learn_q  <= learn_d;
+      eq_q     <= eq_d;
+      over_q   <= over_d;
+      under_q  <= under_d;
+      t_q      <= t_d;
+      eraw_q   <= eraw_d;
       ref_q    <= ref_d;
       pfb_q    <= pfb_d;
       vmeas_q  <= vmeas_d;
@@ -717,30 +945,18 @@ module sc_neuron_pi (
       fin_q    <= fin_d;
       mv_q     <= mv_d;
       mvs_q    <= mvs_d;
-      vff_q    <= vff_d;
-      w1_p_q   <= w1_p_d;
-      w2_p_q   <= w2_p_d;
-      w1_v_q   <= w1_v_d;
-      w2_v_q   <= w2_v_d;
-      n1_p_q   <= n1_p_d;
-      n2_p_q   <= n2_p_d;
-      n1_v_q   <= n1_v_d;
-      n2_v_q   <= n2_v_d;
+      u_q      <= u_d;
+      vcmd_q   <= vcmd_d;
       ep_p_q   <= ep_p_d;
       ep_v_q   <= ep_v_d;
-      acc_p_q  <= acc_p_d;
-      acc_v_q  <= acc_v_d;
-      es_p_q   <= es_p_d;
-      es_v_q   <= es_v_d;
-      out_p_q  <= out_p_d;
-      u_q      <= u_d;
-      e_q      <= e_d;
-      x2_q     <= x2_d;
-      t1_q     <= t1_d;
-      t2_q     <= t2_d;
-      du_q     <= du_d;
-      h_q      <= h_d;
-      learn_q  <= learn_d;
+      w_p1_q   <= w_p1_d;
+      w_v1_q   <= w_v1_d;
+      w_p2_q   <= w_p2_d;
+      w_v2_q   <= w_v2_d;
+      n_p1_q   <= n_p1_d;
+      n_v1_q   <= n_v1_d;
+      n_p2_q   <= n_p2_d;
+      n_v2_q   <= n_v2_d;
     end
   end
 
@@ -748,17 +964,17 @@ module sc_neuron_pi (
   assign in_pos_o     = in_pos_q;
   assign fault_ferr_o = ferr_q;
   assign u_o          = u_q;
-  assign v_cmd_o      = out_p_q;
+  assign v_cmd_o      = vcmd_q;
   assign e_p_o        = ep_p_q;
   assign e_v_o        = ep_v_q;
-  assign w_p1_o       = w1_p_q;
-  assign w_p2_o       = w2_p_q;
-  assign w_v1_o       = w1_v_q;
-  assign w_v2_o       = w2_v_q;
-  assign wn_p1_o      = n1_p_q;
-  assign wn_p2_o      = n2_p_q;
-  assign wn_v1_o      = n1_v_q;
-  assign wn_v2_o      = n2_v_q;
-  assign state_o      = st_q;
+  assign w_p1_o       = w_p1_q;
+  assign w_p2_o       = w_p2_q;
+  assign w_v1_o       = w_v1_q;
+  assign w_v2_o       = w_v2_q;
+  assign wn_p1_o      = n_p1_q;
+  assign wn_p2_o      = n_p2_q;
+  assign wn_v1_o      = n_v1_q;
+  assign wn_v2_o      = n_v2_q;
+  assign state_o      = st;
 
 endmodule

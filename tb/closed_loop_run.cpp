@@ -39,7 +39,9 @@ std::string to_servo_config(const ControllerParams& p, const PlantConfig& plant,
   c.enc_filt = uint8_t(p.enc_filt);
   NeuronConfig& n = c.ctl;
   const double div = std::round(double(ClkHz) / p.rate_hz);
-  if (!(div >= 128 && div < 65536)) return fmt::format("ctl-rate={} Hz: needs {}..{} Hz (128..65535 clocks)", p.rate_hz, ClkHz / 65535.0, ClkHz / 128.0);
+  if (!(div >= NeuronPi::kMinDiv && div < 65536))
+    return fmt::format("ctl-rate={} Hz: needs {}..{} Hz ({}..65535 clocks)", p.rate_hz, ClkHz / 65535.0,
+                       double(ClkHz) / NeuronPi::kMinDiv, NeuronPi::kMinDiv);
   n.div = uint16_t(div);
   const double cps = plant.counts_per_step;
   const int shift = int(std::lround(std::log2(cps)));

@@ -120,14 +120,14 @@ TEST(NeuronPi, FixedPointMatchesDoubleReference) {
     // position loop
     const double r = (double(refq) - kQ / 2) / kQ;
     const double y = double(enc);
-    const RefLoop Lp{s0.lp[0].w1 / kW, s0.lp[0].w2 / kW, s0.lp[0].ep / kQ, s0.lp[0].acc / kQ, s0.lp[0].es / kQ};
+    const RefLoop Lp{s0.lp[0].w1 / kW, s0.lp[0].w2 / kW, s0.lp[0].ep / kQ, s0.acc(0) / kQ, s0.es(0) / kQ};
     const RefOut op = ref_update(Lp, r, y, 0.0, c.k_p / kC, c.kb / kC, c.v_lim / kQ, c.eta_p1 / kC, c.eta_p2 / kC,
                                  c.learn_shift, c.learn_dz_p / kQ, c.w_min / kW, c.w_p1_max / kW);
     // speed loop (its inputs from the fixed-point pos loop, so errors do not compound)
-    const double vff = s1.vff / kQ;
+    const double vff = s1.vff() / kQ;
     EXPECT_NEAR(vff, in.ref_vel / std::ldexp(1.0, VffFrac) * c.div, 2.0 / kQ);
     const double vmeas = s1.vmeas / kQ;
-    const RefLoop Lv{s0.lp[1].w1 / kW, s0.lp[1].w2 / kW, s0.lp[1].ep / kQ, s0.lp[1].acc / kQ, s0.lp[1].es / kQ};
+    const RefLoop Lv{s0.lp[1].w1 / kW, s0.lp[1].w2 / kW, s0.lp[1].ep / kQ, s0.acc(1) / kQ, s0.es(1) / kQ};
     const RefOut ov = ref_update(Lv, s1.out_p / kQ + vff, vmeas, vff, c.k_v / kC, c.kb / kC, c.u_lim / kQ,
                                  c.eta_v1 / kC, c.eta_v2 / kC, c.learn_shift, c.learn_dz_v / kQ, c.w_min / kW,
                                  c.w_v1_max / kW);
@@ -156,13 +156,22 @@ TEST(NeuronPi, DatapathFitsTheControlPeriod) {
   in.start = true;
   n.step(c, in);
   in.start = false;
+  int init = n.state().st == NeuronPi::StInit ? 1 : 0;
+  for (int i = 0; i < c.div; ++i) {  // initialisation, then the first period
+    n.step(c, in);
+    if (n.state().st == NeuronPi::StInit) ++init;
+  }
+  EXPECT_EQ(init, NeuronPi::kInitSteps);
   int busy = 0;
   for (int i = 0; i < c.div; ++i) {
     n.step(c, in);
     if (n.state().st != NeuronPi::StIdle) ++busy;
   }
-  // VFF + 2 x (2 divisions of 17 clocks + ERR + 8 multiplier states)
-  EXPECT_EQ(busy, 1 + 2 * (2 * (NWgtFrac + 1) + 1 + 8));
+  // VFF + 2 x (divider set-up 3 + 2 divisions of 17 clocks + error 10 + multiplier/sum 5
+  //            + accumulate/limit 6 + 2 weight updates of 6)
+  EXPECT_EQ(busy, NeuronPi::kBusyClocks);
+  EXPECT_EQ(NeuronPi::kBusyClocks, 1 + 2 * (3 + 2 * (NWgtFrac + 1) + 10 + 5 + 6 + 12));
+  EXPECT_LT(NeuronPi::kBusyClocks, NeuronPi::kMinDiv);
 }
 
 // A large constant error drives the output into saturation. With Kb = 1 the
@@ -183,7 +192,7 @@ TEST(NeuronPi, SaturationAndBackCalculationAntiWindup) {
     acc_peak = 0;
     for (int k = 0; k < 300; ++k) {
       run_period(n, c, in);
-      acc_peak = std::max(acc_peak, n.state().lp[0].acc);
+      acc_peak = std::max(acc_peak, n.state().acc(0));
       EXPECT_LE(n.state().out_p, int32_t(c.v_lim));
     }
     EXPECT_EQ(n.state().out_p, int32_t(c.v_lim));

@@ -214,73 +214,92 @@ void count(Coverage& c, bool& corr_sat, const NeuronConfig& cfg, const NeuronPi:
     corr_sat = false;
   }
   if (in.start || in.stop) return;
-  switch (p.st) {
-    case NeuronPi::StVff:
+  using N = NeuronPi;
+  const bool hush_now = !p.sel && p.fin;
+  switch (p.upc) {
+    case N::UVff:
       ++c[kPeriods];
-      if (sat(q.vff)) ++c[kSatVff];
-      if (q.vmeas >= (1 << 30) || q.vmeas <= -(1 << 30)) ++c[kVmeasHuge];
+      if (sat(q.vff())) ++c[kSatVff];
+      if (p.vmeas >= (1 << 30) || p.vmeas <= -(1 << 30)) ++c[kVmeasHuge];
       break;
-    case NeuronPi::StDiv:
-      if (p.dbit == 0 && p.dsum == 0) ++c[kDivZero];
-      if (p.dbit == 0 && p.dsum > (1u << (WgtW - 1))) ++c[kDivBig];
+    case N::UDiv1:
+    case N::UDiv2:
       if (p.dbit == 0) {
-        const int32_t wn = p.dsel ? q.lp[s].n2 : q.lp[s].n1;
+        if (p.dsum == 0) ++c[kDivZero];
+        if (p.dsum > (1u << (WgtW - 1))) ++c[kDivBig];
+        const int32_t wn = p.upc == N::UDiv2 ? q.lp[s].n2 : q.lp[s].n1;
         if (wn == (1 << NWgtFrac) || wn == -(1 << NWgtFrac)) ++c[kWnOne];
       }
       break;
-    case NeuronPi::StErr:
-      if (!p.sel && q.hush) ++c[kHush];
-      if (!q.hush || p.sel) ++c[q.learn ? kLearnOn : kLearnOff];
-      if (!p.sel && p.fin && p.corr == 0 && q.hold == 0 && (q.in_pos || q.corr != 0)) ++c[kHoldDone];
-      if (!p.sel && p.corr == 0 && q.corr != 0 && cfg.settle_rate >= (1u << 31)) ++c[kSettleNeg];
-      if (int64_t(q.e) - (p.sel ? p.lp[1].ep : p.lp[0].ep) != int64_t(q.x2)) ++c[kX2Wrap];
+    case N::URef:
       if (p.sel) {
-        const int64_t ref = int64_t(p.out_p) + (cfg.ff_en ? p.vff : 0);
+        const int64_t ref = int64_t(p.rf[N::RfOutP]) + (cfg.ff_en ? p.vff() : 0);
         if (ref > INT32_MAX || ref < INT32_MIN) ++c[kRefWrap];
       }
       break;
-    case NeuronPi::StT1:
-      if (sat(q.t1)) ++c[kSatT];
+    case N::UX2: {
+      const int64_t e = hush_now ? 0 : p.rf[N::RfEraw];
+      if (e - p.rf[N::RfEp + s] != int64_t(q.rf[N::RfX2])) ++c[kX2Wrap];
       break;
-    case NeuronPi::StT2:
-      if (sat(q.t2)) ++c[kSatT];
+    }
+    case N::UEp:
+      if (!p.sel && q.hush) ++c[kHush];
       break;
-    case NeuronPi::StDu:
-      if (sat(q.du)) ++c[kSatDu];
-      if (int64_t(p.t1) + p.t2 > INT32_MAX || int64_t(p.t1) + p.t2 < INT32_MIN) ++c[kSatT12];
+    case N::ULearn:
+      if (!hush_now) ++c[q.learn ? kLearnOn : kLearnOff];
       break;
-    case NeuronPi::StBc: {
-      const uint32_t lim = p.sel ? cfg.u_lim : cfg.v_lim;
-      if (q.lp[s].es != 0) ++c[p.sel ? kLimV : kLimP];
-      if (lim == 0) ++c[kLimZero];
-      if (lim >= (1u << 31)) ++c[kLimHuge];
-      if (cfg.kb != 0 && p.lp[s].es != 0 && !p.hush) ++c[kBackCalc];
-      if (sat(q.lp[s].acc)) ++c[kSatAcc];
-      const int64_t tot = int64_t(q.lp[s].acc) + ((p.sel && cfg.ff_en) ? p.vff : 0);
+    case N::UWin:
+      if (!p.sel && p.fin && p.corr == 0 && q.hold == 0 && (q.in_pos || q.corr != 0)) ++c[kHoldDone];
+      if (!p.sel && p.corr == 0 && q.corr != 0 && cfg.settle_rate >= (1u << 31)) ++c[kSettleNeg];
+      break;
+    case N::UT1:
+      if (sat(q.rf[N::RfT1])) ++c[kSatT];
+      break;
+    case N::UT2:
+      if (sat(q.rf[N::RfT2])) ++c[kSatT];
+      break;
+    case N::USum: {
+      const int64_t t12 = int64_t(p.rf[N::RfT1]) + p.rf[N::RfT2];
+      if (t12 > INT32_MAX || t12 < INT32_MIN) ++c[kSatT12];
+      break;
+    }
+    case N::UDu:
+      if (sat(q.rf[N::RfDu])) ++c[kSatDu];
+      break;
+    case N::UAcc2:
+      if (cfg.kb != 0 && p.es(s) != 0 && !p.hush) ++c[kBackCalc];
+      if (sat(q.acc(s))) ++c[kSatAcc];
+      break;
+    case N::UTot: {
+      const int64_t tot = int64_t(p.acc(s)) + ((p.sel && cfg.ff_en) ? p.vff() : 0);
       if (tot > INT32_MAX || tot < INT32_MIN) ++c[kSatTot];
       break;
     }
-    case NeuronPi::StH1:
-      if (sat(q.h)) ++c[kSatH];
-      if (p.learn && (p.e > (1 << (MulBW - 1)) - 1 || p.e < -((1 << (MulBW - 1)) - 1))) ++c[kEbClamp];
+    case N::ULo: {
+      const uint32_t lim = p.sel ? cfg.u_lim : cfg.v_lim;
+      if (q.es(s) != 0) ++c[p.sel ? kLimV : kLimP];
+      if (lim == 0) ++c[kLimZero];
+      if (lim >= (1u << 31)) ++c[kLimHuge];
       break;
-    case NeuronPi::StH2:
-      if (sat(q.h)) ++c[kSatH];
-      if (p.learn && p.e == -(1 << (MulBW - 1)) &&
-          NeuronPi::mul_round_sat(p.x2, -((1 << (MulBW - 1)) - 1), CtlFrac) !=
-              NeuronPi::mul_round_sat(p.x2, -(1 << (MulBW - 1)), CtlFrac)) {
+    }
+    case N::UH1:
+      if (sat(q.rf[N::RfH])) ++c[kSatH];
+      if (p.learn && (p.rf[N::RfE] > (1 << (MulBW - 1)) - 1 || p.rf[N::RfE] < -((1 << (MulBW - 1)) - 1))) ++c[kEbClamp];
+      break;
+    case N::UH2:
+      if (sat(q.rf[N::RfH])) ++c[kSatH];
+      if (p.learn && p.rf[N::RfE] == -(1 << (MulBW - 1)) &&
+          NeuronPi::mul_round_sat(p.rf[N::RfX2], -((1 << (MulBW - 1)) - 1), CtlFrac) !=
+              NeuronPi::mul_round_sat(p.rf[N::RfX2], -(1 << (MulBW - 1)), CtlFrac)) {
         ++c[kEbMin];  // the clamp changes the product
       }
       break;
-    case NeuronPi::StDw1:
-    case NeuronPi::StDw2: {
-      const bool one = p.st == NeuronPi::StDw1;
-      const uint32_t eta = one ? (p.sel ? cfg.eta_v1 : cfg.eta_p1) : (p.sel ? cfg.eta_v2 : cfg.eta_p2);
+    case N::UW1:
+    case N::UW5: {
+      const bool one = p.upc == N::UW1;
       const int32_t hi = one ? (p.sel ? cfg.w_v1_max : cfg.w_p1_max) : (p.sel ? cfg.w_v2_max : cfg.w_p2_max);
-      const int32_t old = one ? p.lp[s].w1 : p.lp[s].w2;
-      const int32_t dw = NeuronPi::mul_round_sat(p.h, int32_t(eta), unsigned(CoefFrac + CtlFrac - WgtFrac) +
-                                                                         (cfg.learn_shift & 31u));
-      const int64_t sum = int64_t(old) + dw;
+      const int32_t old = p.rf[(one ? N::RfW1 : N::RfW2) + s];
+      const int64_t sum = int64_t(old) + p.rf[N::RfDw];
       if (sum > hi) ++c[kWMax];
       else if (sum < cfg.w_min) ++c[kWMin];
       if (old > hi || old < cfg.w_min) ++c[kWBeyond];
@@ -365,7 +384,7 @@ const char* kind_name(Kind k) { return k == Kind::Track ? "track" : k == Kind::S
 NeuronConfig random_config(Rng& r, Kind kind) {
   const bool wild = kind == Kind::Chaos || r.chance(0.25);
   NeuronConfig c;
-  c.div = uint16_t(r.chance(0.1) ? 128 : r.range(128, 400));
+  c.div = uint16_t(r.chance(0.1) ? NeuronPi::kMinDiv : r.range(NeuronPi::kMinDiv, 600));
   c.shift = uint8_t(kind == Kind::Chaos && r.chance(0.3) ? 7 : r.below(8));  // 7: V* * div can saturate Vff
   c.ff_en = r.chance(0.7);
   c.learn_shift = uint8_t(r.chance(0.5) ? r.range(4, 14) : r.below(32));
