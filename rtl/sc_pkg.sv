@@ -189,7 +189,7 @@ package sc_pkg;
   localparam int ClFfEnBit     = 8;      //@field CL_CFG FF_EN 1 reset=RstFfEn "velocity feed-forward from V*"
   localparam int ClLearnShLsb  = 12;     //@field CL_CFG LEARN_SHIFT LearnShW reset=RstLearnShift "Hebb scale: dw = eta e x / 2^LEARN_SHIFT"
   localparam int RegClPeriod   = 32'h0000_006C;  //@reg CL_PERIOD RW servo "closed loop: control period and in-position hold"
-  localparam int ClDivLsb      = 0;      //@field CL_PERIOD DIV CtlDivW reset=RstCtlDiv "control period, clocks (2000 = 10 kHz)"
+  localparam int ClDivLsb      = 0;      //@field CL_PERIOD DIV CtlDivW reset=RstCtlDiv "control period, clocks (2000 = 10 kHz; at least 256)"
   localparam int ClInposHoldLsb = 16;    //@field CL_PERIOD INPOS_HOLD HoldW reset=RstInposHold "in-position hold, control periods"
   localparam int RegClLearnDzP = 32'h0000_0070;  //@reg LEARN_DZ_P RW servo "no position-loop learning while |e_p| <= this, counts Q.16"
   localparam int ClLearnDzPLsb = 0;      //@field LEARN_DZ_P VALUE CtlW reset=RstLearnDzP "counts, Q.CtlFrac"
