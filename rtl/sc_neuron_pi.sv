@@ -249,7 +249,9 @@ module sc_neuron_pi (
   logic signed [WgtW-1:0]    w_p1_q, w_p1_d, w_p2_q, w_p2_d, w_v1_q, w_v1_d, w_v2_q, w_v2_d;
   logic signed [NWgtW-1:0]   n_p1_q, n_p1_d, n_p2_q, n_p2_d, n_v1_q, n_v1_d, n_v2_q, n_v2_d;
 
-  // register file: LUT RAM, written once per clock, read combinationally
+  // register file: LUT RAM, written once per clock, read combinationally.
+  // No reset: every word is written (by the initialisation steps after
+  // start_i, or earlier in the period) before a step reads it.
   logic [CtlW-1:0] rf_q [32];
   logic [4:0]      ra, rb, rf_wa;
   logic            rf_we;
@@ -434,7 +436,7 @@ module sc_neuron_pi (
   assign hush_now = !sel_q && fin_q;
 
   // ---- micro-program -------------------------------------------------------------------
-  logic [4:0]        pair;      // per-loop register of the step (even base)
+  logic [4:0]        pair;      // the weight this update writes (w1 or w2 of the loop)
   logic [2:0]        w_src;
   logic              t_we;      // T := alu_r
   logic [UpcW-1:0]   u2;        // step within the weight update (w1: UW1.., w2: UW5..)
@@ -442,7 +444,7 @@ module sc_neuron_pi (
   logic [CtlStW-1:0] st;        // state_o
 
   assign w2nd = (upc_q >= UH2);
-  assign u2   = w2nd ? upc_q - 6'd6 : upc_q;
+  assign u2   = w2nd ? upc_q - (UH2 - UH1) : upc_q;
 
   always_comb begin
     ra      = '0;
