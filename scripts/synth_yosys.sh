@@ -18,7 +18,7 @@ xlib="read_verilog -lib -specify +/xilinx/cells_sim.v; read_verilog -lib +/xilin
 log="$out/$top.yosys.log"
 # read_verilog -sv (not the slang/surelog front ends): yosys 0.23 needs the
 # package first. synth_xilinx keeps the hierarchy (no -flatten, no -abc9:
-# both give more LUTs on the open-loop core, 1070 and 1019 against 813).
+# both gave more LUTs on the open-loop core: 1070 and 1019 against 873).
 # Logic depth: the longest combinational path through the mapped netlist in
 # cells (LUT, MUXF7/8, CARRY4, DSP48E1) from one flop or port to the next:
 # on a flattened copy without flops, LUT RAMs (their write side is a
