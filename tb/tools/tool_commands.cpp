@@ -48,7 +48,7 @@ std::shared_ptr<ToolCommands> add_tool_commands(CLI::App& app) {
   t->regress = app.add_subcommand("regress", "run a regression list in parallel; JUnit XML + JSON");
   // The last of repeated flags wins, so scripts/regress.sh's defaults can be overridden.
   const auto last = CLI::MultiOptionPolicy::TakeLast;
-  t->regress->add_option("--list", t->list, "test list (default: tests/regress_list.json)")->multi_option_policy(last);
+  t->regress->add_option("--list", t->list, "test list (default: the installed default list, share/scurve/regress_list.json next to bin/)")->multi_option_policy(last);
   t->regress->add_option("--jobs", t->jobs, "parallel runs (default: cores)")
       ->check(CLI::Range(1, 256))
       ->multi_option_policy(last);
@@ -154,8 +154,8 @@ int run_regress(const ToolCommands& t) {
   } else {
     std::string list = t.list;
     if (list.empty()) {
-      list = "tests/regress_list.json";
-      if (!fs::exists(list)) list = std::string(SCURVE_SOURCE_DIR) + "/tests/regress_list.json";
+      // Installed (and in the build tree) next to bin/: share/scurve/.
+      list = (fs::path(self_dir()).parent_path() / "share/scurve/regress_list.json").string();
     }
     std::ifstream in(list);
     if (!in) return bad_input(fmt::format("--list {}: cannot read", list));

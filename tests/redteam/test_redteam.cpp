@@ -119,7 +119,7 @@ TEST(RedTeam, CornerRequestsHold) {
   EXPECT_TRUE(o.accepted && o.problems.empty()) << o.problems;
 }
 
-// ---- open findings (DISABLED until fixed) ---------------------------------
+// ---- the findings, fixed: each proves the behaviour the review found broken ----
 
 // F1: a_max / j_max < 1 clock (j_max > 2e7 * a_max, or one asymmetric jerk
 // that large): make_transition floors the jerk-up length to 0 clocks and the

@@ -1,0 +1,79 @@
+# RTL file lists and Verilator builds, one helper for every top.
+#
+# sc_rtl_files(<out-var> <top>): the files <top> needs, in read order, as
+# scripts/rtl_deps.py lists them; yosys (scripts/synth_yosys.sh) and Vivado
+# (scripts/vivado/build.tcl, checked by synth.vivado_flow_dry_run) read the
+# same list, so every tool sees one set of files per top.
+#
+# sc_verilate(<target> TOP <module> [PREFIX <p>] [TRACE] [SYSTEMC] [OPT <flag>]):
+# verilate() with the project's flags. Every --cc top goes into one library
+# (tb/sc_rtl), so the Verilator runtime is compiled once.
+
+set(SC_RTL_DIR ${PROJECT_SOURCE_DIR}/rtl)
+set(SC_RTL_DEPS ${PROJECT_SOURCE_DIR}/scripts/rtl_deps.py)
+set(SC_VERILATOR_WAIVER ${SC_RTL_DIR}/lint/verilator_waiver.vlt)
+# The lists are computed at configure time: re-configure when any RTL file
+# (a new instantiation) or the script changes.
+file(GLOB SC_RTL_ALL CONFIGURE_DEPENDS ${SC_RTL_DIR}/*.sv)
+set_property(DIRECTORY ${PROJECT_SOURCE_DIR} APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS
+             ${SC_RTL_ALL} ${SC_RTL_DEPS})
+
+function(sc_rtl_files out top)
+  execute_process(
+    COMMAND ${Python3_EXECUTABLE} ${SC_RTL_DEPS} ${SC_RTL_DIR} ${top}
+    OUTPUT_VARIABLE files ERROR_VARIABLE err RESULT_VARIABLE rc
+    OUTPUT_STRIP_TRAILING_WHITESPACE)
+  if(rc)
+    message(FATAL_ERROR "rtl_deps.py ${top}: ${err}")
+  endif()
+  string(REPLACE "\n" ";" files "${files}")
+  set(${out} ${files} PARENT_SCOPE)
+endfunction()
+
+# OPT_FAST -O3: Verilator's default -Os halves the throughput (DESIGN.md);
+# -fno-tree-slp-vectorize: measured faster on the wide 128-bit state.
+function(sc_verilate target)
+  cmake_parse_arguments(A "TRACE;SYSTEMC" "TOP;PREFIX;OPT" "" ${ARGN})
+  if(NOT A_TOP)
+    message(FATAL_ERROR "sc_verilate(${target}): TOP is required")
+  endif()
+  if(NOT A_PREFIX)
+    set(A_PREFIX V${A_TOP})
+  endif()
+  if(NOT A_OPT)
+    set(A_OPT -O3)
+  endif()
+  set(flags)
+  if(A_TRACE)
+    list(APPEND flags TRACE_FST)
+  endif()
+  if(A_SYSTEMC)
+    list(APPEND flags SYSTEMC)
+  endif()
+  sc_rtl_files(files ${A_TOP})
+  verilate(${target} ${flags}
+    SOURCES ${files}
+    TOP_MODULE ${A_TOP}
+    PREFIX ${A_PREFIX}
+    VERILATOR_ARGS -Wall ${SC_VERILATOR_WAIVER} --x-assign fast --x-initial fast
+    OPT_FAST ${A_OPT} -fno-tree-slp-vectorize
+    OPT_SLOW -O1
+    OPT_GLOBAL ${A_OPT})
+endfunction()
+
+# Lint (Verilator -Wall, the verilator CMake found), Icarus compile and
+# yosys synth_xilinx of one top, labelled lint / synth.
+function(sc_rtl_checks top)
+  cmake_parse_arguments(A "NO_SYNTH" "" "" ${ARGN})
+  sc_rtl_files(files ${top})
+  add_test(NAME lint.verilator.${top}
+    COMMAND ${VERILATOR_BIN} --lint-only -Wall ${SC_VERILATOR_WAIVER} ${files} --top-module ${top})
+  add_test(NAME lint.icarus.${top}
+    COMMAND ${SC_IVERILOG} -g2012 -s ${top} -o ${CMAKE_BINARY_DIR}/icarus/${top}.vvp ${files})
+  set_tests_properties(lint.verilator.${top} lint.icarus.${top} PROPERTIES LABELS lint)
+  if(NOT A_NO_SYNTH)
+    add_test(NAME synth.yosys.${top}
+      COMMAND ${PROJECT_SOURCE_DIR}/scripts/synth_yosys.sh ${top} ${CMAKE_BINARY_DIR}/synth/${top})
+    set_tests_properties(synth.yosys.${top} PROPERTIES LABELS synth TIMEOUT 900)
+  endif()
+endfunction()
