@@ -28,6 +28,7 @@ struct TestResult {
   bool pass = false;
   int exit_code = -1;
   bool timed_out = false;
+  bool interrupted = false;  // by SIGINT/SIGTERM to the runner
   double wall_s = 0;
   nlohmann::json result;  // the bench's JSON (null if it printed none)
   std::string failure;    // one line when failing
@@ -44,6 +45,10 @@ std::vector<TestCase> select_shard(const std::vector<TestCase>& tests, int index
 // Parses "i/n"; throws std::invalid_argument naming the flag.
 std::pair<int, int> parse_shard(const std::string& s);
 
+// A random entry's "ranges" checked (known keys, [lo, hi] within the
+// planner's limits) with the defaults filled in; throws input::Error.
+nlohmann::json checked_ranges(const std::string& param, const nlohmann::json& ranges);
+
 // The random move of a seed: bench flags of an accepted (plannable) request.
 std::vector<std::string> random_move_args(uint64_t seed, const nlohmann::json& ranges);
 
@@ -53,11 +58,21 @@ struct RunOptions {
   std::string out_dir;   // per-test JSON/log, results.json, junit.xml
   bool progress = true;  // a live line on a terminal
 };
+// Runs each test in its own process group; a timeout kills the whole group.
+// SIGINT/SIGTERM during the run kill every running group, start nothing
+// more, and leave interrupted() set (the tests not run are marked so).
 std::vector<TestResult> run_tests(const std::vector<TestCase>& tests, const RunOptions& opt);
+// The signal that interrupted the last run_tests(), or 0.
+int interrupted();
+
+// argv as one line a POSIX shell runs as the same argv.
+std::string shell_command(const std::vector<std::string>& argv);
 
 std::string summary_table(const std::vector<TestResult>& results);
 std::string junit_xml(const std::vector<TestResult>& results, const std::string& suite);
 nlohmann::json results_json(const std::vector<TestResult>& results, const std::string& shard);
+// Reads a results.json back (for --merge); throws input::Error on a wrong
+// shape or type, naming the field.
 std::vector<TestResult> results_from_json(const nlohmann::json& j);
 
 }  // namespace sc::regress

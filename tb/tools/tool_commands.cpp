@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <map>
 #include <regex>
 #include <thread>
 
@@ -140,14 +141,23 @@ int run_regress(const ToolCommands& t) {
   std::vector<TestResult> results;
   std::string shard_text = "1/1";
   if (!t.merge.empty()) {
+    std::map<std::string, std::string> seen;  // test name -> the file it came from
     for (const std::string& f : t.merge) {
+      if (!fs::is_regular_file(f)) return bad_input(fmt::format("--merge={}: not a readable file", f));
       std::ifstream in(f);
-      if (!in) return bad_input(fmt::format("--merge {}: cannot read", f));
+      if (!in) return bad_input(fmt::format("--merge={}: cannot read", f));
       try {
         const auto part = results_from_json(nlohmann::json::parse(in));
+        for (const TestResult& r : part) {
+          const auto [it, fresh] = seen.emplace(r.test.name, f);
+          if (!fresh) {
+            return bad_input(fmt::format("--merge={}: test {} is already in {} (a shard merged twice?)", f,
+                                         r.test.name, it->second));
+          }
+        }
         results.insert(results.end(), part.begin(), part.end());
       } catch (const std::exception& e) {
-        return bad_input(fmt::format("--merge {}: {}", f, e.what()));
+        return bad_input(fmt::format("--merge={}: {}", f, e.what()));
       }
     }
     shard_text = "merged";
@@ -157,11 +167,18 @@ int run_regress(const ToolCommands& t) {
       // Installed (and in the build tree) next to bin/: share/scurve/.
       list = (fs::path(self_dir()).parent_path() / "share/scurve/regress_list.json").string();
     }
+    if (!fs::is_regular_file(list)) return bad_input(fmt::format("--list={}: not a readable file", list));
     std::ifstream in(list);
-    if (!in) return bad_input(fmt::format("--list {}: cannot read", list));
+    if (!in) return bad_input(fmt::format("--list={}: cannot read", list));
     std::vector<TestCase> tests;
     try {
-      tests = expand_list(nlohmann::json::parse(in), t.labels, t.exclude_labels);
+      nlohmann::json parsed;
+      try {
+        parsed = nlohmann::json::parse(in);
+      } catch (const nlohmann::json::exception& e) {
+        return bad_input(fmt::format("--list={}: not JSON ({})", list, e.what()));
+      }
+      tests = expand_list(parsed, t.labels, t.exclude_labels);
       if (!t.shard.empty()) {
         const auto [i, n] = parse_shard(t.shard);
         tests = select_shard(tests, i, n);
@@ -171,11 +188,7 @@ int run_regress(const ToolCommands& t) {
       return bad_input(e.what());
     }
     if (t.list_only) {
-      for (const TestCase& tc : tests) {
-        std::string cmd;
-        for (const std::string& a : tc.argv) cmd += " " + a;
-        std::cout << tc.name << "\t" << cmd.substr(1) << "\n";
-      }
+      for (const TestCase& tc : tests) std::cout << tc.name << "\t" << shell_command(tc.argv) << "\n";
       return 0;
     }
     RunOptions ro;
@@ -222,6 +235,10 @@ int run_regress(const ToolCommands& t) {
     return bad_input(e.what());
   }
   std::cout << fmt::format("wrote {0}/results.json and {0}/junit.xml\n", t.out_dir);
+  if (const int sig = interrupted(); sig != 0) {
+    std::fprintf(stderr, "error: interrupted by signal %d: running tests killed, results written\n", sig);
+    return 128 + sig;
+  }
   for (const TestResult& r : results) {
     if (!r.pass) return 1;
   }

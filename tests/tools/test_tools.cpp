@@ -7,7 +7,14 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <chrono>
+#include <csignal>
+#include <map>
 #include <set>
+#include <thread>
+
+#include <fmt/format.h>
+#include <unistd.h>
 #include <string>
 
 #include "axis_core.h"
@@ -298,4 +305,144 @@ TEST(Regress, CommandResultsWithRunsAreSummarised) {
   EXPECT_NE(table.find("30"), std::string::npos) << table;      // clocks summed
   EXPECT_NE(table.find("2.500"), std::string::npos) << table;   // worst max error
   EXPECT_NE(table.find("-2"), std::string::npos) << table;      // worst final error
+}
+
+// ---- hostile lists and results: exit 2 with one line naming the field --------------------
+namespace {
+
+struct Outcome {
+  int rc = -1;
+  std::vector<std::string> err_lines;
+};
+
+Outcome run_capture(const std::string& cmd, const std::string& err_file) {
+  const int rc = std::system((cmd + " >/dev/null 2>" + err_file).c_str());
+  Outcome o;
+  o.rc = WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
+  std::ifstream in(err_file);
+  for (std::string line; std::getline(in, line);) o.err_lines.push_back(line);
+  return o;
+}
+
+}  // namespace
+
+TEST(Regress, HostileListsAreRefusedAtLoadTimeNamingTheField) {
+  const TempDir d("hostile");
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {R"({"tests":[{"name":"r","kind":"random","count":-5}]})", "tests[0].count=-5"},
+      {R"({"tests":[{"name":"r","kind":"random","count":1e8}]})", "tests[0].count=100000000.0"},
+      {R"({"tests":[{"name":"r","kind":"random","seeds":[1.5]}]})", "tests[0].seeds[0]=1.5"},
+      {R"({"tests":[{"name":"../../../../tmp/x","kind":"group","group":1}]})", "tests[0].name='../../../../tmp/x'"},
+      {R"({"tests":[{"name":"a/b","kind":"group","group":1}]})", "tests[0].name='a/b'"},
+      {R"({"tests":[{"name":"m","kind":"move","move":{"distance":5,"trace-rtl":"x.csv"}}]})", "tests[0].move.trace-rtl"},
+      {R"({"tests":[{"name":"m","kind":"move","move":{"distance":"5; rm"}}]})", "tests[0].move.distance"},
+      {R"({"tests":[{"name":"g"}]})", "tests[0].kind=missing"},
+      {R"({"tests":{}})", "tests={}"},
+      {R"({"tests":[]})", "tests=[]"},
+      {R"({"tests":[{"name":"r","kind":"random","ranges":{"distance":[5000,10]}}]})", "tests[0].ranges.distance"},
+      {R"({"tests":[{"name":"r","kind":"random","ranges":{"distanse":[1,10]}}]})", "tests[0].ranges.distanse"},
+      {R"({"tests":[{"name":"g","kind":"group","group":1,"timeout_s":-1}]})", "tests[0].timeout_s=-1"},
+      {R"({"tests":[{"name":"g","kind":"group","group":9}]})", "tests[0].group=9"},
+      {R"({"tests":[{"name":"g","kind":"group","group":1},{"name":"g","kind":"group","group":2}]})", "tests[1].name=g"},
+      {R"({"testz":[]})", "list.testz"},
+      {R"([])", "list=[]"},
+      {R"({not json)", "not JSON"},
+  };
+  for (size_t k = 0; k < cases.size(); ++k) {
+    const std::string list = (d / fmt::format("l{}.json", k)).string();
+    std::ofstream(list) << cases[k].first;
+    const std::string out = (d / fmt::format("out{}", k)).string();
+    const Outcome o = run_capture(std::string(SCURVE) + " regress --list " + list + " --out-dir " + out,
+                                  (d / "err.txt").string());
+    EXPECT_EQ(o.rc, 2) << cases[k].first;
+    ASSERT_EQ(o.err_lines.size(), 1u) << cases[k].first;
+    EXPECT_NE(o.err_lines[0].find(cases[k].second), std::string::npos) << o.err_lines[0];
+    EXPECT_FALSE(fs::exists(out)) << "nothing written for a refused list: " << cases[k].first;
+  }
+  const Outcome dir = run_capture(std::string(SCURVE) + " regress --list-only --list " + d.string(), (d / "err.txt").string());
+  EXPECT_EQ(dir.rc, 2);
+  ASSERT_EQ(dir.err_lines.size(), 1u);
+  EXPECT_NE(dir.err_lines[0].find("not a readable file"), std::string::npos) << dir.err_lines[0];
+}
+
+TEST(Regress, CommandOutputThatIsNotAResultFailsTheTestNotTheRunner) {
+  const TempDir d("badout");
+  const std::string list = (d / "l.json").string();
+  std::ofstream(list) << R"({"tests":[
+    {"name":"not_json","kind":"command","argv":["sh","-c","echo '{not json'"]},
+    {"name":"pass_text","kind":"command","argv":["sh","-c","echo '{\"pass\":\"yes\"}'"]},
+    {"name":"clocks_text","kind":"command","argv":["sh","-c","echo '{\"clocks\":\"many\"}'"]},
+    {"name":"good","kind":"command","argv":["sh","-c","echo '{\"pass\":true,\"clocks\":5}'"]}]})";
+  const std::string out = (d / "out").string();
+  const Outcome o = run_capture(std::string(SCURVE) + " regress --jobs 2 --list " + list + " --out-dir " + out,
+                                (d / "err.txt").string());
+  EXPECT_EQ(o.rc, 1);
+  std::ifstream in(out + "/results.json");
+  const nlohmann::json j = nlohmann::json::parse(in);
+  std::map<std::string, nlohmann::json> by_name;
+  for (const auto& r : j.at("results")) by_name[r.at("name")] = r;
+  EXPECT_FALSE(by_name.at("not_json").at("pass").get<bool>());
+  EXPECT_FALSE(by_name.at("pass_text").at("pass").get<bool>());
+  EXPECT_FALSE(by_name.at("clocks_text").at("pass").get<bool>());
+  EXPECT_TRUE(by_name.at("good").at("pass").get<bool>());
+  EXPECT_NE(by_name.at("pass_text").at("failure").get<std::string>().find("\"pass\""), std::string::npos);
+  EXPECT_TRUE(fs::exists(out + "/junit.xml"));
+  // The same results merged back, and merged twice.
+  const Outcome merged = run_capture(std::string(SCURVE) + " regress --merge " + out + "/results.json --out-dir " +
+                                         (d / "m1").string(), (d / "err.txt").string());
+  EXPECT_EQ(merged.rc, 1);  // the failing tests stay failing
+  const Outcome twice = run_capture(std::string(SCURVE) + " regress --merge " + out + "/results.json " + out +
+                                        "/results.json --out-dir " + (d / "m2").string(), (d / "err.txt").string());
+  EXPECT_EQ(twice.rc, 2);
+  ASSERT_EQ(twice.err_lines.size(), 1u);
+  EXPECT_NE(twice.err_lines[0].find("already in"), std::string::npos) << twice.err_lines[0];
+  const std::string bad = (d / "bad.json").string();
+  std::ofstream(bad) << R"({"results":[{"name":"x","pass":"yes"}]})";
+  const Outcome typed = run_capture(std::string(SCURVE) + " regress --merge " + bad + " --out-dir " +
+                                        (d / "m3").string(), (d / "err.txt").string());
+  EXPECT_EQ(typed.rc, 2);
+  ASSERT_EQ(typed.err_lines.size(), 1u);
+  EXPECT_NE(typed.err_lines[0].find("results[0].pass"), std::string::npos) << typed.err_lines[0];
+}
+
+// A marker in the grandchild's command line tells whether it survived.
+bool process_running(const std::string& marker) {
+  // "[s]leep" matches "sleep" but not the command line of this pgrep's shell.
+  return std::system(("pgrep -f '[" + marker.substr(0, 1) + "]" + marker.substr(1) + "' >/dev/null").c_str()) == 0;
+}
+
+TEST(Regress, TimeoutAndSigtermKillTheWholeProcessGroup) {
+  const TempDir d("pgroup");
+  const std::string marker = fmt::format("sleep 97{}", getpid() % 1000);
+  const std::string list = (d / "l.json").string();
+  std::ofstream(list) << R"({"tests":[{"name":"slow","kind":"command","timeout_s":1,"argv":["sh","-c",")" << marker
+                      << " & " << marker << R"("]}]})";
+  const Outcome o = run_capture(std::string(SCURVE) + " regress --list " + list + " --out-dir " + (d / "o1").string(),
+                                (d / "err.txt").string());
+  EXPECT_EQ(o.rc, 1);
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  EXPECT_FALSE(process_running(marker)) << "a grandchild outlived the timeout";
+
+  const std::string list2 = (d / "l2.json").string();
+  std::ofstream(list2) << R"({"tests":[{"name":"slow","kind":"command","argv":["sh","-c",")" << marker << " & "
+                       << marker << R"("]}]})";
+  const std::string cmd = std::string(SCURVE) + " regress --list " + list2 + " --out-dir " + (d / "o2").string() +
+                          " >/dev/null 2>&1 & p=$!; sleep 1; kill -TERM $p; wait $p";
+  const int rc = std::system(("bash -c '" + cmd + "'").c_str());
+  EXPECT_EQ(WEXITSTATUS(rc), 128 + SIGTERM);
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  EXPECT_FALSE(process_running(marker)) << "SIGTERM to the runner left a test running";
+  EXPECT_TRUE(fs::exists(d / "o2" / "results.json"));
+}
+
+TEST(Regress, RerunLinesAreShellQuotedToTheSameArgv) {
+  const std::vector<std::string> argv = {"printf", "%s|", "a b", "it's", "$(touch x)", "", ";rm", "{bin}/x"};
+  const TempDir d("quote");
+  const std::string out = (d / "o.txt").string();
+  ASSERT_EQ(std::system(("cd " + d.string() + " && " + regress::shell_command(argv) + " > " + out).c_str()), 0);
+  std::ifstream in(out);
+  std::string got;
+  std::getline(in, got);
+  EXPECT_EQ(got, "a b|it's|$(touch x)||;rm|{bin}/x|");
+  EXPECT_FALSE(fs::exists(d / "x"));
 }

@@ -1,0 +1,45 @@
+// One validation layer for values a user or a list author gives (command
+// line text, JSON files): decimal notation, finiteness, integer-ness and
+// range checked in one place, with one error type whose message names the
+// parameter, the value as given and the bound.
+#pragma once
+
+#include <cstdint>
+#include <initializer_list>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+
+namespace sc::input {
+
+class Error : public std::invalid_argument {
+ public:
+  Error(std::string parameter, std::string value, const std::string& why);
+  const std::string& parameter() const { return parameter_; }
+  const std::string& value() const { return value_; }
+
+ private:
+  std::string parameter_, value_;
+};
+
+// Decimal text: an optional sign and digits, no leading zeros (no octal or
+// hex reading), within [lo, hi].
+int64_t parse_int(const std::string& param, std::string_view text, int64_t lo, int64_t hi);
+// Decimal text of a finite real within [lo, hi] (no hex floats, inf or nan).
+double parse_real(const std::string& param, std::string_view text, double lo, double hi);
+
+// JSON values. `param` names the place ("tests[3].count").
+int64_t json_int(const std::string& param, const nlohmann::json& v, int64_t lo, int64_t hi);
+double json_real(const std::string& param, const nlohmann::json& v, double lo, double hi);
+bool json_bool(const std::string& param, const nlohmann::json& v);
+std::string json_string(const std::string& param, const nlohmann::json& v);
+const nlohmann::json& json_object(const std::string& param, const nlohmann::json& v);
+const nlohmann::json& json_array(const std::string& param, const nlohmann::json& v);
+// Fails on a key of `obj` that is not in `allowed` (a typo must not be ignored).
+void json_known_keys(const std::string& param, const nlohmann::json& obj, std::initializer_list<std::string_view> allowed);
+
+// A JSON value as the user wrote it, shortened for one-line messages.
+std::string shown(const nlohmann::json& v);
+
+}  // namespace sc::input
