@@ -1,7 +1,12 @@
 #include "kin_trace.h"
+#include "user_input.h"
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -18,9 +23,9 @@ const std::vector<std::string>& kin_trace_columns() {
 }
 
 KinTraceWriter::KinTraceWriter(const std::string& path, const std::string& source, uint64_t decimate)
-    : decimate_(decimate ? decimate : 1) {
-  f_ = std::fopen(path.c_str(), "w");
-  if (!f_) throw std::runtime_error(fmt::format("cannot write trace {}", path));
+    : path_(path), part_path_(path + ".part"), decimate_(decimate ? decimate : 1) {
+  f_ = std::fopen(part_path_.c_str(), "w");
+  if (!f_) throw std::runtime_error(fmt::format("cannot write trace {}: {}", path, std::strerror(errno)));
   // Big buffer: rows come in bursts around each pulse.
   std::setvbuf(f_, nullptr, _IOFBF, 1 << 20);
   std::string held, all = "clock";
@@ -35,14 +40,23 @@ KinTraceWriter::KinTraceWriter(const std::string& path, const std::string& sourc
 }
 
 KinTraceWriter::~KinTraceWriter() {
-  if (f_) std::fclose(f_);
+  if (f_) {  // never closed: an aborted run leaves no trace that looks complete
+    std::fclose(f_);
+    std::remove(part_path_.c_str());
+  }
 }
 
 void KinTraceWriter::close(uint64_t end_clock) {
-  if (f_) {
-    fmt::print(f_, "# end_clock={} rows={}\n", end_clock, rows_);
-    std::fclose(f_);
-    f_ = nullptr;
+  if (!f_) return;
+  fmt::print(f_, "# end_clock={} rows={}\n", end_clock, rows_);
+  const bool ok = std::fflush(f_) == 0 && !std::ferror(f_);
+  const int err = errno;
+  const bool closed = std::fclose(f_) == 0;
+  f_ = nullptr;
+  if (!ok || !closed || std::rename(part_path_.c_str(), path_.c_str()) != 0) {
+    const std::string why = std::strerror(ok && closed ? errno : err);
+    std::remove(part_path_.c_str());
+    throw std::runtime_error(fmt::format("cannot write trace {}: {}", path_, why));
   }
 }
 
@@ -69,55 +83,121 @@ std::vector<std::string> split(const std::string& s, char sep) {
 
 }  // namespace
 
-KinTrace read_kin_trace(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error(fmt::format("cannot read trace {}", path));
-  KinTrace t;
-  std::string line;
-  size_t lineno = 0;
-  std::vector<std::string> held_names;
-  while (std::getline(in, line)) {
-    ++lineno;
-    if (line.empty()) continue;
-    if (line[0] == '#') {
-      for (const std::string& kv : split(line.substr(1), ' ')) {
-        const auto eq = kv.find('=');
-        if (eq != std::string::npos) t.meta[kv.substr(0, eq)] = kv.substr(eq + 1);
-      }
+struct KinTraceReader::File {
+  std::ifstream in;
+};
+
+KinTraceReader::KinTraceReader(const std::string& path) : in_(std::make_unique<File>()), path_(path) {
+  if (!std::filesystem::is_regular_file(path)) throw std::runtime_error(fmt::format("{}: not a readable file", path));
+  in_->in.open(path);
+  if (!in_->in) throw std::runtime_error(fmt::format("{}: cannot read", path));
+  // Header: "# scurve-kin-trace v1 ..." then the column line.
+  while (columns_.empty() && std::getline(in_->in, line_)) {
+    ++lineno_;
+    if (line_.empty()) continue;
+    if (line_[0] == '#') {
+      parse_meta(line_);
       continue;
     }
-    std::vector<std::string> f = split(line, ',');
-    if (t.columns.empty() && !f.empty() && f[0] == "clock") {
-      t.columns.assign(f.begin() + 1, f.end());
-      held_names = split(t.meta.count("held") ? t.meta["held"] : "", ';');
-      for (const std::string& c : t.columns) {
-        bool h = false;
-        for (const std::string& n : held_names) h = h || n == c;
-        t.held.push_back(h);
+    std::vector<std::string> f = split(line_, ',');
+    if (f.empty() || f[0] != "clock") throw std::runtime_error(fmt::format("{}:{}: no header line", path, lineno_));
+    if (!meta_.count("scurve-kin-trace")) {
+      throw std::runtime_error(fmt::format("{}:{}: not a kinematics trace (no '# scurve-kin-trace v1' line)", path, lineno_));
+    }
+    columns_.assign(f.begin() + 1, f.end());
+    if (columns_.empty()) throw std::runtime_error(fmt::format("{}:{}: no columns", path, lineno_));
+    std::vector<std::string> sorted = columns_;
+    std::sort(sorted.begin(), sorted.end());
+    for (size_t i = 0; i < sorted.size(); ++i) {
+      if (sorted[i].empty() || (i > 0 && sorted[i] == sorted[i - 1])) {
+        throw std::runtime_error(fmt::format("{}:{}: column '{}' empty or repeated", path, lineno_, sorted[i]));
       }
-      continue;
     }
-    if (t.columns.empty()) throw std::runtime_error(fmt::format("{}:{}: no header line", path, lineno));
-    if (f.size() != t.columns.size() + 1) {
-      throw std::runtime_error(
-          fmt::format("{}:{}: {} fields, header has {}", path, lineno, f.size(), t.columns.size() + 1));
+    const std::vector<std::string> held_names = split(meta_.count("held") ? meta_.at("held") : "", ';');
+    for (const std::string& c : columns_) {
+      held_.push_back(std::find(held_names.begin(), held_names.end(), c) != held_names.end());
     }
-    uint64_t clk = 0;
-    try {
-      clk = std::stoull(f[0]);
-    } catch (const std::exception&) {
-      throw std::runtime_error(fmt::format("{}:{}: bad clock '{}'", path, lineno, f[0]));
-    }
-    if (!t.clocks.empty() && clk <= t.clocks.back()) {
-      throw std::runtime_error(fmt::format("{}:{}: clock {} not increasing", path, lineno, clk));
-    }
-    t.clocks.push_back(clk);
-    f.erase(f.begin());
-    t.rows.push_back(std::move(f));
   }
-  if (t.columns.empty()) throw std::runtime_error(fmt::format("{}: empty trace (no header)", path));
-  t.end_clock = t.clocks.empty() ? 0 : t.clocks.back() + 1;
-  if (t.meta.count("end_clock")) t.end_clock = std::max(t.end_clock, uint64_t(std::stoull(t.meta["end_clock"])));
+  if (columns_.empty()) throw std::runtime_error(fmt::format("{}: empty trace (no header)", path));
+}
+
+KinTraceReader::~KinTraceReader() = default;
+
+void KinTraceReader::parse_meta(const std::string& line) {
+  for (const std::string& kv : split(line.substr(1), ' ')) {
+    if (kv.empty()) continue;
+    const auto eq = kv.find('=');
+    const std::string key = kv.substr(0, eq);
+    const std::string value = eq == std::string::npos ? "" : kv.substr(eq + 1);
+    const std::string where = fmt::format("{}:{}: {}", path_, lineno_, key);
+    if (key == "scurve-kin-trace") {
+      meta_[key] = "";
+    } else if (key == "v1") {
+      meta_["version"] = "1";
+    } else if (key == "decimate") {
+      input::parse_int(where, value, 1, int64_t(1) << 40);
+    } else if (key == "clk_hz") {
+      input::parse_int(where, value, 1000, 10'000'000'000);
+    } else if (key == "frac_bits") {
+      input::parse_int(where, value, 1, 127);
+    } else if (key == "end_clock") {
+      trailer_end_ = uint64_t(input::parse_int(where, value, 0, INT64_MAX));
+    } else if (key == "rows") {
+      input::parse_int(where, value, 0, INT64_MAX);
+    }
+    if (eq != std::string::npos) meta_[key] = value;
+  }
+}
+
+bool KinTraceReader::next(uint64_t& clock, std::vector<std::string>& row) {
+  while (std::getline(in_->in, line_)) {
+    ++lineno_;
+    if (line_.empty()) continue;
+    if (line_[0] == '#') {
+      parse_meta(line_);
+      continue;
+    }
+    row = split(line_, ',');
+    if (row.size() != columns_.size() + 1) {
+      throw std::runtime_error(
+          fmt::format("{}:{}: {} fields, header has {}", path_, lineno_, row.size(), columns_.size() + 1));
+    }
+    const int64_t clk = input::parse_int(fmt::format("{}:{}: clock", path_, lineno_), row[0], 0, INT64_MAX - 1);
+    if (have_row_ && uint64_t(clk) <= last_clock_) {
+      throw std::runtime_error(fmt::format("{}:{}: clock {} not after {}", path_, lineno_, clk, last_clock_));
+    }
+    for (size_t i = 1; i < row.size(); ++i) {
+      if (!input::is_decimal_integer(row[i])) {
+        throw std::runtime_error(fmt::format("{}:{}: {}='{}': not a decimal integer", path_, lineno_,
+                                             columns_[i - 1], row[i].substr(0, 40)));
+      }
+    }
+    row.erase(row.begin());
+    clock = last_clock_ = uint64_t(clk);
+    have_row_ = true;
+    return true;
+  }
+  if (in_->in.bad()) throw std::runtime_error(fmt::format("{}: read error", path_));
+  return false;
+}
+
+uint64_t KinTraceReader::end_clock() const {
+  return std::max(have_row_ ? last_clock_ + 1 : 0, trailer_end_);
+}
+
+KinTrace read_kin_trace(const std::string& path) {
+  KinTraceReader r(path);
+  KinTrace t;
+  t.columns = r.columns();
+  t.held = r.held();
+  uint64_t c = 0;
+  std::vector<std::string> row;
+  while (r.next(c, row)) {
+    t.clocks.push_back(c);
+    t.rows.push_back(row);
+  }
+  t.meta = r.meta();
+  t.end_clock = r.end_clock();
   return t;
 }
 

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -32,7 +33,9 @@ class KinTraceWriter {
     if (!have_last_ || held_changed(o) || clock >= next_sample_) [[unlikely]] write_row(clock, o);
   }
   // end_clock: the clock after the last one seen; recorded in a trailer so a
-  // reader knows the held values last until then.
+  // reader knows the held values last until then. The trace is written to
+  // "<path>.part" and renamed to <path> here, so a failed write (a full disk)
+  // throws std::runtime_error and leaves no truncated trace behind.
   void close(uint64_t end_clock);
   uint64_t rows() const { return rows_; }
 
@@ -44,6 +47,7 @@ class KinTraceWriter {
   }
   void write_row(uint64_t clock, const CoreOutputs& o);
   std::FILE* f_ = nullptr;
+  std::string path_, part_path_;
   uint64_t decimate_;
   uint64_t next_sample_ = 0;
   CoreOutputs last_{};
@@ -51,18 +55,53 @@ class KinTraceWriter {
   uint64_t rows_ = 0;
 };
 
-// A trace read back: header metadata and rows of strings (values are kept as
-// text so 81-bit velocities compare exactly).
+// A trace read row by row (a group's traces are hundreds of MB: nothing is
+// held but the current row). The header is checked when opening: known
+// format line, numeric fields in range, unique column names; every value of a
+// row must be a decimal integer in canonical form (no '+', no leading zeros),
+// so equal text means an equal number. Errors are std::runtime_error naming
+// the file, the line and the field.
+class KinTraceReader {
+ public:
+  explicit KinTraceReader(const std::string& path);
+  ~KinTraceReader();
+  KinTraceReader(const KinTraceReader&) = delete;
+  KinTraceReader& operator=(const KinTraceReader&) = delete;
+
+  const std::string& path() const { return path_; }
+  const std::map<std::string, std::string>& meta() const { return meta_; }  // "# key=value" lines
+  const std::vector<std::string>& columns() const { return columns_; }      // without "clock"
+  const std::vector<bool>& held() const { return held_; }                   // per column: exact between rows
+  // The next data row (clocks strictly increase); false at the end of the file.
+  bool next(uint64_t& clock, std::vector<std::string>& row);
+  // Clock after the last one the trace covers (trailer "end_clock=", else the
+  // last row + 1); final once next() has returned false.
+  uint64_t end_clock() const;
+
+ private:
+  void parse_meta(const std::string& line);
+  struct File;
+  std::unique_ptr<File> in_;
+  std::string path_;
+  size_t lineno_ = 0;
+  std::map<std::string, std::string> meta_;
+  std::vector<std::string> columns_;
+  std::vector<bool> held_;
+  bool have_row_ = false;
+  uint64_t last_clock_ = 0;
+  uint64_t trailer_end_ = 0;
+  std::string line_;
+};
+
+// A whole trace in memory (small traces: tests, plots).
 struct KinTrace {
-  std::map<std::string, std::string> meta;  // from the "# key=value ..." lines (header, trailer)
-  std::vector<std::string> columns;          // without "clock"
-  std::vector<bool> held;                     // per column: exact between rows
+  std::map<std::string, std::string> meta;
+  std::vector<std::string> columns;
+  std::vector<bool> held;
   std::vector<uint64_t> clocks;
   std::vector<std::vector<std::string>> rows;
-  // Clock after the last one the trace covers (trailer "end_clock=", else last row + 1).
   uint64_t end_clock = 0;
 };
-// Throws std::runtime_error with the file and line on a malformed trace.
 KinTrace read_kin_trace(const std::string& path);
 
 }  // namespace sc

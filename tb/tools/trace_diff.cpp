@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <deque>
 #include <map>
 #include <stdexcept>
 #include <unordered_map>
@@ -54,67 +55,105 @@ bool ignored(const DiffOptions& opt, const std::string& name) {
 }  // namespace
 
 // CSV: held columns are exact between rows (sample and hold); sampled
-// columns are compared only at clocks where both traces have a row.
+// columns are compared only at clocks where both traces have a row. Both
+// traces are streamed: memory holds the current and the next row of each and
+// a few rows of context, whatever the length.
+namespace {
+
+// One trace as a sequence of rows with one row of look-ahead.
+struct Stream {
+  explicit Stream(const std::string& path) : r(path) { more = r.next(next_clock, next_row); }
+  // The next row becomes the current one.
+  void advance() {
+    cur_clock = next_clock;
+    cur_row.swap(next_row);
+    has_cur = true;
+    more = r.next(next_clock, next_row);
+  }
+  KinTraceReader r;
+  bool has_cur = false, more = false;
+  uint64_t cur_clock = 0, next_clock = 0;
+  std::vector<std::string> cur_row, next_row;
+};
+
+struct ContextRows {
+  std::deque<std::pair<uint64_t, std::vector<std::string>>> before;  // rows before the first divergence
+  std::vector<std::pair<uint64_t, std::vector<std::string>>> after;  // the first row at or after it, and more
+};
+
+}  // namespace
+
 DiffReport diff_kin_traces(const std::string& a_path, const std::string& b_path, const DiffOptions& opt) {
-  const KinTrace a = read_kin_trace(a_path);
-  const KinTrace b = read_kin_trace(b_path);
+  Stream a(a_path), b(b_path);
   DiffReport rep;
   rep.format = "csv";
-  rep.a_name = with_source(a_path, a.meta);
-  rep.b_name = with_source(b_path, b.meta);
 
   struct Col {
     std::string name;
-    int ia, ib;
+    size_t ia, ib;
     bool held;
   };
+  const std::vector<std::string>& ac = a.r.columns();
+  const std::vector<std::string>& bc = b.r.columns();
   std::vector<Col> cols;
-  for (size_t i = 0; i < a.columns.size(); ++i) {
-    if (ignored(opt, a.columns[i])) continue;
-    const auto it = std::find(b.columns.begin(), b.columns.end(), a.columns[i]);
-    if (it == b.columns.end()) {
-      rep.only_in_a.push_back(a.columns[i]);
+  for (size_t i = 0; i < ac.size(); ++i) {
+    if (ignored(opt, ac[i])) continue;
+    const auto it = std::find(bc.begin(), bc.end(), ac[i]);
+    if (it == bc.end()) {
+      rep.only_in_a.push_back(ac[i]);
       continue;
     }
-    const size_t ib = size_t(it - b.columns.begin());
-    cols.push_back({a.columns[i], int(i), int(ib), a.held[i] && b.held[ib]});
+    const size_t ib = size_t(it - bc.begin());
+    cols.push_back({ac[i], i, ib, a.r.held()[i] && b.r.held()[ib]});
   }
-  for (const std::string& c : b.columns) {
-    if (!ignored(opt, c) && std::find(a.columns.begin(), a.columns.end(), c) == a.columns.end()) {
-      rep.only_in_b.push_back(c);
-    }
+  for (const std::string& c : bc) {
+    if (!ignored(opt, c) && std::find(ac.begin(), ac.end(), c) == ac.end()) rep.only_in_b.push_back(c);
   }
   rep.compared_signals = cols.size();
-  rep.a_last_clock = a.end_clock ? a.end_clock - 1 : 0;
-  rep.b_last_clock = b.end_clock ? b.end_clock - 1 : 0;
-  rep.length_differs = rep.a_last_clock != rep.b_last_clock;
-  const uint64_t common_end = std::min(a.end_clock, b.end_clock);  // clocks [0, common_end) compared
 
   std::map<std::string, size_t> index;  // signal -> position in rep.signals
-  size_t ia = 0, ib = 0;                // next unread row
-  long la = -1, lb = -1;                // row holding the current value
-  size_t first_union_row = SIZE_MAX;    // for the context
-  std::vector<uint64_t> union_clocks;
-  while (ia < a.clocks.size() || ib < b.clocks.size()) {
-    const uint64_t ca = ia < a.clocks.size() ? a.clocks[ia] : UINT64_MAX;
-    const uint64_t cb = ib < b.clocks.size() ? b.clocks[ib] : UINT64_MAX;
+  bool diverged = false;
+  uint64_t c0 = 0;
+  ContextRows ctx_a, ctx_b;
+  const size_t keep = opt.context_rows;
+  auto remember = [&](Stream& s, ContextRows& ctx) {
+    if (!diverged) {
+      ctx.before.emplace_back(s.cur_clock, s.cur_row);
+      if (ctx.before.size() > keep + 1) ctx.before.pop_front();
+    } else if (ctx.after.size() < keep + 1) {
+      ctx.after.emplace_back(s.cur_clock, s.cur_row);
+    }
+  };
+  while (a.more || b.more) {
+    const uint64_t ca = a.more ? a.next_clock : UINT64_MAX;
+    const uint64_t cb = b.more ? b.next_clock : UINT64_MAX;
     const uint64_t c = std::min(ca, cb);
     const bool row_a = ca == c, row_b = cb == c;
-    if (row_a) la = long(ia++);
-    if (row_b) lb = long(ib++);
-    union_clocks.push_back(c);
-    if (la < 0 || lb < 0) continue;  // one trace has not started yet
+    if (row_a) {
+      a.advance();
+      remember(a, ctx_a);
+    }
+    if (row_b) {
+      b.advance();
+      remember(b, ctx_b);
+    }
+    if (!a.has_cur || !b.has_cur) continue;  // one trace has not started yet
+    // The end of the shorter trace, known once its file is read to the end
+    // (before that the look-ahead rows bound every span).
+    const uint64_t a_end = a.more ? UINT64_MAX : a.r.end_clock();
+    const uint64_t b_end = b.more ? UINT64_MAX : b.r.end_clock();
+    const uint64_t common_end = std::min(a_end, b_end);
     if (c >= common_end) continue;  // past the shorter trace
-    const uint64_t next_a = ia < a.clocks.size() ? a.clocks[ia] : common_end;
-    const uint64_t next_b = ib < b.clocks.size() ? b.clocks[ib] : common_end;
+    const uint64_t next_a = a.more ? a.next_clock : common_end;
+    const uint64_t next_b = b.more ? b.next_clock : common_end;
     const uint64_t span = std::max<uint64_t>(1, std::min({next_a, next_b, common_end}) - c);  // clocks this value holds
     bool any = false;
     uint64_t any_span = 0;
     for (const Col& col : cols) {
       if (!col.held && !(row_a && row_b)) continue;
-      const std::string& va = a.rows[size_t(la)][size_t(col.ia)];
-      const std::string& vb = b.rows[size_t(lb)][size_t(col.ib)];
-      if (va == vb) continue;
+      const std::string& va = a.cur_row[col.ia];
+      const std::string& vb = b.cur_row[col.ib];
+      if (va == vb) continue;  // canonical decimal: equal text is an equal number
       const uint64_t n = col.held ? span : 1;
       any = true;
       any_span = std::max(any_span, n);
@@ -128,38 +167,53 @@ DiffReport diff_kin_traces(const std::string& a_path, const std::string& b_path,
     }
     if (any) {
       rep.differing_clocks += any_span;
-      if (first_union_row == SIZE_MAX) first_union_row = union_clocks.size() - 1;
+      if (!diverged) {
+        diverged = true;
+        c0 = c;
+        // Rows at c0 are the first "after" rows; the rest stay "before".
+        for (auto* ctx : {&ctx_a, &ctx_b}) {
+          if (!ctx->before.empty() && ctx->before.back().first == c0) {
+            ctx->after.push_back(std::move(ctx->before.back()));
+            ctx->before.pop_back();
+          }
+          while (ctx->before.size() > keep) ctx->before.pop_front();
+        }
+      }
     }
   }
-  rep.compared_clocks = common_end;
+  rep.a_name = with_source(a_path, a.r.meta());
+  rep.b_name = with_source(b_path, b.r.meta());
+  rep.a_last_clock = a.r.end_clock() ? a.r.end_clock() - 1 : 0;
+  rep.b_last_clock = b.r.end_clock() ? b.r.end_clock() - 1 : 0;
+  rep.length_differs = rep.a_last_clock != rep.b_last_clock;
+  rep.compared_clocks = std::min(a.r.end_clock(), b.r.end_clock());
   std::stable_sort(rep.signals.begin(), rep.signals.end(),
                    [](const SignalDiff& x, const SignalDiff& y) { return x.first_clock < y.first_clock; });
 
-  if (first_union_row != SIZE_MAX) {
+  if (diverged) {
     // Context: the rows of both traces around the first divergence.
-    const uint64_t c0 = union_clocks[first_union_row];
     std::vector<std::string> names;
     for (const SignalDiff& d : rep.signals) names.push_back(d.signal);
     for (const Col& col : cols) {
       if (names.size() >= 6) break;
       if (std::find(names.begin(), names.end(), col.name) == names.end() && col.held) names.push_back(col.name);
     }
-    auto render = [&](const KinTrace& t, const char* tag) {
+    auto render = [&](const ContextRows& ctx, const std::vector<std::string>& columns, const char* tag) {
       std::string s;
-      const auto pos = size_t(std::lower_bound(t.clocks.begin(), t.clocks.end(), c0) - t.clocks.begin());
-      const size_t from = pos > opt.context_rows ? pos - opt.context_rows : 0;
-      const size_t to = std::min(t.clocks.size(), pos + opt.context_rows + 1);
-      for (size_t r = from; r < to; ++r) {
-        std::string line = fmt::format("  {} clock {:>11}{}", tag, t.clocks[r], t.clocks[r] == c0 ? " >" : "  ");
+      auto line = [&](const std::pair<uint64_t, std::vector<std::string>>& r) {
+        std::string l = fmt::format("  {} clock {:>11}{}", tag, r.first, r.first == c0 ? " >" : "  ");
         for (const std::string& n : names) {
-          const auto it = std::find(t.columns.begin(), t.columns.end(), n);
-          if (it != t.columns.end()) line += fmt::format(" {}={}", n, t.rows[r][size_t(it - t.columns.begin())]);
+          const auto it = std::find(columns.begin(), columns.end(), n);
+          if (it != columns.end()) l += fmt::format(" {}={}", n, r.second[size_t(it - columns.begin())]);
         }
-        s += line + "\n";
-      }
+        s += l + "\n";
+      };
+      for (const auto& r : ctx.before) line(r);
+      for (const auto& r : ctx.after) line(r);
       return s;
     };
-    rep.context = "context (rows of each trace around the first divergence):\n" + render(a, "A") + render(b, "B");
+    rep.context = "context (rows of each trace around the first divergence):\n" + render(ctx_a, ac, "A") +
+                  render(ctx_b, bc, "B");
   }
   return rep;
 }

@@ -53,6 +53,16 @@ bool decimal_real(std::string_view t) {
 
 }  // namespace
 
+bool is_decimal_integer(std::string_view t) {
+  const bool negative = !t.empty() && t[0] == '-';
+  if (negative) t.remove_prefix(1);
+  if (t.empty() || (t[0] == '0' && (t.size() > 1 || negative))) return false;  // "01", "-0"
+  for (char c : t) {
+    if (c < '0' || c > '9') return false;
+  }
+  return true;
+}
+
 int64_t parse_int(const std::string& param, std::string_view text, int64_t lo, int64_t hi) {
   const std::string given(text);
   if (text.empty()) throw Error(param, "''", "required, " + bounds(lo, hi));

@@ -23,6 +23,10 @@ class Error : public std::invalid_argument {
   std::string parameter_, value_;
 };
 
+// "-12", "0", "340282366920938463463374607431768211455": an optional '-',
+// digits, no leading zeros; any width (traces carry 128-bit values).
+bool is_decimal_integer(std::string_view text);
+
 // Decimal text: an optional sign and digits, no leading zeros (no octal or
 // hex reading), within [lo, hi].
 int64_t parse_int(const std::string& param, std::string_view text, int64_t lo, int64_t hi);

@@ -14,7 +14,11 @@
 #include <thread>
 
 #include <fmt/format.h>
+#include <sys/resource.h>
 #include <unistd.h>
+
+#include <regex>
+#include <tuple>
 #include <string>
 
 #include "axis_core.h"
@@ -445,4 +449,66 @@ TEST(Regress, RerunLinesAreShellQuotedToTheSameArgv) {
   std::getline(in, got);
   EXPECT_EQ(got, "a b|it's|$(touch x)||;rm|{bin}/x|");
   EXPECT_FALSE(fs::exists(d / "x"));
+}
+
+// ---- trace diff: unreadable input is exit 2, and traces are streamed ------------------
+namespace {
+
+void write_trace(const fs::path& p, const std::string& header, uint64_t rows, uint64_t bad_row, const std::string& bad) {
+  std::ofstream f(p);
+  f << header << "\n";
+  f << "clock,step,dir,en,busy,done,phase,seg_idx,pulse_count,step_pending,ref_pos_int,ref_pos_frac,ref_vel,ref_acc,"
+       "ref_jerk\n";
+  for (uint64_t c = 0; c < rows; ++c) {
+    f << c * 3 << ",1,1,1,0,4,0," << c << ",0," << c << ",123456789012345678901,"
+      << (c == bad_row ? bad : std::to_string(c)) << ",1,0,0\n";
+  }
+  f << "# end_clock=" << rows * 3 << " rows=" << rows << "\n";
+}
+
+const std::string kHeader =
+    "# scurve-kin-trace v1 source=rtl decimate=5000 clk_hz=20000000 frac_bits=64 "
+    "held=step;dir;en;busy;done;phase;seg_idx;pulse_count;step_pending";
+
+}  // namespace
+
+TEST(TraceDiff, NonNumericValuesAndBadHeadersAreUnreadableNotDifferent) {
+  const TempDir d("unreadable");
+  write_trace(d / "a.csv", kHeader, 2000, UINT64_MAX, "");
+  const std::vector<std::tuple<std::string, uint64_t, std::string, std::string>> cases = {
+      {kHeader, 1000, "x", "ref_pos_frac='x'"},
+      {kHeader, 1000, "0100", "ref_pos_frac='0100'"},
+      {kHeader, 1000, "-0", "ref_pos_frac='-0'"},
+      {kHeader, 1000, "+5", "ref_pos_frac='+5'"},
+      {std::regex_replace(kHeader, std::regex("clk_hz=20000000"), "clk_hz=0"), UINT64_MAX, "", "clk_hz=0"},
+      {std::regex_replace(kHeader, std::regex("frac_bits=64"), "frac_bits=99999999999"), UINT64_MAX, "",
+       "frac_bits=99999999999"},
+      {"# some other csv", UINT64_MAX, "", "not a kinematics trace"},
+  };
+  for (const auto& [header, row, bad, expect] : cases) {
+    write_trace(d / "b.csv", header, 2000, row, bad);
+    const Outcome o = run_capture(std::string(SCURVE) + " diff " + (d / "a.csv").string() + " " +
+                                      (d / "b.csv").string(), (d / "err.txt").string());
+    EXPECT_EQ(o.rc, 2) << expect;
+    ASSERT_EQ(o.err_lines.size(), 1u) << expect;
+    EXPECT_NE(o.err_lines[0].find(expect), std::string::npos) << o.err_lines[0];
+  }
+}
+
+TEST(TraceDiff, LongTracesAreStreamedInBoundedMemory) {
+  const TempDir d("stream");
+  // ~73 MB each: loaded whole (as rows of strings) this took over 1 GB.
+  write_trace(d / "a.csv", kHeader, 1'000'000, UINT64_MAX, "");
+  write_trace(d / "b.csv", kHeader, 1'000'000, 777'777, "1");
+  const Outcome o = run_capture(std::string(SCURVE) + " diff " + (d / "a.csv").string() + " " +
+                                    (d / "b.csv").string(), (d / "err.txt").string());
+  EXPECT_EQ(o.rc, 1);
+  rusage ru{};
+  getrusage(RUSAGE_CHILDREN, &ru);
+  EXPECT_LT(ru.ru_maxrss, 64 * 1024) << "max RSS of a child, KiB";
+  const DiffReport r = diff_traces((d / "a.csv").string(), (d / "b.csv").string());
+  ASSERT_EQ(r.signals.size(), 1u) << r.to_text();
+  EXPECT_EQ(r.signals[0].signal, "ref_pos_frac");
+  EXPECT_EQ(r.signals[0].first_clock, 777'777u * 3);
+  EXPECT_NE(r.context.find("A clock     2333331 >"), std::string::npos) << r.context;
 }
