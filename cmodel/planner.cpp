@@ -176,7 +176,8 @@ Candidate evaluate(i128 vs, double v1, i128 ve, i128 target, const Limits& lim) 
   return c;
 }
 
-std::string num(double v) { return fmt::format("{:g}", v); }
+// Shortest text that reads back as the same double: the value as the user gave it.
+std::string num(double v) { return fmt::format("{}", v); }
 
 std::optional<PlanError> check_range(const char* name, double v, double lo, double hi,
                                      const char* unit, bool lo_open = false) {
@@ -201,7 +202,10 @@ int64_t needed_distance(const Candidate& c, i128 target) {
   return int64_t(num <= 0 ? 0 : (num + i128(kOne) - 1) / i128(kOne));
 }
 
-PlanResult plan_magnitude(const MoveRequest& req, const PulseTiming& timing, double v_end);
+// refine_minimum: on an unreachable end speed, search the shortest distance
+// the planner accepts, so the message names the true minimum (the closed-form
+// estimate can be a pulse or two high). The search itself plans without it.
+PlanResult plan_magnitude(const MoveRequest& req, const PulseTiming& timing, double v_end, bool refine_minimum = true);
 
 }  // namespace
 
@@ -263,7 +267,8 @@ PlanResult plan_move(const MoveRequest& req, const PulseTiming& timing) {
     }
   }
 
-  PlanResult r = plan_magnitude(req, timing, req.v_end);
+  // The minimum-distance search runs only for an error the user will see.
+  PlanResult r = plan_magnitude(req, timing, req.v_end, !req.adjust_end_speed);
   if (std::holds_alternative<PlanError>(r) && req.adjust_end_speed &&
       std::get<PlanError>(r).parameter == "v_end" && req.v_end != req.v_start) {
     // Bisect the end speed between v_start (always reachable) and v_end.
@@ -271,7 +276,7 @@ PlanResult plan_move(const MoveRequest& req, const PulseTiming& timing) {
     std::optional<Plan> best;
     for (int it = 0; it < 64; ++it) {
       const double mid = 0.5 * (ok + bad);
-      PlanResult m = plan_magnitude(req, timing, mid);
+      PlanResult m = plan_magnitude(req, timing, mid, false);
       if (std::holds_alternative<Plan>(m)) {
         ok = mid;
         best = std::get<Plan>(m);
@@ -280,20 +285,21 @@ PlanResult plan_move(const MoveRequest& req, const PulseTiming& timing) {
       }
     }
     if (!best) {
-      PlanResult m = plan_magnitude(req, timing, req.v_start);
+      PlanResult m = plan_magnitude(req, timing, req.v_start, false);
       if (std::holds_alternative<Plan>(m)) best = std::get<Plan>(m);
     }
     if (best) {
       best->end_speed_adjusted = true;
       return *best;
     }
+    return plan_magnitude(req, timing, req.v_end, true);
   }
   return r;
 }
 
 namespace {
 
-PlanResult plan_magnitude(const MoveRequest& req, const PulseTiming& timing, double v_end) {
+PlanResult plan_magnitude(const MoveRequest& req, const PulseTiming& timing, double v_end, bool refine_minimum) {
   const int dir = req.distance < 0 ? -1 : 1;
   const int64_t dist = req.distance * dir;
   const bool trap = req.kind == ProfileKind::Trapezoid;
@@ -324,8 +330,23 @@ PlanResult plan_magnitude(const MoveRequest& req, const PulseTiming& timing, dou
     const bool far_is_stop = v_far == 0.0;  // vs = ve = 0: a tiny plateau always fits
     if (!far_is_stop && !far.feasible) {
       const char* hint = req.adjust_end_speed ? "" : " (or allow --adjust-end-speed)";
-      const std::string need =
-          far.too_far ? std::string("more than 1e12") : fmt::format("{}", needed_distance(far, target));
+      std::string need = "more than 1e12";
+      if (!far.too_far) {
+        int64_t min_dist = needed_distance(far, target);
+        if (refine_minimum) {
+          const auto accepts = [&](int64_t d) {
+            MoveRequest r = req;
+            r.distance = d * dir;
+            return d <= PlannerLimits::kMaxDistance &&
+                   std::holds_alternative<Plan>(plan_magnitude(r, timing, v_end, false));
+          };
+          // Local search from the estimate: the result is accepted and one
+          // pulse less is not.
+          for (int k = 0; k < 64 && min_dist > 1 && accepts(min_dist - 1); ++k) --min_dist;
+          for (int k = 0; k < 64 && !accepts(min_dist); ++k) ++min_dist;
+        }
+        need = fmt::format("{}", min_dist);
+      }
       if (v_end > req.v_start) {
         return PlanError{"v_end", fmt::format("v_end={} unreachable from v_start={}: needs distance >= {} "
                                               "pulses, got {}{}",
