@@ -70,7 +70,7 @@ verilate(sc_rtl_neuron_pi
   OPT_GLOBAL -O3)
 
 add_executable(cl_neuron_pi_rtl_tests tests/test_neuron_pi_rtl.cpp)
-target_link_libraries(cl_neuron_pi_rtl_tests PRIVATE sc_rtl_neuron_pi sc_cl_model fmt::fmt GTest::gtest_main)
+target_link_libraries(cl_neuron_pi_rtl_tests PRIVATE sc_rtl_neuron_pi sc_checks sc_cl_model fmt::fmt GTest::gtest_main)
 target_compile_options(cl_neuron_pi_rtl_tests PRIVATE ${SC_WARN})
 gtest_discover_tests(cl_neuron_pi_rtl_tests DISCOVERY_TIMEOUT 60 TEST_PREFIX "cl." PROPERTIES LABELS "closed_loop" TIMEOUT 300)
 

@@ -30,19 +30,17 @@ target_compile_definitions(sc_tools PRIVATE SCURVE_SOURCE_DIR="${CMAKE_SOURCE_DI
 target_link_libraries(scurve PRIVATE sc_tools)
 
 # ---- bench components (C++20, no SystemC, no Verilator runtime) --------------------
-# The checker and pin monitor are compiled here again rather than taken from
-# sc_tb: sc_tb drags in sc_rtl's --cc Verilator runtime, which the --sc bench
-# cannot link next to its own (with LTO the archive members get pulled in
-# for shared template instantiations and clash).
+# The checker and pin monitor come from sc_checks, not sc_tb: sc_tb drags in
+# sc_rtl's --cc Verilator runtime, which the --sc bench cannot link next to
+# its own (with LTO the archive members get pulled in for shared template
+# instantiations and clash).
 # The model's FST writer uses the fstapi.c that each bench's Verilator
 # runtime carries (both benches are verilated with TRACE_FST).
 add_library(sc_bench_parts STATIC
   tb/systemc/components.cpp
-  tb/tools/model_fst.cpp
-  tb/lockstep.cpp
-  tb/pin_monitor.cpp)
+  tb/tools/model_fst.cpp)
 target_include_directories(sc_bench_parts PUBLIC tb/systemc tb PRIVATE ${VERILATOR_ROOT}/include/gtkwave)
-target_link_libraries(sc_bench_parts PUBLIC sc_kin_trace sc_model fmt::fmt nlohmann_json::nlohmann_json)
+target_link_libraries(sc_bench_parts PUBLIC sc_checks sc_kin_trace sc_model fmt::fmt nlohmann_json::nlohmann_json)
 target_compile_options(sc_bench_parts PRIVATE ${SC_WARN})
 
 # The --cc RTL as a bench core: only the batched bench links it.
