@@ -2,26 +2,64 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include "reg_encode.h"
 
 namespace sc {
 
-std::string render(const AxiAxisOutputs& o) {
-  return fmt::format(
-      "awready={} wready={} bvalid={} bresp={} arready={} rvalid={} rdata=0x{:08x} rresp={} "
-      "step={} dir={} en={} busy={} done={} fault={} phase={} pulse_count={} ref_pos={}",
-      o.axi.awready, o.axi.wready, o.axi.bvalid, o.axi.bresp, o.axi.arready, o.axi.rvalid, o.axi.rdata,
-      o.axi.rresp, o.step, o.dir, o.en, o.busy, o.done, o.fault, o.phase, o.pulse_count, o.ref_pos);
+namespace {
+
+void add_axi(SignalValues& v, const AxiOut& a) {
+  v.emplace_back("s_axi_awready_o", hex_bits(uint64_t(a.awready), 1));
+  v.emplace_back("s_axi_wready_o", hex_bits(uint64_t(a.wready), 1));
+  v.emplace_back("s_axi_bvalid_o", hex_bits(uint64_t(a.bvalid), 1));
+  v.emplace_back("s_axi_bresp_o", hex_bits(uint64_t(a.bresp), 2));
+  v.emplace_back("s_axi_arready_o", hex_bits(uint64_t(a.arready), 1));
+  v.emplace_back("s_axi_rvalid_o", hex_bits(uint64_t(a.rvalid), 1));
+  v.emplace_back("s_axi_rdata_o", hex_bits(uint64_t(a.rdata), 32));
+  v.emplace_back("s_axi_rresp_o", hex_bits(uint64_t(a.rresp), 2));
 }
 
-std::string render(const AxiServoOutputs& o) {
-  return fmt::format(
-      "awready={} wready={} bvalid={} bresp={} arready={} rvalid={} rdata=0x{:08x} rresp={} "
-      "step={} dir={} en={} busy={} done={} fault={} phase={} pulse_count={} ref_pos={} enc_pos={} "
-      "in_pos={} fault_ferr={}",
-      o.axi.awready, o.axi.wready, o.axi.bvalid, o.axi.bresp, o.axi.arready, o.axi.rvalid, o.axi.rdata,
-      o.axi.rresp, o.step, o.dir, o.en, o.busy, o.done, o.fault, o.phase, o.pulse_count, o.ref_pos, o.enc_pos,
-      o.in_pos, o.fault_ferr);
+template <class O>
+void add_axis(SignalValues& v, const O& o) {
+  v.emplace_back("step_o", hex_bits(uint64_t(o.step), 1));
+  v.emplace_back("dir_o", hex_bits(uint64_t(o.dir), 1));
+  v.emplace_back("en_o", hex_bits(uint64_t(o.en), 1));
+  v.emplace_back("busy_o", hex_bits(uint64_t(o.busy), 1));
+  v.emplace_back("done_o", hex_bits(uint64_t(o.done), 1));
+  v.emplace_back("fault_o", hex_bits(uint64_t(o.fault), 1));
+  v.emplace_back("phase_o", hex_bits(uint64_t(o.phase), PhaseW));
+  v.emplace_back("pulse_count_o", hex_bits(int64_t(o.pulse_count), 32));
+  v.emplace_back("ref_pos_o", hex_bits(int64_t(o.ref_pos), 32));
+}
+
+}  // namespace
+
+SignalValues render_signals(const AxiAxisOutputs& o) {
+  SignalValues v;
+  add_axi(v, o.axi);
+  add_axis(v, o);
+  return v;
+}
+
+SignalValues render_signals(const AxiServoOutputs& o) {
+  SignalValues v;
+  add_axi(v, o.axi);
+  add_axis(v, o);
+  v.emplace_back("enc_pos_o", hex_bits(int64_t(o.enc_pos), 32));
+  v.emplace_back("in_pos_o", hex_bits(uint64_t(o.in_pos), 1));
+  v.emplace_back("fault_ferr_o", hex_bits(uint64_t(o.fault_ferr), 1));
+  return v;
+}
+
+void AxiMaster::note(const LockstepLog& checker, const PinMonitor& pins) {
+  if (!error_.empty()) [[likely]] return;
+  if (!checker.errors().empty()) {
+    error_ = checker.errors().front().to_string();
+  } else if (!pins.errors().empty()) {
+    error_ = "pins: " + pins.errors().front();
+  }
 }
 
 AxiBench::AxiBench(bool with_rtl, uint32_t seed) : AxiMaster(seed) {
@@ -44,20 +82,17 @@ void AxiBench::tick() {
   model_.step(in_, ms);
   const AxiAxisOutputs m = model_.outputs();
   out_ = rtl_ ? rtl_->outputs() : m;
-  if (rtl_ && !(out_ == m) && error_.empty()) {
-    error_ = fmt::format("clock {}: RTL and model differ\n  rtl:   {}\n  model: {}", clock_, render(out_), render(m));
-  } else if (rtl_) {
-    ++matched_;
-  }
+  if (rtl_) checker_.compare(clock_, out_, m);
   if (model_.regs().state().start) {
     start_clock_ = clock_;
     rise_times_.clear();
+    pins_.set_timing(model_.regs().state().cfg);  // as programmed for this move
   }
-  if (out_.step && !last_step_) {
-    net_steps_ += out_.dir ? 1 : -1;
-    rise_times_.push_back(clock_ - start_clock_);
-  }
+  pins_.on_clock(clock_, out_.step, out_.dir, out_.done, out_.phase, out_.ref_pos,
+                 model_.core().step_gen().state().pend);
+  if (out_.step && !last_step_) rise_times_.push_back(clock_ - start_clock_);
   last_step_ = out_.step;
+  note(checker_, pins_);
   ++clock_;
 }
 
@@ -73,7 +108,6 @@ void AxiServoBench::reset() {
   model_.reset();
   in_ = AxiIn{};
   out_ = model_.outputs();
-  last_step_ = out_.step;
 }
 
 void AxiServoBench::tick() {
@@ -84,13 +118,10 @@ void AxiServoBench::tick() {
   model_.step(in_, ms);
   const AxiServoOutputs m = model_.outputs();
   out_ = rtl_ ? rtl_->outputs() : m;
-  if (rtl_ && !(out_ == m) && error_.empty()) {
-    error_ = fmt::format("clock {}: RTL and model differ\n  rtl:   {}\n  model: {}", clock_, render(out_), render(m));
-  } else if (rtl_) {
-    ++matched_;
-  }
-  if (out_.step && !last_step_) net_steps_ += out_.dir ? 1 : -1;
-  last_step_ = out_.step;
+  if (rtl_) checker_.compare(clock_, out_, m);
+  if (model_.regs().state().start) pins_.set_timing(model_.regs().state().cfg);  // as programmed for this move
+  pins_.on_clock(clock_, out_.step, out_.dir, out_.done, out_.phase, out_.pulse_count);
+  note(checker_, pins_);
   if (plant_) plant_->clock(out_.step, out_.dir);
   ++clock_;
 }
@@ -154,16 +185,19 @@ std::pair<uint32_t, uint8_t> AxiMaster::read(uint32_t addr) {
 
 // ---- UART host ------------------------------------------------------------------
 
-UartHost::UartHost(RtlBoard& board, int clks_per_bit) : b_(board), bit100_(5 * clks_per_bit) {}
+UartHost::UartHost(RtlBoard& board, int clks_per_bit) : b_(board), bit100_(5 * clks_per_bit) {
+  set_timing(PulseTiming{});
+}
+
+void UartHost::set_timing(const PulseTiming& t) {
+  auto pin_clocks = [](uint16_t v) { return uint16_t(std::min(5 * uint32_t(v), uint32_t(UINT16_MAX))); };
+  pins_.set_timing(PulseTiming{pin_clocks(t.high), pin_clocks(t.low), pin_clocks(t.setup), pin_clocks(t.hold)});
+}
 
 void UartHost::tick() {
   b_.tick100(line_, true, estop, enc_ab & 1, (enc_ab >> 1) & 1);
   const RtlBoard::Pins p = b_.pins();
-  if (p.step && !last_step_) {
-    ++rises_;
-    net_steps_ += p.dir ? 1 : -1;
-  }
-  last_step_ = p.step;
+  pins_.on_clock(b_.clocks100(), p.step, p.dir, false, 0);
   // receiver: sample at the middle of each bit
   if (rx_state_ == 0) {
     if (!p.uart_tx) {

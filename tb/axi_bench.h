@@ -1,6 +1,7 @@
 // Register-level testbench for sc_axi_axis: an AXI4-Lite master driving the
 // Verilated RTL and the bit-exact model (cmodel/axi_regs.h) in lockstep,
-// compared every clock; counts the STEP pulses on the pins. Also a UART
+// compared every clock; the pin monitor checks the STEP/DIR pins (timing as
+// programmed, step accounting) and counts the pulses. Also a UART
 // host for the Verilated board top (frames on the uart_rx pin, responses
 // decoded from uart_tx).
 #pragma once
@@ -13,14 +14,16 @@
 #include <vector>
 
 #include "axi_regs.h"
+#include "lockstep.h"
+#include "pin_monitor.h"
 #include "plant.h"
 #include "reg_encode.h"
 #include "rtl_axi_axis.h"
 
 namespace sc {
 
-std::string render(const AxiAxisOutputs& o);
-std::string render(const AxiServoOutputs& o);
+SignalValues render_signals(const AxiAxisOutputs& o);
+SignalValues render_signals(const AxiServoOutputs& o);
 
 // AXI4-Lite master of the register-level benches: blocking transactions
 // on top of the bench's tick().
@@ -46,6 +49,8 @@ class AxiMaster {
  protected:
   virtual AxiOut axi_out() const = 0;
   int delay();
+  // The first lockstep mismatch or pin error fails the bench.
+  void note(const LockstepLog& checker, const PinMonitor& pins);
   AxiIn in_;
   bool jitter_ = false;
   std::mt19937 rng_;
@@ -69,8 +74,9 @@ class AxiBench : public AxiMaster {
   // STEP rising edges, as clocks after the last START pulse to the core.
   const std::vector<uint64_t>& rise_times() const { return rise_times_; }
   uint64_t clock() const { return clock_; }
-  int64_t net_steps() const { return net_steps_; }
-  uint64_t matched() const { return matched_; }
+  int64_t net_steps() const { return pins_.net_steps(); }
+  uint64_t matched() const { return checker_.matched(); }
+  const PinMonitor& pins() const { return pins_; }
 
  private:
   AxiOut axi_out() const override { return out_.axi; }
@@ -78,8 +84,11 @@ class AxiBench : public AxiMaster {
   AxiAxis model_;
   RegsSide side_;
   AxiAxisOutputs out_;
-  uint64_t clock_ = 0, matched_ = 0;
-  int64_t net_steps_ = 0;
+  uint64_t clock_ = 0;
+  Lockstep<AxiAxisOutputs> checker_{&render_signals};
+  // Open loop: the pins against the core's position (its step queue read
+  // from the model, as sc_axi_axis has no port for it).
+  PinMonitor pins_{PinRules{PulseTiming{}, false, StepAccounting::ReferencePosition}};
   bool last_step_ = false;
   int32_t model_enc_offset_ = 0;
   uint64_t start_clock_ = 0;
@@ -104,8 +113,9 @@ class AxiServoBench : public AxiMaster {
   const AxiServoOutputs& out() const { return out_; }
   const AxiServo& model() const { return model_; }
   uint64_t clock() const { return clock_; }
-  int64_t net_steps() const { return net_steps_; }
-  uint64_t matched() const { return matched_; }
+  int64_t net_steps() const { return pins_.net_steps(); }
+  uint64_t matched() const { return checker_.matched(); }
+  const PinMonitor& pins() const { return pins_; }
 
  private:
   AxiOut axi_out() const override { return out_.axi; }
@@ -114,9 +124,10 @@ class AxiServoBench : public AxiMaster {
   AxiServo model_;
   RegsSide side_;
   AxiServoOutputs out_;
-  uint64_t clock_ = 0, matched_ = 0;
-  int64_t net_steps_ = 0;
-  bool last_step_ = false;
+  uint64_t clock_ = 0;
+  Lockstep<AxiServoOutputs> checker_{&render_signals};
+  // Both modes: the pins against the step generator's counter.
+  PinMonitor pins_{PinRules{PulseTiming{}, false, StepAccounting::PulseCounter}};
   bool inject_ = false;
 };
 
@@ -135,8 +146,12 @@ class UartHost {
   void idle(uint64_t clocks100);
   bool estop = false;
   uint8_t enc_ab = 0;  // encoder pins: bit 0 = A, bit 1 = B
-  int64_t net_steps() const { return net_steps_; }
-  uint64_t pulses() const { return rises_; }
+  int64_t net_steps() const { return pins_.net_steps(); }
+  uint64_t pulses() const { return pins_.rising_edges(); }
+  // The STEP/DIR pins checked against the pulse timing the host programs
+  // (system clocks; the monitor counts pin clocks, 5 per system clock).
+  void set_timing(const PulseTiming& t);
+  const PinMonitor& pins() const { return pins_; }
 
  private:
   void tick();
@@ -149,9 +164,7 @@ class UartHost {
   int rx_bit_ = 0;
   uint8_t rx_byte_ = 0;
   std::vector<uint8_t> rx_;
-  bool last_step_ = false;
-  int64_t net_steps_ = 0;
-  uint64_t rises_ = 0;
+  PinMonitor pins_{PinRules{PulseTiming{}, false, StepAccounting::None}};
 };
 
 }  // namespace sc

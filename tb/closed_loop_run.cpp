@@ -9,6 +9,7 @@
 #include <deque>
 #include <memory>
 
+#include "pin_monitor.h"
 #include "rtl_servo.h"
 
 namespace sc {
@@ -96,42 +97,42 @@ std::string to_servo_config(const ControllerParams& p, const PlantConfig& plant,
   return {};
 }
 
-std::vector<std::pair<std::string, std::string>> render_servo(const ServoOutputs& o) {
-  std::vector<std::pair<std::string, std::string>> v;
-  auto add = [&](const char* n, auto x) { v.emplace_back(n, fmt::format("{}", x)); };
-  add("step_o", int(o.step));
-  add("dir_o", int(o.dir));
-  add("en_o", int(o.en));
-  add("busy_o", int(o.busy));
-  add("done_o", int(o.done));
-  add("phase_o", int(o.phase));
-  add("fault_table_o", int(o.fault_table));
-  add("fault_overrun_o", int(o.fault_overrun));
-  add("fault_ferr_o", int(o.fault_ferr));
-  add("in_pos_o", int(o.in_pos));
-  add("pulse_count_o", o.pulse_count);
-  add("enc_pos_o", o.enc_pos);
-  add("enc_illegal_o", o.enc_illegal);
-  add("ref_pos_int_o", o.ref_pos_int);
-  add("ref_frac_hi_o", o.ref_frac_hi);
-  add("ref_vel_o", o.ref_vel);
-  add("ref_done_o", int(o.ref_done));
-  add("ctl_active_o", int(o.ctl_active));
-  add("ctl_state_o", int(o.ctl_state));
-  add("u_o", o.u);
-  add("v_cmd_o", o.v_cmd);
-  add("e_p_o", o.e_p);
-  add("e_v_o", o.e_v);
-  add("w_p1_o", o.w_p1);
-  add("w_p2_o", o.w_p2);
-  add("w_v1_o", o.w_v1);
-  add("w_v2_o", o.w_v2);
-  add("wn_p1_o", o.wn_p1);
-  add("wn_p2_o", o.wn_p2);
-  add("wn_v1_o", o.wn_v1);
-  add("wn_v2_o", o.wn_v2);
-  add("nco_phase_o", o.nco_phase);
-  add("step_pending_o", int(o.step_pending));
+SignalValues render_servo(const ServoOutputs& o) {
+  SignalValues v;
+  auto add = [&](const char* n, int64_t x, int width) { v.emplace_back(n, hex_bits(x, width)); };
+  add("step_o", o.step, 1);
+  add("dir_o", o.dir, 1);
+  add("en_o", o.en, 1);
+  add("busy_o", o.busy, 1);
+  add("done_o", o.done, 1);
+  add("phase_o", o.phase, PhaseW);
+  add("fault_table_o", o.fault_table, 1);
+  add("fault_overrun_o", o.fault_overrun, 1);
+  add("fault_ferr_o", o.fault_ferr, 1);
+  add("in_pos_o", o.in_pos, 1);
+  add("pulse_count_o", o.pulse_count, 32);
+  add("enc_pos_o", o.enc_pos, 32);
+  add("enc_illegal_o", o.enc_illegal, 16);
+  add("ref_pos_int_o", o.ref_pos_int, 32);
+  add("ref_frac_hi_o", o.ref_frac_hi, 32);
+  add("ref_vel_o", o.ref_vel, 32);
+  add("ref_done_o", o.ref_done, 1);
+  add("ctl_active_o", o.ctl_active, 1);
+  add("ctl_state_o", o.ctl_state, 8);
+  add("u_o", o.u, 32);
+  add("v_cmd_o", o.v_cmd, 32);
+  add("e_p_o", o.e_p, 32);
+  add("e_v_o", o.e_v, 32);
+  add("w_p1_o", o.w_p1, WgtW);
+  add("w_p2_o", o.w_p2, WgtW);
+  add("w_v1_o", o.w_v1, WgtW);
+  add("w_v2_o", o.w_v2, WgtW);
+  add("wn_p1_o", o.wn_p1, NWgtW);
+  add("wn_p2_o", o.wn_p2, NWgtW);
+  add("wn_v1_o", o.wn_v1, NWgtW);
+  add("wn_v2_o", o.wn_v2, NWgtW);
+  add("nco_phase_o", o.nco_phase, NcoW);
+  add("step_pending_o", o.step_pending, PendW);
   return v;
 }
 
@@ -221,31 +222,24 @@ ClosedLoopResult run_closed_loop(const Plan& plan, const ClosedLoopOptions& opt)
   ServoOutputs out;
   uint64_t clock = 0;
   bool stopped = false;
-  uint64_t mism = 0, matched = 0;
+  Lockstep<ServoOutputs> checker(&render_servo, opt.max_mismatches);
+  // Open loop: the pins against the executor's position; closed loop:
+  // against the step generator's counter (the controller has no exact
+  // reference to count against).
+  const bool closed = cfg.closed_loop;
+  PinMonitor pins(PinRules{opt.timing, !closed,
+                           closed ? StepAccounting::PulseCounter : StepAccounting::ReferencePosition});
 
   auto tick = [&](const ServoInputs& si) {
     if (opt.inject) opt.inject(clock, model);
     if (rtl) rtl->step(si);
     if (use_model) model.step(si);
     out = rtl ? rtl->outputs() : model.outputs();
-    if (lockstep) {
-      const ServoOutputs mo = model.outputs();
-      if (out == mo) [[likely]] {
-        ++matched;
-      } else {
-        ++mism;
-        if (res.first_mismatch.empty()) {
-          const auto a = render_servo(out), b = render_servo(mo);
-          for (size_t i = 0; i < a.size(); ++i) {
-            if (a[i].second != b[i].second) {
-              res.first_mismatch = fmt::format("clock {} signal {}: rtl={} model={}", clock, a[i].first,
-                                               a[i].second, b[i].second);
-              break;
-            }
-          }
-        }
-        if (mism >= opt.max_mismatches) stopped = true;
-      }
+    if (lockstep && !checker.compare(clock, out, model.outputs()) && checker.should_stop()) stopped = true;
+    if (closed) {
+      pins.on_clock(clock, out.step, out.dir, out.done, out.phase, out.pulse_count);
+    } else {
+      pins.on_clock(clock, out.step, out.dir, out.done, out.phase, out.ref_pos_int, out.step_pending);
     }
     plant.clock(out.step, out.dir);
     in.enc_a = plant.enc_a();
@@ -336,6 +330,7 @@ ClosedLoopResult run_closed_loop(const Plan& plan, const ClosedLoopOptions& opt)
     th_max = std::max(th_max, plant.theta());
     enc_dev = std::max(enc_dev, std::fabs(double(out.enc_pos) - L * cps));
   }
+  pins.finish(clock);
   res.total_clocks = clock;
   res.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   res.clocks_per_s = res.wall_s > 0 ? double(clock) / res.wall_s : 0;
@@ -355,12 +350,15 @@ ClosedLoopResult run_closed_loop(const Plan& plan, const ClosedLoopOptions& opt)
   res.enc_illegal = out.enc_illegal;
   res.glitches = plant.glitches();
   res.slips = plant.slips();
-  res.mismatches = mism;
-  res.matched_clocks = matched;
+  res.mismatches = checker.mismatches();
+  res.matched_clocks = checker.matched();
+  if (!checker.errors().empty()) res.first_mismatch = checker.errors().front().to_string();
+  res.pin_errors = pins.errors();
 
   auto fail = [&](std::string s) { res.failures.push_back(std::move(s)); };
-  if (mism) fail(fmt::format("{} lockstep mismatches: {}", mism, res.first_mismatch));
-  if (lockstep && matched == 0) fail("lockstep compared nothing");
+  if (res.mismatches) fail(fmt::format("{} lockstep mismatches: {}", res.mismatches, res.first_mismatch));
+  if (lockstep && checker.compared_nothing()) fail("lockstep compared nothing");
+  for (const std::string& e : res.pin_errors) fail("pins: " + e);
   if (res.fault_ferr) fail("following-error fault");
   if (!stopped && !res.in_pos && opt.ctl.closed_loop) fail(fmt::format("not in position within {} clocks", limit));
   if (res.final_error != 0) fail(fmt::format("final error {} pulses", res.final_error));

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "lockstep.h"
 #include "plant.h"
 #include "planner.h"
 #include "servo_axis.h"
@@ -91,6 +92,7 @@ struct ClosedLoopResult {
   uint64_t enc_illegal = 0, glitches = 0, slips = 0;
   uint64_t mismatches = 0, matched_clocks = 0;
   std::string first_mismatch;
+  std::vector<std::string> pin_errors;  // pulse timing and step accounting
   std::vector<WeightSample> weights;
   double wall_s = 0, clocks_per_s = 0;
   std::vector<std::string> failures;
@@ -100,7 +102,7 @@ struct ClosedLoopResult {
 ClosedLoopResult run_closed_loop(const Plan& plan, const ClosedLoopOptions& opt);
 
 // Field-by-field rendering of the outputs (mismatch reports).
-std::vector<std::pair<std::string, std::string>> render_servo(const ServoOutputs& o);
+SignalValues render_servo(const ServoOutputs& o);
 
 bool write_weights_csv(const std::string& path, const std::vector<WeightSample>& w);
 

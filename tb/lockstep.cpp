@@ -6,24 +6,29 @@
 
 namespace sc {
 
-std::vector<std::pair<std::string, std::string>> render_outputs(const CoreOutputs& o) {
+std::string hex_bits(uint64_t v, int width) {
+  if (width < 64) v &= (uint64_t(1) << width) - 1;
+  return fmt::format("0x{:0{}x}", v, (width + 3) / 4);
+}
+
+SignalValues render_outputs(const CoreOutputs& o) {
   return {
-      {"step_o", fmt::format("{}", int(o.step))},
-      {"dir_o", fmt::format("{}", int(o.dir))},
-      {"en_o", fmt::format("{}", int(o.en))},
-      {"busy_o", fmt::format("{}", int(o.busy))},
-      {"done_o", fmt::format("{}", int(o.done))},
-      {"phase_o", fmt::format("{}", int(o.phase))},
-      {"fault_table_o", fmt::format("{}", int(o.fault_table))},
-      {"fault_overrun_o", fmt::format("{}", int(o.fault_overrun))},
-      {"pulse_count_o", fmt::format("{}", o.pulse_count)},
-      {"ref_pos_int_o", fmt::format("{}", o.ref_pos_int)},
+      {"step_o", hex_bits(uint64_t(o.step), 1)},
+      {"dir_o", hex_bits(uint64_t(o.dir), 1)},
+      {"en_o", hex_bits(uint64_t(o.en), 1)},
+      {"busy_o", hex_bits(uint64_t(o.busy), 1)},
+      {"done_o", hex_bits(uint64_t(o.done), 1)},
+      {"phase_o", hex_bits(uint64_t(o.phase), PhaseW)},
+      {"fault_table_o", hex_bits(uint64_t(o.fault_table), 1)},
+      {"fault_overrun_o", hex_bits(uint64_t(o.fault_overrun), 1)},
+      {"pulse_count_o", hex_bits(int64_t(o.pulse_count), 32)},
+      {"ref_pos_int_o", hex_bits(int64_t(o.ref_pos_int), 32)},
       {"ref_pos_frac_o", to_hex_u128(o.ref_pos_frac, FracBits)},
       {"ref_vel_o", to_hex_u128(u128(o.ref_vel), VelW)},
       {"ref_acc_o", to_hex_u128(u128(i128(o.ref_acc)), AccW)},
       {"ref_jerk_o", to_hex_u128(u128(i128(o.ref_jerk)), JerkW)},
-      {"seg_idx_o", fmt::format("{}", int(o.seg_idx))},
-      {"step_pending_o", fmt::format("{}", int(o.step_pending))},
+      {"seg_idx_o", hex_bits(uint64_t(o.seg_idx), 8)},
+      {"step_pending_o", hex_bits(int64_t(o.step_pending), PendW)},
   };
 }
 
@@ -33,40 +38,35 @@ std::string Mismatch::to_string() const {
   return s;
 }
 
-void LockstepChecker::report(uint64_t clock, const CoreOutputs& rtl, const CoreOutputs& model) {
-  ++mismatch_clocks_;
-  if (errors_.size() >= max_errors_) return;
-  const auto r = render_outputs(rtl);
-  const auto m = render_outputs(model);
-  // Context: the matched clocks just before, oldest first (RTL == model there).
-  std::vector<Entry> ctx;
-  for (const Entry& e : ring_) {
-    if (e.clock != UINT64_MAX && e.clock < clock && clock - e.clock <= kContext) ctx.push_back(e);
-  }
-  std::sort(ctx.begin(), ctx.end(), [](const Entry& a, const Entry& b) { return a.clock < b.clock; });
+void LockstepLog::add(uint64_t clock, const SignalValues& rtl, const SignalValues& model,
+                      const std::vector<std::pair<uint64_t, SignalValues>>& earlier_in) {
+  auto earlier = earlier_in;
+  std::sort(earlier.begin(), earlier.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   std::string context;
-  for (const Entry& e : ctx) {
-    const auto v = render_outputs(e.out);
-    std::string line = fmt::format("  clock {:>10} (match)", e.clock);
-    for (size_t i = 0; i < v.size(); ++i) {
-      if (r[i].second != m[i].second) line += fmt::format(" {}={}", v[i].first, v[i].second);
+  for (const auto& [c, v] : earlier) {
+    std::string line = fmt::format("  clock {:>10} (match)", c);
+    for (size_t i = 0; i < v.size() && i < rtl.size(); ++i) {
+      if (rtl[i].second != model[i].second) line += fmt::format(" {}={}", v[i].first, v[i].second);
     }
     context += line + "\n";
   }
-  for (size_t i = 0; i < r.size(); ++i) {
-    if (r[i].second != m[i].second) {
-      errors_.push_back({clock, r[i].first, r[i].second, m[i].second, context});
-      if (errors_.size() >= max_errors_) break;
+  for (size_t i = 0; i < rtl.size() && i < model.size(); ++i) {
+    if (rtl[i].second != model[i].second) {
+      errors_.push_back({clock, rtl[i].first, rtl[i].second, model[i].second, context});
+      if (errors_.size() >= max_errors_) return;
     }
+  }
+  // The structs differ in a field the render does not show: still a mismatch.
+  if (errors_.empty() || errors_.back().clock != clock) {
+    errors_.push_back({clock, "(unrendered field)", "?", "?", context});
   }
 }
 
-std::string LockstepChecker::finish() const {
-  if (matched_ == 0 && mismatch_clocks_ == 0) return "lockstep: nothing compared";
+std::string LockstepLog::finish() const {
+  if (compared_nothing()) return "lockstep: nothing compared";
   if (errors_.empty()) return fmt::format("lockstep: {} clocks matched, 0 mismatches", matched_);
-  std::string s = fmt::format("lockstep: {} clocks matched, {} mismatching clocks; first:\n{}", matched_,
-                              mismatch_clocks_, errors_.front().to_string());
-  return s;
+  return fmt::format("lockstep: {} clocks matched, {} mismatching clocks; first:\n{}", matched_, mismatch_clocks_,
+                     errors_.front().to_string());
 }
 
 }  // namespace sc

@@ -35,32 +35,63 @@ void PinMonitor::error(std::string s) {
   if (errors_.size() < max_errors_) errors_.push_back(std::move(s));
 }
 
-void PinMonitor::on_change(uint64_t clock, const CoreOutputs& o) {
+void PinMonitor::check_accounting(uint64_t clock, bool rise, int32_t ref, int32_t queued, const char* when) {
+  switch (accounting_) {
+    case StepAccounting::None: break;
+    case StepAccounting::ReferencePosition: {
+      // last_ref_ is the position one clock earlier: its requests are queued by now.
+      const int64_t want = int64_t(last_ref_) - ref_origin_;
+      if (net_ + queued != want) {
+        error(fmt::format("clock {}: step accounting{}: {} net STEP edges + {} queued != {} pulses of reference "
+                          "position (executor at {}, started at {})",
+                          clock, when, net_, queued, want, last_ref_, ref_origin_));
+      }
+      break;
+    }
+    case StepAccounting::PulseCounter:
+      // The counter clears when a move starts (no STEP edge that clock).
+      if (ref == 0 && !rise) net_at_clear_ = net_;
+      if (net_ - net_at_clear_ != ref) {
+        error(fmt::format("clock {}: step accounting{}: {} net STEP edges != pulse counter {}", clock, when,
+                          net_ - net_at_clear_, ref));
+      }
+      break;
+  }
+}
+
+void PinMonitor::on_change(uint64_t clock, bool step, bool dir, bool done, uint8_t phase, int32_t ref,
+                           int32_t queued) {
   if (!initialised_) {
     initialised_ = true;
-    last_dir_ = o.dir;
+    last_dir_ = dir;
+    last_ref_ = ref;
+    ref_origin_ = ref;
+    net_at_clear_ = 0;
   }
-  if (o.dir != last_dir_) {
-    if (o.step) error(fmt::format("clock {}: DIR changed while STEP high", clock));
+  if (dir != last_dir_) {
+    if (step) error(fmt::format("clock {}: DIR changed while STEP high", clock));
     if (any_rise_ && clock - last_rise_ < t_.hold) {
       error(fmt::format("clock {}: DIR hold {} < {} clocks", clock, clock - last_rise_, t_.hold));
     }
     last_dir_change_ = clock;
     any_dir_change_ = true;
   }
-  if (o.step && !last_step_) {  // rising edge
-    if (done_seen_) error(fmt::format("clock {}: STEP pulse after done (done at clock {})", clock, done_clock_));
+  const bool rise = step && !last_step_;
+  if (rise) {
+    if (profile_ && done_seen_) {
+      error(fmt::format("clock {}: STEP pulse after done (done at clock {})", clock, done_clock_));
+    }
     if (any_fall_ && clock - last_fall_ < t_.low) {
       error(fmt::format("clock {}: STEP low {} < {} clocks", clock, clock - last_fall_, t_.low));
     }
     if (any_dir_change_ && clock - last_dir_change_ < t_.setup) {
       error(fmt::format("clock {}: DIR setup {} < {} clocks", clock, clock - last_dir_change_, t_.setup));
     }
-    const uint8_t ph = o.phase;
-    if (trend_of_phase(ph) == DutyTrend::Zero || trend_of_phase(ph) == DutyTrend::None) {
+    const uint8_t ph = phase;
+    if (profile_ && (trend_of_phase(ph) == DutyTrend::Zero || trend_of_phase(ph) == DutyTrend::None)) {
       error(fmt::format("clock {}: STEP pulse while phase {}", clock, int(ph)));
     }
-    if (any_rise_) {
+    if (profile_ && any_rise_) {
       const uint64_t iv = clock - last_rise_;
       if (runs_.empty() || runs_.back().phase != ph) {
         PhaseRun r;
@@ -90,24 +121,27 @@ void PinMonitor::on_change(uint64_t clock, const CoreOutputs& o) {
     last_rise_ = clock;
     any_rise_ = true;
     ++rises_;
-    net_ += o.dir ? 1 : -1;
+    net_ += dir ? 1 : -1;
   }
-  if (!o.step && last_step_) {  // falling edge
+  if (!step && last_step_) {  // falling edge
     const uint64_t high = clock - last_rise_;
     if (high != t_.high) error(fmt::format("clock {}: STEP high {} != {} clocks", clock, high, t_.high));
     last_fall_ = clock;
     any_fall_ = true;
   }
-  if (o.done && !last_done_) {
+  if (done && !last_done_) {
     done_seen_ = true;
     done_clock_ = clock;
-    if (o.step) error(fmt::format("clock {}: done while STEP high", clock));
+    if (profile_ && step) error(fmt::format("clock {}: done while STEP high", clock));
   }
-  if (!o.done) done_seen_ = false;
-  last_step_ = o.step;
-  last_dir_ = o.dir;
-  last_done_ = o.done;
-  last_phase_ = o.phase;
+  if (!done) done_seen_ = false;
+  check_accounting(clock, rise, ref, queued, "");
+  last_step_ = step;
+  last_dir_ = dir;
+  last_done_ = done;
+  last_phase_ = phase;
+  last_ref_ = ref;
+  last_queued_ = queued;
 }
 
 void PinMonitor::finish(uint64_t clock) {
@@ -122,7 +156,14 @@ void PinMonitor::finish(uint64_t clock) {
                         r.max_interval));
     }
   }
-  if (!done_seen_) error(fmt::format("clock {}: run ended without done", clock));
+  if (profile_ && !done_seen_) error(fmt::format("clock {}: run ended without done", clock));
+  // At rest the queue is empty and the pins have caught up with the reference.
+  if (initialised_ && accounting_ != StepAccounting::None) {
+    check_accounting(clock, false, last_ref_, last_queued_, " at the end");
+    if (accounting_ == StepAccounting::ReferencePosition && last_queued_ != 0) {
+      error(fmt::format("clock {}: step accounting at the end: {} steps still queued", clock, last_queued_));
+    }
+  }
 }
 
 std::vector<DutyTrend> PinMonitor::trend_sequence() const {

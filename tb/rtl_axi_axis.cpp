@@ -1,135 +1,104 @@
 #include "rtl_axi_axis.h"
 
-#include <verilated.h>
-
 #include "Vsc_axi_axis.h"
 #include "Vsc_axi_servo.h"
 #include "Vsc_board_top.h"
+#include "verilated_top.h"
 
 namespace sc {
 
-RtlAxiAxis::RtlAxiAxis() : ctx_(std::make_unique<VerilatedContext>()) {
-  m_ = std::make_unique<Vsc_axi_axis>(ctx_.get(), "sc_axi_axis");
-  m_->clk_i = 0;
-  m_->rst_ni = 0;
-  m_->eval();
+namespace {
+
+// The AXI4-Lite slave ports both register-file tops share.
+template <class V>
+void drive_axi(V& m, const AxiIn& in) {
+  m.s_axi_awaddr_i = in.awaddr;
+  m.s_axi_awvalid_i = in.awvalid;
+  m.s_axi_wdata_i = in.wdata;
+  m.s_axi_wstrb_i = in.wstrb & 0xf;
+  m.s_axi_wvalid_i = in.wvalid;
+  m.s_axi_bready_i = in.bready;
+  m.s_axi_araddr_i = in.araddr;
+  m.s_axi_arvalid_i = in.arvalid;
+  m.s_axi_rready_i = in.rready;
 }
 
-RtlAxiAxis::~RtlAxiAxis() { m_->final(); }
-
-void RtlAxiAxis::reset(int cycles) {
-  m_->rst_ni = 0;
-  for (int i = 0; i < cycles; ++i) {
-    m_->clk_i = 1;
-    m_->eval();
-    m_->clk_i = 0;
-    m_->eval();
-  }
-  m_->rst_ni = 1;
+template <class V>
+AxiOut read_axi(const V& m) {
+  AxiOut a;
+  a.awready = m.s_axi_awready_o;
+  a.wready = m.s_axi_wready_o;
+  a.bvalid = m.s_axi_bvalid_o;
+  a.bresp = m.s_axi_bresp_o;
+  a.arready = m.s_axi_arready_o;
+  a.rvalid = m.s_axi_rvalid_o;
+  a.rdata = m.s_axi_rdata_o;
+  a.rresp = m.s_axi_rresp_o;
+  return a;
 }
+
+// The axis outputs both register-file tops share.
+template <class V, class O>
+void read_axis(const V& m, O& o) {
+  o.step = m.step_o;
+  o.dir = m.dir_o;
+  o.en = m.en_o;
+  o.busy = m.busy_o;
+  o.done = m.done_o;
+  o.fault = m.fault_o;
+  o.phase = m.phase_o;
+  o.pulse_count = int32_t(m.pulse_count_o);
+  o.ref_pos = int32_t(m.ref_pos_o);
+}
+
+}  // namespace
+
+RtlAxiAxis::RtlAxiAxis() : top_(std::make_unique<VerilatedTop<Vsc_axi_axis>>("sc_axi_axis")) {}
+
+RtlAxiAxis::~RtlAxiAxis() = default;
+
+void RtlAxiAxis::reset(int cycles) { top_->reset(cycles); }
 
 void RtlAxiAxis::step(const AxiIn& in, const RegsSide& side) {
-  m_->s_axi_awaddr_i = in.awaddr;
-  m_->s_axi_awvalid_i = in.awvalid;
-  m_->s_axi_wdata_i = in.wdata;
-  m_->s_axi_wstrb_i = in.wstrb & 0xf;
-  m_->s_axi_wvalid_i = in.wvalid;
-  m_->s_axi_bready_i = in.bready;
-  m_->s_axi_araddr_i = in.araddr;
-  m_->s_axi_arvalid_i = in.arvalid;
-  m_->s_axi_rready_i = in.rready;
-  m_->estop_i = side.estop;
-  m_->enc_ab_i = side.enc_ab & 3;
-  m_->enc_pos_i = uint32_t(side.enc_pos);
-  m_->clk_i = 1;
-  m_->eval();
-  m_->clk_i = 0;
-  m_->eval();
+  Vsc_axi_axis& m = top_->top();
+  drive_axi(m, in);
+  m.estop_i = side.estop;
+  m.enc_ab_i = side.enc_ab & 3;
+  m.enc_pos_i = uint32_t(side.enc_pos);
+  top_->tick();
 }
 
 AxiAxisOutputs RtlAxiAxis::outputs() const {
+  const Vsc_axi_axis& m = top_->top();
   AxiAxisOutputs o;
-  o.axi.awready = m_->s_axi_awready_o;
-  o.axi.wready = m_->s_axi_wready_o;
-  o.axi.bvalid = m_->s_axi_bvalid_o;
-  o.axi.bresp = m_->s_axi_bresp_o;
-  o.axi.arready = m_->s_axi_arready_o;
-  o.axi.rvalid = m_->s_axi_rvalid_o;
-  o.axi.rdata = m_->s_axi_rdata_o;
-  o.axi.rresp = m_->s_axi_rresp_o;
-  o.step = m_->step_o;
-  o.dir = m_->dir_o;
-  o.en = m_->en_o;
-  o.busy = m_->busy_o;
-  o.done = m_->done_o;
-  o.fault = m_->fault_o;
-  o.phase = m_->phase_o;
-  o.pulse_count = int32_t(m_->pulse_count_o);
-  o.ref_pos = int32_t(m_->ref_pos_o);
+  o.axi = read_axi(m);
+  read_axis(m, o);
   return o;
 }
 
-RtlAxiServo::RtlAxiServo() : ctx_(std::make_unique<VerilatedContext>()) {
-  m_ = std::make_unique<Vsc_axi_servo>(ctx_.get(), "sc_axi_servo");
-  m_->clk_i = 0;
-  m_->rst_ni = 0;
-  m_->eval();
-}
+RtlAxiServo::RtlAxiServo() : top_(std::make_unique<VerilatedTop<Vsc_axi_servo>>("sc_axi_servo")) {}
 
-RtlAxiServo::~RtlAxiServo() { m_->final(); }
+RtlAxiServo::~RtlAxiServo() = default;
 
-void RtlAxiServo::reset(int cycles) {
-  m_->rst_ni = 0;
-  for (int i = 0; i < cycles; ++i) {
-    m_->clk_i = 1;
-    m_->eval();
-    m_->clk_i = 0;
-    m_->eval();
-  }
-  m_->rst_ni = 1;
-}
+void RtlAxiServo::reset(int cycles) { top_->reset(cycles); }
 
 void RtlAxiServo::step(const AxiIn& in, const RegsSide& side) {
-  m_->s_axi_awaddr_i = in.awaddr;
-  m_->s_axi_awvalid_i = in.awvalid;
-  m_->s_axi_wdata_i = in.wdata;
-  m_->s_axi_wstrb_i = in.wstrb & 0xf;
-  m_->s_axi_wvalid_i = in.wvalid;
-  m_->s_axi_bready_i = in.bready;
-  m_->s_axi_araddr_i = in.araddr;
-  m_->s_axi_arvalid_i = in.arvalid;
-  m_->s_axi_rready_i = in.rready;
-  m_->estop_i = side.estop;
-  m_->enc_a_i = side.enc_ab & 1;
-  m_->enc_b_i = (side.enc_ab >> 1) & 1;
-  m_->clk_i = 1;
-  m_->eval();
-  m_->clk_i = 0;
-  m_->eval();
+  Vsc_axi_servo& m = top_->top();
+  drive_axi(m, in);
+  m.estop_i = side.estop;
+  m.enc_a_i = side.enc_ab & 1;
+  m.enc_b_i = (side.enc_ab >> 1) & 1;
+  top_->tick();
 }
 
 AxiServoOutputs RtlAxiServo::outputs() const {
+  const Vsc_axi_servo& m = top_->top();
   AxiServoOutputs o;
-  o.axi.awready = m_->s_axi_awready_o;
-  o.axi.wready = m_->s_axi_wready_o;
-  o.axi.bvalid = m_->s_axi_bvalid_o;
-  o.axi.bresp = m_->s_axi_bresp_o;
-  o.axi.arready = m_->s_axi_arready_o;
-  o.axi.rvalid = m_->s_axi_rvalid_o;
-  o.axi.rdata = m_->s_axi_rdata_o;
-  o.axi.rresp = m_->s_axi_rresp_o;
-  o.step = m_->step_o;
-  o.dir = m_->dir_o;
-  o.en = m_->en_o;
-  o.busy = m_->busy_o;
-  o.done = m_->done_o;
-  o.fault = m_->fault_o;
-  o.phase = m_->phase_o;
-  o.pulse_count = int32_t(m_->pulse_count_o);
-  o.ref_pos = int32_t(m_->ref_pos_o);
-  o.enc_pos = int32_t(m_->enc_pos_o);
-  o.in_pos = m_->in_pos_o;
-  o.fault_ferr = m_->fault_ferr_o;
+  o.axi = read_axi(m);
+  read_axis(m, o);
+  o.enc_pos = int32_t(m.enc_pos_o);
+  o.in_pos = m.in_pos_o;
+  o.fault_ferr = m.fault_ferr_o;
   return o;
 }
 

@@ -13,6 +13,9 @@ class Vsc_board_top;
 
 namespace sc {
 
+template <class V>
+class VerilatedTop;
+
 class RtlAxiAxis {
  public:
   RtlAxiAxis();
@@ -24,8 +27,7 @@ class RtlAxiAxis {
   AxiAxisOutputs outputs() const;
 
  private:
-  std::unique_ptr<VerilatedContext> ctx_;
-  std::unique_ptr<Vsc_axi_axis> m_;
+  std::unique_ptr<VerilatedTop<Vsc_axi_axis>> top_;
 };
 
 // Verilated sc_axi_servo; side.enc_ab drives enc_a_i (bit 0) / enc_b_i (bit 1).
@@ -40,8 +42,7 @@ class RtlAxiServo {
   AxiServoOutputs outputs() const;
 
  private:
-  std::unique_ptr<VerilatedContext> ctx_;
-  std::unique_ptr<Vsc_axi_servo> m_;
+  std::unique_ptr<VerilatedTop<Vsc_axi_servo>> top_;
 };
 
 // The whole board: 100 MHz pin clock (the simulation stand-in of the MMCM

@@ -7,11 +7,12 @@
 
 #include "axis_core.h"
 
-class VerilatedContext;
 class Vsc_axis_core;
-class VerilatedFstC;
 
 namespace sc {
+
+template <class V>
+class VerilatedTop;
 
 class RtlCore {
  public:
@@ -27,11 +28,7 @@ class RtlCore {
   CoreOutputs outputs() const;
   void read_outputs(CoreOutputs& o) const;  // fill in place (per-clock path)
   // One clock with the inputs of the previous step() held.
-  void tick() {
-    eval_edge(1);
-    eval_edge(0);
-    ++clock_;
-  }
+  void tick();
 
   // FST waveform (needs the tracing build); dumps clocks in [from, to).
   bool trace_supported() const;
@@ -39,13 +36,8 @@ class RtlCore {
   void trace_close();
 
  private:
-  void eval_edge(int clk);
-  std::unique_ptr<VerilatedContext> ctx_;
-  std::unique_ptr<Vsc_axis_core> m_;
-  std::unique_ptr<VerilatedFstC> fst_;
-  uint64_t clock_ = 0;
+  std::unique_ptr<VerilatedTop<Vsc_axis_core>> top_;
   CoreInputs last_{};  // what the ports are driven with (seg data aside)
-  uint64_t trace_from_ = 0, trace_to_ = 0;
 };
 
 }  // namespace sc

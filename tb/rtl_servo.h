@@ -7,11 +7,12 @@
 
 #include "servo_axis.h"
 
-class VerilatedContext;
 class Vsc_servo_axis;
-class VerilatedFstC;
 
 namespace sc {
+
+template <class V>
+class VerilatedTop;
 
 class RtlServo {
  public:
@@ -29,16 +30,11 @@ class RtlServo {
   void trace_close();
 
  private:
-  void eval_edge(int clk);
   void apply_cfg(const ServoConfig& c);
-  std::unique_ptr<VerilatedContext> ctx_;
-  std::unique_ptr<Vsc_servo_axis> m_;
-  std::unique_ptr<VerilatedFstC> fst_;
-  uint64_t clock_ = 0;
+  std::unique_ptr<VerilatedTop<Vsc_servo_axis>> top_;
   u128 pos_frac0_ = 0;
   ServoConfig cfg_{};
   bool cfg_set_ = false;
-  uint64_t trace_from_ = 0, trace_to_ = 0;
 };
 
 }  // namespace sc

@@ -110,7 +110,7 @@ SimResult run_move(const Plan& plan, const PulseTiming& timing, const Limits4Che
   }
   AxisCore model;
   LockstepChecker checker(opt.max_mismatches);
-  PinMonitor pins(timing);
+  PinMonitor pins(PinRules{timing, true, StepAccounting::ReferencePosition});
   PeakTracker peaks;
 
   const auto t0 = std::chrono::steady_clock::now();

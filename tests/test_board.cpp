@@ -306,6 +306,7 @@ TEST(BoardUart, LoadMoveStartPollAndCountPulses) {
   EXPECT_EQ(int32_t(r.data), 2000);
   EXPECT_EQ(bd.host.net_steps(), 2000);
   EXPECT_EQ(bd.host.pulses(), 2000u);
+  EXPECT_TRUE(bd.host.pins().errors().empty()) << bd.host.pins().errors().front();
 }
 
 TEST(BoardUart, IllegalAddressReservedBitsAndWriteWhileBusy) {
@@ -334,6 +335,7 @@ TEST(BoardUart, IllegalAddressReservedBitsAndWriteWhileBusy) {
   for (int i = 0; i < 400 && !done; ++i) done = bd.host.read(uint8_t(addr("STATUS"))).data & fmask("STATUS", "DONE");
   ASSERT_TRUE(done);
   EXPECT_EQ(bd.host.net_steps(), 3000);
+  EXPECT_TRUE(bd.host.pins().errors().empty()) << bd.host.pins().errors().front();
 }
 
 TEST(BoardUart, CorruptedFramesAreRejectedWithNothingWritten) {

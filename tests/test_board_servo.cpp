@@ -235,5 +235,6 @@ TEST(AxiServo, CheckerCatchesAnInjectedDifference) {
   b.idle(20);
   b.read(sa("ENC_POS"));
   ASSERT_TRUE(b.failed());
-  EXPECT_NE(b.error().find("differ"), std::string::npos) << b.error();
+  EXPECT_EQ(b.error().rfind("clock ", 0), 0u) << b.error();
+  EXPECT_NE(b.error().find(" signal enc_pos_o: rtl=0x"), std::string::npos) << b.error();
 }

@@ -2,6 +2,7 @@
 // clock: random planned moves, random raw tables that reverse direction and
 // overrun the step queue, the paper's four groups, and proof that the
 // checker reports an injected difference.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <random>
@@ -200,8 +201,144 @@ TEST(LockstepChecker, ReportsAPinDifferenceFromADifferentPulseWidth) {
   }
   ASSERT_FALSE(chk.errors().empty());
   EXPECT_EQ(chk.errors().front().signal, "step_o");
-  EXPECT_EQ(chk.errors().front().rtl, "0");
-  EXPECT_EQ(chk.errors().front().model, "1");
+  EXPECT_EQ(chk.errors().front().rtl, "0x0");
+  EXPECT_EQ(chk.errors().front().model, "0x1");
+}
+
+// The comparer is one template for every bench: any struct of outputs with
+// operator== and a render function.
+struct TwoPorts {
+  uint32_t a = 0;
+  int16_t b = 0;
+  bool operator==(const TwoPorts&) const = default;
+};
+SignalValues render_two(const TwoPorts& p) { return {{"a_o", hex_bits(uint64_t(p.a), 32)}, {"b_o", hex_bits(int64_t(p.b), 12)}}; }
+
+TEST(Lockstep, ReportsTheFirstDifferingSignalInHexWithTheLastClocksAndStops) {
+  Lockstep<TwoPorts> chk(&render_two);
+  uint64_t clock = 0;
+  for (; clock < 100 && !chk.should_stop(); ++clock) {
+    const TwoPorts rtl{uint32_t(clock), int16_t(-1)};
+    TwoPorts model = rtl;
+    if (clock == 42) model.b = 1;
+    chk.compare(clock, rtl, model);
+  }
+  EXPECT_EQ(clock, 43u) << "stops at the first mismatch by default";
+  ASSERT_EQ(chk.errors().size(), 1u);
+  EXPECT_EQ(chk.errors().front().to_string().substr(0, 40), "clock 42 signal b_o: rtl=0xfff model=0x0");
+  EXPECT_EQ(chk.matched(), 42u);
+  EXPECT_EQ(chk.mismatches(), 1u);
+  const std::string& ctx = chk.errors().front().context;
+  EXPECT_NE(ctx.find("clock         34 (match) b_o=0xfff"), std::string::npos) << ctx;
+  EXPECT_NE(ctx.find("clock         41 (match) b_o=0xfff"), std::string::npos) << ctx;
+  EXPECT_EQ(ctx.find("clock         33"), std::string::npos) << "only the last " << Lockstep<TwoPorts>::kContext;
+  EXPECT_NE(chk.finish().find("42 clocks matched, 1 mismatching clocks"), std::string::npos) << chk.finish();
+}
+
+TEST(Lockstep, FinishFlagsARunThatComparedNothing) {
+  Lockstep<TwoPorts> chk(&render_two);
+  EXPECT_TRUE(chk.compared_nothing());
+  EXPECT_EQ(chk.finish(), "lockstep: nothing compared");
+  chk.compare(0, TwoPorts{}, TwoPorts{});
+  EXPECT_EQ(chk.finish(), "lockstep: 1 clocks matched, 0 mismatches");
+}
+
+// ---- pin monitor: step accounting catches what RTL and model share ----------------
+// A synthetic open-loop run: the executor's position moves at clock
+// 400k+10, its request enters the queue one clock later, the pulse leaves
+// the queue at 400k+200. `drop_request` loses one request (a step-queue
+// overrun RTL and model would agree on).
+std::vector<std::string> run_reference_accounting(int steps, int drop_request) {
+  PulseTiming t;
+  t.high = 10;
+  t.low = 10;
+  t.setup = 5;
+  t.hold = 5;
+  PinMonitor pins(PinRules{t, false, StepAccounting::ReferencePosition});
+  int32_t ref = 1000;  // the executor does not start at 0
+  int32_t queued = 0;
+  bool step = false;
+  int high_left = 0;
+  const uint64_t end = uint64_t(steps) * 400 + 1000;
+  for (uint64_t clock = 0; clock < end; ++clock) {
+    const uint64_t k = clock / 400, at = clock % 400;
+    if (high_left > 0 && --high_left == 0) step = false;
+    if (k < uint64_t(steps) && at == 10) ++ref;
+    if (k < uint64_t(steps) && at == 11 && k != uint64_t(drop_request)) ++queued;
+    if (at == 200 && queued > 0) {
+      step = true;
+      high_left = t.high;
+      --queued;
+    }
+    pins.on_clock(clock, step, true, false, 0, ref, queued);
+  }
+  pins.finish(end);
+  return pins.errors();
+}
+
+TEST(PinMonitor, ReferenceAccountingPassesAnExactRun) {
+  const auto errors = run_reference_accounting(20, -1);
+  EXPECT_TRUE(errors.empty()) << errors.front();
+}
+
+TEST(PinMonitor, ReferenceAccountingReportsADroppedRequestAtTheNextPositionChange) {
+  const auto errors = run_reference_accounting(20, 7);
+  ASSERT_FALSE(errors.empty());
+  // request 7 is lost at clock 7*400+11; the position moves next at 8*400+10
+  EXPECT_EQ(errors.front().rfind("clock 3210: step accounting: 7 net STEP edges + 0 queued != 8 pulses", 0), 0u)
+      << errors.front();
+}
+
+TEST(PinMonitor, ReferenceAccountingReportsALostLastRequestAtTheEnd) {
+  const auto errors = run_reference_accounting(20, 19);
+  ASSERT_EQ(errors.size(), 1u) << errors.front();
+  EXPECT_EQ(errors.front().rfind("clock 9000: step accounting at the end: 19 net STEP edges + 0 queued != 20 pulses", 0),
+            0u)
+      << errors.front();
+}
+
+TEST(PinMonitor, PulseCounterAccountingReportsAPulseTheCounterMissedAndFollowsItsClear) {
+  PulseTiming t;
+  t.high = 4;
+  t.low = 4;
+  t.setup = 0;
+  t.hold = 0;
+  PinMonitor pins(PinRules{t, false, StepAccounting::PulseCounter});
+  int32_t count = 0;
+  uint64_t clock = 0;
+  auto pulse = [&](bool counted) {
+    if (counted) ++count;
+    for (int i = 0; i < 8; ++i, ++clock) pins.on_clock(clock, i < 4, true, false, 0, count);
+  };
+  pulse(true);
+  pulse(true);
+  count = 0;  // a new move clears the counter
+  pins.on_clock(clock++, false, true, false, 0, count);
+  pulse(true);
+  EXPECT_TRUE(pins.errors().empty()) << pins.errors().front();
+  pulse(false);  // a STEP edge the counter does not see
+  ASSERT_FALSE(pins.errors().empty());
+  EXPECT_EQ(pins.errors().front(), fmt::format("clock {}: step accounting: 2 net STEP edges != pulse counter 1", clock - 8));
+}
+
+TEST(PinMonitor, ClosedLoopRulesKeepTimingChecksWithoutProfilePhases) {
+  PulseTiming t;
+  t.high = 4;
+  t.low = 4;
+  t.setup = 10;
+  t.hold = 0;
+  PinMonitor pins(PinRules{t, false, StepAccounting::None});
+  // pulses while the reported phase is "done" are fine in closed loop ...
+  const uint8_t done = uint8_t(Phase::PhDone);
+  uint64_t clock = 0;
+  for (int i = 0; i < 8; ++i, ++clock) pins.on_clock(clock, i < 4, true, true, done);
+  // ... but a DIR change 3 clocks before the rising edge is not
+  pins.on_clock(clock++, false, false, true, done);
+  for (int i = 0; i < 2; ++i) pins.on_clock(clock++, false, false, true, done);
+  pins.on_clock(clock, true, false, true, done);
+  pins.finish(clock + 1);
+  ASSERT_EQ(pins.errors().size(), 1u) << pins.errors().front();
+  EXPECT_EQ(pins.errors().front(), fmt::format("clock {}: DIR setup 3 < 10 clocks", clock));
 }
 
 // The paper's four groups (L = 30,000, a = 500, j = 2500), full length at

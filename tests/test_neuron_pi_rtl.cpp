@@ -24,7 +24,6 @@
 // SC_NPI_CLOCKS (clocks per seed) override the defaults.
 #include <fmt/format.h>
 #include <gtest/gtest.h>
-#include <verilated.h>
 
 #include <algorithm>
 #include <array>
@@ -38,117 +37,79 @@
 #include <string>
 
 #include "Vsc_neuron_pi.h"
+#include "lockstep.h"
 #include "neuron_pi.h"
+#include "rtl_neuron_cfg.h"
+#include "verilated_top.h"
 
 namespace sc {
 namespace {
-
-inline uint32_t bits(int64_t v, int w) { return uint32_t(uint64_t(v) & ((uint64_t(1) << w) - 1)); }
-inline int32_t sx(uint32_t v, int w) { return int32_t(wrap_signed64(int64_t(v), w)); }
 
 uint64_t env_u64(const char* name, uint64_t dflt) {
   const char* v = std::getenv(name);
   return v && *v ? std::strtoull(v, nullptr, 0) : dflt;
 }
 
-// ---- the Verilated sc_neuron_pi ---------------------------------------------------
-class RtlNeuronPi {
+// ---- the Verilated sc_neuron_pi (the adapter pattern of tb/verilated_top.h) ----------
+class RtlNeuronPi : public VerilatedTop<Vsc_neuron_pi> {
  public:
-  RtlNeuronPi() : ctx_(std::make_unique<VerilatedContext>()) {
-    m_ = std::make_unique<Vsc_neuron_pi>(ctx_.get(), "sc_neuron_pi");
-    m_->clk_i = 0;
-    m_->rst_ni = 0;
-    m_->eval();
-  }
-  ~RtlNeuronPi() { m_->final(); }
-  RtlNeuronPi(const RtlNeuronPi&) = delete;
-  RtlNeuronPi& operator=(const RtlNeuronPi&) = delete;
+  RtlNeuronPi() : VerilatedTop<Vsc_neuron_pi>("sc_neuron_pi") {}
 
   void set_config(const NeuronConfig& n) {
-    m_->cfg_div_i = n.div;
-    m_->cfg_shift_i = bits(n.shift, EncShiftW);
-    m_->cfg_ff_en_i = n.ff_en;
-    m_->cfg_learn_shift_i = bits(n.learn_shift, LearnShW);
-    m_->cfg_learn_dz_p_i = n.learn_dz_p;
-    m_->cfg_learn_dz_v_i = n.learn_dz_v;
-    m_->cfg_k_p_i = bits(n.k_p, CoefW);
-    m_->cfg_k_v_i = bits(n.k_v, CoefW);
-    m_->cfg_kb_i = bits(n.kb, CoefW);
-    m_->cfg_eta_p1_i = bits(n.eta_p1, CoefW);
-    m_->cfg_eta_p2_i = bits(n.eta_p2, CoefW);
-    m_->cfg_eta_v1_i = bits(n.eta_v1, CoefW);
-    m_->cfg_eta_v2_i = bits(n.eta_v2, CoefW);
-    m_->cfg_w_p1_i = bits(n.w_p1, WgtW);
-    m_->cfg_w_p2_i = bits(n.w_p2, WgtW);
-    m_->cfg_w_v1_i = bits(n.w_v1, WgtW);
-    m_->cfg_w_v2_i = bits(n.w_v2, WgtW);
-    m_->cfg_w_min_i = bits(n.w_min, WgtW);
-    m_->cfg_w_p1_max_i = bits(n.w_p1_max, WgtW);
-    m_->cfg_w_p2_max_i = bits(n.w_p2_max, WgtW);
-    m_->cfg_w_v1_max_i = bits(n.w_v1_max, WgtW);
-    m_->cfg_w_v2_max_i = bits(n.w_v2_max, WgtW);
-    m_->cfg_v_lim_i = n.v_lim;
-    m_->cfg_u_lim_i = n.u_lim;
-    m_->cfg_ferr_lim_i = n.ferr_lim;
-    m_->cfg_inpos_win_i = n.inpos_win;
-    m_->cfg_inpos_hold_i = n.inpos_hold;
-    m_->cfg_settle_rate_i = n.settle_rate;
+    top().cfg_shift_i = port_bits(n.shift, EncShiftW);
+    bind_neuron_config(top(), n);
   }
 
   void set_inputs(const NeuronPi::Inputs& in) {
-    m_->start_i = in.start;
-    m_->stop_i = in.stop;
-    m_->ref_int_i = uint32_t(in.ref_int);
-    m_->ref_frac_i = bits(in.ref_frac, CtlFrac);
-    m_->ref_vel_i = uint32_t(in.ref_vel);
-    m_->ref_done_i = in.ref_done;
-    m_->enc_pos_i = uint32_t(in.enc_pos);
-    m_->cmd_busy_i = in.cmd_busy;
-    m_->nco_req_i = in.nco_req;
+    Vsc_neuron_pi& m = top();
+    m.start_i = in.start;
+    m.stop_i = in.stop;
+    m.ref_int_i = uint32_t(in.ref_int);
+    m.ref_frac_i = port_bits(in.ref_frac, CtlFrac);
+    m.ref_vel_i = uint32_t(in.ref_vel);
+    m.ref_done_i = in.ref_done;
+    m.enc_pos_i = uint32_t(in.enc_pos);
+    m.cmd_busy_i = in.cmd_busy;
+    m.nco_req_i = in.nco_req;
   }
 
   // One clock: rising edge (synchronous active-low reset), then falling edge.
   void clock(bool rst_n) {
-    m_->rst_ni = rst_n;
-    m_->clk_i = 1;
-    m_->eval();
-    m_->clk_i = 0;
-    m_->eval();
+    top().rst_ni = rst_n;
+    tick();
   }
-
-  const Vsc_neuron_pi& top() const { return *m_; }
-
- private:
-  std::unique_ptr<VerilatedContext> ctx_;
-  std::unique_ptr<Vsc_neuron_pi> m_;
 };
 
 // ---- every output: RTL port (sign-extended by its width) vs model state -------------
-struct Signal {
-  const char* name;
-  int64_t rtl;
-  int64_t model;
+constexpr int kNpiSignals = 16;
+constexpr std::array<const char*, kNpiSignals> kNpiName = {
+    "active_o", "in_pos_o", "fault_ferr_o", "u_o",    "v_cmd_o", "e_p_o",   "e_v_o",   "w_p1_o",
+    "w_p2_o",   "w_v1_o",   "w_v2_o",       "wn_p1_o", "wn_p2_o", "wn_v1_o", "wn_v2_o", "state_o"};
+constexpr std::array<int, kNpiSignals> kNpiWidth = {1,    1,    1,     CtlW,  CtlW,  CtlW,  CtlW,  WgtW,
+                                                    WgtW, WgtW, WgtW, NWgtW, NWgtW, NWgtW, NWgtW, CtlStW};
+
+struct NpiOutputs {
+  std::array<int64_t, kNpiSignals> v{};
+  bool operator==(const NpiOutputs&) const = default;
 };
 
-std::array<Signal, 16> signals(const Vsc_neuron_pi& t, const NeuronPi::State& s) {
-  return {{
-      {"active_o", t.active_o, s.active},
-      {"in_pos_o", t.in_pos_o, s.in_pos},
-      {"fault_ferr_o", t.fault_ferr_o, s.ferr},
-      {"u_o", sx(t.u_o, CtlW), s.u},
-      {"v_cmd_o", sx(t.v_cmd_o, CtlW), s.out_p},
-      {"e_p_o", sx(t.e_p_o, CtlW), s.lp[0].ep},
-      {"e_v_o", sx(t.e_v_o, CtlW), s.lp[1].ep},
-      {"w_p1_o", sx(t.w_p1_o, WgtW), s.lp[0].w1},
-      {"w_p2_o", sx(t.w_p2_o, WgtW), s.lp[0].w2},
-      {"w_v1_o", sx(t.w_v1_o, WgtW), s.lp[1].w1},
-      {"w_v2_o", sx(t.w_v2_o, WgtW), s.lp[1].w2},
-      {"wn_p1_o", sx(t.wn_p1_o, NWgtW), s.lp[0].n1},
-      {"wn_p2_o", sx(t.wn_p2_o, NWgtW), s.lp[0].n2},
-      {"wn_v1_o", sx(t.wn_v1_o, NWgtW), s.lp[1].n1},
-      {"wn_v2_o", sx(t.wn_v2_o, NWgtW), s.lp[1].n2},
-      {"state_o", t.state_o, s.st},
-  }};
+NpiOutputs rtl_outputs(const Vsc_neuron_pi& t) {
+  return {{t.active_o, t.in_pos_o, t.fault_ferr_o, sign_extend(t.u_o, CtlW), sign_extend(t.v_cmd_o, CtlW),
+           sign_extend(t.e_p_o, CtlW), sign_extend(t.e_v_o, CtlW), sign_extend(t.w_p1_o, WgtW),
+           sign_extend(t.w_p2_o, WgtW), sign_extend(t.w_v1_o, WgtW), sign_extend(t.w_v2_o, WgtW),
+           sign_extend(t.wn_p1_o, NWgtW), sign_extend(t.wn_p2_o, NWgtW), sign_extend(t.wn_v1_o, NWgtW),
+           sign_extend(t.wn_v2_o, NWgtW), t.state_o}};
+}
+
+NpiOutputs model_outputs(const NeuronPi::State& s) {
+  return {{s.active, s.in_pos, s.ferr, s.u, s.out_p, s.lp[0].ep, s.lp[1].ep, s.lp[0].w1, s.lp[0].w2, s.lp[1].w1,
+           s.lp[1].w2, s.lp[0].n1, s.lp[0].n2, s.lp[1].n1, s.lp[1].n2, s.st}};
+}
+
+SignalValues render_npi(const NpiOutputs& o) {
+  SignalValues v;
+  for (int i = 0; i < kNpiSignals; ++i) v.emplace_back(kNpiName[i], hex_bits(o.v[i], kNpiWidth[i]));
+  return v;
 }
 
 std::string cfg_str(const NeuronConfig& c) {
@@ -370,7 +331,7 @@ int32_t pick_w(Rng& r, int32_t typical) {
     case 0: return 0;
     case 1: return r.chance(0.5) ? kWMaxV : kWMinV;
     case 2: return clampw(r.slogu(WgtW - 1));
-    case 3: return sx(r.u32(), WgtW);
+    case 3: return sign_extend(r.u32(), WgtW);
     default: return clampw(int64_t(typical) + r.slogu(12));
   }
 }
@@ -462,7 +423,8 @@ NeuronConfig random_config(Rng& r, Kind kind) {
   return c;
 }
 
-struct Mismatch {
+// The first mismatch of a seed, with the values as numbers for the tests.
+struct NpiMismatch {
   uint64_t clock = 0;
   std::string signal;
   int64_t rtl = 0, model = 0;
@@ -489,7 +451,7 @@ class NeuronLockstep {
   }
 
   // One clock. Empty = every output matched.
-  std::optional<Mismatch> step() {
+  std::optional<NpiMismatch> step() {
     const NeuronPi::State prev = model_.state();
     bool rst_n = true;
     next_inputs(rst_n);
@@ -510,20 +472,19 @@ class NeuronLockstep {
     return compare(rst_n);
   }
 
-  std::optional<Mismatch> compare(bool rst_n = true) const {
-    for (const Signal& s : signals(rtl_.top(), model_.state())) {
-      if (s.rtl != s.model) [[unlikely]] {
-        Mismatch m{clock_, s.name, s.rtl, s.model, {}};
-        const NeuronPi::State& q = model_.state();
-        m.text = fmt::format(
-            "seed {} clock {}: {} rtl={} model={} (rtl {:#x}, model {:#x})\n  move {} ({}), model st={} sel={} "
-            "cnt={} active={} fin={} hush={} corr={} hold={}\n  inputs: {}\n  cfg: {}",
-            seed_, clock_, s.name, s.rtl, s.model, uint32_t(s.rtl), uint32_t(s.model), moves_, kind_name(kind_),
-            q.st, q.sel, q.cnt, q.active, q.fin, q.hush, q.corr, q.hold, in_str(in_, rst_n), cfg_str(cfg_));
-        return m;
-      }
-    }
-    return std::nullopt;
+  std::optional<NpiMismatch> compare(bool rst_n = true) {
+    const NpiOutputs rtl = rtl_outputs(rtl_.top()), model = model_outputs(model_.state());
+    if (checker_.compare(clock_, rtl, model)) [[likely]] return std::nullopt;
+    const Mismatch& e = checker_.errors().front();
+    const size_t i = size_t(std::find(kNpiName.begin(), kNpiName.end(), e.signal) - kNpiName.begin());
+    NpiMismatch m{clock_, e.signal, i < kNpiName.size() ? rtl.v[i] : 0, i < kNpiName.size() ? model.v[i] : 0, {}};
+    const NeuronPi::State& q = model_.state();
+    m.text = fmt::format(
+        "seed {} {}\n  move {} ({}), model st={} sel={} cnt={} active={} fin={} hush={} corr={} hold={}\n"
+        "  inputs: {}\n  cfg: {}",
+        seed_, e.to_string(), moves_, kind_name(kind_), q.st, q.sel, q.cnt, q.active, q.fin, q.hush, q.corr, q.hold,
+        in_str(in_, rst_n), cfg_str(cfg_));
+    return m;
   }
 
   NeuronPi& model() { return model_; }
@@ -866,6 +827,7 @@ class NeuronLockstep {
   Rng r_;
   RtlNeuronPi rtl_;
   NeuronPi model_;
+  Lockstep<NpiOutputs> checker_{&render_npi};
   NeuronConfig cfg_{};
   bool cfg_dirty_ = false;
   NeuronPi::Inputs in_{};
@@ -968,15 +930,16 @@ TEST(NeuronPiLockstep, InjectedWeightDifferenceIsReported) {
   ASSERT_LT(i, 200000u) << "controller never active";
   NeuronPi::State& q = ls.model().mutable_state();
   const int32_t before = q.lp[0].w1;
-  q.lp[0].w1 = sx(uint32_t(before) ^ 0x8u, WgtW);
+  q.lp[0].w1 = sign_extend(uint32_t(before) ^ 0x8u, WgtW);
   const uint64_t at = ls.clock() + 1;
   auto m = ls.step();
   ASSERT_TRUE(m) << "the flipped weight bit was not reported";
   EXPECT_EQ(m->clock, at);
   EXPECT_EQ(m->signal, "w_p1_o");
   EXPECT_EQ(m->rtl, before);
-  EXPECT_EQ(m->model, sx(uint32_t(before) ^ 0x8u, WgtW));
-  EXPECT_NE(m->text.find(fmt::format("seed {} clock {}: w_p1_o rtl={} model={}", seed, at, m->rtl, m->model)),
+  EXPECT_EQ(m->model, sign_extend(uint32_t(before) ^ 0x8u, WgtW));
+  EXPECT_NE(m->text.find(fmt::format("seed {} clock {} signal w_p1_o: rtl={} model={}", seed, at,
+                                     hex_bits(m->rtl, WgtW), hex_bits(m->model, WgtW))),
             std::string::npos)
       << m->text;
   std::printf("reported: %s\n", m->text.substr(0, m->text.find('\n')).c_str());

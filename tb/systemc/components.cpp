@@ -116,7 +116,7 @@ class LockstepScoreboard : public Checker {
 class OpenLoopPlant : public Plant {
  public:
   OpenLoopPlant(const PulseTiming& timing, uint64_t sample_period)
-      : pins_(timing), period_(std::max<uint64_t>(1, sample_period)), countdown_(period_) {}
+      : pins_(PinRules{timing, true, StepAccounting::ReferencePosition}), period_(std::max<uint64_t>(1, sample_period)), countdown_(period_) {}
   PlantFeedback on_clock(uint64_t clock, const CoreOutputs& o) override {
     pins_.on_clock(clock, o);
     if (--countdown_ == 0 || o.step != last_step_) [[unlikely]] sample(o);

@@ -1,0 +1,130 @@
+// The one shape of every Verilator adapter: a Verilated top with its own
+// context, reset, one clock (rising + falling edge), an FST window, and the
+// helpers that pack wide ports. Included only by the adapters' .cpp files
+// (they alone see Verilator types); each adapter then binds its own ports.
+// The top must have clk_i and an active-low synchronous rst_ni.
+#pragma once
+
+#include <verilated.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <memory>
+#include <stdexcept>
+#include <string>
+
+#include "fixed_point.h"
+
+// VM_TRACE_FST is defined (0/1) only inside the target verilate() built.
+#if defined(VM_TRACE_FST) && VM_TRACE_FST
+#include <verilated_fst_c.h>
+#define SC_VERILATED_FST 1
+#else
+#define SC_VERILATED_FST 0
+#endif
+
+namespace sc {
+
+template <class V>
+class VerilatedTop {
+ public:
+  explicit VerilatedTop(const char* name) : ctx_(std::make_unique<VerilatedContext>()), m_(ctx_.get(), name) {
+    m_.clk_i = 0;
+    m_.rst_ni = 0;
+    m_.eval();
+  }
+  ~VerilatedTop() {
+    trace_close();
+    m_.final();
+  }
+  VerilatedTop(const VerilatedTop&) = delete;
+  VerilatedTop& operator=(const VerilatedTop&) = delete;
+
+  V& top() { return m_; }
+  const V& top() const { return m_; }
+  uint64_t clock() const { return clock_; }
+
+  // Hold rst_ni low for `cycles` clocks, then release it.
+  void reset(int cycles) {
+    m_.rst_ni = 0;
+    for (int i = 0; i < cycles; ++i) {
+      edge(1);
+      edge(0);
+    }
+    m_.rst_ni = 1;
+  }
+  // One clock with the inputs as driven now.
+  void tick() {
+    edge(1);
+    edge(0);
+    ++clock_;
+  }
+
+  static constexpr bool trace_supported() { return SC_VERILATED_FST != 0; }
+  // FST waveform of the clocks in [from_clock, to_clock), times in ns.
+  void trace_open(const std::string& path, uint64_t from_clock, uint64_t to_clock) {
+#if SC_VERILATED_FST
+    ctx_->traceEverOn(true);
+    ctx_->timeunit(-9);
+    ctx_->timeprecision(-9);
+    fst_ = std::make_unique<VerilatedFstC>();
+    m_.trace(fst_.get(), 99);
+    fst_->open(path.c_str());
+    trace_from_ = from_clock;
+    trace_to_ = to_clock;
+#else
+    (void)path;
+    (void)from_clock;
+    (void)to_clock;
+    throw std::runtime_error("FST tracing needs the tracing build of this top");
+#endif
+  }
+  void trace_close() {
+#if SC_VERILATED_FST
+    if (fst_) {
+      fst_->close();
+      fst_.reset();
+    }
+#endif
+  }
+
+ private:
+  void edge(int clk) {
+    m_.clk_i = uint8_t(clk);
+    m_.eval();
+#if SC_VERILATED_FST
+    if (fst_ && clock_ >= trace_from_ && clock_ < trace_to_) [[unlikely]] {
+      fst_->dump(clock_ * 50 + (clk ? 0 : 25));  // ns at 20 MHz
+    }
+#endif
+  }
+  std::unique_ptr<VerilatedContext> ctx_;
+  V m_;
+#if SC_VERILATED_FST
+  std::unique_ptr<VerilatedFstC> fst_;
+  uint64_t trace_from_ = 0, trace_to_ = 0;
+#endif
+  uint64_t clock_ = 0;
+};
+
+// Write `width` bits of v at bit `lsb` of a Verilated wide port (32-bit words).
+template <typename W>
+void put_bits(W& w, int lsb, int width, u128 v) {
+  v = mask_bits(v, width);
+  while (width > 0) {
+    const int word = lsb / 32, off = lsb % 32;
+    const int n = std::min(width, 32 - off);
+    const uint32_t m = (n == 32 ? ~0u : ((1u << n) - 1)) << off;
+    w[word] = (w[word] & ~m) | ((uint32_t(v) << off) & m);
+    v >>= n;
+    lsb += n;
+    width -= n;
+  }
+}
+
+// The low `width` bits of v (a port narrower than its C++ type).
+inline uint32_t port_bits(int64_t v, int width) { return uint32_t(uint64_t(v) & ((uint64_t(1) << width) - 1)); }
+// A `width`-bit port value sign-extended.
+inline int32_t sign_extend(uint32_t v, int width) { return int32_t(wrap_signed64(int64_t(v), width)); }
+
+}  // namespace sc
