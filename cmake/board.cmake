@@ -11,6 +11,8 @@ set(SC_AXI_SERVO_RTL_SOURCES
   ${RTL_DIR}/sc_pkg.sv
   ${RTL_DIR}/sc_profile_exec.sv
   ${RTL_DIR}/sc_step_gen.sv
+  ${RTL_DIR}/sc_axis_core.sv
+  ${RTL_DIR}/sc_sync.sv
   ${RTL_DIR}/sc_quad_decoder.sv
   ${RTL_DIR}/sc_neuron_pi.sv
   ${RTL_DIR}/sc_step_nco.sv
@@ -19,7 +21,6 @@ set(SC_AXI_SERVO_RTL_SOURCES
   ${RTL_DIR}/sc_axi_servo.sv)
 set(SC_BOARD_RTL_SOURCES
   ${SC_AXI_SERVO_RTL_SOURCES}
-  ${RTL_DIR}/sc_sync.sv
   ${RTL_DIR}/sc_rst_sync.sv
   ${RTL_DIR}/sc_clkgen.sv
   ${RTL_DIR}/sc_uart_rx.sv

@@ -6,6 +6,8 @@ set(SC_CL_RTL_SOURCES
   ${RTL_DIR}/sc_pkg.sv
   ${RTL_DIR}/sc_profile_exec.sv
   ${RTL_DIR}/sc_step_gen.sv
+  ${RTL_DIR}/sc_axis_core.sv
+  ${RTL_DIR}/sc_sync.sv
   ${RTL_DIR}/sc_quad_decoder.sv
   ${RTL_DIR}/sc_neuron_pi.sv
   ${RTL_DIR}/sc_step_nco.sv

@@ -53,6 +53,15 @@ RtlCore::RtlCore() : ctx_(std::make_unique<VerilatedContext>()) {
   put_bits(m_->pos_frac0_i, 0, FracBits, 0);
   m_->start_i = 0;
   m_->abort_i = 0;
+  // No external step source on the plain core (ExtStep = 0).
+  m_->ext_sel_i = 0;
+  m_->ext_req_i = 0;
+  m_->ext_fwd_i = 0;
+  m_->ext_hint_valid_i = 0;
+  m_->ext_hint_i = 0;
+  m_->ext_busy_i = 0;
+  m_->ext_abort_i = 0;
+  m_->ext_done_i = 0;
   m_->eval();
 }
 
