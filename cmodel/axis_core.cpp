@@ -101,8 +101,9 @@ void AxisCore::clock_edge(const CoreExtInputs& x) {
   si.clear = start_ok;
   si.step_req = use_ext ? x.req : e.step_req;
   si.step_fwd = use_ext ? x.fwd : e.step_fwd;
-  si.dir_hint_valid = arm_ || (use_ext ? x.hint_valid : (e.run && e.vel != 0));
-  si.dir_hint = arm_ ? arm_fwd_ : use_ext ? x.hint : e.vel >= 0;
+  const bool ref_moving = e.run && e.vel != 0;
+  si.dir_hint_valid = arm_ || ref_moving || (use_ext && x.hint_valid);
+  si.dir_hint = arm_ ? arm_fwd_ : (!kExt || ref_moving) ? e.vel >= 0 : x.hint;
   ProfileExec::Inputs& ei = exec_in_;
   ei.seg_count = in_q_.seg_count;
   ei.pos_frac0 = in_q_.pos_frac0;

@@ -87,7 +87,11 @@ void ServoAxis::step(const ServoInputs& in) {
   ci.cmd_busy = n.req || core_.step_gen().busy();
   ci.nco_req = n.req;
 
-  const bool nco_run = c.active;
+  // Backpressure: the NCO holds while the step queue is within one step of
+  // either end (one request may still be in flight).
+  const int pend = core_.step_gen().state().pend;
+  const bool queue_near_full = pend >= StepGen::kPendMax - 1 || pend <= StepGen::kPendMin + 1;
+  const bool nco_run = c.active && !queue_near_full;
   const int32_t nco_u = c.u;
 
   // exec_start_o is a function of the core's registers: the controller and

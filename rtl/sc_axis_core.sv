@@ -16,8 +16,11 @@
 //
 // ExtStep = 1 adds an external step source (sc_servo_axis's closed-loop
 // NCO): with ext_sel_i set it replaces the executor's carry at the step
-// generator, and its DIR hint replaces the velocity's sign (arming still
-// comes first). ext_busy_i extends busy_o, ext_abort_i aborts the executor,
+// generator. DIR is pre-positioned (while no step is owed) by the arming,
+// else by the reference velocity's sign while the executor moves, else by
+// the external hint (the sign of the rate command while settling), so a
+// small rate command of the wrong sign never turns DIR and costs the setup
+// time; steps actually owed turn DIR in either case. ext_busy_i extends busy_o, ext_abort_i aborts the executor,
 // ext_done_i replaces "executor finished" in done_o. The external source
 // starts on exec_start_o, together with the reference. With ExtStep = 0 the
 // ext_* inputs are ignored and add no logic.
@@ -90,7 +93,7 @@ module sc_axis_core #(
   logic [PhaseW-1:0] exec_phase;
   logic   sg_busy, sg_dir;
   logic   sg_req, sg_fwd, sg_hint_valid, sg_hint;
-  logic   use_ext, exec_abort, finished;
+  logic   use_ext, exec_abort, finished, ref_moving;
   logic   start_ok, exec_start;
   logic   en_q, start_q, abort_q;
   logic   first_fwd_q;                   // direction of table row 0
@@ -112,10 +115,13 @@ module sc_axis_core #(
 
   // While arming, DIR is steered to the move's direction; otherwise, with no
   // step owed, it is pre-positioned to the commanded direction.
+  assign ref_moving    = exec_running && ref_vel_o != '0;
   assign sg_req        = use_ext ? ext_req_i : exec_step_req;
   assign sg_fwd        = use_ext ? ext_fwd_i : exec_step_fwd;
-  assign sg_hint_valid = arm_q || (use_ext ? ext_hint_valid_i : (exec_running && ref_vel_o != '0));
-  assign sg_hint       = arm_q ? arm_fwd_q : use_ext ? ext_hint_i : !ref_vel_o[sc_pkg::VelW-1];
+  assign sg_hint_valid = arm_q || ref_moving || (use_ext && ext_hint_valid_i);
+  // (!ExtStep: the plain core's hint needs no mux for the external one)
+  assign sg_hint       = arm_q ? arm_fwd_q :
+                         (!ExtStep || ref_moving) ? !ref_vel_o[sc_pkg::VelW-1] : ext_hint_i;
 
   // Direction of a row: its velocity's sign, else its acceleration's, else
   // its jerk's (a move from rest starts with v = a = 0).

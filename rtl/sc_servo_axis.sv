@@ -124,6 +124,8 @@ module sc_servo_axis (
   localparam int WgtW       = sc_pkg::WgtW;
   localparam int CtlW       = sc_pkg::CtlW;
   localparam int HoldW      = sc_pkg::HoldW;
+  localparam logic signed [sc_pkg::PendW-1:0] PendMax = {1'b0, {(sc_pkg::PendW-1){1'b1}}};
+  localparam logic signed [sc_pkg::PendW-1:0] PendMin = {1'b1, {(sc_pkg::PendW-1){1'b0}}};
 
   // ---- registered inputs ---------------------------------------------------
   logic                   closed_q, ff_en_q;
@@ -144,7 +146,7 @@ module sc_servo_axis (
   logic signed [VelW-1:0] exec_vel;
   logic                   ctl_active, ctl_in_pos, ctl_ferr;
   logic signed [CtlW-1:0] ctl_u;
-  logic                   nco_req, nco_fwd;
+  logic                   nco_req, nco_fwd, nco_run, queue_near_full;
   logic signed [MulAW-1:0] ref_vel_q31;
   logic signed [sc_pkg::AccW-1:0]  unused_acc;
   logic signed [sc_pkg::JerkW-1:0] unused_jerk;
@@ -153,6 +155,13 @@ module sc_servo_axis (
   logic [FracBits-MulAW-1:0] unused_frac_lo;
   logic [VelW-MulAW-1:0]     unused_vel_lo;
 
+  // Backpressure: the NCO holds its phase while the step queue is within one
+  // step of either end (one request may still be in flight), so it never
+  // requests a step the step generator cannot queue, e.g. while DIR waits
+  // out the setup time after a reversal. The loop sees the delay on P.
+  assign queue_near_full = step_pending_o >= (PendMax - sc_pkg::PendW'(1)) ||
+                           step_pending_o <= (PendMin + sc_pkg::PendW'(1));
+  assign nco_run         = ctl_active && !queue_near_full;
   assign ref_vel_q31    = exec_vel[VelW-1 -: MulAW];
   assign unused_frac_lo = exec_frac[FracBits-MulAW-1:0];
   assign unused_vel_lo  = exec_vel[VelW-MulAW-1:0];
@@ -181,7 +190,7 @@ module sc_servo_axis (
     .ext_sel_i        (closed_q),
     .ext_req_i        (nco_req),
     .ext_fwd_i        (nco_fwd),
-    // DIR follows the sign of the rate command while no step is owed
+    // DIR hint once the reference has stopped: the sign of the rate command
     .ext_hint_valid_i (ctl_active && ctl_u != '0),
     .ext_hint_i       (!ctl_u[CtlW-1]),
     .ext_busy_i       (ctl_active || nco_req),
@@ -287,7 +296,7 @@ module sc_servo_axis (
     .rst_ni,
     .div_sh_i    (div_sh),
     .load_i      (exec_start),
-    .run_i       (ctl_active),
+    .run_i       (nco_run),
     .u_i         (ctl_u),
     .step_req_o  (nco_req),
     .step_fwd_o  (nco_fwd),

@@ -169,6 +169,10 @@ MoveRequest fast_backward_move() {
   return r;
 }
 
+// The move cruises at the step-rate limit 1 / (high + low) = 200k pulses/s:
+// the rate command may use all of it (the default 90 % could not follow).
+constexpr double kFastMoveULim = 200000;
+
 PulseTiming long_dir_setup() {
   PulseTiming t;
   t.setup = 65535;
@@ -187,9 +191,9 @@ Plan plan_with(const MoveRequest& r, const PulseTiming& t) {
 void expect_long_dir_setup_move_exact(bool closed_loop) {
   ClosedLoopOptions o;
   o.engine = ClEngine::Lockstep;
-  o.tail_s = 0.01;
   o.timing = long_dir_setup();
   o.ctl.closed_loop = closed_loop;
+  o.ctl.u_lim = kFastMoveULim;
   const Plan plan = plan_with(fast_backward_move(), o.timing);
   ASSERT_FALSE(plan.segments.empty());
   const ClosedLoopResult r = run_closed_loop(plan, o);
@@ -222,6 +226,7 @@ void expect_pins_match_distance(bool closed_loop) {
   ASSERT_FALSE(plan.segments.empty());
   ControllerParams p;
   p.closed_loop = closed_loop;
+  p.u_lim = kFastMoveULim;
   const PlantConfig pc;
   ServoInputs in;
   ASSERT_EQ(to_servo_config(p, pc, t, in.cfg), "");
