@@ -170,8 +170,10 @@ MoveRequest fast_backward_move() {
 }
 
 // The move cruises at the step-rate limit 1 / (high + low) = 200k pulses/s:
-// the rate command may use all of it (the default 90 % could not follow).
+// the rate command may use all of it (the default 90 % could not follow),
+// and the rotor's lag, never caught up at that rate, reaches ~500 pulses.
 constexpr double kFastMoveULim = 200000;
+constexpr double kFastMoveFerrLim = 2000;
 
 PulseTiming long_dir_setup() {
   PulseTiming t;
@@ -194,6 +196,7 @@ void expect_long_dir_setup_move_exact(bool closed_loop) {
   o.timing = long_dir_setup();
   o.ctl.closed_loop = closed_loop;
   o.ctl.u_lim = kFastMoveULim;
+  o.ctl.ferr_lim = kFastMoveFerrLim;
   const Plan plan = plan_with(fast_backward_move(), o.timing);
   ASSERT_FALSE(plan.segments.empty());
   const ClosedLoopResult r = run_closed_loop(plan, o);
@@ -227,6 +230,7 @@ void expect_pins_match_distance(bool closed_loop) {
   ControllerParams p;
   p.closed_loop = closed_loop;
   p.u_lim = kFastMoveULim;
+  p.ferr_lim = kFastMoveFerrLim;
   const PlantConfig pc;
   ServoInputs in;
   ASSERT_EQ(to_servo_config(p, pc, t, in.cfg), "");
