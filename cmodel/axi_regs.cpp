@@ -411,12 +411,11 @@ void AxiServo::step(const AxiIn& in, const RegsSide& side) {
   si.enc_a = side.enc_ab & 1;
   si.enc_b = (side.enc_ab >> 1) & 1;
   RegsSide rs = side;
-  rs.enc_ab = enc_s2_;
+  rs.enc_ab = uint8_t(enc_sync_.q());
   rs.enc_pos = so.enc_pos;
   regs_.step(in, rs, co, st);
   servo_.step(si);
-  enc_s2_ = enc_s1_;
-  enc_s1_ = side.enc_ab & 3;
+  enc_sync_.step(side.enc_ab & 3u);
 }
 
 AxiServoOutputs AxiServo::outputs() const {

@@ -8,6 +8,7 @@
 
 #include "axis_core.h"
 #include "servo_axis.h"
+#include "sync.h"
 
 namespace sc {
 
@@ -166,7 +167,7 @@ class AxiServo {
   void reset() {
     regs_.reset();
     servo_.reset();
-    enc_s1_ = enc_s2_ = 0;
+    enc_sync_.reset();
   }
   void step(const AxiIn& in, const RegsSide& side);
   AxiServoOutputs outputs() const;
@@ -182,7 +183,7 @@ class AxiServo {
  private:
   AxiRegs regs_;
   ServoAxis servo_;
-  uint8_t enc_s1_ = 0, enc_s2_ = 0;
+  Sync enc_sync_{2, false};  // u_sync_enc: STATUS.ENC_AB
 };
 
 }  // namespace sc

@@ -12,6 +12,7 @@ void AxisCore::reset() {
   arm_ = false;
   arm_fwd_ = true;
   arm_cnt_ = 0;
+  exec_started_ = false;
 }
 
 bool AxisCore::busy() const {
@@ -29,17 +30,38 @@ bool row_forward(const Segment& s) {
 }
 }  // namespace
 
+namespace {
+const CoreExtInputs kNoExt{};
+}  // namespace
+
 void AxisCore::step(const CoreInputs& in) {
   const bool capture_row0 = in.seg_we && (in.seg_waddr & (MaxSegs - 1)) == 0 && !exec_.state().run;
+  latch_write(in);
+  clock_edge<false>(kNoExt);
+  exec_in_.seg_we = false;
+  if (capture_row0) first_fwd_ = row_forward(in.seg_wdata);
+  latch_inputs(in);
+}
+
+void AxisCore::step(const CoreInputs& in, const CoreExtInputs& x) {
+  const bool capture_row0 = in.seg_we && (in.seg_waddr & (MaxSegs - 1)) == 0 && !exec_.state().run;
+  latch_write(in);
+  clock_edge<true>(x);
+  exec_in_.seg_we = false;
+  if (capture_row0) first_fwd_ = row_forward(in.seg_wdata);
+  latch_inputs(in);
+}
+
+void AxisCore::latch_write(const CoreInputs& in) {
   ProfileExec::Inputs& ei = exec_in_;
   ei.seg_we = in.seg_we;
   if (in.seg_we) {
     ei.seg_waddr = in.seg_waddr;
     ei.seg_wdata = in.seg_wdata;
   }
-  clock_edge();
-  ei.seg_we = false;
-  if (capture_row0) first_fwd_ = row_forward(in.seg_wdata);
+}
+
+void AxisCore::latch_inputs(const CoreInputs& in) {
   in_q_.enable = in.enable;
   in_q_.start = in.start;
   in_q_.abort = in.abort;
@@ -48,11 +70,13 @@ void AxisCore::step(const CoreInputs& in) {
   in_q_.pos_frac0 = mask_bits(in.pos_frac0, FracBits);
 }
 
-void AxisCore::clock_edge() {
+template <bool kExt>
+void AxisCore::clock_edge(const CoreExtInputs& x) {
   // Every sub-block input below is a register output (the core's input
-  // stage, the arming state or the executor's step request), as in the RTL.
+  // stage, the arming state, the executor's step request or, with kExt,
+  // the external source's registers), as in the RTL.
   const ProfileExec::State& e = exec_.state();
-  const bool start_ok = in_q_.start && !busy() && in_q_.enable;
+  const bool start_ok = in_q_.start && !(kExt ? busy(x) : busy()) && in_q_.enable;
   bool arm_d = arm_, arm_fwd_d = arm_fwd_, exec_start = false;
   uint16_t arm_cnt_d = arm_cnt_;
   if (start_ok) {
@@ -71,20 +95,23 @@ void AxisCore::clock_edge() {
       arm_cnt_d = uint16_t(arm_cnt_ + 1);
     }
   }
+  const bool use_ext = kExt && x.sel;
   StepGen::Inputs si;
   si.cfg = in_q_.cfg;
   si.clear = start_ok;
-  si.step_req = e.step_req;
-  si.step_fwd = e.step_fwd;
-  si.dir_hint_valid = arm_ || (e.run && e.vel != 0);
-  si.dir_hint = arm_ ? arm_fwd_ : e.vel >= 0;
+  si.step_req = use_ext ? x.req : e.step_req;
+  si.step_fwd = use_ext ? x.fwd : e.step_fwd;
+  const bool ref_moving = e.run && e.vel != 0;
+  si.dir_hint_valid = arm_ || ref_moving || (use_ext && x.hint_valid);
+  si.dir_hint = arm_ ? arm_fwd_ : (!kExt || ref_moving) ? e.vel >= 0 : x.hint;
   ProfileExec::Inputs& ei = exec_in_;
   ei.seg_count = in_q_.seg_count;
   ei.pos_frac0 = in_q_.pos_frac0;
   ei.start = exec_start;
-  ei.abort = in_q_.abort;
+  ei.abort = in_q_.abort || (kExt && x.abort);
   sg_.step(si);  // uses the executor's current (registered) outputs
   exec_.step(ei);
+  if constexpr (kExt) exec_started_ = exec_start;
   arm_ = arm_d;
   arm_fwd_ = arm_fwd_d;
   arm_cnt_ = arm_cnt_d;
@@ -119,7 +146,7 @@ CoreOutputs AxisCore::outputs() const {
   return o;
 }
 
-void AxisCore::tick() { clock_edge(); }
+void AxisCore::tick() { clock_edge<false>(kNoExt); }
 
 bool AxisCore::outputs_equal(const CoreOutputs& o) const {
   const ProfileExec::State& e = exec_.state();

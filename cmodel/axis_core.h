@@ -21,6 +21,19 @@ struct CoreInputs {
   bool abort = false;
 };
 
+// The external step source of sc_axis_core #(.ExtStep(1)) (its ext_*
+// inputs): sc_servo_axis's NCO and controller. All false = ExtStep 0.
+struct CoreExtInputs {
+  bool sel = false;  // steps come from req/fwd instead of the executor's carry
+  bool req = false;
+  bool fwd = false;
+  bool hint_valid = false;
+  bool hint = false;
+  bool busy = false;
+  bool abort = false;  // aborts the executor (not the arming)
+  bool done = false;   // replaces "executor finished" in done
+};
+
 // Every output of sc_axis_core, as the lockstep checker compares them.
 struct CoreOutputs {
   bool step = false;
@@ -47,6 +60,9 @@ class AxisCore {
   AxisCore() { reset(); }
   void reset();
   void step(const CoreInputs& in);
+  // One clock of sc_axis_core #(.ExtStep(1)); `x` holds the ext_* inputs of
+  // this clock (from the external source's registers, before its clock).
+  void step(const CoreInputs& in, const CoreExtInputs& x);
   CoreOutputs outputs() const;
   // outputs() == o, without building the struct (the lockstep hot path).
   bool outputs_equal(const CoreOutputs& o) const;
@@ -56,6 +72,19 @@ class AxisCore {
 
   bool busy() const;
   bool done() const { return exec_.state().finished && !busy(); }
+  // busy_o, done_o and phase_o with the external source's inputs `x`.
+  bool busy(const CoreExtInputs& x) const { return busy() || x.busy; }
+  bool done(const CoreExtInputs& x) const { return (x.sel ? x.done : exec_.state().finished) && !busy(x); }
+  uint8_t phase(const CoreExtInputs& x) const {
+    return done(x) ? uint8_t(Phase::PhDone) : uint8_t(exec_.state().phase);
+  }
+  // exec_start_o of the clock last stepped with step(in, x): the executor
+  // started (after arming).
+  bool exec_started() const { return exec_started_; }
+  // abort_o: abort as registered by the core.
+  bool abort_q() const { return in_q_.abort; }
+  // en_o.
+  bool enable_q() const { return in_q_.enable; }
 
   // Advance up to n clocks with `in` held (in must have no start, abort or
   // write); jumps in closed form while the step generator is idle and the
@@ -88,8 +117,13 @@ class AxisCore {
   bool arm_ = false;
   bool arm_fwd_ = true;
   uint16_t arm_cnt_ = 0;
+  bool exec_started_ = false;
   ProfileExec::Inputs exec_in_{};  // reused every clock: no per-clock construction
-  void clock_edge();
+  void latch_write(const CoreInputs& in);
+  void latch_inputs(const CoreInputs& in);
+  // kExt = false is the plain core (ExtStep = 0): x is not read.
+  template <bool kExt>
+  void clock_edge(const CoreExtInputs& x);
 };
 
 }  // namespace sc

@@ -21,79 +21,88 @@ ServoConfig ServoAxis::registered(const ServoConfig& c) {
 }
 
 void ServoAxis::reset() {
-  exec_.reset();
+  core_.reset();
   dec_.reset();
   ctl_.reset();
   nco_.reset();
-  sg_.reset();
   in_q_ = InputRegs{};
+  core_in_ = CoreInputs{};
   have_last_cfg_ = false;
 }
 
-bool ServoAxis::busy() const {
-  return exec_.state().run || exec_.state().step_req || sg_.busy() || ctl_.state().active || nco_.state().req;
+CoreExtInputs ServoAxis::ext_inputs() const {
+  const NeuronPi::State& c = ctl_.state();
+  const StepNco::State& n = nco_.state();
+  CoreExtInputs x;
+  x.sel = in_q_.cfg.closed_loop;
+  x.req = n.req;
+  x.fwd = n.fwd;
+  x.hint_valid = c.active && c.u != 0;
+  x.hint = c.u >= 0;
+  x.busy = c.active || n.req;
+  x.abort = c.ferr;
+  x.done = c.in_pos;
+  return x;
 }
 
-bool ServoAxis::done() const {
-  const bool b = busy();
-  return in_q_.cfg.closed_loop ? (ctl_.state().in_pos && !b) : (exec_.state().finished && !b);
-}
+bool ServoAxis::busy() const { return core_.busy(ext_inputs()); }
+
+bool ServoAxis::done() const { return core_.done(ext_inputs()); }
 
 double ServoAxis::ref_position() const {
-  const ProfileExec::State& e = exec_.state();
+  const ProfileExec::State& e = core_.exec().state();
   return double(e.pint) + double(e.frac) / kTwoPowFrac - 0.5;
 }
 
 void ServoAxis::step(const ServoInputs& in) {
   const ServoConfig& cq = in_q_.cfg;
-  const ProfileExec::State& e = exec_.state();
+  const ProfileExec::State& e = core_.exec().state();
   const NeuronPi::State& c = ctl_.state();
   const StepNco::State& n = nco_.state();
   const bool closed = cq.closed_loop;
-  const bool start_ok = in_q_.start && !busy() && cq.enable;
 
-  // Inputs of every submodule from the current (registered) state.
-  ProfileExec::Inputs ei;
-  ei.seg_we = in.seg_we;
-  ei.seg_waddr = in.seg_waddr;
-  ei.seg_wdata = in.seg_wdata;
-  ei.seg_count = in_q_.seg_count;
-  ei.pos_frac0 = in_q_.pos_frac0;
-  ei.start = start_ok;
-  ei.abort = in_q_.abort || c.ferr;
+  // Inputs of every submodule from the current (registered) state, before
+  // any of them clocks.
+  const CoreExtInputs x = ext_inputs();
+  CoreInputs& ki = core_in_;
+  ki.enable = in.cfg.enable;
+  ki.cfg = in.cfg.timing;
+  ki.seg_we = in.seg_we;
+  if (in.seg_we) {
+    ki.seg_waddr = in.seg_waddr;
+    ki.seg_wdata = in.seg_wdata;
+  }
+  ki.seg_count = in.seg_count;
+  ki.pos_frac0 = in.pos_frac0;
+  ki.start = in.start;
+  ki.abort = in.abort;
 
   NeuronPi::Inputs ci;
-  ci.start = start_ok && closed;
-  ci.stop = in_q_.abort;
+  ci.stop = core_.abort_q();
   ci.ref_int = e.pint;
   ci.ref_frac = uint32_t(e.frac >> (FracBits - CtlFrac));
   ci.ref_vel = int32_t(e.vel >> (VelW - MulAW));
   ci.ref_done = e.finished;
   ci.enc_pos = dec_.state().count;
-  ci.cmd_busy = n.req || sg_.busy();
+  ci.cmd_busy = n.req || core_.step_gen().busy();
   ci.nco_req = n.req;
 
-  StepGen::Inputs si;
-  si.cfg = cq.timing;
-  si.clear = start_ok;
-  si.step_req = closed ? n.req : e.step_req;
-  si.step_fwd = closed ? n.fwd : e.step_fwd;
-  si.dir_hint_valid = closed ? (c.active && c.u != 0) : (e.run && e.vel != 0);
-  si.dir_hint = closed ? c.u >= 0 : e.vel >= 0;
-
-  const bool nco_run = c.active;
+  // Backpressure: the NCO holds while the step queue is within one step of
+  // either end (one request may still be in flight).
+  const int pend = core_.step_gen().state().pend;
+  const bool queue_near_full = pend >= StepGen::kPendMax - 1 || pend <= StepGen::kPendMin + 1;
+  const bool nco_run = c.active && !queue_near_full;
   const int32_t nco_u = c.u;
 
-  sg_.step(si);
-  nco_.step(cq.ctl.div, cq.ctl.shift, start_ok, nco_run, nco_u);
+  // exec_start_o is a function of the core's registers: the controller and
+  // the NCO start with the executor, after arming.
+  core_.step(ki, x);
+  const bool exec_start = core_.exec_started();
+  ci.start = exec_start && closed;
+  nco_.step(cq.ctl.div, cq.ctl.shift, exec_start, nco_run, nco_u);
   ctl_.step(cq.ctl, ci);
   dec_.step(in.enc_a, in.enc_b, cq.enc_filt);
-  exec_.step(ei);
 
-  in_q_.start = in.start;
-  in_q_.abort = in.abort;
-  in_q_.seg_count = uint8_t(in.seg_count & ((1u << SegCntW) - 1));
-  in_q_.pos_frac0 = mask_bits(in.pos_frac0, FracBits);
   // in_q_.cfg always holds registered(cfg of the previous clock); the
   // compare keeps the per-clock cost low while the configuration is static.
   if (!have_last_cfg_ || !(in.cfg == last_cfg_in_)) [[unlikely]] {
@@ -104,16 +113,17 @@ void ServoAxis::step(const ServoInputs& in) {
 }
 
 ServoOutputs ServoAxis::outputs() const {
-  const ProfileExec::State& e = exec_.state();
-  const StepGen::State& s = sg_.state();
+  const ProfileExec::State& e = core_.exec().state();
+  const StepGen::State& s = core_.step_gen().state();
   const NeuronPi::State& c = ctl_.state();
+  const CoreExtInputs x = ext_inputs();
   ServoOutputs o;
   o.step = s.step;
   o.dir = s.dir;
-  o.en = in_q_.cfg.enable;
-  o.busy = busy();
-  o.done = done();
-  o.phase = c.ferr ? uint8_t(Phase::PhFault) : o.done ? uint8_t(Phase::PhDone) : uint8_t(e.phase);
+  o.en = core_.enable_q();
+  o.busy = core_.busy(x);
+  o.done = core_.done(x);
+  o.phase = c.ferr ? uint8_t(Phase::PhFault) : core_.phase(x);
   o.fault_table = e.fault;
   o.fault_overrun = s.overrun;
   o.fault_ferr = c.ferr;

@@ -1,10 +1,12 @@
-// Bit-exact model of rtl/sc_servo_axis.sv: profile executor + quadrature
-// decoder + neuron-PI cascade + step NCO + step generator, one clock per
+// Bit-exact model of rtl/sc_servo_axis.sv: the open-loop core (AxisCore:
+// arming, profile executor, step generator) + quadrature decoder + neuron-PI
+// cascade + step NCO as the core's external step source, one clock per
 // step(). The plant is outside: the caller drives enc_a/enc_b.
 #pragma once
 
 #include <cstdint>
 
+#include "axis_core.h"
 #include "neuron_pi.h"
 #include "profile_exec.h"
 #include "quad_decoder.h"
@@ -72,11 +74,12 @@ class ServoAxis {
   // The reference position P* - 1/2 in pulses (double; for metrics).
   double ref_position() const;
 
-  const ProfileExec& exec() const { return exec_; }
+  const AxisCore& core() const { return core_; }
+  const ProfileExec& exec() const { return core_.exec(); }
   const QuadDecoder& decoder() const { return dec_; }
   const NeuronPi& ctl() const { return ctl_; }
   const StepNco& nco() const { return nco_; }
-  const StepGen& step_gen() const { return sg_; }
+  const StepGen& step_gen() const { return core_.step_gen(); }
   NeuronPi& mutable_ctl() { return ctl_; }
 
   // Register-stage view of a configuration (what the RTL's _q flops hold).
@@ -95,18 +98,20 @@ class ServoAxis {
     c.ctl.inpos_hold = 0;
     return c;
   }
+  // The servo's own input registers (closed_q and the controller's cfg
+  // registers; enable and the pulse timing are the core's). The core's
+  // registers hold start, abort, seg_count and pos_frac0.
   struct InputRegs {
-    bool start = false, abort = false;
-    uint8_t seg_count = 0;
-    u128 pos_frac0 = 0;
     ServoConfig cfg = zero_config();
   };
-  ProfileExec exec_;
+  // The core's ext_* inputs: the NCO and the controller's current registers.
+  CoreExtInputs ext_inputs() const;
+  AxisCore core_;
   QuadDecoder dec_;
   NeuronPi ctl_;
   StepNco nco_;
-  StepGen sg_;
   InputRegs in_q_;
+  CoreInputs core_in_{};  // reused every clock: no per-clock construction
   ServoConfig last_cfg_in_{};
   bool have_last_cfg_ = false;
 };

@@ -39,10 +39,13 @@ set_property -dict { PACKAGE_PIN T10 IOSTANDARD LVCMOS33 } [get_ports {led_o[3]}
 
 ## ---- IO timing ---------------------------------------------------------------------
 ## Asynchronous inputs (encoder, buttons, UART RX): no phase relation to any
-## FPGA clock; each goes through a two-flop synchroniser (ASYNC_REG set in
-## sc_sync.sv / sc_rst_sync.sv), so no
-## input delay applies. Encoder edges are >= 4 system clocks apart at the
-## rated speed, the synchroniser adds 2 clocks of latency.
+## FPGA clock, so no input delay applies. Each data input goes through an
+## sc_sync (two flops meta_q -> sync_q, both ASYNC_REG): u_sync_rx,
+## u_sync_estop, u_axis/u_servo/u_dec/u_sync_ab (encoder A/B into the
+## decoder) and u_axis/u_sync_enc (encoder A/B for STATUS.ENC_AB); the reset
+## button goes through sc_rst_sync (u_rst_sync/chain_q, ASYNC_REG).
+## Encoder edges are >= 4 system clocks apart at the rated speed, the
+## synchroniser adds 2 clocks of latency.
 set_false_path -from [get_ports {enc_a_i enc_b_i estop_i ck_rst_ni uart_rx_i}]
 
 ## STEP/DIR/EN come straight from flops of clk_sys. The driver needs microsecond

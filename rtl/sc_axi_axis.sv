@@ -70,6 +70,7 @@ module sc_axi_axis (
   logic signed [AccW-1:0]      unused_ref_acc;
   logic signed [JerkW-1:0]     unused_ref_jerk;
   logic signed [PendW-1:0]     unused_pending;
+  logic                        unused_exec_start, unused_abort, unused_ref_done, unused_step_busy;
   logic                        unused_closed;
   logic [sc_pkg::ClCfgWords*32-1:0] unused_cl_cfg;
 
@@ -148,6 +149,18 @@ module sc_axi_axis (
     .pos_frac0_i     (pos_frac0),
     .start_i         (start),
     .abort_i         (abort),
+    .ext_sel_i        (1'b0),
+    .ext_req_i        (1'b0),
+    .ext_fwd_i        (1'b0),
+    .ext_hint_valid_i (1'b0),
+    .ext_hint_i       (1'b0),
+    .ext_busy_i       (1'b0),
+    .ext_abort_i      (1'b0),
+    .ext_done_i       (1'b0),
+    .exec_start_o     (unused_exec_start),
+    .abort_o          (unused_abort),
+    .ref_done_o       (unused_ref_done),
+    .step_busy_o      (unused_step_busy),
     .step_o,
     .dir_o,
     .en_o,

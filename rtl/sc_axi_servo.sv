@@ -5,7 +5,7 @@
 // encoder position, the following error, IN_POS / FAULT_FERR and the
 // controller's u, v_cmd, errors and learned weights. Encoder A/B go to the
 // quadrature decoder of sc_servo_axis (which synchronises them); STATUS.ENC_AB
-// shows them through a two-flop synchroniser of its own. The model is
+// shows them through an sc_sync of its own. The model is
 // cmodel/axi_regs.h (AxiServo); the testbench drives both in lockstep.
 module sc_axi_servo (
   input  logic                                clk_i,
@@ -80,7 +80,7 @@ module sc_axi_servo (
   logic                        core_busy, core_done, fault_table, fault_overrun;
   logic [NCfg*32-1:0]          cl_cfg;
   logic [NStat*32-1:0]         cl_stat;
-  logic [1:0]                  enc_s1_q, enc_s2_q;
+  logic [1:0]                  enc_ab_sync;
 
   logic [sc_pkg::EncIllW-1:0]  enc_illegal;
   logic                        ctl_active;
@@ -114,15 +114,15 @@ module sc_axi_servo (
     cl_stat[32*8 +: 32] = 32'(w_v2);
   end
 
-  always_ff @(posedge clk_i) begin
-    if (!rst_ni) begin
-      enc_s1_q <= 2'b00;
-      enc_s2_q <= 2'b00;
-    end else begin
-      enc_s1_q <= {enc_b_i, enc_a_i};
-      enc_s2_q <= enc_s1_q;
-    end
-  end
+  sc_sync #(
+    .Width    (2),
+    .ResetVal (1'b0)
+  ) u_sync_enc (
+    .clk_i,
+    .rst_ni,
+    .d_i ({enc_b_i, enc_a_i}),
+    .q_o (enc_ab_sync)
+  );
 
   sc_axi_regs #(.Servo(1'b1)) u_regs (
     .clk_i,
@@ -145,7 +145,7 @@ module sc_axi_servo (
     .s_axi_rvalid_o,
     .s_axi_rready_i,
     .estop_i,
-    .enc_ab_i        (enc_s2_q),
+    .enc_ab_i        (enc_ab_sync),
     .enc_pos_i       (enc_pos_o),
     .enable_o        (enable),
     .cfg_high_o      (cfg_high),

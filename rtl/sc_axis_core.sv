@@ -10,9 +10,23 @@
 //
 // An accepted start first arms: DIR is turned to the move's direction (the
 // sign of table row 0, captured when row 0 is written) and held for the
-// setup time, and only then does the executor start. Steps therefore never
-// pile up in the step generator's queue behind a DIR change.
-module sc_axis_core (
+// setup time, and only then does the executor start (exec_start_o pulses).
+// Steps therefore never pile up in the step generator's queue behind a DIR
+// change.
+//
+// ExtStep = 1 adds an external step source (sc_servo_axis's closed-loop
+// NCO): with ext_sel_i set it replaces the executor's carry at the step
+// generator. DIR is pre-positioned (while no step is owed) by the arming,
+// else by the reference velocity's sign while the executor moves, else by
+// the external hint (the sign of the rate command while settling), so a
+// small rate command of the wrong sign never turns DIR and costs the setup
+// time; steps actually owed turn DIR in either case. ext_busy_i extends busy_o, ext_abort_i aborts the executor,
+// ext_done_i replaces "executor finished" in done_o. The external source
+// starts on exec_start_o, together with the reference. With ExtStep = 0 the
+// ext_* inputs are ignored and add no logic.
+module sc_axis_core #(
+  parameter bit ExtStep = 1'b0
+) (
   input  logic                        clk_i,
   input  logic                        rst_ni,
 
@@ -33,6 +47,20 @@ module sc_axis_core (
   input  logic [sc_pkg::FracBits-1:0]         pos_frac0_i,
   input  logic                        start_i,      // ignored while busy_o or !enable_i (seen a clock later)
   input  logic                        abort_i,
+
+  // external step source (ExtStep = 1 only)
+  input  logic                        ext_sel_i,         // steps come from ext_req_i/ext_fwd_i
+  input  logic                        ext_req_i,
+  input  logic                        ext_fwd_i,
+  input  logic                        ext_hint_valid_i,  // DIR pre-position while no step is owed
+  input  logic                        ext_hint_i,
+  input  logic                        ext_busy_i,
+  input  logic                        ext_abort_i,       // aborts the executor (not the arming)
+  input  logic                        ext_done_i,
+  output logic                        exec_start_o,      // the executor starts this clock
+  output logic                        abort_o,           // abort_i as registered here
+  output logic                        ref_done_o,        // the executor has finished the table
+  output logic                        step_busy_o,       // a step is owed or STEP is high
 
   output logic                        step_o,
   output logic                        dir_o,
@@ -64,6 +92,8 @@ module sc_axis_core (
   logic   exec_step_req, exec_step_fwd;
   logic [PhaseW-1:0] exec_phase;
   logic   sg_busy, sg_dir;
+  logic   sg_req, sg_fwd, sg_hint_valid, sg_hint;
+  logic   use_ext, exec_abort, finished, ref_moving;
   logic   start_ok, exec_start;
   logic   en_q, start_q, abort_q;
   logic   first_fwd_q;                   // direction of table row 0
@@ -75,8 +105,23 @@ module sc_axis_core (
   logic [SegCntW-1:0]    seg_count_q;
   logic [FracBits-1:0]   pos_frac0_q;
 
-  assign busy_o   = exec_running || exec_step_req || sg_busy || arm_q;
-  assign start_ok = start_q && !busy_o && en_q;
+  assign use_ext    = ExtStep && ext_sel_i;
+  assign busy_o     = exec_running || exec_step_req || sg_busy || arm_q || (ExtStep && ext_busy_i);
+  assign start_ok   = start_q && !busy_o && en_q;
+  // A latched external fault must not block the arming of the next start:
+  // the external source clears it when it starts with the executor.
+  assign exec_abort = abort_q || (ExtStep && ext_abort_i);
+  assign finished   = use_ext ? ext_done_i : exec_finished;
+
+  // While arming, DIR is steered to the move's direction; otherwise, with no
+  // step owed, it is pre-positioned to the commanded direction.
+  assign ref_moving    = exec_running && ref_vel_o != '0;
+  assign sg_req        = use_ext ? ext_req_i : exec_step_req;
+  assign sg_fwd        = use_ext ? ext_fwd_i : exec_step_fwd;
+  assign sg_hint_valid = arm_q || ref_moving || (use_ext && ext_hint_valid_i);
+  // (!ExtStep: the plain core's hint needs no mux for the external one)
+  assign sg_hint       = arm_q ? arm_fwd_q :
+                         (!ExtStep || ref_moving) ? !ref_vel_o[sc_pkg::VelW-1] : ext_hint_i;
 
   // Direction of a row: its velocity's sign, else its acceleration's, else
   // its jerk's (a move from rest starts with v = a = 0).
@@ -120,7 +165,7 @@ module sc_axis_core (
     .seg_count_i (seg_count_q),
     .pos_frac0_i (pos_frac0_q),
     .start_i     (exec_start),
-    .abort_i     (abort_q),
+    .abort_i     (exec_abort),
     .running_o   (exec_running),
     .finished_o  (exec_finished),
     .fault_o     (exec_fault),
@@ -143,10 +188,10 @@ module sc_axis_core (
     .cfg_setup_i (cfg_setup_q),
     .cfg_hold_i  (cfg_hold_q),
     .clear_i     (start_ok),
-    .step_req_i  (exec_step_req),
-    .step_fwd_i  (exec_step_fwd),
-    .dir_hint_valid_i (arm_q || (exec_running && ref_vel_o != '0)),
-    .dir_hint_i  (arm_q ? arm_fwd_q : !ref_vel_o[sc_pkg::VelW-1]),
+    .step_req_i  (sg_req),
+    .step_fwd_i  (sg_fwd),
+    .dir_hint_valid_i (sg_hint_valid),
+    .dir_hint_i  (sg_hint),
     .step_o,
     .dir_o       (sg_dir),
     .busy_o      (sg_busy),
@@ -189,8 +234,12 @@ module sc_axis_core (
 
   assign en_o          = en_q;
   assign dir_o         = sg_dir;
-  assign done_o        = exec_finished && !busy_o;
+  assign done_o        = finished && !busy_o;
   assign phase_o       = done_o ? sc_pkg::PhDone : exec_phase;
   assign fault_table_o = exec_fault;
+  assign exec_start_o  = exec_start;
+  assign abort_o       = abort_q;
+  assign ref_done_o    = exec_finished;
+  assign step_busy_o   = sg_busy;
 
 endmodule

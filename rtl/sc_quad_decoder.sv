@@ -1,6 +1,6 @@
 // sc_quad_decoder: quadrature encoder interface.
 //
-//   enc_a_i/enc_b_i -> two synchroniser flops -> glitch filter -> 4x decoder
+//   enc_a_i/enc_b_i -> sc_sync (two flops) -> glitch filter -> 4x decoder
 //
 // Glitch filter (per channel): a synchronised level that differs from the
 // filtered one is accepted on the (cfg_filt_i+1)-th consecutive clock it is
@@ -27,7 +27,7 @@ module sc_quad_decoder (
   localparam int EncFiltW = sc_pkg::EncFiltW;
   localparam int EncIllW  = sc_pkg::EncIllW;
 
-  logic                      a_s1_q, a_s2_q, b_s1_q, b_s2_q;
+  logic                      a_s, b_s;   // synchronised levels
   logic                      a_f_q, a_f_d, b_f_q, b_f_d;
   logic [EncFiltW-1:0]       a_cnt_q, a_cnt_d, b_cnt_q, b_cnt_d;
   logic signed [EncCntW-1:0] count_q, count_d;
@@ -39,21 +39,31 @@ module sc_quad_decoder (
     gray_phase = {b, a ^ b};
   endfunction
 
+  sc_sync #(
+    .Width    (2),
+    .ResetVal (1'b0)
+  ) u_sync_ab (
+    .clk_i,
+    .rst_ni,
+    .d_i ({enc_b_i, enc_a_i}),
+    .q_o ({b_s, a_s})
+  );
+
   always_comb begin
     a_f_d   = a_f_q;
     b_f_d   = b_f_q;
     a_cnt_d = '0;
     b_cnt_d = '0;
-    if (a_s2_q != a_f_q) begin
+    if (a_s != a_f_q) begin
       if (a_cnt_q >= cfg_filt_i) begin
-        a_f_d = a_s2_q;
+        a_f_d = a_s;
       end else begin
         a_cnt_d = a_cnt_q + EncFiltW'(1);
       end
     end
-    if (b_s2_q != b_f_q) begin
+    if (b_s != b_f_q) begin
       if (b_cnt_q >= cfg_filt_i) begin
-        b_f_d = b_s2_q;
+        b_f_d = b_s;
       end else begin
         b_cnt_d = b_cnt_q + EncFiltW'(1);
       end
@@ -77,10 +87,6 @@ module sc_quad_decoder (
 
   always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
-      a_s1_q  <= 1'b0;
-      a_s2_q  <= 1'b0;
-      b_s1_q  <= 1'b0;
-      b_s2_q  <= 1'b0;
       a_f_q   <= 1'b0;
       b_f_q   <= 1'b0;
       a_cnt_q <= '0;
@@ -88,10 +94,6 @@ module sc_quad_decoder (
       count_q <= '0;
       ill_q   <= '0;
     end else begin
-      a_s1_q  <= enc_a_i;
-      a_s2_q  <= a_s1_q;
-      b_s1_q  <= enc_b_i;
-      b_s2_q  <= b_s1_q;
       a_f_q   <= a_f_d;
       b_f_q   <= b_f_d;
       a_cnt_q <= a_cnt_d;

@@ -1,15 +1,23 @@
 // sc_servo_axis: one closed-loop axis.
 //
-//   sc_profile_exec --P*,V*--> sc_neuron_pi --u--> sc_step_nco --> sc_step_gen --> STEP/DIR
+//   sc_axis_core (sc_profile_exec --P*,V*--> ... sc_step_gen --> STEP/DIR)
+//                  |                            ^
+//                  +--> sc_neuron_pi --u--> sc_step_nco (external step source)
 //   encoder A/B --> sc_quad_decoder --P--^
 //
-// closed_loop_i = 0 runs the open-loop path of sc_axis_core (executor carry
-// -> step generator) through the same pins, for comparison.
+// sc_axis_core does the start arming (DIR turned to the move's direction and
+// held for the setup time), the step generator and done/abort, in both
+// modes. closed_loop_i = 0 runs its open-loop path (executor carry -> step
+// generator) through the same pins, for comparison; closed_loop_i = 1
+// selects the NCO as the step source. The controller and the NCO start on
+// the core's exec_start_o, i.e. together with the reference, after arming.
 // Closed loop: done_o = in position (|P - L| <= window for the hold time)
 // and no pulse owed. A following-error fault stops the controller (u = 0),
-// aborts the reference, latches fault_ferr_o and keeps every count.
+// aborts the reference, latches fault_ferr_o and keeps every count; the
+// next closed-loop start clears it when the move begins.
 // All control and configuration inputs are registered first (one clock of
-// latency); the encoder inputs go through the decoder's synchronisers.
+// latency; the core registers its own); the encoder inputs go through the
+// decoder's synchroniser.
 module sc_servo_axis (
   input  logic                                clk_i,
   input  logic                                rst_ni,
@@ -104,10 +112,7 @@ module sc_servo_axis (
   output logic signed [sc_pkg::PendW-1:0]     step_pending_o
 );
 
-  localparam int PulseTimeW = sc_pkg::PulseTimeW;
-  localparam int SegCntW    = sc_pkg::SegCntW;
   localparam int FracBits   = sc_pkg::FracBits;
-  localparam int PhaseW     = sc_pkg::PhaseW;
   localparam int VelW       = sc_pkg::VelW;
   localparam int MulAW      = sc_pkg::MulAW;
   localparam int CtlFrac    = sc_pkg::CtlFrac;
@@ -119,12 +124,11 @@ module sc_servo_axis (
   localparam int WgtW       = sc_pkg::WgtW;
   localparam int CtlW       = sc_pkg::CtlW;
   localparam int HoldW      = sc_pkg::HoldW;
+  localparam logic signed [sc_pkg::PendW-1:0] PendMax = {1'b0, {(sc_pkg::PendW-1){1'b1}}};
+  localparam logic signed [sc_pkg::PendW-1:0] PendMin = {1'b1, {(sc_pkg::PendW-1){1'b0}}};
 
   // ---- registered inputs ---------------------------------------------------
-  logic                   en_q, closed_q, start_q, abort_q, ff_en_q;
-  logic [PulseTimeW-1:0]  cfg_high_q, cfg_low_q, cfg_setup_q, cfg_hold_q;
-  logic [SegCntW-1:0]     seg_count_q;
-  logic [FracBits-1:0]    pos_frac0_q;
+  logic                   closed_q, ff_en_q;
   logic [EncFiltW-1:0]    enc_filt_q;
   logic [EncShiftW-1:0]   enc_shift_q;
   logic [CtlDivW-1:0]     div_q;
@@ -136,38 +140,42 @@ module sc_servo_axis (
   logic [HoldW-1:0]       inpos_hold_q;
 
   // ---- internal ------------------------------------------------------------
-  logic                   exec_running, exec_finished, exec_fault;
-  logic                   exec_step_req, exec_step_fwd;
-  logic [PhaseW-1:0]      exec_phase;
+  logic                   exec_start, exec_finished, core_abort, sg_busy;
+  logic [sc_pkg::PhaseW-1:0] core_phase;
   logic [FracBits-1:0]    exec_frac;
   logic signed [VelW-1:0] exec_vel;
-  logic                   sg_busy, start_ok, exec_abort;
   logic                   ctl_active, ctl_in_pos, ctl_ferr;
   logic signed [CtlW-1:0] ctl_u;
-  logic                   nco_req, nco_fwd;
-  logic                   sg_req, sg_fwd;
+  logic                   nco_req, nco_fwd, nco_run, queue_near_full;
   logic signed [MulAW-1:0] ref_vel_q31;
-  logic                   sg_hint_valid, sg_hint;
   logic signed [sc_pkg::AccW-1:0]  unused_acc;
   logic signed [sc_pkg::JerkW-1:0] unused_jerk;
   logic [sc_pkg::SegIdxW-1:0]      unused_seg_idx;
   logic                   unused_enc_a, unused_enc_b;
   logic [FracBits-MulAW-1:0] unused_frac_lo;
+  logic [VelW-MulAW-1:0]     unused_vel_lo;
 
-  assign busy_o      = exec_running || exec_step_req || sg_busy || ctl_active || nco_req;
-  assign start_ok    = start_q && !busy_o && en_q;
-  assign exec_abort  = abort_q || ctl_ferr;
-  assign ref_vel_q31 = exec_vel[VelW-1 -: MulAW];
-  assign sg_req      = closed_q ? nco_req : exec_step_req;
-  assign sg_fwd      = closed_q ? nco_fwd : exec_step_fwd;
-  // DIR is pre-positioned to the commanded direction while no step is owed.
-  assign sg_hint_valid = closed_q ? (ctl_active && ctl_u != '0) : (exec_running && exec_vel != '0);
-  assign sg_hint       = closed_q ? !ctl_u[CtlW-1] : !exec_vel[VelW-1];
+  // Backpressure: the NCO holds its phase while the step queue is within one
+  // step of either end (one request may still be in flight), so it never
+  // requests a step the step generator cannot queue, e.g. while DIR waits
+  // out the setup time after a reversal. The loop sees the delay on P.
+  assign queue_near_full = step_pending_o >= (PendMax - sc_pkg::PendW'(1)) ||
+                           step_pending_o <= (PendMin + sc_pkg::PendW'(1));
+  assign nco_run         = ctl_active && !queue_near_full;
+  assign ref_vel_q31    = exec_vel[VelW-1 -: MulAW];
   assign unused_frac_lo = exec_frac[FracBits-MulAW-1:0];
+  assign unused_vel_lo  = exec_vel[VelW-MulAW-1:0];
 
-  sc_profile_exec u_exec (
+  sc_axis_core #(
+    .ExtStep (1'b1)
+  ) u_core (
     .clk_i,
     .rst_ni,
+    .enable_i,
+    .cfg_high_i,
+    .cfg_low_i,
+    .cfg_setup_i,
+    .cfg_hold_i,
     .seg_we_i,
     .seg_waddr_i,
     .seg_phase_i,
@@ -175,22 +183,39 @@ module sc_servo_axis (
     .seg_jerk_i,
     .seg_acc0_i,
     .seg_vel0_i,
-    .seg_count_i (seg_count_q),
-    .pos_frac0_i (pos_frac0_q),
-    .start_i     (start_ok),
-    .abort_i     (exec_abort),
-    .running_o   (exec_running),
-    .finished_o  (exec_finished),
-    .fault_o     (exec_fault),
-    .step_req_o  (exec_step_req),
-    .step_fwd_o  (exec_step_fwd),
-    .pos_int_o   (ref_pos_int_o),
-    .pos_frac_o  (exec_frac),
-    .vel_o       (exec_vel),
-    .acc_o       (unused_acc),
-    .jerk_o      (unused_jerk),
-    .phase_o     (exec_phase),
-    .seg_idx_o   (unused_seg_idx)
+    .seg_count_i,
+    .pos_frac0_i,
+    .start_i,
+    .abort_i,
+    .ext_sel_i        (closed_q),
+    .ext_req_i        (nco_req),
+    .ext_fwd_i        (nco_fwd),
+    // DIR hint once the reference has stopped: the sign of the rate command
+    .ext_hint_valid_i (ctl_active && ctl_u != '0),
+    .ext_hint_i       (!ctl_u[CtlW-1]),
+    .ext_busy_i       (ctl_active || nco_req),
+    .ext_abort_i      (ctl_ferr),
+    .ext_done_i       (ctl_in_pos),
+    .exec_start_o     (exec_start),
+    .abort_o          (core_abort),
+    .ref_done_o       (exec_finished),
+    .step_busy_o      (sg_busy),
+    .step_o,
+    .dir_o,
+    .en_o,
+    .busy_o,
+    .done_o,
+    .phase_o          (core_phase),
+    .fault_table_o,
+    .fault_overrun_o,
+    .pulse_count_o,
+    .ref_pos_int_o,
+    .ref_pos_frac_o   (exec_frac),
+    .ref_vel_o        (exec_vel),
+    .ref_acc_o        (unused_acc),
+    .ref_jerk_o       (unused_jerk),
+    .seg_idx_o        (unused_seg_idx),
+    .step_pending_o
   );
 
   sc_quad_decoder u_dec (
@@ -238,8 +263,8 @@ module sc_servo_axis (
     .cfg_inpos_win_i   (inpos_win_q),
     .cfg_inpos_hold_i  (inpos_hold_q),
     .cfg_settle_rate_i (settle_rate_q),
-    .start_i           (start_ok && closed_q),
-    .stop_i            (abort_q),
+    .start_i           (exec_start && closed_q),
+    .stop_i            (core_abort),
     .ref_int_i         (ref_pos_int_o),
     .ref_frac_i        (exec_frac[FracBits-1 -: CtlFrac]),
     .ref_vel_i         (ref_vel_q31),
@@ -270,47 +295,18 @@ module sc_servo_axis (
     .clk_i,
     .rst_ni,
     .div_sh_i    (div_sh),
-    .load_i      (start_ok),
-    .run_i       (ctl_active),
+    .load_i      (exec_start),
+    .run_i       (nco_run),
     .u_i         (ctl_u),
     .step_req_o  (nco_req),
     .step_fwd_o  (nco_fwd),
     .phase_o     (nco_phase_o)
   );
 
-  sc_step_gen u_step_gen (
-    .clk_i,
-    .rst_ni,
-    .cfg_high_i  (cfg_high_q),
-    .cfg_low_i   (cfg_low_q),
-    .cfg_setup_i (cfg_setup_q),
-    .cfg_hold_i  (cfg_hold_q),
-    .clear_i     (start_ok),
-    .step_req_i  (sg_req),
-    .step_fwd_i  (sg_fwd),
-    .dir_hint_valid_i (sg_hint_valid),
-    .dir_hint_i  (sg_hint),
-    .step_o,
-    .dir_o,
-    .busy_o      (sg_busy),
-    .overrun_o   (fault_overrun_o),
-    .pending_o   (step_pending_o),
-    .count_o     (pulse_count_o)
-  );
-
   always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
-      en_q          <= 1'b0;
       closed_q      <= 1'b0;
-      start_q       <= 1'b0;
-      abort_q       <= 1'b0;
       ff_en_q       <= 1'b0;
-      cfg_high_q    <= '0;
-      cfg_low_q     <= '0;
-      cfg_setup_q   <= '0;
-      cfg_hold_q    <= '0;
-      seg_count_q   <= '0;
-      pos_frac0_q   <= '0;
       enc_filt_q    <= '0;
       enc_shift_q   <= '0;
       div_q         <= '0;
@@ -340,17 +336,8 @@ module sc_servo_axis (
       inpos_hold_q  <= '0;
       settle_rate_q <= '0;
     end else begin
-      en_q          <= enable_i;
       closed_q      <= closed_loop_i;
-      start_q       <= start_i;
-      abort_q       <= abort_i;
       ff_en_q       <= cfg_ff_en_i;
-      cfg_high_q    <= cfg_high_i;
-      cfg_low_q     <= cfg_low_i;
-      cfg_setup_q   <= cfg_setup_i;
-      cfg_hold_q    <= cfg_hold_i;
-      seg_count_q   <= seg_count_i;
-      pos_frac0_q   <= pos_frac0_i;
       enc_filt_q    <= cfg_enc_filt_i;
       enc_shift_q   <= cfg_enc_shift_i;
       div_q         <= cfg_div_i;
@@ -382,10 +369,7 @@ module sc_servo_axis (
     end
   end
 
-  assign en_o          = en_q;
-  assign done_o        = closed_q ? (ctl_in_pos && !busy_o) : (exec_finished && !busy_o);
-  assign phase_o       = ctl_ferr ? sc_pkg::PhFault : done_o ? sc_pkg::PhDone : exec_phase;
-  assign fault_table_o = exec_fault;
+  assign phase_o       = ctl_ferr ? sc_pkg::PhFault : core_phase;
   assign fault_ferr_o  = ctl_ferr;
   assign in_pos_o      = ctl_in_pos;
   assign ref_frac_hi_o = exec_frac[FracBits-1 -: MulAW];

@@ -1,6 +1,8 @@
-// sc_sync: two-flop synchroniser for asynchronous level inputs (encoder
-// A/B, buttons, UART RX). Each bit is synchronised on its own: use it only
-// for signals whose bits may be seen a clock apart (Gray-like or single).
+// sc_sync: the two-flop synchroniser for every asynchronous level input
+// (encoder A/B in sc_quad_decoder and sc_axi_servo, e-stop button, UART RX;
+// the reset has its own, sc_rst_sync). Each bit is synchronised on its own:
+// use it only for signals whose bits may be seen a clock apart (Gray-like or
+// single). Model: cmodel/sync.h.
 module sc_sync #(
   parameter int          Width    = 1,
   parameter logic [0:0]  ResetVal = 1'b0   // value held in reset (idle level)

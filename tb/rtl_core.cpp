@@ -18,6 +18,15 @@ RtlCore::RtlCore() : top_(std::make_unique<VerilatedTop<Vsc_axis_core>>("sc_axis
   put_bits(m.pos_frac0_i, 0, FracBits, 0);
   m.start_i = 0;
   m.abort_i = 0;
+  // No external step source on the plain core (ExtStep = 0).
+  m.ext_sel_i = 0;
+  m.ext_req_i = 0;
+  m.ext_fwd_i = 0;
+  m.ext_hint_valid_i = 0;
+  m.ext_hint_i = 0;
+  m.ext_busy_i = 0;
+  m.ext_abort_i = 0;
+  m.ext_done_i = 0;
   m.eval();
 }
 

@@ -4,10 +4,12 @@
 // error fault, and weight boundedness/convergence over a paper group.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
 #include "closed_loop_run.h"
+#include "plant.h"
 #include "scenarios.h"
 
 namespace sc {
@@ -149,6 +151,136 @@ TEST(ClosedLoopLockstep, FollowingErrorFault) {
   EXPECT_GT(r.max_error, 50.0);
   EXPECT_LT(r.max_error, 60.0);  // stopped promptly (one control period after)
 }
+
+// A DIR setup time (65535 clocks, 3.3 ms) far longer than a step period at
+// 200k pulses/s, on a backward move (DIR starts forward): the core arms
+// first (DIR turned and held for the setup time) and only then starts the
+// reference, and in closed loop the controller and NCO with it, so no step
+// queues behind the DIR change. Both modes of sc_servo_axis, RTL and model
+// in lockstep.
+MoveRequest fast_backward_move() {
+  MoveRequest r;
+  r.distance = -20000;
+  r.v_start = 0;
+  r.v_cruise = 200000;
+  r.v_end = 0;
+  r.a_max = 1e8;
+  r.j_max = 1e11;
+  return r;
+}
+
+// The move cruises at the step-rate limit 1 / (high + low) = 200k pulses/s:
+// the rate command may use all of it (the default 90 % could not follow),
+// and the rotor's lag, never caught up at that rate, reaches ~500 pulses.
+constexpr double kFastMoveULim = 200000;
+constexpr double kFastMoveFerrLim = 2000;
+
+PulseTiming long_dir_setup() {
+  PulseTiming t;
+  t.setup = 65535;
+  return t;
+}
+
+Plan plan_with(const MoveRequest& r, const PulseTiming& t) {
+  const PlanResult p = plan_move(r, t);
+  if (const auto* e = std::get_if<PlanError>(&p)) {
+    ADD_FAILURE() << e->message;
+    return Plan{};
+  }
+  return std::get<Plan>(p);
+}
+
+void expect_long_dir_setup_move_exact(bool closed_loop) {
+  ClosedLoopOptions o;
+  o.engine = ClEngine::Lockstep;
+  o.timing = long_dir_setup();
+  o.ctl.closed_loop = closed_loop;
+  o.ctl.u_lim = kFastMoveULim;
+  o.ctl.ferr_lim = kFastMoveFerrLim;
+  const Plan plan = plan_with(fast_backward_move(), o.timing);
+  ASSERT_FALSE(plan.segments.empty());
+  const ClosedLoopResult r = run_closed_loop(plan, o);
+  EXPECT_EQ(r.mismatches, 0u) << r.first_mismatch;
+  EXPECT_GT(r.matched_clocks, 2000000u);
+  EXPECT_FALSE(r.fault_overrun);
+  EXPECT_FALSE(r.fault_ferr);
+  EXPECT_EQ(r.final_error, 0);
+  EXPECT_EQ(r.pulses, -20000);
+  EXPECT_TRUE(r.pass()) << (r.failures.empty() ? "" : r.failures.front());
+  std::printf("%s: clocks %llu max_err %.3f rmse %.4f final %lld\n", closed_loop ? "closed loop" : "open loop",
+              (unsigned long long)r.clocks, r.max_error, r.rmse, (long long)r.final_error);
+}
+
+TEST(ClosedLoopLockstep, LongDirSetupOpenLoopThroughServoEndsExactWithoutOverrun) {
+  expect_long_dir_setup_move_exact(false);
+}
+
+TEST(ClosedLoopLockstep, LongDirSetupClosedLoopEndsExactWithoutOverrun) {
+  expect_long_dir_setup_move_exact(true);
+}
+
+// The same move on the model alone, judged on its pins only (not against
+// the RTL): the net count of STEP rising edges, signed by DIR, is the
+// distance; every rising edge comes at least the setup time after the last
+// DIR change; no STEP rises once done; the step queue never overflows.
+void expect_pins_match_distance(bool closed_loop) {
+  const PulseTiming t = long_dir_setup();
+  const Plan plan = plan_with(fast_backward_move(), t);
+  ASSERT_FALSE(plan.segments.empty());
+  ControllerParams p;
+  p.closed_loop = closed_loop;
+  p.u_lim = kFastMoveULim;
+  p.ferr_lim = kFastMoveFerrLim;
+  const PlantConfig pc;
+  ServoInputs in;
+  ASSERT_EQ(to_servo_config(p, pc, t, in.cfg), "");
+  ServoAxis m;
+  Plant plant(pc, ClkHz);
+  bool prev_step = false, prev_dir = m.outputs().dir, done = false, overrun = false;
+  uint64_t dir_age = 0, min_setup = UINT64_MAX, rises_after_done = 0;
+  int64_t net = 0;
+  auto clock = [&](const ServoInputs& si) {
+    m.step(si);
+    const ServoOutputs o = m.outputs();
+    dir_age = o.dir == prev_dir ? dir_age + 1 : 0;
+    if (o.step && !prev_step) {
+      net += o.dir ? 1 : -1;
+      min_setup = std::min(min_setup, dir_age);
+      if (done) ++rises_after_done;
+    }
+    prev_step = o.step;
+    prev_dir = o.dir;
+    done = done || o.done;
+    overrun = overrun || o.fault_overrun;
+    plant.clock(o.step, o.dir);
+    in.enc_a = plant.enc_a();
+    in.enc_b = plant.enc_b();
+  };
+  for (size_t i = 0; i < plan.segments.size(); ++i) {
+    ServoInputs w = in;
+    w.seg_we = true;
+    w.seg_waddr = uint8_t(i);
+    w.seg_wdata = plan.segments[i];
+    clock(w);
+  }
+  in.seg_count = uint8_t(plan.segments.size());
+  in.pos_frac0 = plan.pos_frac0;
+  ServoInputs st = in;
+  st.start = true;
+  clock(st);
+  const uint64_t limit = plan.total_clocks + uint64_t(2 * ClkHz);
+  for (uint64_t n = 0; n < limit && !done; ++n) clock(in);
+  for (uint64_t n = 0; n < ClkHz / 100; ++n) clock(in);  // 10 ms after done
+  EXPECT_TRUE(done);
+  EXPECT_FALSE(overrun);
+  EXPECT_EQ(net, plan.distance);
+  EXPECT_GE(min_setup, t.setup);
+  EXPECT_EQ(rises_after_done, 0u);
+}
+
+TEST(ServoAxisPins, LongDirSetupOpenLoopStepEdgesSumToDistance) { expect_pins_match_distance(false); }
+
+TEST(ServoAxisPins, LongDirSetupClosedLoopStepEdgesSumToDistance) { expect_pins_match_distance(true); }
 
 // Weights over a full paper group (model engine, bit-exact with the RTL):
 // bounded at every sample, they adapt fast during the start transient and

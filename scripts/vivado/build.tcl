@@ -21,10 +21,11 @@ file mkdir $out
 set rtl_files {
   sc_pkg.sv
   sc_step_gen.sv
+  sc_profile_exec.sv
   sc_step_nco.sv
   sc_neuron_pi.sv
   sc_quad_decoder.sv
-  sc_profile_exec.sv
+  sc_axis_core.sv
   sc_servo_axis.sv
   sc_axi_regs.sv
   sc_axi_servo.sv

@@ -210,6 +210,22 @@ int sc_main(int argc, char** argv) {
   dut.pos_frac0_i(pos_frac0);
   dut.start_i(start);
   dut.abort_i(abort_sig);
+  // No external step source on the plain core (ExtStep = 0): one constant
+  // low signal for every ext_* input; the extra outputs are not observed.
+  sc_signal<bool> ext_off("ext_off");
+  sc_signal<bool> exec_start("exec_start"), abort_q("abort_q"), ref_done("ref_done"), step_busy("step_busy");
+  dut.ext_sel_i(ext_off);
+  dut.ext_req_i(ext_off);
+  dut.ext_fwd_i(ext_off);
+  dut.ext_hint_valid_i(ext_off);
+  dut.ext_hint_i(ext_off);
+  dut.ext_busy_i(ext_off);
+  dut.ext_abort_i(ext_off);
+  dut.ext_done_i(ext_off);
+  dut.exec_start_o(exec_start);
+  dut.abort_o(abort_q);
+  dut.ref_done_o(ref_done);
+  dut.step_busy_o(step_busy);
   dut.step_o(step);
   dut.dir_o(dir);
   dut.en_o(en);
