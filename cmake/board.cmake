@@ -36,10 +36,9 @@ add_custom_command(
   COMMENT "sc_regmap.h from sc_pkg.sv")
 add_custom_target(sc_regmap DEPENDS ${GEN_DIR}/sc_regmap.h)
 
-# ---- model of the register file + host-side encoding ---------------------------
+# ---- model of the register file (host-side encoding: sw/, scurve::host) --------
 add_library(sc_board_model STATIC
-  cmodel/axi_regs.cpp
-  cmodel/reg_encode.cpp)
+  cmodel/axi_regs.cpp)
 add_dependencies(sc_board_model sc_regmap sc_params)
 target_include_directories(sc_board_model PUBLIC cmodel ${GEN_DIR})
 target_link_libraries(sc_board_model PUBLIC sc_model sc_cl_model fmt::fmt)
@@ -73,13 +72,6 @@ verilate(sc_board_rtl
   OPT_FAST -O2
   OPT_SLOW -O1
   OPT_GLOBAL -O2)
-
-# `scurve regs`: a planned move as register writes / UART frames
-add_library(sc_regs_cli STATIC tb/regs_cli.cpp)
-target_include_directories(sc_regs_cli PUBLIC tb)
-target_link_libraries(sc_regs_cli PUBLIC sc_board_model sc_model sc_cl_tb nlohmann_json::nlohmann_json)
-target_compile_options(sc_regs_cli PRIVATE ${SC_WARN})
-target_link_libraries(scurve PRIVATE sc_regs_cli)
 
 # ---- tests ----------------------------------------------------------------------------
 add_executable(board_tests tests/test_board.cpp tests/test_board_servo.cpp)

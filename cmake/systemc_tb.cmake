@@ -42,7 +42,7 @@ add_library(sc_bench_parts STATIC
   tb/lockstep.cpp
   tb/pin_monitor.cpp)
 target_include_directories(sc_bench_parts PUBLIC tb/systemc tb PRIVATE ${VERILATOR_ROOT}/include/gtkwave)
-target_link_libraries(sc_bench_parts PUBLIC sc_kin_trace sc_model fmt::fmt nlohmann_json::nlohmann_json)
+target_link_libraries(sc_bench_parts PUBLIC sc_kin_trace sc_model scurve::host_cli fmt::fmt nlohmann_json::nlohmann_json)
 target_compile_options(sc_bench_parts PRIVATE ${SC_WARN})
 
 # The --cc RTL as a bench core: only the batched bench links it.
