@@ -55,6 +55,15 @@ Limits4Check at_model_clock(Limits4Check l, scurve::Clock clock) {
   return l;
 }
 
+// And a run's times and peaks back from the model's time base to the board's.
+void to_board_clock(SimResult& s, scurve::Clock clock) {
+  const double r = double(ClkHz) / clock.hz;
+  s.duration_s *= r;
+  s.peak_velocity /= r;
+  s.peak_acceleration /= r * r;
+  s.peak_jerk /= r * r * r;
+}
+
 // One progress line on a terminal for long runs.
 class Progress {
  public:
@@ -176,6 +185,7 @@ int main(int argc, char** argv) {
       } catch (const std::exception& e) {
         results[i].failures.push_back(e.what());
       }
+      to_board_clock(results[i], clock);
       results[i].name = jobs_list[i].name;
     }
   };

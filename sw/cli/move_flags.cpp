@@ -66,7 +66,8 @@ Clock to_clock(const MoveFlags& f) { return Clock{f.clock_hz}; }
 
 std::string check_clock_flag(double hz) {
   if (!std::isfinite(hz) || !(hz > 0)) {
-    return fmt::format("--clock-hz={}: must be a positive finite number of Hz", hz);
+    return fmt::format("--clock-hz={}: must be a positive, finite number within {:.0f}..{:.0f} Hz", hz, Clock::kMinHz,
+                       Clock::kMaxHz);
   }
   if (hz < Clock::kMinHz || hz > Clock::kMaxHz) {
     return fmt::format("--clock-hz={}: outside the accepted range {:.0f}..{:.0f} Hz", hz, Clock::kMinHz,

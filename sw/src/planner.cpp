@@ -219,7 +219,10 @@ double step_rate_limit(const PulseTiming& timing, Clock clock) {
 }
 
 std::string check_clock(const Clock& clock) {
-  if (!std::isfinite(clock.hz)) return fmt::format("clock_hz={}: must be a finite number", clock.hz);
+  if (!std::isfinite(clock.hz)) {
+    return fmt::format("clock_hz={}: must be a finite number within {}..{} Hz", clock.hz, num(Clock::kMinHz),
+                       num(Clock::kMaxHz));
+  }
   if (!(clock.hz >= Clock::kMinHz && clock.hz <= Clock::kMaxHz)) {
     return fmt::format("clock_hz={}: outside the accepted range {}..{} Hz", num(clock.hz), num(Clock::kMinHz),
                        num(Clock::kMaxHz));

@@ -21,8 +21,10 @@ for cmd in plan regs ${with_sim:+sim}; do
   for bad in 0 -25e6 nan inf 1e12 500000; do
     expect_bad "$exe" $cmd $move --clock-hz $bad
   done
-  "$exe" $cmd $move --clock-hz 500000 2>&1 | grep -q "1000000..1000000000 Hz" \
-    || { echo "FAIL: $cmd bound not named"; fail=1; }
+  for bad in 500000 nan -1; do
+    "$exe" $cmd $move --clock-hz $bad 2>&1 | grep -q "1000000..1000000000 Hz" \
+      || { echo "FAIL: $cmd --clock-hz $bad: bound not named"; fail=1; }
+  done
 done
 
 a=$("$exe" plan $move --json) || { echo "FAIL: plan"; fail=1; }
