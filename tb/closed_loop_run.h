@@ -11,36 +11,15 @@
 #include "lockstep.h"
 #include "plant.h"
 #include "planner.h"
+#include "scurve/servo_config.h"
 #include "servo_axis.h"
 
 namespace sc {
 
-// Controller settings in physical units; to_servo_config() turns them into
-// the fixed-point cfg_* words of sc_servo_axis.
-struct ControllerParams {
-  bool closed_loop = true;
-  double rate_hz = 10000;       // control rate (cfg_div = ClkHz / rate)
-  bool ff = true;               // velocity feed-forward from V*
-  bool adaptive = true;         // false: learning rates 0 (fixed-gain PI)
-  double k_p = 0.004;           // position neuron gain K_p (per control period)
-  double k_v = 0.02;            // speed neuron gain K_v
-  double eta_p1 = 0.20, eta_p2 = 0.20, eta_v1 = 0.15, eta_v2 = 0.10;  // paper 000
-  int learn_shift = 10;         // Hebb scale 2^-learn_shift (counts^2 -> weight)
-  double learn_dz_p = 0.75;     // counts: no position-loop learning while |e_p| <= this
-  double learn_dz_v = 1.5;      // counts/period: no speed-loop learning while |e_v| <= this
-  double w_p1 = 0.0, w_p2 = 64, w_v1 = 64, w_v2 = 16;  // initial weights (w_p1 learns up)
-  double fixed_w_p1 = 0.125;    // integral weight of the fixed-gain PI (adaptive: w_p1, learned)
-  double w_min = 0.0;           // lower bound, all weights
-  double w_p1_max = 0.5, w_p2_max = 127, w_v1_max = 127, w_v2_max = 32;  // upper bounds
-  double kb = 1.0;              // back-calculation gain
-  double v_lim = 5000;          // |position-loop output|, pulses/s
-  double u_lim = 0;             // |u|, pulses/s (0: 90 % of the step-rate limit)
-  double ferr_lim = 500;        // following-error fault, pulses
-  double inpos_win = 0;         // in-position window, pulses
-  double inpos_hold_s = 0.005;  // in-position hold time
-  double settle_rate = 500;     // pulses/s: corrective steps after the reference is done
-  int enc_filt = 3;             // glitch filter, clocks
-};
+// Controller settings in physical units (host library, sw/);
+// to_servo_config() turns them into the fixed-point cfg_* words of
+// sc_servo_axis at the model's clock.
+using ControllerParams = scurve::ControllerParams;
 
 // Error message (empty = ok) for parameters that cannot be encoded.
 std::string to_servo_config(const ControllerParams& p, const PlantConfig& plant, const PulseTiming& t,

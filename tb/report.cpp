@@ -4,57 +4,6 @@
 
 namespace sc {
 
-nlohmann::json plan_to_json(const Plan& p) {
-  nlohmann::json segs = nlohmann::json::array();
-  uint64_t t = 0;
-  for (const Segment& s : p.segments) {
-    segs.push_back({
-        {"phase", phase_name(s.phase)},
-        {"phase_code", int(s.phase)},
-        {"start_clock", t},
-        {"clocks", s.clocks},
-        {"duration_s", double(s.clocks) / ClkHz},
-        {"jerk", jerk_to_phys(s.jerk)},
-        {"acc0", acc_to_phys(s.acc0)},
-        {"vel0", vel_to_phys(s.vel0)},
-        {"jerk_lsb", to_string_i128(s.jerk)},
-        {"acc0_lsb", to_string_i128(s.acc0)},
-        {"vel0_lsb", to_string_i128(s.vel0)},
-    });
-    t += s.clocks;
-  }
-  return {
-      {"pulses", p.distance},
-      {"duration_s", p.duration_s},
-      {"clocks", p.total_clocks},
-      {"peak_velocity", p.peak_velocity},
-      {"peak_acceleration", p.peak_acceleration},
-      {"peak_jerk", p.peak_jerk},
-      {"v_plateau", p.v_plateau},
-      {"v_end_actual", p.v_end_actual},
-      {"end_speed_adjusted", p.end_speed_adjusted},
-      {"v_end_used", p.v_end_used},
-      {"pos_frac0", to_hex_u128(p.pos_frac0, FracBits)},
-      {"lsb", {{"frac_bits", FracBits}, {"clock_hz", ClkHz}}},
-      {"segments", segs},
-  };
-}
-
-std::string plan_to_table(const Plan& p) {
-  std::string s = fmt::format("{:>3} {:<14} {:>12} {:>11} {:>14} {:>14} {:>12}\n", "#", "phase", "clocks",
-                              "time_s", "jerk_p/s3", "acc0_p/s2", "vel0_p/s");
-  int i = 0;
-  for (const Segment& g : p.segments) {
-    s += fmt::format("{:>3} {:<14} {:>12} {:>11.6f} {:>14.3f} {:>14.3f} {:>12.4f}\n", i++, phase_name(g.phase),
-                     g.clocks, double(g.clocks) / ClkHz, jerk_to_phys(g.jerk), acc_to_phys(g.acc0),
-                     vel_to_phys(g.vel0));
-  }
-  s += fmt::format("pulses {}  duration {:.6f} s ({} clocks)  peak v {:.4f} p/s  a {:.4f} p/s^2  j {:.4f} p/s^3\n",
-                   p.distance, p.duration_s, p.total_clocks, p.peak_velocity, p.peak_acceleration, p.peak_jerk);
-  if (p.end_speed_adjusted) s += fmt::format("note: end speed adjusted to {:.4f} p/s\n", p.v_end_used);
-  return s;
-}
-
 nlohmann::json sim_to_json(const SimResult& r) {
   nlohmann::json runs = nlohmann::json::array();
   for (const PhaseRun& pr : r.phase_runs) {

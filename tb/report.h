@@ -1,4 +1,5 @@
-// JSON and table renderings of plans and simulation results (CLI, regress).
+// JSON and table renderings of simulation results (CLI, regress); plans:
+// scurve/cli/plan_report.h.
 #pragma once
 
 #include <nlohmann/json.hpp>
@@ -10,8 +11,6 @@
 
 namespace sc {
 
-nlohmann::json plan_to_json(const Plan& p);
-std::string plan_to_table(const Plan& p);
 nlohmann::json sim_to_json(const SimResult& r);
 std::string sim_table(const std::vector<SimResult>& rs);
 

@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -17,6 +18,7 @@
 #include "pin_monitor.h"
 #include "planner.h"
 #include "scenarios.h"
+#include "scurve/cli/move_flags.h"
 
 namespace sc::bench {
 
@@ -435,22 +437,9 @@ std::unique_ptr<BenchRun> BenchRun::from_args(int argc, char** argv, bool batche
                        : "sc_bench_pin: SystemC lockstep bench, pin-accurate Verilated --sc RTL on an sc_clock"};
   BenchOptions opt;
   int group = 0;
-  MoveRequest req;
-  std::string profile = "scurve";
-  PulseTiming t;
-  int high = t.high, low = t.low, setup = t.setup, hold = t.hold;
+  scurve::cli::MoveFlags move;  // the move flags of `scurve plan` / `scurve sim`
   app.add_option("--group", group, "paper 000 Table 2 group 1..4 (L=30000, a=500, j=2500)")->check(CLI::Range(1, 4));
-  app.add_option("--distance", req.distance, "move length in pulses (sign = direction)");
-  app.add_option("--v-start", req.v_start, "start speed, pulses/s");
-  app.add_option("--v-cruise", req.v_cruise, "cruise speed, pulses/s");
-  app.add_option("--v-end", req.v_end, "end speed, pulses/s");
-  app.add_option("--a-max", req.a_max, "acceleration limit, pulses/s^2");
-  app.add_option("--j-max", req.j_max, "jerk limit, pulses/s^3");
-  app.add_option("--profile", profile, "scurve | trapezoid")->check(CLI::IsMember({"scurve", "trapezoid"}));
-  app.add_option("--pulse-high", high, "STEP high time, clocks")->check(CLI::Range(1, 65535));
-  app.add_option("--pulse-low", low, "minimum STEP low time, clocks")->check(CLI::Range(1, 65535));
-  app.add_option("--dir-setup", setup, "DIR setup before STEP rise, clocks")->check(CLI::Range(0, 65535));
-  app.add_option("--dir-hold", hold, "DIR hold after STEP rise, clocks")->check(CLI::Range(0, 65535));
+  scurve::cli::add_move_flags(&app, move);
   app.add_option("--name", opt.name, "run name in the report");
   app.add_flag("--json", opt.json, "print one JSON object");
   app.add_option("--trace-rtl", opt.trace_rtl, "kinematics trace (CSV) of the RTL");
@@ -482,6 +471,7 @@ std::unique_ptr<BenchRun> BenchRun::from_args(int argc, char** argv, bool batche
     return nullptr;
   }
   std::string name = opt.name;
+  MoveRequest req = scurve::cli::to_request(move);
   if (group) {
     req = paper_group(group);
     if (name.empty()) name = paper_group_name(group);
@@ -491,13 +481,9 @@ std::unique_ptr<BenchRun> BenchRun::from_args(int argc, char** argv, bool batche
       *exit_code = 2;
       return nullptr;
     }
-    req.kind = profile == "trapezoid" ? ProfileKind::Trapezoid : ProfileKind::SCurve;
     if (name.empty()) name = "move";
   }
-  t.high = uint16_t(high);
-  t.low = uint16_t(low);
-  t.setup = uint16_t(setup);
-  t.hold = uint16_t(hold);
+  const PulseTiming t = to_model(scurve::cli::to_timing(move));
   PlanResult r = plan_move(req, t);
   if (const auto* e = std::get_if<PlanError>(&r)) {
     std::fprintf(stderr, "error: %s\n", e->message.c_str());
@@ -509,7 +495,9 @@ std::unique_ptr<BenchRun> BenchRun::from_args(int argc, char** argv, bool batche
   Limits lim;
   lim.v_max = std::max({req.v_cruise, req.v_start, plan.v_end_used});
   lim.a_max = req.a_max;
-  if (req.kind == ProfileKind::SCurve) lim.j_max = req.j_max;
+  if (req.kind == ProfileKind::SCurve) {
+    lim.j_max = req.jerks ? std::max({(*req.jerks)[0], (*req.jerks)[1], (*req.jerks)[2], (*req.jerks)[3]}) : req.j_max;
+  }
   *exit_code = 0;
   return std::make_unique<BenchRunImpl>(opt, name, std::move(plan), t, lim);
 }

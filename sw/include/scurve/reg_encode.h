@@ -7,11 +7,10 @@
 #include <string>
 #include <vector>
 
-#include "planner.h"
-#include "servo_axis.h"
-#include "step_gen.h"
+#include "scurve/planner.h"
+#include "scurve/servo_config.h"
 
-namespace sc {
+namespace scurve {
 
 struct RegWrite {
   uint32_t addr = 0;
@@ -25,8 +24,8 @@ std::string reg_name(uint32_t addr);
 // SEG_COUNT, POS_FRAC0 and, if `start`, CMD.START.
 std::vector<RegWrite> encode_move(const Plan& plan, const PulseTiming& timing, bool start = true);
 // The controller settings of sc_axi_servo (CL_CFG .. SETTLE_RATE, in
-// address order) for a closed-loop configuration (inverse of
-// AxiServo::decode_config; enable/closed_loop/timing are not in them).
+// address order) for a closed-loop configuration (the register file decodes
+// them back; enable/closed_loop/timing are not in them).
 std::vector<RegWrite> encode_servo_config(const ServoConfig& c);
 // One row's staging writes and its commit.
 std::vector<RegWrite> encode_row(const Segment& s, unsigned row);
@@ -45,4 +44,4 @@ struct UartResponse {
 // Parse a response to a write (is_read = false) or read request.
 UartResponse parse_uart_response(const std::vector<uint8_t>& bytes, bool is_read);
 
-}  // namespace sc
+}  // namespace scurve

@@ -1,14 +1,16 @@
-#include "regs_cli.h"
+#include "scurve/cli/regs_cli.h"
 
 #include <fmt/format.h>
 
 #include <iostream>
 #include <nlohmann/json.hpp>
 
-#include "closed_loop_run.h"
-#include "reg_encode.h"
+#include "scurve/reg_encode.h"
+#include "scurve/servo_config.h"
 
-namespace sc {
+namespace scurve::cli {
+
+using namespace hw;
 
 void add_regs_flags(CLI::App* cmd, RegsCliFlags& f) {
   cmd->add_flag("--uart", f.uart, "print the UART bridge frames (hex bytes, CRC-8) instead of address = data");
@@ -21,12 +23,13 @@ void add_regs_flags(CLI::App* cmd, RegsCliFlags& f) {
 int run_regs_cli(const RegsCliFlags& f, const Plan& plan, const PulseTiming& timing, bool json) {
   std::vector<RegWrite> writes = encode_move(plan, timing, !f.no_start);
   if (f.closed_loop) {
-    ServoConfig cfg;
-    if (const std::string err = to_servo_config(ControllerParams{}, PlantConfig{}, timing, cfg); !err.empty()) {
-      std::cerr << "scurve regs --closed-loop: " << err << "\n";
+    const double counts_per_step = 1.0;  // the closed-loop runner's default encoder
+    const ServoConfigResult r = to_servo_config(ControllerParams{}, counts_per_step, timing, plan.clock);
+    if (const Error* err = std::get_if<Error>(&r)) {
+      std::cerr << "scurve regs --closed-loop: " << err->message << "\n";
       return 2;
     }
-    std::vector<RegWrite> cl = encode_servo_config(cfg);
+    std::vector<RegWrite> cl = encode_servo_config(std::get<ServoConfig>(r));
     cl.insert(cl.begin(), RegWrite{uint32_t(RegCtrl), (1u << CtrlEnableBit) | (1u << CtrlClosedBit)});
     writes.erase(writes.begin());  // CTRL = enable: replaced by the closed-loop CTRL write
     writes.insert(writes.begin(), cl.begin(), cl.end());
@@ -57,4 +60,4 @@ int run_regs_cli(const RegsCliFlags& f, const Plan& plan, const PulseTiming& tim
   return 0;
 }
 
-}  // namespace sc
+}  // namespace scurve::cli

@@ -1,10 +1,12 @@
-#include "reg_encode.h"
+#include "scurve/reg_encode.h"
 
 #include <fmt/format.h>
 
-#include "sc_regmap.h"
+#include "scurve/hw/regmap.h"
 
-namespace sc {
+namespace scurve {
+
+using namespace hw;
 
 std::string reg_name(uint32_t addr) {
   for (const regmap::Reg& r : regmap::kRegs)
@@ -112,4 +114,4 @@ UartResponse parse_uart_response(const std::vector<uint8_t>& b, bool is_read) {
   return r;
 }
 
-}  // namespace sc
+}  // namespace scurve

@@ -4,10 +4,9 @@
 
 #include <CLI/CLI.hpp>
 
-#include "planner.h"
-#include "step_gen.h"
+#include "scurve/planner.h"
 
-namespace sc {
+namespace scurve::cli {
 
 struct RegsCliFlags {
   bool uart = false;      // print UART frames (hex) instead of address/data
@@ -16,6 +15,7 @@ struct RegsCliFlags {
 };
 
 void add_regs_flags(CLI::App* cmd, RegsCliFlags& f);
+// Prints the writes for `plan` (its clock sets the controller's period).
 int run_regs_cli(const RegsCliFlags& f, const Plan& plan, const PulseTiming& timing, bool json);
 
-}  // namespace sc
+}  // namespace scurve::cli

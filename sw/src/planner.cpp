@@ -1,4 +1,4 @@
-#include "planner.h"
+#include "scurve/planner.h"
 
 #include <fmt/format.h>
 
@@ -6,14 +6,22 @@
 #include <cmath>
 #include <limits>
 
-namespace sc {
+namespace scurve {
+
+using hw::MaxSegs;
+using hw::SegClkW;
 
 namespace {
 
-constexpr double kF = double(ClkHz);
-constexpr double kVelScale = kTwoPowFrac / kF;               // LSB per pulse/s
-constexpr double kAccScale = kTwoPowFrac / (kF * kF);        // LSB per pulse/s^2
-constexpr double kJerkScale = kTwoPowFrac / (kF * kF * kF);  // LSB per pulse/s^3
+// The clock rate and the LSB scales derived from it.
+struct Units {
+  double f;     // clock, Hz
+  double vel;   // LSB per pulse/s
+  double acc;   // LSB per pulse/s^2
+  double jerk;  // LSB per pulse/s^3
+  explicit Units(Clock c)
+      : f(c.hz), vel(vel_lsb_per_unit(c)), acc(acc_lsb_per_unit(c)), jerk(jerk_lsb_per_unit(c)) {}
+};
 constexpr uint64_t kMaxRowClocks = (uint64_t(1) << SegClkW) - 1;
 // Transitions whose estimated length exceeds this are treated as infeasible
 // before any exact arithmetic, which keeps every closed form far from the
@@ -45,7 +53,7 @@ i128 row_gain(const Row& r) { return pos_gain(r.vel0, r.acc0, r.jerk, r.clocks);
 // The realised change never exceeds dv and falls short by less than one
 // clock at the peak acceleration.
 Transition make_transition(i128 v_a, i128 dv, int s, int64_t j_in, int64_t j_out,
-                           int64_t a_max, bool trapezoid) {
+                           int64_t a_max, bool trapezoid, const Units& u) {
   Transition t;
   t.v_end = v_a;
   if (dv <= 0) return t;
@@ -53,10 +61,10 @@ Transition make_transition(i128 v_a, i128 dv, int s, int64_t j_in, int64_t j_out
   const Phase ph_const = s > 0 ? Phase::PhAccConst : Phase::PhDecConst;
   const Phase ph_down = s > 0 ? Phase::PhAccJerkDown : Phase::PhDecJerkDown;
   const double dvd = double(dv);
-  const double v_hi = std::max(double(v_a), double(v_a) + s * dvd) / kVelScale;
+  const double v_hi = std::max(double(v_a), double(v_a) + s * dvd) / u.vel;
 
   if (trapezoid) {
-    const double secs = dvd / double(a_max) / kF;
+    const double secs = dvd / double(a_max) / u.f;
     if (secs * v_hi > kFarPulses) {
       t.too_far = true;
       return t;
@@ -73,7 +81,7 @@ Transition make_transition(i128 v_a, i128 dv, int s, int64_t j_in, int64_t j_out
     const double a_peak =
         dvd >= thresh ? a_full : std::sqrt(2.0 * dvd / (1.0 / double(j_in) + 1.0 / double(j_out)));
     const double secs = (a_peak / double(j_in) + a_peak / double(j_out) +
-                         std::max(0.0, dvd - thresh) / a_full) / kF;
+                         std::max(0.0, dvd - thresh) / a_full) / u.f;
     if (secs * v_hi > kFarPulses) {
       t.too_far = true;
       return t;
@@ -143,15 +151,16 @@ struct Limits {
   int64_t a_max;
   int64_t j_acc_in, j_acc_out, j_dec_in, j_dec_out;
   bool trapezoid;
+  Units units;
 };
 
 Transition transition_to(i128 v_from, i128 v_to, const Limits& lim) {
   if (v_to >= v_from) {
     return make_transition(v_from, v_to - v_from, +1, lim.j_acc_in, lim.j_acc_out, lim.a_max,
-                           lim.trapezoid);
+                           lim.trapezoid, lim.units);
   }
   return make_transition(v_from, v_from - v_to, -1, lim.j_dec_in, lim.j_dec_out, lim.a_max,
-                         lim.trapezoid);
+                         lim.trapezoid, lim.units);
 }
 
 struct Candidate {
@@ -163,7 +172,7 @@ struct Candidate {
 
 Candidate evaluate(i128 vs, double v1, i128 ve, i128 target, const Limits& lim) {
   Candidate c;
-  const i128 v1_lsb = std::min(i128(std::floor(v1 * kVelScale)), lim.v_rate);
+  const i128 v1_lsb = std::min(i128(std::floor(v1 * lim.units.vel)), lim.v_rate);
   c.t1 = transition_to(vs, v1_lsb, lim);
   c.t2 = transition_to(c.t1.v_end, ve, lim);
   c.too_far = c.t1.too_far || c.t2.too_far;
@@ -205,12 +214,39 @@ int64_t needed_distance(const Candidate& c, i128 target) {
 // refine_minimum: on an unreachable end speed, search the shortest distance
 // the planner accepts, so the message names the true minimum (the closed-form
 // estimate can be a pulse or two high). The search itself plans without it.
-PlanResult plan_magnitude(const MoveRequest& req, const PulseTiming& timing, double v_end, bool refine_minimum = true);
+PlanResult plan_magnitude(const MoveRequest& req, const PulseTiming& timing, double v_end, Clock clock,
+                          bool refine_minimum = true);
 
 }  // namespace
 
-double step_rate_limit(const PulseTiming& timing) {
-  return kF / (double(timing.high) + double(timing.low));
+double step_rate_limit(const PulseTiming& timing, Clock clock) {
+  return clock.hz / (double(timing.high) + double(timing.low));
+}
+
+std::string check_clock(const Clock& clock) {
+  if (!std::isfinite(clock.hz)) {
+    return fmt::format("clock_hz={}: must be a finite number within {}..{} Hz", clock.hz, num(Clock::kMinHz),
+                       num(Clock::kMaxHz));
+  }
+  if (!(clock.hz >= Clock::kMinHz && clock.hz <= Clock::kMaxHz)) {
+    return fmt::format("clock_hz={}: outside the accepted range {}..{} Hz", num(clock.hz), num(Clock::kMinHz),
+                       num(Clock::kMaxHz));
+  }
+  return {};
+}
+
+// One LSB at least, half the register range at most (room for the per-clock
+// sums), within the PlannerLimits bounds.
+LimitRange accel_range(Clock clock) {
+  const double lsb = 1.0 / acc_lsb_per_unit(clock);
+  const double top = std::ldexp(1.0, hw::AccW - 2) * lsb;
+  return {std::max(PlannerLimits::kMinAccel, lsb), std::min(PlannerLimits::kMaxAccel, top)};
+}
+
+LimitRange jerk_range(Clock clock) {
+  const double lsb = 1.0 / jerk_lsb_per_unit(clock);
+  const double top = std::ldexp(1.0, hw::JerkW - 2) * lsb;
+  return {std::max(PlannerLimits::kMinJerk, lsb), std::min(PlannerLimits::kMaxJerk, top)};
 }
 
 const char* phase_name(Phase p) {
@@ -230,8 +266,10 @@ const char* phase_name(Phase p) {
   return "?";
 }
 
-PlanResult plan_move(const MoveRequest& req, const PulseTiming& timing) {
+PlanResult Planner::plan(const MoveRequest& req, const PulseTiming& timing) const {
+  const Clock clock = clock_;
   // ---- limits checked before solving ------------------------------------
+  if (std::string e = check_clock(clock); !e.empty()) return PlanError{"clock_hz", e};
   if (timing.high < 1) return PlanError{"pulse_high", "pulse_high=0: must be >= 1 clock"};
   if (timing.low < 1) return PlanError{"pulse_low", "pulse_low=0: must be >= 1 clock"};
   if (req.distance == 0) return PlanError{"distance", "distance=0: must be non-zero"};
@@ -239,16 +277,17 @@ PlanResult plan_move(const MoveRequest& req, const PulseTiming& timing) {
     return PlanError{"distance", fmt::format("distance={}: exceeds the limit +-{} pulses",
                                              req.distance, PlannerLimits::kMaxDistance)};
   }
-  const double v_lim = step_rate_limit(timing);
+  const double v_lim = step_rate_limit(timing, clock);
   const std::string rate_note = fmt::format(
       " pulses/s (step-rate limit: pulse high {} + low {} clocks at {} MHz)", timing.high,
-      timing.low, ClkHz / 1e6);
+      timing.low, clock.hz / 1e6);
+  const LimitRange acc_ok = accel_range(clock), jerk_ok = jerk_range(clock);
   if (auto e = check_range("v_start", req.v_start, 0, v_lim, rate_note.c_str())) return *e;
   if (auto e = check_range("v_cruise", req.v_cruise, PlannerLimits::kMinCruise, v_lim, rate_note.c_str())) {
     return *e;
   }
   if (auto e = check_range("v_end", req.v_end, 0, v_lim, rate_note.c_str())) return *e;
-  if (auto e = check_range("a_max", req.a_max, PlannerLimits::kMinAccel, PlannerLimits::kMaxAccel,
+  if (auto e = check_range("a_max", req.a_max, acc_ok.lo, acc_ok.hi,
                            "pulses/s^2")) {
     return *e;
   }
@@ -256,19 +295,19 @@ PlanResult plan_move(const MoveRequest& req, const PulseTiming& timing) {
     if (req.jerks) {
       static const char* names[4] = {"jerk_ts1", "jerk_ts2", "jerk_te1", "jerk_te2"};
       for (int i = 0; i < 4; ++i) {
-        if (auto e = check_range(names[i], (*req.jerks)[i], PlannerLimits::kMinJerk,
-                                 PlannerLimits::kMaxJerk, "pulses/s^3")) {
+        if (auto e = check_range(names[i], (*req.jerks)[i], jerk_ok.lo, jerk_ok.hi,
+                                 "pulses/s^3")) {
           return *e;
         }
       }
-    } else if (auto e = check_range("j_max", req.j_max, PlannerLimits::kMinJerk,
-                                    PlannerLimits::kMaxJerk, "pulses/s^3")) {
+    } else if (auto e = check_range("j_max", req.j_max, jerk_ok.lo, jerk_ok.hi,
+                                    "pulses/s^3")) {
       return *e;
     }
   }
 
   // The minimum-distance search runs only for an error the user will see.
-  PlanResult r = plan_magnitude(req, timing, req.v_end, !req.adjust_end_speed);
+  PlanResult r = plan_magnitude(req, timing, req.v_end, clock, !req.adjust_end_speed);
   if (std::holds_alternative<PlanError>(r) && req.adjust_end_speed &&
       std::get<PlanError>(r).parameter == "v_end" && req.v_end != req.v_start) {
     // Bisect the end speed between v_start (always reachable) and v_end.
@@ -276,7 +315,7 @@ PlanResult plan_move(const MoveRequest& req, const PulseTiming& timing) {
     std::optional<Plan> best;
     for (int it = 0; it < 64; ++it) {
       const double mid = 0.5 * (ok + bad);
-      PlanResult m = plan_magnitude(req, timing, mid, false);
+      PlanResult m = plan_magnitude(req, timing, mid, clock, false);
       if (std::holds_alternative<Plan>(m)) {
         ok = mid;
         best = std::get<Plan>(m);
@@ -285,38 +324,40 @@ PlanResult plan_move(const MoveRequest& req, const PulseTiming& timing) {
       }
     }
     if (!best) {
-      PlanResult m = plan_magnitude(req, timing, req.v_start, false);
+      PlanResult m = plan_magnitude(req, timing, req.v_start, clock, false);
       if (std::holds_alternative<Plan>(m)) best = std::get<Plan>(m);
     }
     if (best) {
       best->end_speed_adjusted = true;
       return *best;
     }
-    return plan_magnitude(req, timing, req.v_end, true);
+    return plan_magnitude(req, timing, req.v_end, clock, true);
   }
   return r;
 }
 
 namespace {
 
-PlanResult plan_magnitude(const MoveRequest& req, const PulseTiming& timing, double v_end, bool refine_minimum) {
+PlanResult plan_magnitude(const MoveRequest& req, const PulseTiming& timing, double v_end, Clock clock,
+                          bool refine_minimum) {
+  const Units u(clock);
   const int dir = req.distance < 0 ? -1 : 1;
   const int64_t dist = req.distance * dir;
   const bool trap = req.kind == ProfileKind::Trapezoid;
-  Limits lim{};
+  Limits lim{0, 0, 0, 0, 0, 0, false, u};
   lim.v_rate = i128(kOne) / (i128(timing.high) + timing.low);
-  lim.a_max = int64_t(std::floor(req.a_max * kAccScale));
+  lim.a_max = int64_t(std::floor(req.a_max * u.acc));
   lim.trapezoid = trap;
   if (!trap) {
     std::array<double, 4> j = req.jerks.value_or(std::array<double, 4>{req.j_max, req.j_max,
                                                                        req.j_max, req.j_max});
-    lim.j_acc_in = int64_t(std::floor(j[0] * kJerkScale));
-    lim.j_acc_out = int64_t(std::floor(j[1] * kJerkScale));
-    lim.j_dec_in = int64_t(std::floor(j[2] * kJerkScale));
-    lim.j_dec_out = int64_t(std::floor(j[3] * kJerkScale));
+    lim.j_acc_in = int64_t(std::floor(j[0] * u.jerk));
+    lim.j_acc_out = int64_t(std::floor(j[1] * u.jerk));
+    lim.j_dec_in = int64_t(std::floor(j[2] * u.jerk));
+    lim.j_dec_out = int64_t(std::floor(j[3] * u.jerk));
   }
-  const i128 vs = std::min(i128(std::floor(req.v_start * kVelScale)), lim.v_rate);
-  const i128 ve = std::min(i128(std::floor(v_end * kVelScale)), lim.v_rate);
+  const i128 vs = std::min(i128(std::floor(req.v_start * u.vel)), lim.v_rate);
+  const i128 ve = std::min(i128(std::floor(v_end * u.vel)), lim.v_rate);
   const i128 target = pulses_to_lsb(dist) + (i128(kOne) >> 1);  // end mid-pulse
 
   // ---- choose the plateau velocity ---------------------------------------
@@ -338,7 +379,7 @@ PlanResult plan_magnitude(const MoveRequest& req, const PulseTiming& timing, dou
             MoveRequest r = req;
             r.distance = d * dir;
             return d <= PlannerLimits::kMaxDistance &&
-                   std::holds_alternative<Plan>(plan_magnitude(r, timing, v_end, false));
+                   std::holds_alternative<Plan>(plan_magnitude(r, timing, v_end, clock, false));
           };
           // Local search from the estimate: the result is accepted and one
           // pulse less is not.
@@ -412,9 +453,10 @@ PlanResult plan_magnitude(const MoveRequest& req, const PulseTiming& timing, dou
   if (rows_needed > uint64_t(MaxSegs)) {
     return PlanError{"distance", fmt::format("distance={}: the move needs {} table rows, the executor holds {} "
                                              "(a row lasts at most {:.1f} s); raise v_cruise or split the move",
-                                             dist, rows_needed, MaxSegs, kMaxRowClocks / kF)};
+                                             dist, rows_needed, MaxSegs, kMaxRowClocks / u.f)};
   }
   Plan plan;
+  plan.clock = clock;
   for (const Row& r0 : rows) {
     Row r = r0;
     while (r.clocks > 0) {
@@ -433,9 +475,9 @@ PlanResult plan_magnitude(const MoveRequest& req, const PulseTiming& timing, dou
   }
   plan.pos_frac0 = dir > 0 ? u128(p0) : kOne - u128(p0);
   plan.distance = req.distance;
-  plan.v_plateau = vel_to_phys(plateau);
+  plan.v_plateau = vel_to_phys(plateau, clock);
   plan.v_end_used = v_end;
-  plan.v_end_actual = vel_to_phys(c.t2.rows.empty() ? plateau : c.t2.v_end);
+  plan.v_end_actual = vel_to_phys(c.t2.rows.empty() ? plateau : c.t2.v_end, clock);
 
   // ---- re-check the result by executing it (Ruckig style) ----------------
   const TableReport rep = run_table(plan.segments, plan.pos_frac0, dir);
@@ -443,7 +485,7 @@ PlanResult plan_magnitude(const MoveRequest& req, const PulseTiming& timing, dou
   // peak acceleration; anything more is a planner bug (a dropped transition).
   const i128 v_end_real = c.t2.v_end;
   const i128 end_miss = v_end_real > ve ? v_end_real - ve : ve - v_end_real;
-  const i128 v_cap = std::min(i128(std::floor(std::max({req.v_cruise, req.v_start, v_end}) * kVelScale)),
+  const i128 v_cap = std::min(i128(std::floor(std::max({req.v_cruise, req.v_start, v_end}) * u.vel)),
                               lim.v_rate);
   const i128 v_rate = lim.v_rate;
   const int64_t j_cap = trap ? 0
@@ -460,10 +502,10 @@ PlanResult plan_magnitude(const MoveRequest& req, const PulseTiming& timing, dou
     return PlanError{"internal", fmt::format("internal planner error ({}); please report the request", why)};
   }
   plan.total_clocks = rep.clocks;
-  plan.duration_s = double(rep.clocks) / kF;
-  plan.peak_velocity = vel_to_phys(rep.peak_vel);
-  plan.peak_acceleration = acc_to_phys(rep.peak_acc);
-  plan.peak_jerk = jerk_to_phys(rep.peak_jerk);
+  plan.duration_s = double(rep.clocks) / u.f;
+  plan.peak_velocity = vel_to_phys(rep.peak_vel, clock);
+  plan.peak_acceleration = acc_to_phys(rep.peak_acc, clock);
+  plan.peak_jerk = jerk_to_phys(rep.peak_jerk, clock);
   return plan;
 }
 
@@ -528,4 +570,4 @@ TableReport run_table(const std::vector<Segment>& rows, u128 pos_frac0, int dire
   return rep;
 }
 
-}  // namespace sc
+}  // namespace scurve

@@ -14,11 +14,9 @@
 #include <variant>
 #include <vector>
 
-#include "fixed_point.h"
-#include "profile_exec.h"
-#include "step_gen.h"
+#include "scurve/types.h"
 
-namespace sc {
+namespace scurve {
 
 enum class ProfileKind { SCurve, Trapezoid };
 
@@ -38,7 +36,9 @@ struct MoveRequest {
   bool adjust_end_speed = false;
 };
 
-// Accepted bounds (besides the step-rate limit set by the pulse timing).
+// Accepted bounds (besides the step-rate limit set by the pulse timing, and
+// the acceleration/jerk register widths at the clock rate: see
+// accel_range() / jerk_range()).
 struct PlannerLimits {
   static constexpr int64_t kMaxDistance = (int64_t(1) << 31) - 2;
   static constexpr double kMinAccel = 0.01, kMaxAccel = 1e8;
@@ -48,6 +48,7 @@ struct PlannerLimits {
 };
 
 struct Plan {
+  Clock clock{};                 // the clock the table is counted in
   std::vector<Segment> segments;
   u128 pos_frac0 = 0;
   int64_t distance = 0;
@@ -62,22 +63,46 @@ struct Plan {
   double v_end_used = 0;         // end speed the plan aimed at
 };
 
-struct PlanError {
-  std::string parameter;
-  std::string message;  // one line: "<param>=<value> ...: needs/limit ..."
+// The one error type of the host library (planner, unit conversion).
+struct Error {
+  std::string parameter;  // the request field (or "clock_hz", "pulse_high", ...)
+  std::string message;    // one line: "<param>=<value> ...: needs/limit ..."
 };
 
-using PlanResult = std::variant<Plan, PlanError>;
+using PlanError = Error;
+using PlanResult = std::variant<Plan, Error>;
 
-PlanResult plan_move(const MoveRequest& req, const PulseTiming& timing);
+// The planner for a board clocked at `clock` (default 20 MHz):
+//   scurve::Planner planner{scurve::Clock{25e6}};
+//   scurve::PlanResult r = planner.plan(request, timing);
+class Planner {
+ public:
+  explicit Planner(Clock clock = Clock{}) : clock_(clock) {}
+  // Limits are checked before solving (clock, timing, distance, speeds,
+  // a_max, jerks); the table is re-executed and checked after solving.
+  PlanResult plan(const MoveRequest& req, const PulseTiming& timing) const;
+  Clock clock() const { return clock_; }
+
+ private:
+  Clock clock_;
+};
 
 // Largest speed the step generator can emit with this timing (pulses/s).
-double step_rate_limit(const PulseTiming& timing);
+double step_rate_limit(const PulseTiming& timing, Clock clock = Clock{});
+
+// Accepted a_max / jerk range at a clock rate (pulses/s^2, pulses/s^3): the
+// PlannerLimits bounds, narrowed to what the register widths represent
+// (at least one LSB, at most half the register range).
+struct LimitRange {
+  double lo = 0, hi = 0;
+};
+LimitRange accel_range(Clock clock = Clock{});
+LimitRange jerk_range(Clock clock = Clock{});
 
 // Executes a table in closed form, independent of how it was built, and
 // reports what the hardware will do: the end position, the number of steps
 // and the peaks over every clock (velocity/acceleration registers and the
-// per-clock differences at row boundaries).
+// per-clock differences at row boundaries). Counts in clocks and LSBs only.
 struct TableReport {
   bool ok = true;
   std::string error;
@@ -93,4 +118,4 @@ TableReport run_table(const std::vector<Segment>& rows, u128 pos_frac0, int dire
 
 const char* phase_name(Phase p);
 
-}  // namespace sc
+}  // namespace scurve

@@ -5,10 +5,11 @@
 #include <cmath>
 #include <set>
 
-#include "planner.h"
-#include "scenarios.h"
+#include "paper_moves.h"
+#include "scurve/planner.h"
 
-using namespace sc;
+using namespace scurve;
+using scurve::test::paper_group;
 
 namespace {
 
@@ -24,7 +25,7 @@ MoveRequest move(int64_t l, double vs, double vc, double ve, double a = 500, dou
 }
 
 Plan plan_ok(const MoveRequest& r, const PulseTiming& t = {}) {
-  PlanResult res = plan_move(r, t);
+  PlanResult res = Planner().plan(r, t);
   if (auto* e = std::get_if<PlanError>(&res)) {
     ADD_FAILURE() << "unexpected error: " << e->message;
     return {};
@@ -33,7 +34,7 @@ Plan plan_ok(const MoveRequest& r, const PulseTiming& t = {}) {
 }
 
 PlanError plan_err(const MoveRequest& r, const PulseTiming& t = {}) {
-  PlanResult res = plan_move(r, t);
+  PlanResult res = Planner().plan(r, t);
   if (std::holds_alternative<Plan>(res)) {
     ADD_FAILURE() << "expected an error";
     return {};
@@ -67,13 +68,13 @@ void expect_exact_and_within(const Plan& p, const MoveRequest& r, const PulseTim
   EXPECT_EQ(rep.end_pos, i128(r.distance) * i128(kOne) + (i128(kOne) >> 1));
   EXPECT_GE(rep.min_signed_vel, 0) << "velocity reverses";
   const double v_cap = std::max({r.v_cruise, r.v_start, p.v_end_used});
-  EXPECT_LE(vel_to_phys(rep.peak_vel), v_cap * (1 + 1e-12));
-  EXPECT_LE(vel_to_phys(rep.peak_vel), step_rate_limit(t) * (1 + 1e-12));
-  EXPECT_LE(acc_to_phys(rep.peak_acc), r.a_max * (1 + 1e-12));
+  EXPECT_LE(vel_to_phys(rep.peak_vel, Clock{}), v_cap * (1 + 1e-12));
+  EXPECT_LE(vel_to_phys(rep.peak_vel, Clock{}), step_rate_limit(t) * (1 + 1e-12));
+  EXPECT_LE(acc_to_phys(rep.peak_acc, Clock{}), r.a_max * (1 + 1e-12));
   if (r.kind == ProfileKind::SCurve) {
     double j = r.j_max;
     if (r.jerks) j = std::max({(*r.jerks)[0], (*r.jerks)[1], (*r.jerks)[2], (*r.jerks)[3]});
-    EXPECT_LE(jerk_to_phys(rep.peak_jerk), j * (1 + 1e-12));
+    EXPECT_LE(jerk_to_phys(rep.peak_jerk, Clock{}), j * (1 + 1e-12));
   }
   EXPECT_EQ(rep.clocks, p.total_clocks);
 }
@@ -146,7 +147,7 @@ TEST(Planner, NoCruiseWhenTooShortForTheCruiseSpeed) {
   for (const Segment& s : p.segments) {
     if (s.phase == Phase::PhCruise) cruise += s.clocks;
   }
-  EXPECT_LT(double(cruise) / ClkHz, 0.01);
+  EXPECT_LT(double(cruise) / Clock::kDefaultHz, 0.01);
   expect_exact_and_within(p, r);
 }
 
@@ -194,7 +195,7 @@ TEST(Planner, TrapezoidUsesConstantAccelerationOnly) {
   EXPECT_EQ(phases(p), want);
   for (const Segment& s : p.segments) EXPECT_EQ(s.jerk, 0);
   // Paper 000 eq. for t1: (vc - vs)/a = 3 s; shorter than the S-curve's 3.2 s.
-  EXPECT_NEAR(double(p.segments[0].clocks) / ClkHz, 3.0, 1e-3);
+  EXPECT_NEAR(double(p.segments[0].clocks) / Clock::kDefaultHz, 3.0, 1e-3);
   expect_exact_and_within(p, r);
 }
 
@@ -207,8 +208,8 @@ TEST(Planner, AsymmetricJerksEndEachTransitionAtExactlyZeroAcceleration) {
   double j_up = 0, j_down = 0;
   for (size_t i = 0; i < p.segments.size(); ++i) {
     const Segment& s = p.segments[i];
-    if (s.phase == Phase::PhAccJerkUp) j_up = jerk_to_phys(s.jerk);
-    if (s.phase == Phase::PhAccJerkDown) j_down = std::min(j_down, jerk_to_phys(s.jerk));
+    if (s.phase == Phase::PhAccJerkUp) j_up = jerk_to_phys(s.jerk, Clock{});
+    if (s.phase == Phase::PhAccJerkDown) j_down = std::min(j_down, jerk_to_phys(s.jerk, Clock{}));
     if (s.phase == Phase::PhCruise) {
       EXPECT_EQ(s.acc0, 0);
       // The row before the cruise ends at exactly zero acceleration.
@@ -280,8 +281,8 @@ TEST(PlannerErrors, UnreachableEndSpeedNamesTheNeededDistance) {
   const long need = std::stol(e.message.substr(at + 3));
   EXPECT_NEAR(double(need), 9300.0, 2.0) << e.message;
   // ...and that distance is indeed enough.
-  EXPECT_TRUE(std::holds_alternative<Plan>(plan_move(move(need, 0, 3000, 3000), {})));
-  EXPECT_FALSE(std::holds_alternative<Plan>(plan_move(move(need - 1, 0, 3000, 3000), {})));
+  EXPECT_TRUE(std::holds_alternative<Plan>(Planner().plan(move(need, 0, 3000, 3000), {})));
+  EXPECT_FALSE(std::holds_alternative<Plan>(Planner().plan(move(need - 1, 0, 3000, 3000), {})));
 }
 
 TEST(PlannerErrors, TooShortToStopIsAnError) {

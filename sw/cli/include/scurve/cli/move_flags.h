@@ -1,0 +1,47 @@
+// The move flags every command that plans a move shares (scurve plan / regs /
+// sim, sc_bench): one parser, one conversion to the planner's request.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <cstdint>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "scurve/planner.h"
+
+namespace scurve::cli {
+
+struct MoveFlags {
+  int64_t distance = 0;
+  double v_start = 0, v_cruise = 0, v_end = 0, a_max = 0, j_max = 0;
+  std::string profile = "scurve";
+  std::vector<double> jerks;  // ts1 ts2 te1 te2
+  bool adjust_end_speed = false;
+  int pulse_high = PulseTiming{}.high, pulse_low = PulseTiming{}.low;
+  int dir_setup = PulseTiming{}.setup, dir_hold = PulseTiming{}.hold;
+  double clock_hz = Clock::kDefaultHz;
+  bool json = false;
+  std::string json_out;
+};
+
+// --distance .. --adjust-end-speed (collected in *move_opts if given) and the
+// pulse timing (--pulse-high, --pulse-low, --dir-setup, --dir-hold).
+void add_move_flags(CLI::App* app, MoveFlags& f, std::vector<CLI::Option*>* move_opts = nullptr);
+// --clock-hz: the board's system clock.
+void add_clock_flag(CLI::App* app, MoveFlags& f);
+// --json, --json-out.
+void add_output_flags(CLI::App* app, MoveFlags& f);
+
+MoveRequest to_request(const MoveFlags& f);
+PulseTiming to_timing(const MoveFlags& f);
+Clock to_clock(const MoveFlags& f);
+// Empty if --clock-hz is usable, else one line naming the flag and the bound.
+std::string check_clock_flag(double hz);
+
+// One line "error: <msg>" on stderr; returns 2 (bad input).
+int bad_input(const std::string& msg);
+// Writes j (indented) to path; true if path is empty or the write worked.
+bool write_json_file(const std::string& path, const nlohmann::json& j);
+
+}  // namespace scurve::cli

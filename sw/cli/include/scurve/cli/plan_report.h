@@ -1,0 +1,17 @@
+// JSON and table renderings of a plan (times and physical units at the
+// plan's clock rate).
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "scurve/planner.h"
+
+namespace scurve::cli {
+
+nlohmann::json plan_to_json(const Plan& p);
+std::string plan_to_table(const Plan& p);
+// The clock rate as JSON: an integer when it is a whole number of Hz.
+nlohmann::json clock_to_json(Clock c);
+
+}  // namespace scurve::cli

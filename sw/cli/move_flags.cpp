@@ -1,0 +1,93 @@
+#include "scurve/cli/move_flags.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <cstdio>
+
+namespace scurve::cli {
+
+void add_move_flags(CLI::App* app, MoveFlags& f, std::vector<CLI::Option*>* move_opts) {
+  std::vector<CLI::Option*> opts;
+  opts.push_back(app->add_option("--distance", f.distance, "move length in pulses (sign = direction)"));
+  opts.push_back(app->add_option("--v-start", f.v_start, "start speed, pulses/s"));
+  opts.push_back(app->add_option("--v-cruise", f.v_cruise, "cruise speed, pulses/s"));
+  opts.push_back(app->add_option("--v-end", f.v_end, "end speed, pulses/s"));
+  opts.push_back(app->add_option("--a-max", f.a_max, "acceleration limit, pulses/s^2"));
+  opts.push_back(app->add_option("--j-max", f.j_max, "jerk limit, pulses/s^3 (scurve)"));
+  opts.push_back(app->add_option("--profile", f.profile, "scurve | trapezoid")
+                     ->check(CLI::IsMember({"scurve", "trapezoid"})));
+  opts.push_back(app->add_option("--jerks", f.jerks, "asymmetric jerks Ts1 Ts2 Te1 Te2 (paper 002), pulses/s^3")
+                     ->expected(4));
+  opts.push_back(app->add_flag("--adjust-end-speed", f.adjust_end_speed,
+                               "use the closest reachable end speed instead of failing"));
+  if (move_opts) move_opts->insert(move_opts->end(), opts.begin(), opts.end());
+  app->add_option("--pulse-high", f.pulse_high, "STEP high time, clocks")->check(CLI::Range(1, 65535));
+  app->add_option("--pulse-low", f.pulse_low, "minimum STEP low time, clocks")->check(CLI::Range(1, 65535));
+  app->add_option("--dir-setup", f.dir_setup, "DIR setup before STEP rise, clocks")->check(CLI::Range(0, 65535));
+  app->add_option("--dir-hold", f.dir_hold, "DIR hold after STEP rise, clocks")->check(CLI::Range(0, 65535));
+}
+
+void add_clock_flag(CLI::App* app, MoveFlags& f) {
+  app->add_option("--clock-hz", f.clock_hz,
+                  fmt::format("system clock of the board, Hz ({:.0f}..{:.0f}; default {:.0f})", Clock::kMinHz,
+                              Clock::kMaxHz, Clock::kDefaultHz));
+}
+
+void add_output_flags(CLI::App* app, MoveFlags& f) {
+  app->add_flag("--json", f.json, "print one JSON object");
+  app->add_option("--json-out", f.json_out, "also write the JSON object to this file");
+}
+
+MoveRequest to_request(const MoveFlags& f) {
+  MoveRequest r;
+  r.distance = f.distance;
+  r.v_start = f.v_start;
+  r.v_cruise = f.v_cruise;
+  r.v_end = f.v_end;
+  r.a_max = f.a_max;
+  r.j_max = f.j_max;
+  r.kind = f.profile == "trapezoid" ? ProfileKind::Trapezoid : ProfileKind::SCurve;
+  if (f.jerks.size() == 4) r.jerks = std::array<double, 4>{f.jerks[0], f.jerks[1], f.jerks[2], f.jerks[3]};
+  r.adjust_end_speed = f.adjust_end_speed;
+  return r;
+}
+
+PulseTiming to_timing(const MoveFlags& f) {
+  PulseTiming t;
+  t.high = uint16_t(f.pulse_high);
+  t.low = uint16_t(f.pulse_low);
+  t.setup = uint16_t(f.dir_setup);
+  t.hold = uint16_t(f.dir_hold);
+  return t;
+}
+
+Clock to_clock(const MoveFlags& f) { return Clock{f.clock_hz}; }
+
+std::string check_clock_flag(double hz) {
+  if (!std::isfinite(hz) || !(hz > 0)) {
+    return fmt::format("--clock-hz={}: must be a positive, finite number within {:.0f}..{:.0f} Hz", hz, Clock::kMinHz,
+                       Clock::kMaxHz);
+  }
+  if (hz < Clock::kMinHz || hz > Clock::kMaxHz) {
+    return fmt::format("--clock-hz={}: outside the accepted range {:.0f}..{:.0f} Hz", hz, Clock::kMinHz,
+                       Clock::kMaxHz);
+  }
+  return {};
+}
+
+int bad_input(const std::string& msg) {
+  std::fprintf(stderr, "error: %s\n", msg.c_str());
+  return 2;
+}
+
+bool write_json_file(const std::string& path, const nlohmann::json& j) {
+  if (path.empty()) return true;
+  std::FILE* f = std::fopen(path.c_str(), "w");
+  if (!f) return false;
+  const std::string s = j.dump(2) + "\n";
+  const bool ok = std::fwrite(s.data(), 1, s.size(), f) == s.size();
+  return std::fclose(f) == 0 && ok;
+}
+
+}  // namespace scurve::cli

@@ -1,0 +1,81 @@
+// Closed-loop controller settings: physical units in, the register values of
+// the neuron-PI servo axis out (the words encode_servo_config() writes).
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <variant>
+
+#include "scurve/planner.h"
+#include "scurve/types.h"
+
+namespace scurve {
+
+// Shortest control period the time-multiplexed controller accepts, clocks.
+inline constexpr int kMinControlDiv = 256;
+
+// Controller register values (fixed point, see docs/closed_loop.md).
+struct NeuronConfig {
+  uint16_t div = 2000;         // control period, clocks
+  uint8_t shift = 0;           // log2(encoder counts per pulse)
+  bool ff_en = true;           // velocity feed-forward from V*
+  uint8_t learn_shift = 0;     // Hebb scale 2^-learn_shift
+  uint32_t learn_dz_p = 0;     // no learning while |e| <= dz (Q.CtlFrac), position loop
+  uint32_t learn_dz_v = 0;     //   speed loop
+  uint32_t k_p = 0, k_v = 0;   // neuron gains, Q.CoefFrac
+  uint32_t kb = 0;             // back-calculation gain, Q.CoefFrac
+  uint32_t eta_p1 = 0, eta_p2 = 0, eta_v1 = 0, eta_v2 = 0;  // learning rates, Q.CoefFrac
+  int32_t w_p1 = 0, w_p2 = 0, w_v1 = 0, w_v2 = 0;           // initial weights, Q.WgtFrac
+  int32_t w_min = 0;                                        // lower bound, all weights
+  int32_t w_p1_max = 0, w_p2_max = 0, w_v1_max = 0, w_v2_max = 0;  // upper bounds
+  uint32_t v_lim = 0;          // |position-loop output| limit, counts/period Q.CtlFrac
+  uint32_t u_lim = 0;          // |u| limit
+  uint32_t ferr_lim = 0;       // following-error limit, counts Q.CtlFrac
+  uint32_t inpos_win = 0;      // in-position window, counts Q.CtlFrac
+  uint16_t inpos_hold = 1;     // control periods
+  uint32_t settle_rate = 0;    // settle-phase corrective step rate, counts/period Q.CtlFrac
+};
+
+// Everything the closed-loop axis is configured with.
+struct ServoConfig {
+  bool enable = true;
+  bool closed_loop = true;
+  PulseTiming timing{};
+  uint8_t enc_filt = 3;
+  NeuronConfig ctl{};
+};
+
+// Controller settings in physical units.
+struct ControllerParams {
+  bool closed_loop = true;
+  double rate_hz = 10000;       // control rate (div = clock / rate)
+  bool ff = true;               // velocity feed-forward from V*
+  bool adaptive = true;         // false: learning rates 0 (fixed-gain PI)
+  double k_p = 0.004;           // position neuron gain K_p (per control period)
+  double k_v = 0.02;            // speed neuron gain K_v
+  double eta_p1 = 0.20, eta_p2 = 0.20, eta_v1 = 0.15, eta_v2 = 0.10;  // paper 000
+  int learn_shift = 10;         // Hebb scale 2^-learn_shift (counts^2 -> weight)
+  double learn_dz_p = 0.75;     // counts: no position-loop learning while |e_p| <= this
+  double learn_dz_v = 1.5;      // counts/period: no speed-loop learning while |e_v| <= this
+  double w_p1 = 0.0, w_p2 = 64, w_v1 = 64, w_v2 = 16;  // initial weights (w_p1 learns up)
+  double fixed_w_p1 = 0.125;    // integral weight of the fixed-gain PI (adaptive: w_p1, learned)
+  double w_min = 0.0;           // lower bound, all weights
+  double w_p1_max = 0.5, w_p2_max = 127, w_v1_max = 127, w_v2_max = 32;  // upper bounds
+  double kb = 1.0;              // back-calculation gain
+  double v_lim = 5000;          // |position-loop output|, pulses/s
+  double u_lim = 0;             // |u|, pulses/s (0: 90 % of the step-rate limit)
+  double ferr_lim = 500;        // following-error fault, pulses
+  double inpos_win = 0;         // in-position window, pulses
+  double inpos_hold_s = 0.005;  // in-position hold time
+  double settle_rate = 500;     // pulses/s: corrective steps after the reference is done
+  int enc_filt = 3;             // glitch filter, clocks
+};
+
+using ServoConfigResult = std::variant<ServoConfig, Error>;
+
+// Register values for the settings, an encoder with `counts_per_step`
+// counts per pulse (a power of two), this pulse timing and clock rate.
+ServoConfigResult to_servo_config(const ControllerParams& p, double counts_per_step, const PulseTiming& t,
+                                  Clock clock = Clock{});
+
+}  // namespace scurve

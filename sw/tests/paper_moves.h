@@ -1,0 +1,27 @@
+// Paper 000 Table 2 moves (L = 30,000 pulses, a = 500 pulses/s^2) with the
+// project's jerk limit, for the host library's tests.
+#pragma once
+
+#include <string>
+
+#include "scurve/planner.h"
+
+namespace scurve::test {
+
+inline constexpr double kPaperJerk = 2500.0;
+
+inline MoveRequest paper_group(int group) {
+  static const double speeds[4][3] = {{1500, 3000, 0}, {3000, 1500, 0}, {0, 1500, 3000}, {0, 3000, 1500}};
+  const double* s = speeds[(group - 1) & 3];
+  MoveRequest r;
+  r.distance = 30000;
+  r.v_start = s[0];
+  r.v_cruise = s[1];
+  r.v_end = s[2];
+  r.a_max = 500;
+  r.j_max = kPaperJerk;
+  r.kind = ProfileKind::SCurve;
+  return r;
+}
+
+}  // namespace scurve::test
