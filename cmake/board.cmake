@@ -96,6 +96,10 @@ set_tests_properties(board_axi_paper_group PROPERTIES TIMEOUT 1800 LABELS long)
 add_test(NAME regmap_docs_in_sync
   COMMAND Python3::Interpreter ${CMAKE_SOURCE_DIR}/scripts/gen_regmap.py ${RTL_DIR}/sc_pkg.sv
           --check ${CMAKE_SOURCE_DIR}/docs/regmap.md)
+# the committed generated section of sc_pkg.sv and docs/regmap.md match the tags
+add_test(NAME layout_in_sync
+  COMMAND Python3::Interpreter ${CMAKE_SOURCE_DIR}/scripts/gen_layout.py --pkg ${RTL_DIR}/sc_pkg.sv
+          --doc ${CMAKE_SOURCE_DIR}/docs/regmap.md --check)
 add_test(NAME scurve_regs_cli
   COMMAND sh -c "$<TARGET_FILE:scurve> regs --distance 1000 --v-cruise 20000 --a-max 1e6 --j-max 1e9 --uart | grep -q '^A5 01 08 01 00 00 00 '")
 

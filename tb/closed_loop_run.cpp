@@ -36,8 +36,8 @@ std::string to_servo_config(const ControllerParams& p, const PlantConfig& plant,
   c.closed_loop = p.closed_loop;
   c.timing = t;
   if (p.enc_filt < 0 || p.enc_filt >= (1 << EncFiltW)) return fmt::format("enc-filter={} outside 0..{}", p.enc_filt, (1 << EncFiltW) - 1);
-  c.enc_filt = uint8_t(p.enc_filt);
   NeuronConfig& n = c.ctl;
+  n.enc_filt = uint8_t(p.enc_filt);
   const double div = std::round(double(ClkHz) / p.rate_hz);
   if (!(div >= NeuronPi::kMinDiv && div < 65536))
     return fmt::format("ctl-rate={} Hz: needs {}..{} Hz ({}..65535 clocks)", p.rate_hz, ClkHz / 65535.0,

@@ -70,36 +70,8 @@ void RtlServo::apply_cfg(const ServoConfig& c) {
   m_->cfg_low_i = c.timing.low;
   m_->cfg_setup_i = c.timing.setup;
   m_->cfg_hold_i = c.timing.hold;
-  m_->cfg_enc_filt_i = bits(c.enc_filt, EncFiltW);
-  const NeuronConfig& n = c.ctl;
-  m_->cfg_enc_shift_i = bits(n.shift, EncShiftW);
-  m_->cfg_div_i = n.div;
-  m_->cfg_ff_en_i = n.ff_en;
-  m_->cfg_learn_shift_i = bits(n.learn_shift, LearnShW);
-  m_->cfg_learn_dz_p_i = n.learn_dz_p;
-  m_->cfg_learn_dz_v_i = n.learn_dz_v;
-  m_->cfg_k_p_i = bits(n.k_p, CoefW);
-  m_->cfg_k_v_i = bits(n.k_v, CoefW);
-  m_->cfg_kb_i = bits(n.kb, CoefW);
-  m_->cfg_eta_p1_i = bits(n.eta_p1, CoefW);
-  m_->cfg_eta_p2_i = bits(n.eta_p2, CoefW);
-  m_->cfg_eta_v1_i = bits(n.eta_v1, CoefW);
-  m_->cfg_eta_v2_i = bits(n.eta_v2, CoefW);
-  m_->cfg_w_p1_i = bits(n.w_p1, WgtW);
-  m_->cfg_w_p2_i = bits(n.w_p2, WgtW);
-  m_->cfg_w_v1_i = bits(n.w_v1, WgtW);
-  m_->cfg_w_v2_i = bits(n.w_v2, WgtW);
-  m_->cfg_w_min_i = bits(n.w_min, WgtW);
-  m_->cfg_w_p1_max_i = bits(n.w_p1_max, WgtW);
-  m_->cfg_w_p2_max_i = bits(n.w_p2_max, WgtW);
-  m_->cfg_w_v1_max_i = bits(n.w_v1_max, WgtW);
-  m_->cfg_w_v2_max_i = bits(n.w_v2_max, WgtW);
-  m_->cfg_v_lim_i = n.v_lim;
-  m_->cfg_u_lim_i = n.u_lim;
-  m_->cfg_ferr_lim_i = n.ferr_lim;
-  m_->cfg_inpos_win_i = n.inpos_win;
-  m_->cfg_inpos_hold_i = n.inpos_hold;
-  m_->cfg_settle_rate_i = n.settle_rate;
+  const auto v = ctl_cfg_pack(c.ctl);
+  for (size_t i = 0; i < v.size(); ++i) m_->ctl_cfg_i[i] = v[i];
 }
 
 void RtlServo::step(const ServoInputs& in) {
