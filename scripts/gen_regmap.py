@@ -264,8 +264,14 @@ not accept in a module header or in `$unit`.
 The register file (masks, reset values, decode), `sc_axi_servo`, `sc_servo_axis`, the
 model's register file, `sc::CtlCfg`, the host encoding (`encode_servo_config`), the
 Verilator adapters and this document follow from the generated files. Measured on a
-scratch branch with a dummy parameter carried end to end and used in the datapath
-(lockstep green): FILECOUNT. Before this layout source the same change touched 17 files.
+scratch branch: a dummy parameter LEARN_EN (a new settings word at 0xCC, 1 bit,
+reset 1, gating the Hebb update in both the RTL and the model, randomised by the
+neuron-level lockstep test) carried end to end touched 5 files, 4 edited by hand
+(`rtl/sc_pkg.sv` tags, `rtl/sc_neuron_pi.sv`, `cmodel/neuron_pi.cpp`,
+`tests/test_neuron_pi_rtl.cpp`) and 1 regenerated (`docs/regmap.md`; the package's
+generated section is in the source file), with the closed-loop, neuron-level and
+register-file lockstep tests green. Before this layout source the same change
+touched 17 files.
 
 """.splitlines()
 
