@@ -34,31 +34,9 @@ bool locked_addr(uint8_t a) {
 
 }  // namespace
 
-constexpr uint32_t fm(int width, int lsb) { return uint32_t(((uint64_t(1) << width) - 1) << lsb); }
+uint32_t AxiRegs::cl_mask(int i) { return kClCfgMask[i]; }
 
-uint32_t AxiRegs::cl_mask(int i) {
-  switch (i) {
-    case 0: return fm(EncFiltW, ClEncFiltLsb) | fm(EncShiftW, ClEncShiftLsb) | fm(1, ClFfEnBit) | fm(LearnShW, ClLearnShLsb);
-    case 1: return fm(CtlDivW, ClDivLsb) | fm(HoldW, ClInposHoldLsb);
-    case 2: case 3: return fm(CtlW, 0);
-    case 4: case 5: case 6: case 7: case 8: case 9: case 10: return fm(CoefW, 0);
-    case 11: case 12: case 13: case 14: case 15: case 16: case 17: case 18: case 19: return fm(WgtW, 0);
-    default: return fm(CtlW, 0);  // 20..24: V_LIM U_LIM FERR_LIM INPOS_WIN SETTLE_RATE
-  }
-}
-
-uint32_t AxiRegs::cl_reset(int i) {
-  static constexpr uint32_t kRst[ClCfgWords] = {
-      (uint32_t(RstEncFilt) << ClEncFiltLsb) | (uint32_t(RstFfEn) << ClFfEnBit) | (uint32_t(RstLearnShift) << ClLearnShLsb),
-      (uint32_t(RstCtlDiv) << ClDivLsb) | (uint32_t(RstInposHold) << ClInposHoldLsb),
-      uint32_t(RstLearnDzP), uint32_t(RstLearnDzV),
-      uint32_t(RstKp), uint32_t(RstKv), uint32_t(RstKb),
-      uint32_t(RstEtaP1), uint32_t(RstEtaP2), uint32_t(RstEtaV1), uint32_t(RstEtaV2),
-      uint32_t(RstWp1), uint32_t(RstWp2), uint32_t(RstWv1), uint32_t(RstWv2), uint32_t(RstWmin),
-      uint32_t(RstWp1Max), uint32_t(RstWp2Max), uint32_t(RstWv1Max), uint32_t(RstWv2Max),
-      uint32_t(RstVLim), uint32_t(RstULim), uint32_t(RstFerrLim), uint32_t(RstInposWin), uint32_t(RstSettleRate)};
-  return kRst[i];
-}
+uint32_t AxiRegs::cl_reset(int i) { return kClCfgReset[i]; }
 
 void AxiRegs::reset() {
   q_ = State{};
@@ -327,42 +305,11 @@ AxiAxisOutputs AxiAxis::outputs() const {
 
 ServoConfig AxiServo::decode_config(bool enable, bool closed, const PulseTiming& t,
                                     const std::array<uint32_t, ClCfgWords>& w) {
-  auto u = [](uint32_t v, int lsb, int width) { return field(v, lsb, width); };
-  auto sw = [&](int i) { return int32_t(wrap_signed64(int64_t(u(w[size_t(i)], 0, WgtW)), WgtW)); };
   ServoConfig c;
   c.enable = enable;
   c.closed_loop = closed;
   c.timing = t;
-  c.enc_filt = uint8_t(u(w[0], ClEncFiltLsb, EncFiltW));
-  NeuronConfig& n = c.ctl;
-  n.shift = uint8_t(u(w[0], ClEncShiftLsb, EncShiftW));
-  n.ff_en = u(w[0], ClFfEnBit, 1) != 0;
-  n.learn_shift = uint8_t(u(w[0], ClLearnShLsb, LearnShW));
-  n.div = uint16_t(u(w[1], ClDivLsb, CtlDivW));
-  n.inpos_hold = uint16_t(u(w[1], ClInposHoldLsb, HoldW));
-  n.learn_dz_p = w[2];
-  n.learn_dz_v = w[3];
-  n.k_p = u(w[4], 0, CoefW);
-  n.k_v = u(w[5], 0, CoefW);
-  n.kb = u(w[6], 0, CoefW);
-  n.eta_p1 = u(w[7], 0, CoefW);
-  n.eta_p2 = u(w[8], 0, CoefW);
-  n.eta_v1 = u(w[9], 0, CoefW);
-  n.eta_v2 = u(w[10], 0, CoefW);
-  n.w_p1 = sw(11);
-  n.w_p2 = sw(12);
-  n.w_v1 = sw(13);
-  n.w_v2 = sw(14);
-  n.w_min = sw(15);
-  n.w_p1_max = sw(16);
-  n.w_p2_max = sw(17);
-  n.w_v1_max = sw(18);
-  n.w_v2_max = sw(19);
-  n.v_lim = w[20];
-  n.u_lim = w[21];
-  n.ferr_lim = w[22];
-  n.inpos_win = w[23];
-  n.settle_rate = w[24];
+  c.ctl = ctl_cfg_from_words(w);
   return c;
 }
 

@@ -74,19 +74,19 @@ struct Ctl {
 
 // state_o: the phase of a micro-program step (the RTL's st)
 uint8_t NeuronPi::phase_of(uint8_t upc) {
-  if (upc == UIdle) return StIdle;
-  if (upc < UVff) return StInit;
-  if (upc == UVff) return StVff;
-  if (upc <= UDiv2) return StDiv;
-  if (upc <= UWin) return StErr;
-  if (upc == UT1) return StT1;
-  if (upc <= USum) return StT2;
-  if (upc == UDu) return StDu;
-  if (upc <= UOut) return StBc;
-  if (upc == UH1) return StH1;
-  if (upc <= UW4) return StDw1;
-  if (upc == UH2) return StH2;
-  return StDw2;
+  if (upc == UpcIdle) return CtlStIdle;
+  if (upc < UpcVff) return CtlStInit;
+  if (upc == UpcVff) return CtlStVff;
+  if (upc <= UpcDiv2) return CtlStDiv;
+  if (upc <= UpcWin) return CtlStErr;
+  if (upc == UpcT1) return CtlStT1;
+  if (upc <= UpcSum) return CtlStT2;
+  if (upc == UpcDu) return CtlStDu;
+  if (upc <= UpcOut) return CtlStBc;
+  if (upc == UpcH1) return CtlStH1;
+  if (upc <= UpcW4) return CtlStDw1;
+  if (upc == UpcH2) return CtlStH2;
+  return CtlStDw2;
 }
 
 int32_t NeuronPi::mul_round_sat(int32_t a, int32_t b, unsigned sh) {
@@ -107,114 +107,114 @@ void NeuronPi::step(const NeuronConfig& cfg, const Inputs& in) {
   const unsigned shift = cfg.shift & ((1u << EncShiftW) - 1);
   const unsigned ls = cfg.learn_shift & ((1u << LearnShW) - 1);
   const uint8_t upc = q.upc;
-  const bool w2nd = upc >= UH2;
+  const bool w2nd = upc >= UpcH2;
   const uint8_t u2 = w2nd ? uint8_t(upc - 6) : upc;
 
   // ---- decode -------------------------------------------------------------------------
   Ctl c;
   switch (upc) {
-    case UIdle: break;
-    case UVff:
+    case UpcIdle: break;
+    case UpcVff:
       c.mul_a_vq = true; c.mb = MbDivSh; c.we = true; c.wa = RfVff; c.w = WMul;
       break;
-    case USet1: case USet2: case USet3: case UDiv1: case UDiv2:
+    case UpcSet1: case UpcSet2: case UpcSet3: case UpcDiv1: case UpcDiv2:
       
-      c.rb = uint8_t(((upc == USet1 || upc == UDiv1) ? RfW1 : RfW2) | s);
-      c.a = upc == USet2 ? AT : AZero;
+      c.rb = uint8_t(((upc == UpcSet1 || upc == UpcDiv1) ? RfW1 : RfW2) | s);
+      c.a = upc == UpcSet2 ? AT : AZero;
       c.b = BRf;
       c.abs = true;
-      c.t_we = upc == USet1;
-      c.we = (upc == UDiv1 || upc == UDiv2) && q.dbit == 0;
-      c.wa = uint8_t((upc == UDiv1 ? RfN1 : RfN2) | s);
+      c.t_we = upc == UpcSet1;
+      c.we = (upc == UpcDiv1 || upc == UpcDiv2) && q.dbit == 0;
+      c.wa = uint8_t((upc == UpcDiv1 ? RfN1 : RfN2) | s);
       c.w = WDiv;
       break;
-    case URef:
+    case UpcRef:
       c.a = q.sel ? ARf : ARef; c.ra = RfOutP; c.rb = RfVff;
       c.b = (q.sel && cfg.ff_en) ? BRf : BZero; c.t_we = true;
       break;
-    case UErr:
+    case UpcErr:
       c.a = AT; c.b = q.sel ? BVmeas : BPfb; c.sub = true; c.we = true; c.wa = RfEraw;
       break;
-    case UAbs:
+    case UpcAbs:
       c.rb = RfEraw; c.b = BRf; c.abs = true; c.t_we = true;
       break;
-    case UEq: case UX2:
+    case UpcEq: case UpcX2:
       c.ra = RfEraw; c.rb = uint8_t(RfEp | s);
-      c.a = (upc == UX2 && hush_now) ? AZero : ARf; c.b = BRf; c.sub = true;
-      c.we = upc == UX2; c.wa = RfX2;
+      c.a = (upc == UpcX2 && hush_now) ? AZero : ARf; c.b = BRf; c.sub = true;
+      c.we = upc == UpcX2; c.wa = RfX2;
       break;
-    case UE: case UEp:
-      c.ra = RfEraw; c.a = (upc == UE && hush_now) ? AZero : ARf;
-      c.we = true; c.wa = upc == UE ? uint8_t(RfE) : uint8_t(RfEp | s);
+    case UpcE: case UpcEp:
+      c.ra = RfEraw; c.a = (upc == UpcE && hush_now) ? AZero : ARf;
+      c.we = true; c.wa = upc == UpcE ? uint8_t(RfE) : uint8_t(RfEp | s);
       break;
-    case ULearn: case UFerr: case UWin:
+    case UpcLearn: case UpcFerr: case UpcWin:
       c.a = AT; c.b = BCfg; c.sub = true;
-      c.cfg = upc == ULearn ? (q.sel ? CfDzV : CfDzP) : upc == UFerr ? CfFerr : CfWin;
+      c.cfg = upc == UpcLearn ? (q.sel ? CfDzV : CfDzP) : upc == UpcFerr ? CfFerr : CfWin;
       break;
-    case UT1:
+    case UpcT1:
       c.ra = RfE; c.rb = uint8_t(RfN1 | s); c.we = true; c.wa = RfT1; c.w = WMul;
       break;
-    case UT2:
+    case UpcT2:
       c.ra = RfX2; c.rb = uint8_t(RfN2 | s); c.we = true; c.wa = RfT2; c.w = WMul;
       break;
-    case USum:
+    case UpcSum:
       c.ra = RfT1; c.rb = RfT2; c.a = ARf; c.b = BRf; c.we = true; c.wa = RfSum; c.w = WSat;
       break;
-    case UDu: case UBc:
+    case UpcDu: case UpcBc:
       
-      c.ra = upc == UDu ? uint8_t(RfSum) : uint8_t(RfEs | s);
-      c.mb = MbCfg; c.cfg = upc == UBc ? CfKb : q.sel ? CfKV : CfKP; c.s20 = true;
-      c.we = true; c.wa = upc == UDu ? RfDu : RfBc; c.w = WMul;
+      c.ra = upc == UpcDu ? uint8_t(RfSum) : uint8_t(RfEs | s);
+      c.mb = MbCfg; c.cfg = upc == UpcBc ? CfKb : q.sel ? CfKV : CfKP; c.s20 = true;
+      c.we = true; c.wa = upc == UpcDu ? RfDu : RfBc; c.w = WMul;
       break;
-    case UAcc1:
+    case UpcAcc1:
       c.ra = uint8_t(RfAcc | s); c.rb = RfDu; c.a = ARf; c.b = BRf; c.t_we = true;
       break;
-    case UAcc2:
+    case UpcAcc2:
       c.rb = RfBc; c.a = AT; c.b = BRf; c.sub = true;
       c.we = true; c.wa = uint8_t(RfAcc | s); c.w = q.hush ? WZero : WSat;
       break;
-    case UTot:
+    case UpcTot:
       c.ra = uint8_t(RfAcc | s); c.rb = RfVff; c.a = ARf;
       c.b = (q.sel && cfg.ff_en) ? BRf : BZero; c.we = true; c.wa = RfTot; c.w = WSat;
       break;
-    case UHi: case ULo:
+    case UpcHi: case UpcLo:
       c.ra = RfTot; c.a = ARf; c.b = BCfg; c.cfg = q.sel ? CfULim : CfVLim;
-      c.sub = upc == UHi; c.wa = uint8_t(RfEs | s);
+      c.sub = upc == UpcHi; c.wa = uint8_t(RfEs | s);
       break;  // write enable and data depend on the sum (below)
-    case UOut:
+    case UpcOut:
       c.ra = RfTot; c.rb = uint8_t(RfEs | s); c.a = ARf; c.b = BRf; c.sub = true;
       c.we = !q.sel; c.wa = RfOutP;
       break;
-    case UH1: case UH2:
-      c.ra = upc == UH1 ? RfE : RfX2; c.rb = RfE; c.mb = MbEb;
+    case UpcH1: case UpcH2:
+      c.ra = upc == UpcH1 ? RfE : RfX2; c.rb = RfE; c.mb = MbEb;
       c.we = true; c.wa = RfH; c.w = WMul;
       break;
-    case UDw1: case UDw2:
+    case UpcDw1: case UpcDw2:
       c.ra = RfH; c.mb = MbCfg;
-      c.cfg = upc == UDw1 ? (q.sel ? CfEtaV1 : CfEtaP1) : (q.sel ? CfEtaV2 : CfEtaP2);
+      c.cfg = upc == UpcDw1 ? (q.sel ? CfEtaV1 : CfEtaP1) : (q.sel ? CfEtaV2 : CfEtaP2);
       c.s20 = true; c.ls = true; c.we = true; c.wa = RfDw; c.w = WMul;
       break;
     default:
-      if (upc >= UW1 && upc <= UW8) {
+      if (upc >= UpcW1 && upc <= UpcW8) {
         const uint8_t pair = uint8_t((w2nd ? RfW2 : RfW1) | s);
         const int wmax = w2nd ? (q.sel ? CfWV2Max : CfWP2Max) : (q.sel ? CfWV1Max : CfWP1Max);
         
-        c.cfg = u2 == UW3 ? CfWMin : u2 == UW4 ? (q.over ? wmax : CfWMin) : wmax;
-        if (u2 == UW1) {  // T = w + dw
+        c.cfg = u2 == UpcW3 ? CfWMin : u2 == UpcW4 ? (q.over ? wmax : CfWMin) : wmax;
+        if (u2 == UpcW1) {  // T = w + dw
           c.ra = pair; c.rb = RfDw; c.a = ARf; c.b = BRf; c.t_we = true;
-        } else if (u2 == UW2 || u2 == UW3) {  // T - w_max > 0 ?  T - w_min < 0 ?
+        } else if (u2 == UpcW2 || u2 == UpcW3) {  // T - w_max > 0 ?  T - w_min < 0 ?
           c.a = AT; c.b = BCfg; c.sub = true;
         } else {  // w = w_max, w_min or T (then within both)
           c.a = (q.over || q.under) ? AZero : AT;
           c.b = (q.over || q.under) ? BCfg : BZero;
           c.we = true; c.wa = pair;
         }
-      } else if (upc >= UInit && upc < UInit + kInitSteps) {
+      } else if (upc >= UpcInit && upc < UpcInit + kInitSteps) {
         // start: e_prev, acc, es, out_p, vff = 0; weights = their initial values
         static constexpr uint8_t kWa[kInitSteps] = {RfEp, RfEp + 1, RfAcc, RfAcc + 1, RfEs, RfEs + 1,
                                                    RfOutP, RfVff, RfW1, RfW1 + 1, RfW2, RfW2 + 1};
         static constexpr int kCf[4] = {CfWP1, CfWV1, CfWP2, CfWV2};
-        const int k = upc - UInit;
+        const int k = upc - UpcInit;
         c.we = true; c.wa = kWa[k];
         c.b = k < 8 ? BZero : BCfg;
         if (k >= 8) c.cfg = kCf[k - 8];
@@ -260,10 +260,10 @@ void NeuronPi::step(const NeuronConfig& cfg, const Inputs& in) {
   const int32_t corr_steps = int32_t(corr_full > cmax ? cmax : corr_full < -cmax ? -cmax : corr_full);
 
   // limit steps: es = tot - lim when > 0 (else 0); es = tot + lim when < 0
-  if (upc == UHi) {
+  if (upc == UpcHi) {
     c.we = true;
     c.w = (alu_n || alu_z) ? WZero : WWrap;
-  } else if (upc == ULo) {
+  } else if (upc == UpcLo) {
     c.we = alu_n;
   }
 
@@ -294,7 +294,7 @@ void NeuronPi::step(const NeuronConfig& cfg, const Inputs& in) {
   if (q.active) {
     if (q.cnt == 0) {
       d.cnt = uint16_t(cfg.div - 1);
-      if (upc == UIdle) {
+      if (upc == UpcIdle) {
         // snapshot: P* - 1/2 (the integer target L once the reference is done), P, V
         const uint32_t r = in.ref_done ? u32(in.ref_int) << CtlFrac
                                        : ((u32(in.ref_int) << CtlFrac) | in.ref_frac) - (1u << (CtlFrac - 1));
@@ -306,46 +306,46 @@ void NeuronPi::step(const NeuronConfig& cfg, const Inputs& in) {
         d.mvs = q.mv || in.cmd_busy;
         d.mv = false;
         d.sel = false;
-        d.upc = UVff;
+        d.upc = UpcVff;
       }
     } else {
       d.cnt = uint16_t(q.cnt - 1);
     }
   }
 
-  if (upc != UIdle) d.upc = uint8_t(upc + 1);
-  if (upc == UInit + kInitSteps - 1) d.upc = UIdle;  // wait for the first snapshot
+  if (upc != UpcIdle) d.upc = uint8_t(upc + 1);
+  if (upc == UpcInit + kInitSteps - 1) d.upc = UpcIdle;  // wait for the first snapshot
   switch (upc) {
-    case USet1: d.drem = uint32_t(alu_r) & ((1u << kRemW) - 1); break;
-    case USet2:
+    case UpcSet1: d.drem = uint32_t(alu_r) & ((1u << kRemW) - 1); break;
+    case UpcSet2:
       d.dsum = uint32_t(alu_r) & ((1u << kSumW) - 1);
       d.dbit = NWgtFrac;
       d.dquo = 0;
       break;
-    case USet3:
+    case UpcSet3:
       d.drem = uint32_t(alu_r) & ((1u << kRemW) - 1);
       d.dbit = NWgtFrac;
       d.dquo = 0;
       break;
-    case UDiv1: case UDiv2:
+    case UpcDiv1: case UpcDiv2:
       d.drem = (div_rem_sub << 1) & ((1u << kRemW) - 1);
       d.dquo = div_quo;
       d.dbit = uint8_t((q.dbit - 1) & kDbitMask);
       if (q.dbit != 0) d.upc = upc;
       break;
-    case UErr: d.eraw = wrap32(alu_r); break;
-    case UEq: d.eq = alu_z; break;
-    case UEp: if (!q.sel) d.hush = hush_now; break;
-    case ULearn: d.learn = !hush_now && !alu_n && !alu_z; break;
-    case UFerr:
+    case UpcErr: d.eraw = wrap32(alu_r); break;
+    case UpcEq: d.eq = alu_z; break;
+    case UpcEp: if (!q.sel) d.hush = hush_now; break;
+    case UpcLearn: d.learn = !hush_now && !alu_n && !alu_z; break;
+    case UpcFerr:
       if (!q.sel && !alu_n && !alu_z) {
         d.ferr = true;
         d.active = false;
         d.u = 0;
-        d.upc = UIdle;
+        d.upc = UpcIdle;
       }
       break;
-    case UWin:
+    case UpcWin:
       if (!q.sel) {
         if (q.fin && !q.mvs && q.corr == 0 && q.eq) {
           d.hold = uint16_t(q.hold + 1);
@@ -355,7 +355,7 @@ void NeuronPi::step(const NeuronConfig& cfg, const Inputs& in) {
               d.in_pos = true;
               d.active = false;
               d.u = 0;
-              d.upc = UIdle;
+              d.upc = UpcIdle;
             } else {
               d.corr = corr_steps;
             }
@@ -365,19 +365,19 @@ void NeuronPi::step(const NeuronConfig& cfg, const Inputs& in) {
         }
       }
       break;
-    case UOut: if (q.sel) d.u = wrap32(alu_r); break;
+    case UpcOut: if (q.sel) d.u = wrap32(alu_r); break;
     default: break;
   }
-  if (upc >= UW1 && upc <= UW8 && upc != UH2 && upc != UDw2) {
-    if (u2 == UW2) d.over = !alu_n && !alu_z;
-    if (u2 == UW3) d.under = alu_n;
+  if (upc >= UpcW1 && upc <= UpcW8 && upc != UpcH2 && upc != UpcDw2) {
+    if (u2 == UpcW2) d.over = !alu_n && !alu_z;
+    if (u2 == UpcW3) d.under = alu_n;
   }
-  if (upc == UW8) {
+  if (upc == UpcW8) {
     if (q.sel) {
-      d.upc = UIdle;
+      d.upc = UpcIdle;
     } else {
       d.sel = true;
-      d.upc = USet1;
+      d.upc = UpcSet1;
     }
   }
 
@@ -391,7 +391,7 @@ void NeuronPi::step(const NeuronConfig& cfg, const Inputs& in) {
     d.in_pos = false;
     d.ferr = false;
     d.cnt = kInitSteps;  // the first snapshot follows the initialisation
-    d.upc = UInit;
+    d.upc = UpcInit;
     d.sel = false;
     d.hold = 0;
     d.hush = false;
@@ -402,7 +402,7 @@ void NeuronPi::step(const NeuronConfig& cfg, const Inputs& in) {
     d.u = 0;
   } else if (in.stop) {
     d.active = false;
-    d.upc = UIdle;
+    d.upc = UpcIdle;
     d.u = 0;
   }
   d.st = phase_of(d.upc);

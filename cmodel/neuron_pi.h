@@ -8,44 +8,20 @@
 #include <cstdint>
 
 #include "fixed_point.h"
+#include "sc_layout.h"
 
 namespace sc {
 
-// Controller configuration (the cfg_* inputs of sc_neuron_pi).
-struct NeuronConfig {
-  uint16_t div = 2000;         // control period, clocks
-  uint8_t shift = 0;           // log2(encoder counts per pulse)
-  bool ff_en = true;           // velocity feed-forward from V*
-  uint8_t learn_shift = 0;     // Hebb scale 2^-learn_shift
-  uint32_t learn_dz_p = 0;     // no learning while |e| <= dz (Q.CtlFrac), position loop
-  uint32_t learn_dz_v = 0;     //   speed loop
-  uint32_t k_p = 0, k_v = 0;   // neuron gains, Q.CoefFrac
-  uint32_t kb = 0;             // back-calculation gain, Q.CoefFrac
-  uint32_t eta_p1 = 0, eta_p2 = 0, eta_v1 = 0, eta_v2 = 0;  // learning rates, Q.CoefFrac
-  int32_t w_p1 = 0, w_p2 = 0, w_v1 = 0, w_v2 = 0;           // initial weights, Q.WgtFrac
-  int32_t w_min = 0;                                        // lower bound, all weights
-  int32_t w_p1_max = 0, w_p2_max = 0, w_v1_max = 0, w_v2_max = 0;  // upper bounds
-  uint32_t v_lim = 0;          // |position-loop output| limit, counts/period Q.CtlFrac
-  uint32_t u_lim = 0;          // |u| limit
-  uint32_t ferr_lim = 0;       // following-error limit, counts Q.CtlFrac
-  uint32_t inpos_win = 0;      // in-position window, counts Q.CtlFrac
-  uint16_t inpos_hold = 1;     // control periods
-  uint32_t settle_rate = 0;    // settle-phase corrective step rate, counts/period Q.CtlFrac
-  bool operator==(const NeuronConfig&) const = default;
-};
+// Controller configuration (the ctl_cfg_i vector of sc_neuron_pi): the
+// generated sc::CtlCfg (rtl/sc_pkg.sv tags -> sc_layout.h); defaults = the
+// register reset values.
+using NeuronConfig = CtlCfg;
 
 class NeuronPi {
  public:
-  // Phase of the period (state_o), decoded from the micro-program step.
-  enum St : uint8_t { StIdle = 0, StVff, StDiv, StErr, StT1, StT2, StDu, StBc, StH1, StDw1, StH2, StDw2, StInit };
-  // Micro-program steps (the RTL's U* constants).
-  enum Upc : uint8_t {
-    UIdle = 0, UInit = 1, UVff = 13, USet1, USet2, UDiv1, USet3, UDiv2,
-    URef, UErr, UAbs, UEq, UX2, UE, UEp, ULearn, UFerr, UWin,
-    UT1, UT2, USum, UDu, UBc, UAcc1, UAcc2, UTot, UHi, ULo, UOut,
-    UH1, UDw1, UW1, UW2, UW3, UW4, UH2, UDw2, UW5, UW6, UW7, UW8
-  };
-  static constexpr int kInitSteps = 12;
+  // Phase of the period (state_o): sc::CtlSt*; micro-program steps: sc::Upc*
+  // (both generated from rtl/sc_pkg.sv, shared with the RTL).
+  static constexpr int kInitSteps = UpcVff - UpcInit;
   // Register-file words; per-loop pairs at even addresses, + loop.
   enum Rf : uint8_t {
     RfEp = 0, RfAcc = 2, RfEs = 4, RfW1 = 6, RfW2 = 8, RfN1 = 10, RfN2 = 12, RfOutP = 14, RfVff = 15,
@@ -76,8 +52,8 @@ class NeuronPi {
   struct State {
     bool active = false, in_pos = false, ferr = false;
     uint16_t cnt = 0;
-    uint8_t upc = UIdle;
-    uint8_t st = StIdle;  // phase of upc (state_o)
+    uint8_t upc = UpcIdle;
+    uint8_t st = CtlStIdle;  // phase of upc (state_o)
     bool sel = false;
     uint8_t dbit = 0;
     uint32_t drem = 0, dquo = 0, dsum = 0;
@@ -103,7 +79,7 @@ class NeuronPi {
   void reset() { q_ = State{}; }
   void step(const NeuronConfig& cfg, const Inputs& in);
   // Nothing but the strobe counter moves this clock (no start/stop)?
-  bool counting_only() const { return !q_.active || (q_.upc == UIdle && q_.cnt != 0); }
+  bool counting_only() const { return !q_.active || (q_.upc == UpcIdle && q_.cnt != 0); }
   // Clocks until the next strobe (0 = this clock or inactive).
   uint16_t clocks_to_strobe() const { return q_.active ? q_.cnt : 0; }
   // Skip k clocks that only count (k <= cnt, active, idle FSM, no start/stop).

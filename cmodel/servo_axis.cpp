@@ -2,21 +2,9 @@
 
 namespace sc {
 
-namespace {
-inline uint32_t mask(uint32_t v, int bits) { return bits >= 32 ? v : (v & ((1u << bits) - 1)); }
-inline int32_t smask(int32_t v, int bits) { return int32_t(wrap_signed64(v, bits)); }
-}  // namespace
-
 ServoConfig ServoAxis::registered(const ServoConfig& c) {
   ServoConfig r = c;
-  r.enc_filt = uint8_t(mask(c.enc_filt, EncFiltW));
-  NeuronConfig& n = r.ctl;
-  n.shift = uint8_t(mask(c.ctl.shift, EncShiftW));
-  n.learn_shift = uint8_t(mask(c.ctl.learn_shift, LearnShW));
-  for (uint32_t* p : {&n.k_p, &n.k_v, &n.kb, &n.eta_p1, &n.eta_p2, &n.eta_v1, &n.eta_v2}) *p = mask(*p, CoefW);
-  for (int32_t* p : {&n.w_p1, &n.w_p2, &n.w_v1, &n.w_v2, &n.w_min, &n.w_p1_max, &n.w_p2_max, &n.w_v1_max, &n.w_v2_max}) {
-    *p = smask(*p, WgtW);
-  }
+  r.ctl = ctl_cfg_masked(c.ctl);
   return r;
 }
 
@@ -101,7 +89,7 @@ void ServoAxis::step(const ServoInputs& in) {
   ci.start = exec_start && closed;
   nco_.step(cq.ctl.div, cq.ctl.shift, exec_start, nco_run, nco_u);
   ctl_.step(cq.ctl, ci);
-  dec_.step(in.enc_a, in.enc_b, cq.enc_filt);
+  dec_.step(in.enc_a, in.enc_b, cq.ctl.enc_filt);
 
   // in_q_.cfg always holds registered(cfg of the previous clock); the
   // compare keeps the per-clock cost low while the configuration is static.

@@ -20,8 +20,7 @@ struct ServoConfig {
   bool enable = true;
   bool closed_loop = true;
   PulseTiming timing{};
-  uint8_t enc_filt = 3;
-  NeuronConfig ctl{};
+  NeuronConfig ctl{};  // the closed-loop configuration (incl. the decoder's enc_filt)
   bool operator==(const ServoConfig&) const = default;
 };
 
@@ -91,11 +90,7 @@ class ServoAxis {
     c.enable = false;
     c.closed_loop = false;
     c.timing = PulseTiming{0, 0, 0, 0};
-    c.enc_filt = 0;
-    c.ctl = NeuronConfig{};
-    c.ctl.div = 0;
-    c.ctl.ff_en = false;
-    c.ctl.inpos_hold = 0;
+    c.ctl = ctl_cfg_zero();
     return c;
   }
   // The servo's own input registers (closed_q and the controller's cfg

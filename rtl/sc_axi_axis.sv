@@ -72,7 +72,7 @@ module sc_axi_axis (
   logic signed [PendW-1:0]     unused_pending;
   logic                        unused_exec_start, unused_abort, unused_ref_done, unused_step_busy;
   logic                        unused_closed;
-  logic [sc_pkg::ClCfgWords*32-1:0] unused_cl_cfg;
+  logic [sc_pkg::CtlCfgW-1:0]  unused_ctl_cfg;
 
   sc_axi_regs u_regs (
     .clk_i,
@@ -114,7 +114,7 @@ module sc_axi_axis (
     .start_o         (start),
     .abort_o         (abort),
     .closed_loop_o   (unused_closed),
-    .cl_cfg_o        (unused_cl_cfg),
+    .ctl_cfg_o       (unused_ctl_cfg),
     .busy_i          (core_busy),
     .done_i          (core_done),
     .phase_i         (phase_o),

@@ -72,7 +72,7 @@ module sc_axi_regs #(
   output logic                                start_o,
   output logic                                abort_o,
   output logic                                closed_loop_o,
-  output logic [sc_pkg::ClCfgWords*32-1:0]    cl_cfg_o,
+  output logic [sc_pkg::CtlCfgW-1:0]          ctl_cfg_o,   // controller configuration
 
   // from sc_axis_core
   input  logic                                busy_i,
@@ -143,48 +143,10 @@ module sc_axi_regs #(
   localparam int ErrBadAddrBit = sc_pkg::ErrBadAddrBit;
   localparam int ErrEstopBit   = sc_pkg::ErrEstopBit;
 
-  // implemented bits of a field
-  function automatic logic [31:0] fmask(input int width, input int lsb);
-    fmask = 32'(((64'd1 << width) - 64'd1) << lsb);
-  endfunction
-  function automatic logic [31:0] w32(input int v);
-    w32 = 32'(v);
-  endfunction
-
-  // Closed-loop words: implemented bits and reset values, word 0 lowest.
-  localparam logic [NCfg*32-1:0] ClMask = {
-      fmask(sc_pkg::CtlW, 0),                                  // SETTLE_RATE
-      fmask(sc_pkg::CtlW, 0),                                  // INPOS_WIN
-      fmask(sc_pkg::CtlW, 0),                                  // FERR_LIM
-      fmask(sc_pkg::CtlW, 0),                                  // U_LIM
-      fmask(sc_pkg::CtlW, 0),                                  // V_LIM
-      fmask(sc_pkg::WgtW, 0), fmask(sc_pkg::WgtW, 0),          // W_V2_MAX, W_V1_MAX
-      fmask(sc_pkg::WgtW, 0), fmask(sc_pkg::WgtW, 0),          // W_P2_MAX, W_P1_MAX
-      fmask(sc_pkg::WgtW, 0),                                  // W_MIN
-      fmask(sc_pkg::WgtW, 0), fmask(sc_pkg::WgtW, 0),          // W_V2, W_V1
-      fmask(sc_pkg::WgtW, 0), fmask(sc_pkg::WgtW, 0),          // W_P2, W_P1
-      fmask(sc_pkg::CoefW, 0), fmask(sc_pkg::CoefW, 0),        // ETA_V2, ETA_V1
-      fmask(sc_pkg::CoefW, 0), fmask(sc_pkg::CoefW, 0),        // ETA_P2, ETA_P1
-      fmask(sc_pkg::CoefW, 0), fmask(sc_pkg::CoefW, 0),        // KB, K_V
-      fmask(sc_pkg::CoefW, 0),                                 // K_P
-      fmask(sc_pkg::CtlW, 0), fmask(sc_pkg::CtlW, 0),          // LEARN_DZ_V, LEARN_DZ_P
-      fmask(sc_pkg::HoldW, sc_pkg::ClInposHoldLsb) | fmask(sc_pkg::CtlDivW, sc_pkg::ClDivLsb),
-      fmask(sc_pkg::LearnShW, sc_pkg::ClLearnShLsb) | fmask(1, sc_pkg::ClFfEnBit) |
-      fmask(sc_pkg::EncShiftW, sc_pkg::ClEncShiftLsb) | fmask(sc_pkg::EncFiltW, sc_pkg::ClEncFiltLsb)
-  };
-  localparam logic [NCfg*32-1:0] ClReset = {
-      w32(sc_pkg::RstSettleRate), w32(sc_pkg::RstInposWin), w32(sc_pkg::RstFerrLim),
-      w32(sc_pkg::RstULim), w32(sc_pkg::RstVLim),
-      w32(sc_pkg::RstWv2Max), w32(sc_pkg::RstWv1Max), w32(sc_pkg::RstWp2Max), w32(sc_pkg::RstWp1Max),
-      w32(sc_pkg::RstWmin),
-      w32(sc_pkg::RstWv2), w32(sc_pkg::RstWv1), w32(sc_pkg::RstWp2), w32(sc_pkg::RstWp1),
-      w32(sc_pkg::RstEtaV2), w32(sc_pkg::RstEtaV1), w32(sc_pkg::RstEtaP2), w32(sc_pkg::RstEtaP1),
-      w32(sc_pkg::RstKb), w32(sc_pkg::RstKv), w32(sc_pkg::RstKp),
-      w32(sc_pkg::RstLearnDzV), w32(sc_pkg::RstLearnDzP),
-      (w32(sc_pkg::RstInposHold) << sc_pkg::ClInposHoldLsb) | (w32(sc_pkg::RstCtlDiv) << sc_pkg::ClDivLsb),
-      (w32(sc_pkg::RstLearnShift) << sc_pkg::ClLearnShLsb) | (w32(sc_pkg::RstFfEn) << sc_pkg::ClFfEnBit) |
-      (w32(sc_pkg::RstEncFilt) << sc_pkg::ClEncFiltLsb)
-  };
+  // Closed-loop words: implemented bits and reset values (generated from the
+  // register tags, word 0 lowest).
+  localparam logic [NCfg*32-1:0] ClMask  = sc_pkg::ClCfgMask;
+  localparam logic [NCfg*32-1:0] ClReset = sc_pkg::ClCfgReset;
 
   // byte-strobe merge of a 32-bit register word
   function automatic logic [31:0] wmerge(input logic [31:0] old_v, input logic [31:0] new_v,
@@ -614,7 +576,7 @@ module sc_axi_regs #(
   assign start_o     = start_q;
   assign abort_o     = abort_q;
   assign closed_loop_o = closed_q;
-  assign cl_cfg_o    = cl_q;
+  assign ctl_cfg_o   = sc_pkg::ctl_cfg_from_words(cl_q);
   assign busy_o      = busy_eff;
 
 endmodule

@@ -1,9 +1,10 @@
 // sc_axi_servo: one closed-loop axis behind an AXI4-Lite slave
 // (sc_axi_regs with the closed-loop words + sc_servo_axis). The register
 // file loads the move, the controller settings (CL_CFG .. SETTLE_RATE,
-// one word per cfg_* input) and CTRL.CLOSED_LOOP, and reads back the
-// encoder position, the following error, IN_POS / FAULT_FERR and the
-// controller's u, v_cmd, errors and learned weights. Encoder A/B go to the
+// whose fields form the configuration vector ctl_cfg) and
+// CTRL.CLOSED_LOOP, and reads back the encoder position, the following
+// error, IN_POS / FAULT_FERR and the controller's u, v_cmd, errors and
+// learned weights. Encoder A/B go to the
 // quadrature decoder of sc_servo_axis (which synchronises them); STATUS.ENC_AB
 // shows them through an sc_sync of its own. The model is
 // cmodel/axi_regs.h (AxiServo); the testbench drives both in lockstep.
@@ -61,10 +62,8 @@ module sc_axi_servo (
   localparam int PendW      = sc_pkg::PendW;
   localparam int CtlW       = sc_pkg::CtlW;
   localparam int WgtW       = sc_pkg::WgtW;
-  localparam int CoefW      = sc_pkg::CoefW;
   localparam int NWgtW      = sc_pkg::NWgtW;
   localparam int MulAW      = sc_pkg::MulAW;
-  localparam int NCfg       = sc_pkg::ClCfgWords;
   localparam int NStat      = sc_pkg::ClStatWords;
 
   logic                        enable, closed_loop, seg_we, start, abort;
@@ -78,7 +77,7 @@ module sc_axi_servo (
   logic [SegCntW-1:0]          seg_count;
   logic [FracBits-1:0]         pos_frac0;
   logic                        core_busy, core_done, fault_table, fault_overrun;
-  logic [NCfg*32-1:0]          cl_cfg;
+  logic [sc_pkg::CtlCfgW-1:0]  ctl_cfg;
   logic [NStat*32-1:0]         cl_stat;
   logic [1:0]                  enc_ab_sync;
 
@@ -164,7 +163,7 @@ module sc_axi_servo (
     .start_o         (start),
     .abort_o         (abort),
     .closed_loop_o   (closed_loop),
-    .cl_cfg_o        (cl_cfg),
+    .ctl_cfg_o       (ctl_cfg),
     .busy_i          (core_busy),
     .done_i          (core_done),
     .phase_i         (phase_o),
@@ -202,35 +201,7 @@ module sc_axi_servo (
     .abort_i           (abort),
     .enc_a_i,
     .enc_b_i,
-    .cfg_enc_filt_i    (cl_cfg[32*0 + sc_pkg::ClEncFiltLsb +: sc_pkg::EncFiltW]),
-    .cfg_enc_shift_i   (cl_cfg[32*0 + sc_pkg::ClEncShiftLsb +: sc_pkg::EncShiftW]),
-    .cfg_div_i         (cl_cfg[32*1 + sc_pkg::ClDivLsb +: sc_pkg::CtlDivW]),
-    .cfg_ff_en_i       (cl_cfg[32*0 + sc_pkg::ClFfEnBit]),
-    .cfg_learn_shift_i (cl_cfg[32*0 + sc_pkg::ClLearnShLsb +: sc_pkg::LearnShW]),
-    .cfg_learn_dz_p_i  (cl_cfg[32*2 +: CtlW]),
-    .cfg_learn_dz_v_i  (cl_cfg[32*3 +: CtlW]),
-    .cfg_k_p_i         (cl_cfg[32*4 +: CoefW]),
-    .cfg_k_v_i         (cl_cfg[32*5 +: CoefW]),
-    .cfg_kb_i          (cl_cfg[32*6 +: CoefW]),
-    .cfg_eta_p1_i      (cl_cfg[32*7 +: CoefW]),
-    .cfg_eta_p2_i      (cl_cfg[32*8 +: CoefW]),
-    .cfg_eta_v1_i      (cl_cfg[32*9 +: CoefW]),
-    .cfg_eta_v2_i      (cl_cfg[32*10 +: CoefW]),
-    .cfg_w_p1_i        (cl_cfg[32*11 +: WgtW]),
-    .cfg_w_p2_i        (cl_cfg[32*12 +: WgtW]),
-    .cfg_w_v1_i        (cl_cfg[32*13 +: WgtW]),
-    .cfg_w_v2_i        (cl_cfg[32*14 +: WgtW]),
-    .cfg_w_min_i       (cl_cfg[32*15 +: WgtW]),
-    .cfg_w_p1_max_i    (cl_cfg[32*16 +: WgtW]),
-    .cfg_w_p2_max_i    (cl_cfg[32*17 +: WgtW]),
-    .cfg_w_v1_max_i    (cl_cfg[32*18 +: WgtW]),
-    .cfg_w_v2_max_i    (cl_cfg[32*19 +: WgtW]),
-    .cfg_v_lim_i       (cl_cfg[32*20 +: CtlW]),
-    .cfg_u_lim_i       (cl_cfg[32*21 +: CtlW]),
-    .cfg_ferr_lim_i    (cl_cfg[32*22 +: CtlW]),
-    .cfg_inpos_win_i   (cl_cfg[32*23 +: CtlW]),
-    .cfg_inpos_hold_i  (cl_cfg[32*1 + sc_pkg::ClInposHoldLsb +: sc_pkg::HoldW]),
-    .cfg_settle_rate_i (cl_cfg[32*24 +: CtlW]),
+    .ctl_cfg_i         (ctl_cfg),
     .step_o,
     .dir_o,
     .en_o,

@@ -3,9 +3,9 @@
 // file (LUT RAM, two read ports), one 34-bit adder/subtractor (saturating,
 // compare flags), one signed MulAW x MulBW multiplier and one restoring
 // divider (one quotient bit per clock) for the weight normalisation,
-// sequenced once per control period (cfg_div_i clocks, e.g. 2000 = 10 kHz)
+// sequenced once per control period (div clocks, e.g. 2000 = 10 kHz)
 // by a micro-program of one operation per clock: 141 clocks of work per
-// period (12 more after start_i to initialise), so cfg_div_i must be >= 256.
+// period (12 more after start_i to initialise), so div must be >= 256.
 // Every word the datapath computes goes through the adder, the multiplier
 // or the divider, so the LUTs are operand selection and one of each unit,
 // not one unit per equation.
@@ -36,34 +36,8 @@ module sc_neuron_pi (
   input  logic                                clk_i,
   input  logic                                rst_ni,
 
-  input  logic [sc_pkg::CtlDivW-1:0]          cfg_div_i,
-  input  logic [sc_pkg::EncShiftW-1:0]        cfg_shift_i,
-  input  logic                                cfg_ff_en_i,
-  input  logic [sc_pkg::LearnShW-1:0]         cfg_learn_shift_i,
-  input  logic [sc_pkg::CtlW-1:0]             cfg_learn_dz_p_i,  // no learning while |e| <= dz
-  input  logic [sc_pkg::CtlW-1:0]             cfg_learn_dz_v_i,
-  input  logic [sc_pkg::CoefW-1:0]            cfg_k_p_i,
-  input  logic [sc_pkg::CoefW-1:0]            cfg_k_v_i,
-  input  logic [sc_pkg::CoefW-1:0]            cfg_kb_i,
-  input  logic [sc_pkg::CoefW-1:0]            cfg_eta_p1_i,
-  input  logic [sc_pkg::CoefW-1:0]            cfg_eta_p2_i,
-  input  logic [sc_pkg::CoefW-1:0]            cfg_eta_v1_i,
-  input  logic [sc_pkg::CoefW-1:0]            cfg_eta_v2_i,
-  input  logic signed [sc_pkg::WgtW-1:0]      cfg_w_p1_i,     // initial weights
-  input  logic signed [sc_pkg::WgtW-1:0]      cfg_w_p2_i,
-  input  logic signed [sc_pkg::WgtW-1:0]      cfg_w_v1_i,
-  input  logic signed [sc_pkg::WgtW-1:0]      cfg_w_v2_i,
-  input  logic signed [sc_pkg::WgtW-1:0]      cfg_w_min_i,    // lower bound, all weights
-  input  logic signed [sc_pkg::WgtW-1:0]      cfg_w_p1_max_i, // upper bounds, per weight
-  input  logic signed [sc_pkg::WgtW-1:0]      cfg_w_p2_max_i,
-  input  logic signed [sc_pkg::WgtW-1:0]      cfg_w_v1_max_i,
-  input  logic signed [sc_pkg::WgtW-1:0]      cfg_w_v2_max_i,
-  input  logic [sc_pkg::CtlW-1:0]             cfg_v_lim_i,    // unsigned, < 2^31
-  input  logic [sc_pkg::CtlW-1:0]             cfg_u_lim_i,
-  input  logic [sc_pkg::CtlW-1:0]             cfg_ferr_lim_i,
-  input  logic [sc_pkg::CtlW-1:0]             cfg_inpos_win_i,
-  input  logic [sc_pkg::HoldW-1:0]            cfg_inpos_hold_i,
-  input  logic [sc_pkg::CtlW-1:0]             cfg_settle_rate_i, // corrective step rate, counts/period
+  // controller configuration (fields: sc_pkg::CtlCfg*, docs/regmap.md)
+  input  logic [sc_pkg::CtlCfgW-1:0]          ctl_cfg_i,
 
   input  logic                                start_i,
   input  logic                                stop_i,
@@ -92,7 +66,7 @@ module sc_neuron_pi (
   output logic signed [sc_pkg::NWgtW-1:0]     wn_v1_o,
   output logic signed [sc_pkg::NWgtW-1:0]     wn_v2_o,
   output logic [sc_pkg::CtlStW-1:0]           state_o,
-  // cfg_div_i << cfg_shift_i (clocks per period x counts per pulse), for the
+  // div << shift (clocks per period x counts per pulse), for the
   // step NCO's modulus: one shifter for both
   output logic [sc_pkg::CtlDivW+(1<<sc_pkg::EncShiftW)-2:0] div_sh_o
 );
@@ -117,64 +91,11 @@ module sc_neuron_pi (
   localparam int SumW     = WgtW + 1;
   localparam int DbitW    = 5;
   localparam int AluW     = CtlW + 2;       // exact sum/difference of two CtlW+1-bit words
-  localparam int UpcW     = 6;
+  localparam int UpcW     = sc_pkg::UpcW;
 
-  // state_o: the phase of the period (as the equations above)
-  localparam logic [CtlStW-1:0] StIdle = 4'd0;
-  localparam logic [CtlStW-1:0] StVff  = 4'd1;
-  localparam logic [CtlStW-1:0] StDiv  = 4'd2;
-  localparam logic [CtlStW-1:0] StErr  = 4'd3;
-  localparam logic [CtlStW-1:0] StT1   = 4'd4;
-  localparam logic [CtlStW-1:0] StT2   = 4'd5;
-  localparam logic [CtlStW-1:0] StDu   = 4'd6;
-  localparam logic [CtlStW-1:0] StBc   = 4'd7;
-  localparam logic [CtlStW-1:0] StH1   = 4'd8;
-  localparam logic [CtlStW-1:0] StDw1  = 4'd9;
-  localparam logic [CtlStW-1:0] StH2   = 4'd10;
-  localparam logic [CtlStW-1:0] StDw2  = 4'd11;
-  localparam logic [CtlStW-1:0] StInit = 4'd12;
-
-  // micro-program steps (cmodel/neuron_pi.cpp runs the same list)
-  localparam logic [UpcW-1:0] UIdle  = 6'd0;
-  localparam logic [UpcW-1:0] UInit  = 6'd1;   // 1..12: clear/load the loop registers
-  localparam int              NInit  = 12;
-  localparam logic [UpcW-1:0] UVff   = 6'd13;
-  localparam logic [UpcW-1:0] USet1  = 6'd14;  // |w1| -> drem, T
-  localparam logic [UpcW-1:0] USet2  = 6'd15;  // T + |w2| -> dsum
-  localparam logic [UpcW-1:0] UDiv1  = 6'd16;  // w1 / dsum, NWgtFrac+1 clocks
-  localparam logic [UpcW-1:0] USet3  = 6'd17;  // |w2| -> drem
-  localparam logic [UpcW-1:0] UDiv2  = 6'd18;  // w2 / dsum
-  localparam logic [UpcW-1:0] URef   = 6'd19;  // T = r
-  localparam logic [UpcW-1:0] UErr   = 6'd20;  // eraw = T - y
-  localparam logic [UpcW-1:0] UAbs   = 6'd21;  // T = |eraw|
-  localparam logic [UpcW-1:0] UEq    = 6'd22;  // eraw == e_prev ?
-  localparam logic [UpcW-1:0] UX2    = 6'd23;  // x2 = e - e_prev
-  localparam logic [UpcW-1:0] UE     = 6'd24;  // e
-  localparam logic [UpcW-1:0] UEp    = 6'd25;  // e_prev = eraw
-  localparam logic [UpcW-1:0] ULearn = 6'd26;  // |e| > dead zone ?
-  localparam logic [UpcW-1:0] UFerr  = 6'd27;  // |e_p| > ferr_lim ? (position loop)
-  localparam logic [UpcW-1:0] UWin   = 6'd28;  // in position ? (position loop)
-  localparam logic [UpcW-1:0] UT1    = 6'd29;  // t1 = wn1 e
-  localparam logic [UpcW-1:0] UT2    = 6'd30;  // t2 = wn2 x2
-  localparam logic [UpcW-1:0] USum   = 6'd31;  // sum = sat(t1 + t2)
-  localparam logic [UpcW-1:0] UDu    = 6'd32;  // du = K sum
-  localparam logic [UpcW-1:0] UBc    = 6'd33;  // bc = Kb es
-  localparam logic [UpcW-1:0] UAcc1  = 6'd34;  // T = acc + du
-  localparam logic [UpcW-1:0] UAcc2  = 6'd35;  // acc = sat(T - bc)
-  localparam logic [UpcW-1:0] UTot   = 6'd36;  // tot = sat(acc + b)
-  localparam logic [UpcW-1:0] UHi    = 6'd37;  // es = tot - lim if > 0
-  localparam logic [UpcW-1:0] ULo    = 6'd38;  // es = tot + lim if < 0
-  localparam logic [UpcW-1:0] UOut   = 6'd39;  // out = tot - es
-  localparam logic [UpcW-1:0] UH1    = 6'd40;  // h = e e_b
-  localparam logic [UpcW-1:0] UDw1   = 6'd41;  // dw = eta1 h / 2^ls
-  localparam logic [UpcW-1:0] UW1    = 6'd42;  // T = w1 + dw
-  localparam logic [UpcW-1:0] UW2    = 6'd43;  // T > w1_max ?
-  localparam logic [UpcW-1:0] UW3    = 6'd44;  // T < w_min ?
-  localparam logic [UpcW-1:0] UW4    = 6'd45;  // w1 = clamp
-  localparam logic [UpcW-1:0] UH2    = 6'd46;
-  localparam logic [UpcW-1:0] UDw2   = 6'd47;
-  // 6'd48..6'd51: UW1..UW4 for w2
-  localparam logic [UpcW-1:0] UW8    = 6'd51;
+  // state_o codes (sc_pkg::CtlSt*) and micro-program steps (sc_pkg::Upc*,
+  // cmodel/neuron_pi.cpp runs the same list) come from sc_pkg.
+  localparam int NInit = 32'(sc_pkg::UpcVff) - 32'(sc_pkg::UpcInit);  // Init steps
 
   // register file words; per-loop pairs at even addresses, + sel
   localparam logic [4:0] RfEp   = 5'd0;
@@ -197,6 +118,66 @@ module sc_neuron_pi (
   localparam logic [4:0] RfEraw = 5'd24;
   localparam logic [4:0] RfT2   = 5'd25;
   localparam logic [4:0] RfTot  = 5'd26;
+
+  // ---- configuration fields --------------------------------------------------------
+  logic [sc_pkg::CtlCfgDivW-1:0] cfg_div;
+  logic [sc_pkg::CtlCfgShiftW-1:0] cfg_shift;
+  logic cfg_ff_en;
+  logic [sc_pkg::CtlCfgLearnShiftW-1:0] cfg_learn_shift;
+  logic [sc_pkg::CtlCfgLearnDzPW-1:0] cfg_learn_dz_p;
+  logic [sc_pkg::CtlCfgLearnDzVW-1:0] cfg_learn_dz_v;
+  logic [sc_pkg::CtlCfgKPW-1:0] cfg_k_p;
+  logic [sc_pkg::CtlCfgKVW-1:0] cfg_k_v;
+  logic [sc_pkg::CtlCfgKbW-1:0] cfg_kb;
+  logic [sc_pkg::CtlCfgEtaP1W-1:0] cfg_eta_p1;
+  logic [sc_pkg::CtlCfgEtaP2W-1:0] cfg_eta_p2;
+  logic [sc_pkg::CtlCfgEtaV1W-1:0] cfg_eta_v1;
+  logic [sc_pkg::CtlCfgEtaV2W-1:0] cfg_eta_v2;
+  logic signed [sc_pkg::CtlCfgWP1W-1:0] cfg_w_p1;
+  logic signed [sc_pkg::CtlCfgWP2W-1:0] cfg_w_p2;
+  logic signed [sc_pkg::CtlCfgWV1W-1:0] cfg_w_v1;
+  logic signed [sc_pkg::CtlCfgWV2W-1:0] cfg_w_v2;
+  logic signed [sc_pkg::CtlCfgWMinW-1:0] cfg_w_min;
+  logic signed [sc_pkg::CtlCfgWP1MaxW-1:0] cfg_w_p1_max;
+  logic signed [sc_pkg::CtlCfgWP2MaxW-1:0] cfg_w_p2_max;
+  logic signed [sc_pkg::CtlCfgWV1MaxW-1:0] cfg_w_v1_max;
+  logic signed [sc_pkg::CtlCfgWV2MaxW-1:0] cfg_w_v2_max;
+  logic [sc_pkg::CtlCfgVLimW-1:0] cfg_v_lim;
+  logic [sc_pkg::CtlCfgULimW-1:0] cfg_u_lim;
+  logic [sc_pkg::CtlCfgFerrLimW-1:0] cfg_ferr_lim;
+  logic [sc_pkg::CtlCfgInposWinW-1:0] cfg_inpos_win;
+  logic [sc_pkg::CtlCfgInposHoldW-1:0] cfg_inpos_hold;
+  logic [sc_pkg::CtlCfgSettleRateW-1:0] cfg_settle_rate;
+  assign cfg_div = ctl_cfg_i[sc_pkg::CtlCfgDivLsb +: sc_pkg::CtlCfgDivW];
+  assign cfg_shift = ctl_cfg_i[sc_pkg::CtlCfgShiftLsb +: sc_pkg::CtlCfgShiftW];
+  assign cfg_ff_en = ctl_cfg_i[sc_pkg::CtlCfgFfEnLsb];
+  assign cfg_learn_shift = ctl_cfg_i[sc_pkg::CtlCfgLearnShiftLsb +: sc_pkg::CtlCfgLearnShiftW];
+  assign cfg_learn_dz_p = ctl_cfg_i[sc_pkg::CtlCfgLearnDzPLsb +: sc_pkg::CtlCfgLearnDzPW];
+  assign cfg_learn_dz_v = ctl_cfg_i[sc_pkg::CtlCfgLearnDzVLsb +: sc_pkg::CtlCfgLearnDzVW];
+  assign cfg_k_p = ctl_cfg_i[sc_pkg::CtlCfgKPLsb +: sc_pkg::CtlCfgKPW];
+  assign cfg_k_v = ctl_cfg_i[sc_pkg::CtlCfgKVLsb +: sc_pkg::CtlCfgKVW];
+  assign cfg_kb = ctl_cfg_i[sc_pkg::CtlCfgKbLsb +: sc_pkg::CtlCfgKbW];
+  assign cfg_eta_p1 = ctl_cfg_i[sc_pkg::CtlCfgEtaP1Lsb +: sc_pkg::CtlCfgEtaP1W];
+  assign cfg_eta_p2 = ctl_cfg_i[sc_pkg::CtlCfgEtaP2Lsb +: sc_pkg::CtlCfgEtaP2W];
+  assign cfg_eta_v1 = ctl_cfg_i[sc_pkg::CtlCfgEtaV1Lsb +: sc_pkg::CtlCfgEtaV1W];
+  assign cfg_eta_v2 = ctl_cfg_i[sc_pkg::CtlCfgEtaV2Lsb +: sc_pkg::CtlCfgEtaV2W];
+  assign cfg_w_p1 = ctl_cfg_i[sc_pkg::CtlCfgWP1Lsb +: sc_pkg::CtlCfgWP1W];
+  assign cfg_w_p2 = ctl_cfg_i[sc_pkg::CtlCfgWP2Lsb +: sc_pkg::CtlCfgWP2W];
+  assign cfg_w_v1 = ctl_cfg_i[sc_pkg::CtlCfgWV1Lsb +: sc_pkg::CtlCfgWV1W];
+  assign cfg_w_v2 = ctl_cfg_i[sc_pkg::CtlCfgWV2Lsb +: sc_pkg::CtlCfgWV2W];
+  assign cfg_w_min = ctl_cfg_i[sc_pkg::CtlCfgWMinLsb +: sc_pkg::CtlCfgWMinW];
+  assign cfg_w_p1_max = ctl_cfg_i[sc_pkg::CtlCfgWP1MaxLsb +: sc_pkg::CtlCfgWP1MaxW];
+  assign cfg_w_p2_max = ctl_cfg_i[sc_pkg::CtlCfgWP2MaxLsb +: sc_pkg::CtlCfgWP2MaxW];
+  assign cfg_w_v1_max = ctl_cfg_i[sc_pkg::CtlCfgWV1MaxLsb +: sc_pkg::CtlCfgWV1MaxW];
+  assign cfg_w_v2_max = ctl_cfg_i[sc_pkg::CtlCfgWV2MaxLsb +: sc_pkg::CtlCfgWV2MaxW];
+  assign cfg_v_lim = ctl_cfg_i[sc_pkg::CtlCfgVLimLsb +: sc_pkg::CtlCfgVLimW];
+  assign cfg_u_lim = ctl_cfg_i[sc_pkg::CtlCfgULimLsb +: sc_pkg::CtlCfgULimW];
+  assign cfg_ferr_lim = ctl_cfg_i[sc_pkg::CtlCfgFerrLimLsb +: sc_pkg::CtlCfgFerrLimW];
+  assign cfg_inpos_win = ctl_cfg_i[sc_pkg::CtlCfgInposWinLsb +: sc_pkg::CtlCfgInposWinW];
+  assign cfg_inpos_hold = ctl_cfg_i[sc_pkg::CtlCfgInposHoldLsb +: sc_pkg::CtlCfgInposHoldW];
+  assign cfg_settle_rate = ctl_cfg_i[sc_pkg::CtlCfgSettleRateLsb +: sc_pkg::CtlCfgSettleRateW];
+  logic [sc_pkg::CtlCfgEncFiltW-1:0] unused_enc_filt;  // the decoder's field
+  assign unused_enc_filt = ctl_cfg_i[sc_pkg::CtlCfgEncFiltLsb +: sc_pkg::CtlCfgEncFiltW];
 
   // operand sources
   localparam logic [1:0] ARf = 2'd0, AT = 2'd1, ARef = 2'd2, AZero = 2'd3;
@@ -268,28 +249,28 @@ module sc_neuron_pi (
   logic signed [AluW-1:0] cfg_val;   // unsigned words zero-, weights sign-extended
   always_comb begin
     unique case (cfg_sel)
-      CfDzP:    cfg_val = AluW'({2'b00, cfg_learn_dz_p_i});
-      CfDzV:    cfg_val = AluW'({2'b00, cfg_learn_dz_v_i});
-      CfFerr:   cfg_val = AluW'({2'b00, cfg_ferr_lim_i});
-      CfWin:    cfg_val = AluW'({2'b00, cfg_inpos_win_i});
-      CfVLim:   cfg_val = AluW'({2'b00, cfg_v_lim_i});
-      CfULim:   cfg_val = AluW'({2'b00, cfg_u_lim_i});
-      CfWMin:   cfg_val = AluW'(cfg_w_min_i);
-      CfWP1Max: cfg_val = AluW'(cfg_w_p1_max_i);
-      CfWV1Max: cfg_val = AluW'(cfg_w_v1_max_i);
-      CfWP2Max: cfg_val = AluW'(cfg_w_p2_max_i);
-      CfWV2Max: cfg_val = AluW'(cfg_w_v2_max_i);
-      CfWP1:    cfg_val = AluW'(cfg_w_p1_i);
-      CfWV1:    cfg_val = AluW'(cfg_w_v1_i);
-      CfWP2:    cfg_val = AluW'(cfg_w_p2_i);
-      CfWV2:    cfg_val = AluW'(cfg_w_v2_i);
-      CfKP:     cfg_val = AluW'({1'b0, cfg_k_p_i});
-      CfKV:     cfg_val = AluW'({1'b0, cfg_k_v_i});
-      CfKb:     cfg_val = AluW'({1'b0, cfg_kb_i});
-      CfEtaP1:  cfg_val = AluW'({1'b0, cfg_eta_p1_i});
-      CfEtaV1:  cfg_val = AluW'({1'b0, cfg_eta_v1_i});
-      CfEtaP2:  cfg_val = AluW'({1'b0, cfg_eta_p2_i});
-      CfEtaV2:  cfg_val = AluW'({1'b0, cfg_eta_v2_i});
+      CfDzP:    cfg_val = AluW'({2'b00, cfg_learn_dz_p});
+      CfDzV:    cfg_val = AluW'({2'b00, cfg_learn_dz_v});
+      CfFerr:   cfg_val = AluW'({2'b00, cfg_ferr_lim});
+      CfWin:    cfg_val = AluW'({2'b00, cfg_inpos_win});
+      CfVLim:   cfg_val = AluW'({2'b00, cfg_v_lim});
+      CfULim:   cfg_val = AluW'({2'b00, cfg_u_lim});
+      CfWMin:   cfg_val = AluW'(cfg_w_min);
+      CfWP1Max: cfg_val = AluW'(cfg_w_p1_max);
+      CfWV1Max: cfg_val = AluW'(cfg_w_v1_max);
+      CfWP2Max: cfg_val = AluW'(cfg_w_p2_max);
+      CfWV2Max: cfg_val = AluW'(cfg_w_v2_max);
+      CfWP1:    cfg_val = AluW'(cfg_w_p1);
+      CfWV1:    cfg_val = AluW'(cfg_w_v1);
+      CfWP2:    cfg_val = AluW'(cfg_w_p2);
+      CfWV2:    cfg_val = AluW'(cfg_w_v2);
+      CfKP:     cfg_val = AluW'({1'b0, cfg_k_p});
+      CfKV:     cfg_val = AluW'({1'b0, cfg_k_v});
+      CfKb:     cfg_val = AluW'({1'b0, cfg_kb});
+      CfEtaP1:  cfg_val = AluW'({1'b0, cfg_eta_p1});
+      CfEtaV1:  cfg_val = AluW'({1'b0, cfg_eta_v1});
+      CfEtaP2:  cfg_val = AluW'({1'b0, cfg_eta_p2});
+      CfEtaV2:  cfg_val = AluW'({1'b0, cfg_eta_v2});
       default:  cfg_val = '0;
     endcase
   end
@@ -333,7 +314,7 @@ module sc_neuron_pi (
   // ((p >>> (s-1)) + 1) >>> 1 = (v >>> 1) + v[0].
   localparam int DivShW = CtlDivW + (1 << sc_pkg::EncShiftW) - 1;
   logic [DivShW-1:0]       div_sh;
-  assign div_sh   = DivShW'(cfg_div_i) << cfg_shift_i;
+  assign div_sh   = DivShW'(cfg_div) << cfg_shift;
   assign div_sh_o = div_sh;
 
   logic                    mul_a_vq;  // A operand: V* (else register-file port A)
@@ -373,7 +354,7 @@ module sc_neuron_pi (
   // stage; yosys's generic >>> maps to twice as many LUTs here)
   logic [LearnShW-1:0]  mul_sa;
   logic signed [TW-1:0] mul_s1, mul_s2;
-  assign mul_sa = mul_ls ? cfg_learn_shift_i : LearnShW'(0);
+  assign mul_sa = mul_ls ? cfg_learn_shift : LearnShW'(0);
   always_comb begin
     unique case (mul_sa[1:0])
       2'd0: mul_s1 = mul_t;
@@ -422,7 +403,7 @@ module sc_neuron_pi (
   localparam int CvW = CtlW - CtlFrac + 1;
   logic signed [CvW-1:0]   corr_v;
   logic signed [CvW-2:0]   corr_h;
-  assign corr_v     = CvW'(eraw_q >>> (CtlFrac - 1)) >>> cfg_shift_i;
+  assign corr_v     = CvW'(eraw_q >>> (CtlFrac - 1)) >>> cfg_shift;
   assign corr_h     = corr_v[CvW-1:1];
   assign corr_full  = CtlW'(corr_h) + CtlW'({1'b0, corr_v[0]});
   logic                    corr_in;   // |corr_full| <= 2^(CorrW-1) - 1
@@ -439,12 +420,12 @@ module sc_neuron_pi (
   logic [4:0]        pair;      // the weight this update writes (w1 or w2 of the loop)
   logic [2:0]        w_src;
   logic              t_we;      // T := alu_r
-  logic [UpcW-1:0]   u2;        // step within the weight update (w1: UW1.., w2: UW5..)
+  logic [UpcW-1:0]   u2;        // step within the weight update (w1: sc_pkg::UpcW1.., w2: sc_pkg::UpcW5..)
   logic              w2nd;      // the weight update is for w2
   logic [CtlStW-1:0] st;        // state_o
 
-  assign w2nd = (upc_q >= UH2);
-  assign u2   = w2nd ? upc_q - (UH2 - UH1) : upc_q;
+  assign w2nd = (upc_q >= sc_pkg::UpcH2);
+  assign u2   = w2nd ? upc_q - (sc_pkg::UpcH2 - sc_pkg::UpcH1) : upc_q;
 
   always_comb begin
     ra      = '0;
@@ -463,93 +444,93 @@ module sc_neuron_pi (
     w_src   = WWrap;
     t_we    = 1'b0;
     pair    = '0;
-    st      = StIdle;
+    st      = sc_pkg::CtlStIdle;
     unique case (upc_q)
-      UIdle: st = StIdle;
-      UVff: begin
-        st       = StVff;
+      sc_pkg::UpcIdle: st = sc_pkg::CtlStIdle;
+      sc_pkg::UpcVff: begin
+        st       = sc_pkg::CtlStVff;
         mul_a_vq = 1'b1;
         mb_src   = MbDivSh;
         rf_we    = 1'b1;
         rf_wa    = RfVff;
         w_src    = WMul;
       end
-      USet1, USet2, USet3, UDiv1, UDiv2: begin
-        st      = StDiv;
-        rb      = ((upc_q == USet1 || upc_q == UDiv1) ? RfW1 : RfW2) | {4'd0, sel_q};
-        a_src   = (upc_q == USet2) ? AT : AZero;
+      sc_pkg::UpcSet1, sc_pkg::UpcSet2, sc_pkg::UpcSet3, sc_pkg::UpcDiv1, sc_pkg::UpcDiv2: begin
+        st      = sc_pkg::CtlStDiv;
+        rb      = ((upc_q == sc_pkg::UpcSet1 || upc_q == sc_pkg::UpcDiv1) ? RfW1 : RfW2) | {4'd0, sel_q};
+        a_src   = (upc_q == sc_pkg::UpcSet2) ? AT : AZero;
         b_src   = BRf;
         alu_abs = 1'b1;
-        t_we    = (upc_q == USet1);
-        rf_we   = (upc_q == UDiv1 || upc_q == UDiv2) && dbit_q == '0;
-        rf_wa   = ((upc_q == UDiv1) ? RfN1 : RfN2) | {4'd0, sel_q};
+        t_we    = (upc_q == sc_pkg::UpcSet1);
+        rf_we   = (upc_q == sc_pkg::UpcDiv1 || upc_q == sc_pkg::UpcDiv2) && dbit_q == '0;
+        rf_wa   = ((upc_q == sc_pkg::UpcDiv1) ? RfN1 : RfN2) | {4'd0, sel_q};
         w_src   = WDiv;
       end
-      URef: begin
-        st    = StErr;
+      sc_pkg::UpcRef: begin
+        st    = sc_pkg::CtlStErr;
         a_src = sel_q ? ARf : ARef;
         ra    = RfOutP;
         rb    = RfVff;
-        b_src = (sel_q && cfg_ff_en_i) ? BRf : BZero;
+        b_src = (sel_q && cfg_ff_en) ? BRf : BZero;
         t_we  = 1'b1;
       end
-      UErr: begin
-        st      = StErr;
+      sc_pkg::UpcErr: begin
+        st      = sc_pkg::CtlStErr;
         a_src   = AT;
         b_src   = sel_q ? BVmeas : BPfb;
         alu_sub = 1'b1;
         rf_we   = 1'b1;
         rf_wa   = RfEraw;
       end
-      UAbs: begin
-        st      = StErr;
+      sc_pkg::UpcAbs: begin
+        st      = sc_pkg::CtlStErr;
         rb      = RfEraw;
         b_src   = BRf;
         alu_abs = 1'b1;
         t_we    = 1'b1;
       end
-      UEq, UX2: begin
-        st      = StErr;
+      sc_pkg::UpcEq, sc_pkg::UpcX2: begin
+        st      = sc_pkg::CtlStErr;
         ra      = RfEraw;
         rb      = RfEp | {4'd0, sel_q};
-        a_src   = (upc_q == UX2 && hush_now) ? AZero : ARf;
+        a_src   = (upc_q == sc_pkg::UpcX2 && hush_now) ? AZero : ARf;
         b_src   = BRf;
         alu_sub = 1'b1;
-        rf_we   = (upc_q == UX2);
+        rf_we   = (upc_q == sc_pkg::UpcX2);
         rf_wa   = RfX2;
       end
-      UE, UEp: begin
-        st      = StErr;
+      sc_pkg::UpcE, sc_pkg::UpcEp: begin
+        st      = sc_pkg::CtlStErr;
         ra      = RfEraw;
-        a_src   = (upc_q == UE && hush_now) ? AZero : ARf;
+        a_src   = (upc_q == sc_pkg::UpcE && hush_now) ? AZero : ARf;
         rf_we   = 1'b1;
-        rf_wa   = (upc_q == UE) ? RfE : (RfEp | {4'd0, sel_q});
+        rf_wa   = (upc_q == sc_pkg::UpcE) ? RfE : (RfEp | {4'd0, sel_q});
       end
-      ULearn, UFerr, UWin: begin
-        st      = StErr;
+      sc_pkg::UpcLearn, sc_pkg::UpcFerr, sc_pkg::UpcWin: begin
+        st      = sc_pkg::CtlStErr;
         a_src   = AT;
         b_src   = BCfg;
-        cfg_sel = (upc_q == ULearn) ? (sel_q ? CfDzV : CfDzP) : (upc_q == UFerr) ? CfFerr : CfWin;
+        cfg_sel = (upc_q == sc_pkg::UpcLearn) ? (sel_q ? CfDzV : CfDzP) : (upc_q == sc_pkg::UpcFerr) ? CfFerr : CfWin;
         alu_sub = 1'b1;
       end
-      UT1: begin
-        st    = StT1;
+      sc_pkg::UpcT1: begin
+        st    = sc_pkg::CtlStT1;
         ra    = RfE;
         rb    = RfN1 | {4'd0, sel_q};
         rf_we = 1'b1;
         rf_wa = RfT1;
         w_src = WMul;
       end
-      UT2: begin
-        st    = StT2;
+      sc_pkg::UpcT2: begin
+        st    = sc_pkg::CtlStT2;
         ra    = RfX2;
         rb    = RfN2 | {4'd0, sel_q};
         rf_we = 1'b1;
         rf_wa = RfT2;
         w_src = WMul;
       end
-      USum: begin
-        st    = StT2;
+      sc_pkg::UpcSum: begin
+        st    = sc_pkg::CtlStT2;
         ra    = RfT1;
         rb    = RfT2;
         a_src = ARf;
@@ -558,26 +539,26 @@ module sc_neuron_pi (
         rf_wa = RfSum;
         w_src = WSat;
       end
-      UDu, UBc: begin
-        st      = (upc_q == UDu) ? StDu : StBc;
-        ra      = (upc_q == UDu) ? RfSum : (RfEs | {4'd0, sel_q});
+      sc_pkg::UpcDu, sc_pkg::UpcBc: begin
+        st      = (upc_q == sc_pkg::UpcDu) ? sc_pkg::CtlStDu : sc_pkg::CtlStBc;
+        ra      = (upc_q == sc_pkg::UpcDu) ? RfSum : (RfEs | {4'd0, sel_q});
         mb_src  = MbCfg;
-        cfg_sel = (upc_q == UBc) ? CfKb : sel_q ? CfKV : CfKP;
+        cfg_sel = (upc_q == sc_pkg::UpcBc) ? CfKb : sel_q ? CfKV : CfKP;
         mul_s20 = 1'b1;
         rf_we   = 1'b1;
-        rf_wa   = (upc_q == UDu) ? RfDu : RfBc;
+        rf_wa   = (upc_q == sc_pkg::UpcDu) ? RfDu : RfBc;
         w_src   = WMul;
       end
-      UAcc1: begin
-        st    = StBc;
+      sc_pkg::UpcAcc1: begin
+        st    = sc_pkg::CtlStBc;
         ra    = RfAcc | {4'd0, sel_q};
         rb    = RfDu;
         a_src = ARf;
         b_src = BRf;
         t_we  = 1'b1;
       end
-      UAcc2: begin
-        st      = StBc;
+      sc_pkg::UpcAcc2: begin
+        st      = sc_pkg::CtlStBc;
         rb      = RfBc;
         a_src   = AT;
         b_src   = BRf;
@@ -586,30 +567,30 @@ module sc_neuron_pi (
         rf_wa   = RfAcc | {4'd0, sel_q};
         w_src   = hush_q ? WZero : WSat;
       end
-      UTot: begin
-        st    = StBc;
+      sc_pkg::UpcTot: begin
+        st    = sc_pkg::CtlStBc;
         ra    = RfAcc | {4'd0, sel_q};
         rb    = RfVff;
         a_src = ARf;
-        b_src = (sel_q && cfg_ff_en_i) ? BRf : BZero;
+        b_src = (sel_q && cfg_ff_en) ? BRf : BZero;
         rf_we = 1'b1;
         rf_wa = RfTot;
         w_src = WSat;
       end
-      UHi, ULo: begin
-        st      = StBc;
+      sc_pkg::UpcHi, sc_pkg::UpcLo: begin
+        st      = sc_pkg::CtlStBc;
         ra      = RfTot;
         a_src   = ARf;
         b_src   = BCfg;
         cfg_sel = sel_q ? CfULim : CfVLim;
-        alu_sub = (upc_q == UHi);
+        alu_sub = (upc_q == sc_pkg::UpcHi);
         // es = tot - lim when tot > lim (else 0), then tot + lim when < -lim
-        rf_we   = (upc_q == UHi) || alu_n;
+        rf_we   = (upc_q == sc_pkg::UpcHi) || alu_n;
         rf_wa   = RfEs | {4'd0, sel_q};
-        w_src   = (upc_q == UHi && (alu_n || alu_z)) ? WZero : WWrap;
+        w_src   = (upc_q == sc_pkg::UpcHi && (alu_n || alu_z)) ? WZero : WWrap;
       end
-      UOut: begin
-        st      = StBc;
+      sc_pkg::UpcOut: begin
+        st      = sc_pkg::CtlStBc;
         ra      = RfTot;
         rb      = RfEs | {4'd0, sel_q};
         a_src   = ARf;
@@ -618,20 +599,20 @@ module sc_neuron_pi (
         rf_we   = !sel_q;
         rf_wa   = RfOutP;
       end
-      UH1, UH2: begin
-        st     = (upc_q == UH1) ? StH1 : StH2;
-        ra     = (upc_q == UH1) ? RfE : RfX2;
+      sc_pkg::UpcH1, sc_pkg::UpcH2: begin
+        st     = (upc_q == sc_pkg::UpcH1) ? sc_pkg::CtlStH1 : sc_pkg::CtlStH2;
+        ra     = (upc_q == sc_pkg::UpcH1) ? RfE : RfX2;
         rb     = RfE;
         mb_src = MbEb;
         rf_we  = 1'b1;
         rf_wa  = RfH;
         w_src  = WMul;
       end
-      UDw1, UDw2: begin
-        st      = (upc_q == UDw1) ? StDw1 : StDw2;
+      sc_pkg::UpcDw1, sc_pkg::UpcDw2: begin
+        st      = (upc_q == sc_pkg::UpcDw1) ? sc_pkg::CtlStDw1 : sc_pkg::CtlStDw2;
         ra      = RfH;
         mb_src  = MbCfg;
-        cfg_sel = (upc_q == UDw1) ? (sel_q ? CfEtaV1 : CfEtaP1) : (sel_q ? CfEtaV2 : CfEtaP2);
+        cfg_sel = (upc_q == sc_pkg::UpcDw1) ? (sel_q ? CfEtaV1 : CfEtaP1) : (sel_q ? CfEtaV2 : CfEtaP2);
         mul_s20 = 1'b1;
         mul_ls  = 1'b1;
         rf_we   = 1'b1;
@@ -639,23 +620,23 @@ module sc_neuron_pi (
         w_src   = WMul;
       end
       default: begin
-        // UW1..UW4 (w1), UW5..UW8 (w2)
-        if (upc_q >= UW1 && upc_q <= UW8 && upc_q != UH2 && upc_q != UDw2) begin
-          st      = w2nd ? StDw2 : StDw1;
+        // sc_pkg::UpcW1..sc_pkg::UpcW4 (w1), sc_pkg::UpcW5..sc_pkg::UpcW8 (w2)
+        if (upc_q >= sc_pkg::UpcW1 && upc_q <= sc_pkg::UpcW8 && upc_q != sc_pkg::UpcH2 && upc_q != sc_pkg::UpcDw2) begin
+          st      = w2nd ? sc_pkg::CtlStDw2 : sc_pkg::CtlStDw1;
           pair    = (w2nd ? RfW2 : RfW1) | {4'd0, sel_q};
-          cfg_sel = (u2 == UW3) ? CfWMin :
-                    (u2 == UW4) ? (over_q ? (w2nd ? (sel_q ? CfWV2Max : CfWP2Max)
+          cfg_sel = (u2 == sc_pkg::UpcW3) ? CfWMin :
+                    (u2 == sc_pkg::UpcW4) ? (over_q ? (w2nd ? (sel_q ? CfWV2Max : CfWP2Max)
                                                   : (sel_q ? CfWV1Max : CfWP1Max)) : CfWMin) :
                     w2nd ? (sel_q ? CfWV2Max : CfWP2Max) : (sel_q ? CfWV1Max : CfWP1Max);
           unique case (u2)
-            UW1: begin                      // T = w + dw
+            sc_pkg::UpcW1: begin                      // T = w + dw
               ra    = pair;
               rb    = RfDw;
               a_src = ARf;
               b_src = BRf;
               t_we  = 1'b1;
             end
-            UW2, UW3: begin                 // T - w_max > 0 ?  T - w_min < 0 ?
+            sc_pkg::UpcW2, sc_pkg::UpcW3: begin                 // T - w_max > 0 ?  T - w_min < 0 ?
               a_src   = AT;
               b_src   = BCfg;
               alu_sub = 1'b1;
@@ -667,12 +648,12 @@ module sc_neuron_pi (
               rf_wa = pair;
             end
           endcase
-        end else if (upc_q >= UInit && upc_q < UInit + 6'(NInit)) begin
+        end else if (upc_q >= sc_pkg::UpcInit && upc_q < sc_pkg::UpcInit + 6'(NInit)) begin
           // start: e_prev, acc, es, out_p, vff = 0; weights = their initial values
-          st    = StInit;
+          st    = sc_pkg::CtlStInit;
           rf_we = 1'b1;
           b_src = BCfg;
-          unique case (upc_q - UInit)
+          unique case (upc_q - sc_pkg::UpcInit)
             6'd0: rf_wa = RfEp;
             6'd1: rf_wa = RfEp + 5'd1;
             6'd2: rf_wa = RfAcc;
@@ -686,7 +667,7 @@ module sc_neuron_pi (
             6'd10: begin rf_wa = RfW2;        cfg_sel = CfWP2; end
             default: begin rf_wa = RfW2 + 5'd1; cfg_sel = CfWV2; end
           endcase
-          if (upc_q - UInit < 6'd8) b_src = BZero;
+          if (upc_q - sc_pkg::UpcInit < 6'd8) b_src = BZero;
         end
       end
     endcase
@@ -736,12 +717,12 @@ module sc_neuron_pi (
 
     if (active_q) begin
       if (cnt_q == '0) begin
-        cnt_d = cfg_div_i - CtlDivW'(1);
-        if (upc_q == UIdle) begin
+        cnt_d = cfg_div - CtlDivW'(1);
+        if (upc_q == sc_pkg::UpcIdle) begin
           // snapshot: P* - 1/2 (the integer target L once the reference is done), P, V
           ref_d   = (ref_done_i ? CtlW'(ref_int_i) << CtlFrac
                                     : CtlW'({ref_int_i, ref_frac_i}) - (CtlW'(1) << (CtlFrac - 1)))
-                    <<< cfg_shift_i;
+                    <<< cfg_shift;
           pfb_d   = CtlW'(enc_pos_i) <<< CtlFrac;
           vmeas_d = (CtlW'(enc_pos_i) <<< CtlFrac) - pfb_q;
           vq_d    = ref_vel_i;
@@ -749,57 +730,57 @@ module sc_neuron_pi (
           mvs_d   = mv_q | cmd_busy_i;
           mv_d    = 1'b0;
           sel_d   = 1'b0;
-          upc_d   = UVff;
+          upc_d   = sc_pkg::UpcVff;
         end
       end else begin
         cnt_d = cnt_q - CtlDivW'(1);
       end
     end
 
-    if (upc_q != UIdle) upc_d = upc_q + 6'd1;
-    if (upc_q == UInit + 6'(NInit - 1)) upc_d = UIdle;   // wait for the first snapshot
+    if (upc_q != sc_pkg::UpcIdle) upc_d = upc_q + 6'd1;
+    if (upc_q == sc_pkg::UpcInit + 6'(NInit - 1)) upc_d = sc_pkg::UpcIdle;   // wait for the first snapshot
     unique case (upc_q)
-      UIdle: ;
-      USet1: drem_d = RemW'(alu_r);
-      USet2: begin
+      sc_pkg::UpcIdle: ;
+      sc_pkg::UpcSet1: drem_d = RemW'(alu_r);
+      sc_pkg::UpcSet2: begin
         dsum_d = SumW'(alu_r);
         dbit_d = DbitW'(NWgtFrac);
         dquo_d = '0;
       end
-      USet3: begin
+      sc_pkg::UpcSet3: begin
         drem_d = RemW'(alu_r);
         dbit_d = DbitW'(NWgtFrac);
         dquo_d = '0;
       end
-      UDiv1, UDiv2: begin
+      sc_pkg::UpcDiv1, sc_pkg::UpcDiv2: begin
         drem_d = div_rem_sub << 1;
         dquo_d = div_quo;
         dbit_d = dbit_q - DbitW'(1);
         if (dbit_q != '0) upc_d = upc_q;
       end
-      UErr: eraw_d = alu_r[CtlW-1:0];
-      UEq: eq_d = alu_z;
-      UEp: if (!sel_q) hush_d = hush_now;
-      ULearn: learn_d = !hush_now && !alu_n && !alu_z;
-      UFerr: begin
+      sc_pkg::UpcErr: eraw_d = alu_r[CtlW-1:0];
+      sc_pkg::UpcEq: eq_d = alu_z;
+      sc_pkg::UpcEp: if (!sel_q) hush_d = hush_now;
+      sc_pkg::UpcLearn: learn_d = !hush_now && !alu_n && !alu_z;
+      sc_pkg::UpcFerr: begin
         if (!sel_q && !alu_n && !alu_z) begin
           ferr_d   = 1'b1;
           active_d = 1'b0;
           u_d      = '0;
-          upc_d    = UIdle;
+          upc_d    = sc_pkg::UpcIdle;
         end
       end
-      UWin: begin
+      sc_pkg::UpcWin: begin
         if (!sel_q) begin
           if (fin_q && !mvs_q && corr_q == '0 && eq_q) begin
             hold_d = hold_q + HoldW'(1);
-            if (hold_d >= cfg_inpos_hold_i) begin
+            if (hold_d >= cfg_inpos_hold) begin
               hold_d = '0;
               if (alu_n || alu_z || corr_steps == '0) begin   // |e_p| <= win
                 in_pos_d = 1'b1;
                 active_d = 1'b0;
                 u_d      = '0;
-                upc_d    = UIdle;
+                upc_d    = sc_pkg::UpcIdle;
               end else begin
                 corr_d = corr_steps;
               end
@@ -809,23 +790,23 @@ module sc_neuron_pi (
           end
         end
       end
-      UOut: if (sel_q) u_d = alu_r[CtlW-1:0];
+      sc_pkg::UpcOut: if (sel_q) u_d = alu_r[CtlW-1:0];
       default: ;
     endcase
-    if (u2 == UW2 && upc_q != UH2 && upc_q != UDw2) over_d = !alu_n && !alu_z;
-    if (u2 == UW3 && upc_q != UH2 && upc_q != UDw2) under_d = alu_n;
-    if (upc_q == UW8) begin
+    if (u2 == sc_pkg::UpcW2 && upc_q != sc_pkg::UpcH2 && upc_q != sc_pkg::UpcDw2) over_d = !alu_n && !alu_z;
+    if (u2 == sc_pkg::UpcW3 && upc_q != sc_pkg::UpcH2 && upc_q != sc_pkg::UpcDw2) under_d = alu_n;
+    if (upc_q == sc_pkg::UpcW8) begin
       if (sel_q) begin
-        upc_d = UIdle;
+        upc_d = sc_pkg::UpcIdle;
       end else begin
         sel_d = 1'b1;
-        upc_d = USet1;
+        upc_d = sc_pkg::UpcSet1;
       end
     end
 
     // settling: the rate command is the corrective stepping only
     if (fin_q && active_d) begin
-      u_d = (corr_d == '0) ? '0 : corr_d[CorrW-1] ? -$signed(cfg_settle_rate_i) : $signed(cfg_settle_rate_i);
+      u_d = (corr_d == '0) ? '0 : corr_d[CorrW-1] ? -$signed(cfg_settle_rate) : $signed(cfg_settle_rate);
     end
 
     if (start_i) begin
@@ -833,7 +814,7 @@ module sc_neuron_pi (
       in_pos_d = 1'b0;
       ferr_d   = 1'b0;
       cnt_d    = CtlDivW'(NInit);   // the first snapshot follows the initialisation
-      upc_d    = UInit;
+      upc_d    = sc_pkg::UpcInit;
       sel_d    = 1'b0;
       hold_d   = '0;
       hush_d   = 1'b0;
@@ -844,7 +825,7 @@ module sc_neuron_pi (
       u_d      = '0;
     end else if (stop_i) begin
       active_d = 1'b0;
-      upc_d    = UIdle;
+      upc_d    = sc_pkg::UpcIdle;
       u_d      = '0;
     end
   end
@@ -886,7 +867,7 @@ module sc_neuron_pi (
       in_pos_q <= 1'b0;
       ferr_q   <= 1'b0;
       cnt_q    <= '0;
-      upc_q    <= UIdle;
+      upc_q    <= sc_pkg::UpcIdle;
       sel_q    <= 1'b0;
       dbit_q   <= '0;
       drem_q   <= '0;

@@ -1,6 +1,11 @@
-// sc_pkg: the single definition of every width, Q format and code shared by
-// the RTL and the C++ model. CMake parses this file (scripts/gen_params.py)
-// into build/generated/sc_params.h, so the model cannot drift from the RTL.
+// sc_pkg: the single definition of every width, Q format, code and layout
+// shared by the RTL, the C++ model, the host software and the docs. CMake
+// parses this file (scripts/gen_params.py) into build/generated/sc_params.h,
+// so the model cannot drift from the RTL. The //@ tags are the source of the
+// register map, the controller configuration and the encodings:
+// scripts/gen_layout.py writes the generated section at the end of this
+// package, build/generated/sc_layout.h and docs/regmap.md ("Register and
+// layout source" there).
 //
 // Fixed-point convention (all kinematic quantities in pulses, time in clocks):
 //   position fraction  UQ0.FracBits        pulses
@@ -56,6 +61,68 @@ package sc_pkg;
   localparam int NcoW      = 42;  // step NCO phase (signed, holds acc + u)
   localparam int CtlStW    = 4;   // controller FSM state code
   localparam int CorrW     = 16;  // settle-phase corrective steps (signed)
+  localparam int UpcW      = 6;   // micro-program step of sc_neuron_pi
+
+  // Encodings of sc_neuron_pi, used by the RTL and cmodel/neuron_pi.* under
+  // the generated names CtlSt<Name> / Upc<Name> (values count up from the
+  // previous one unless given). //@enum TYPE WIDTH "text";
+  // //@value TYPE NAME [=N] "text".
+  //@enum CtlSt CtlStW "phase of the control period: sc_neuron_pi state_o, CL_STATUS.CTL_STATE"
+  //@value CtlSt Idle =0 "stopped, or waiting for the next period strobe"
+  //@value CtlSt Vff "feed-forward product V* x div << shift"
+  //@value CtlSt Div "weight normalisation wn_i = w_i / (|w_1| + |w_2|) (divider)"
+  //@value CtlSt Err "errors e, x2 = e - e_prev, learning/fault/in-position flags"
+  //@value CtlSt T1 "t1 = wn_1 x1"
+  //@value CtlSt T2 "t2 = wn_2 x2, sum = sat(t1 + t2)"
+  //@value CtlSt Du "du = K sum"
+  //@value CtlSt Bc "back-calculation, accumulator, output limit"
+  //@value CtlSt H1 "Hebb product e x1"
+  //@value CtlSt Dw1 "w_1 update and clamp"
+  //@value CtlSt H2 "Hebb product e x2"
+  //@value CtlSt Dw2 "w_2 update and clamp"
+  //@value CtlSt Init "after start: loop registers cleared, weights loaded"
+  //@enum Upc UpcW "micro-program step of sc_neuron_pi (one operation per clock)"
+  //@value Upc Idle =0 "no operation; the period counter runs"
+  //@value Upc Init =1 "1..12: clear/load the loop registers after start"
+  //@value Upc Vff =13 "vff = V* x (div << shift)"
+  //@value Upc Set1 "|w1| -> drem, T"
+  //@value Upc Set2 "T + |w2| -> dsum"
+  //@value Upc Div1 "w1 / dsum, NWgtFrac+1 clocks"
+  //@value Upc Set3 "|w2| -> drem"
+  //@value Upc Div2 "w2 / dsum"
+  //@value Upc Ref "T = r"
+  //@value Upc Err "eraw = T - y"
+  //@value Upc Abs "T = |eraw|"
+  //@value Upc Eq "eraw == e_prev ?"
+  //@value Upc X2 "x2 = e - e_prev"
+  //@value Upc E "e"
+  //@value Upc Ep "e_prev = eraw"
+  //@value Upc Learn "|e| > dead zone ?"
+  //@value Upc Ferr "|e_p| > ferr_lim ? (position loop)"
+  //@value Upc Win "in position ? (position loop)"
+  //@value Upc T1 "t1 = wn1 e"
+  //@value Upc T2 "t2 = wn2 x2"
+  //@value Upc Sum "sum = sat(t1 + t2)"
+  //@value Upc Du "du = K sum"
+  //@value Upc Bc "bc = Kb es"
+  //@value Upc Acc1 "T = acc + du"
+  //@value Upc Acc2 "acc = sat(T - bc)"
+  //@value Upc Tot "tot = sat(acc + b)"
+  //@value Upc Hi "es = tot - lim if > 0"
+  //@value Upc Lo "es = tot + lim if < 0"
+  //@value Upc Out "out = tot - es"
+  //@value Upc H1 "h = e e_b (w1)"
+  //@value Upc Dw1 "dw = eta1 h / 2^ls"
+  //@value Upc W1 "T = w1 + dw"
+  //@value Upc W2 "T > w1_max ?"
+  //@value Upc W3 "T < w_min ?"
+  //@value Upc W4 "w1 = clamp"
+  //@value Upc H2 "h = e e_b (w2)"
+  //@value Upc Dw2 "dw = eta2 h / 2^ls"
+  //@value Upc W5 "T = w2 + dw"
+  //@value Upc W6 "T > w2_max ?"
+  //@value Upc W7 "T < w_min ?"
+  //@value Upc W8 "w2 = clamp; next loop or idle"
 
   // ---- status ------------------------------------------------------------
   localparam int PhaseW = 4;
@@ -146,13 +213,18 @@ package sc_pkg;
   localparam int RegSegCommit  = 32'h0000_0064;  //@reg SEG_COMMIT WO "write the staged row into the table; reads 0"
   localparam int SegCommitLsb  = 0;      //@field SEG_COMMIT ROW SegIdxW "table row (0..15) to write"
   // Closed-loop controller settings (sc_axi_servo only; DECERR in
-  // sc_axi_axis): one 32-bit word per cfg_* input of sc_servo_axis, words
-  // RegClFirst .. RegClFirst + 4 * (ClCfgWords - 1) in this order. Reset
+  // sc_axi_axis): words RegClFirst .. RegClFirst + 4 * (ClCfgWords - 1), the
+  // registers tagged `servo` whose fields carry cfg=MEMBER. Those fields are
+  // the closed-loop configuration: scripts/gen_layout.py generates from
+  // them ClCfgWords, the CtlCfg* layout of the configuration vector that
+  // travels sc_axi_regs -> sc_servo_axis -> sc_neuron_pi, the word masks,
+  // reset values and decode (generated section at the end of this package)
+  // and the C++ struct sc::CtlCfg (build/generated/sc_layout.h). Field tag
+  // extras: cfg=MEMBER, signed, q=FRAC_BITS, unit=UNIT. Reset
   // values = the closed-loop runner's defaults (tb/closed_loop_run.h,
   // 1 encoder count per pulse, 10 kHz control rate, 50/50-clock STEP).
   // Units: docs/closed_loop.md (Q.CtlFrac counts or counts per control
   // period, coefficients Q.CoefFrac, weights signed Q.WgtFrac).
-  localparam int ClCfgWords    = 25;
   localparam int ClStatWords   = 9;
   localparam int RstEncFilt    = 3;
   localparam int RstFfEn       = 1;
@@ -184,65 +256,65 @@ package sc_pkg;
   localparam int RstSettleRate = 3277;
   localparam int RegClFirst    = 32'h0000_0068;
   localparam int RegClCfg      = 32'h0000_0068;  //@reg CL_CFG RW servo "closed loop: encoder and learning options"
-  localparam int ClEncFiltLsb  = 0;      //@field CL_CFG ENC_FILT EncFiltW reset=RstEncFilt "encoder glitch filter, clocks (0..15)"
-  localparam int ClEncShiftLsb = 4;      //@field CL_CFG ENC_SHIFT EncShiftW reset=0 "log2(encoder counts per STEP pulse)"
-  localparam int ClFfEnBit     = 8;      //@field CL_CFG FF_EN 1 reset=RstFfEn "velocity feed-forward from V*"
-  localparam int ClLearnShLsb  = 12;     //@field CL_CFG LEARN_SHIFT LearnShW reset=RstLearnShift "Hebb scale: dw = eta e x / 2^LEARN_SHIFT"
+  localparam int ClEncFiltLsb  = 0;      //@field CL_CFG ENC_FILT EncFiltW reset=RstEncFilt cfg=enc_filt unit=clocks "encoder glitch filter, clocks (0..15)"
+  localparam int ClEncShiftLsb = 4;      //@field CL_CFG ENC_SHIFT EncShiftW reset=0 cfg=shift unit=log2 "log2(encoder counts per STEP pulse)"
+  localparam int ClFfEnBit     = 8;      //@field CL_CFG FF_EN 1 reset=RstFfEn cfg=ff_en unit=flag "velocity feed-forward from V*"
+  localparam int ClLearnShLsb  = 12;     //@field CL_CFG LEARN_SHIFT LearnShW reset=RstLearnShift cfg=learn_shift unit=log2 "Hebb scale: dw = eta e x / 2^LEARN_SHIFT"
   localparam int RegClPeriod   = 32'h0000_006C;  //@reg CL_PERIOD RW servo "closed loop: control period and in-position hold"
-  localparam int ClDivLsb      = 0;      //@field CL_PERIOD DIV CtlDivW reset=RstCtlDiv "control period, clocks (2000 = 10 kHz; at least 256)"
-  localparam int ClInposHoldLsb = 16;    //@field CL_PERIOD INPOS_HOLD HoldW reset=RstInposHold "in-position hold, control periods"
+  localparam int ClDivLsb      = 0;      //@field CL_PERIOD DIV CtlDivW reset=RstCtlDiv cfg=div unit=clocks "control period, clocks (2000 = 10 kHz; at least 256)"
+  localparam int ClInposHoldLsb = 16;    //@field CL_PERIOD INPOS_HOLD HoldW reset=RstInposHold cfg=inpos_hold unit=periods "in-position hold, control periods"
   localparam int RegClLearnDzP = 32'h0000_0070;  //@reg LEARN_DZ_P RW servo "no position-loop learning while |e_p| <= this, counts Q.16"
-  localparam int ClLearnDzPLsb = 0;      //@field LEARN_DZ_P VALUE CtlW reset=RstLearnDzP "counts, Q.CtlFrac"
+  localparam int ClLearnDzPLsb = 0;      //@field LEARN_DZ_P VALUE CtlW reset=RstLearnDzP cfg=learn_dz_p q=CtlFrac unit=counts "counts, Q.CtlFrac"
   localparam int RegClLearnDzV = 32'h0000_0074;  //@reg LEARN_DZ_V RW servo "no speed-loop learning while |e_v| <= this, counts/period Q.16"
-  localparam int ClLearnDzVLsb = 0;      //@field LEARN_DZ_V VALUE CtlW reset=RstLearnDzV "counts per control period, Q.CtlFrac"
+  localparam int ClLearnDzVLsb = 0;      //@field LEARN_DZ_V VALUE CtlW reset=RstLearnDzV cfg=learn_dz_v q=CtlFrac unit=counts/period "counts per control period, Q.CtlFrac"
   localparam int RegClKp       = 32'h0000_0078;  //@reg K_P RW servo "position neuron gain K_p, unsigned Q.20"
-  localparam int ClKpLsb       = 0;      //@field K_P VALUE CoefW reset=RstKp "Q.CoefFrac"
+  localparam int ClKpLsb       = 0;      //@field K_P VALUE CoefW reset=RstKp cfg=k_p q=CoefFrac unit=1 "Q.CoefFrac"
   localparam int RegClKv       = 32'h0000_007C;  //@reg K_V RW servo "speed neuron gain K_v, unsigned Q.20"
-  localparam int ClKvLsb       = 0;      //@field K_V VALUE CoefW reset=RstKv "Q.CoefFrac"
+  localparam int ClKvLsb       = 0;      //@field K_V VALUE CoefW reset=RstKv cfg=k_v q=CoefFrac unit=1 "Q.CoefFrac"
   localparam int RegClKb       = 32'h0000_0080;  //@reg KB RW servo "back-calculation (anti-windup) gain, unsigned Q.20"
-  localparam int ClKbLsb       = 0;      //@field KB VALUE CoefW reset=RstKb "Q.CoefFrac"
+  localparam int ClKbLsb       = 0;      //@field KB VALUE CoefW reset=RstKb cfg=kb q=CoefFrac unit=1 "Q.CoefFrac"
   localparam int RegClEtaP1    = 32'h0000_0084;  //@reg ETA_P1 RW servo "learning rate, position loop, integral weight, Q.20"
-  localparam int ClEtaP1Lsb    = 0;      //@field ETA_P1 VALUE CoefW reset=RstEtaP1 "Q.CoefFrac (0: fixed gain)"
+  localparam int ClEtaP1Lsb    = 0;      //@field ETA_P1 VALUE CoefW reset=RstEtaP1 cfg=eta_p1 q=CoefFrac unit=1 "Q.CoefFrac (0: fixed gain)"
   localparam int RegClEtaP2    = 32'h0000_0088;  //@reg ETA_P2 RW servo "learning rate, position loop, proportional weight, Q.20"
-  localparam int ClEtaP2Lsb    = 0;      //@field ETA_P2 VALUE CoefW reset=RstEtaP2 "Q.CoefFrac"
+  localparam int ClEtaP2Lsb    = 0;      //@field ETA_P2 VALUE CoefW reset=RstEtaP2 cfg=eta_p2 q=CoefFrac unit=1 "Q.CoefFrac"
   localparam int RegClEtaV1    = 32'h0000_008C;  //@reg ETA_V1 RW servo "learning rate, speed loop, integral weight, Q.20"
-  localparam int ClEtaV1Lsb    = 0;      //@field ETA_V1 VALUE CoefW reset=RstEtaV1 "Q.CoefFrac"
+  localparam int ClEtaV1Lsb    = 0;      //@field ETA_V1 VALUE CoefW reset=RstEtaV1 cfg=eta_v1 q=CoefFrac unit=1 "Q.CoefFrac"
   localparam int RegClEtaV2    = 32'h0000_0090;  //@reg ETA_V2 RW servo "learning rate, speed loop, proportional weight, Q.20"
-  localparam int ClEtaV2Lsb    = 0;      //@field ETA_V2 VALUE CoefW reset=RstEtaV2 "Q.CoefFrac"
+  localparam int ClEtaV2Lsb    = 0;      //@field ETA_V2 VALUE CoefW reset=RstEtaV2 cfg=eta_v2 q=CoefFrac unit=1 "Q.CoefFrac"
   localparam int RegClWp1      = 32'h0000_0094;  //@reg W_P1 RW servo "initial weight, position loop, integral (signed Q.16)"
-  localparam int ClWp1Lsb      = 0;      //@field W_P1 VALUE WgtW reset=RstWp1 "signed Q.WgtFrac, 24 bits"
+  localparam int ClWp1Lsb      = 0;      //@field W_P1 VALUE WgtW reset=RstWp1 cfg=w_p1 signed q=WgtFrac unit=1 "signed Q.WgtFrac, 24 bits"
   localparam int RegClWp2      = 32'h0000_0098;  //@reg W_P2 RW servo "initial weight, position loop, proportional (signed Q.16)"
-  localparam int ClWp2Lsb      = 0;      //@field W_P2 VALUE WgtW reset=RstWp2 "signed Q.WgtFrac, 24 bits"
+  localparam int ClWp2Lsb      = 0;      //@field W_P2 VALUE WgtW reset=RstWp2 cfg=w_p2 signed q=WgtFrac unit=1 "signed Q.WgtFrac, 24 bits"
   localparam int RegClWv1      = 32'h0000_009C;  //@reg W_V1 RW servo "initial weight, speed loop, integral (signed Q.16)"
-  localparam int ClWv1Lsb      = 0;      //@field W_V1 VALUE WgtW reset=RstWv1 "signed Q.WgtFrac, 24 bits"
+  localparam int ClWv1Lsb      = 0;      //@field W_V1 VALUE WgtW reset=RstWv1 cfg=w_v1 signed q=WgtFrac unit=1 "signed Q.WgtFrac, 24 bits"
   localparam int RegClWv2      = 32'h0000_00A0;  //@reg W_V2 RW servo "initial weight, speed loop, proportional (signed Q.16)"
-  localparam int ClWv2Lsb      = 0;      //@field W_V2 VALUE WgtW reset=RstWv2 "signed Q.WgtFrac, 24 bits"
+  localparam int ClWv2Lsb      = 0;      //@field W_V2 VALUE WgtW reset=RstWv2 cfg=w_v2 signed q=WgtFrac unit=1 "signed Q.WgtFrac, 24 bits"
   localparam int RegClWmin     = 32'h0000_00A4;  //@reg W_MIN RW servo "lower bound of every weight (signed Q.16)"
-  localparam int ClWminLsb     = 0;      //@field W_MIN VALUE WgtW reset=RstWmin "signed Q.WgtFrac, 24 bits"
+  localparam int ClWminLsb     = 0;      //@field W_MIN VALUE WgtW reset=RstWmin cfg=w_min signed q=WgtFrac unit=1 "signed Q.WgtFrac, 24 bits"
   localparam int RegClWp1Max   = 32'h0000_00A8;  //@reg W_P1_MAX RW servo "upper bound of W_P1 (signed Q.16)"
-  localparam int ClWp1MaxLsb   = 0;      //@field W_P1_MAX VALUE WgtW reset=RstWp1Max "signed Q.WgtFrac, 24 bits"
+  localparam int ClWp1MaxLsb   = 0;      //@field W_P1_MAX VALUE WgtW reset=RstWp1Max cfg=w_p1_max signed q=WgtFrac unit=1 "signed Q.WgtFrac, 24 bits"
   localparam int RegClWp2Max   = 32'h0000_00AC;  //@reg W_P2_MAX RW servo "upper bound of W_P2 (signed Q.16)"
-  localparam int ClWp2MaxLsb   = 0;      //@field W_P2_MAX VALUE WgtW reset=RstWp2Max "signed Q.WgtFrac, 24 bits"
+  localparam int ClWp2MaxLsb   = 0;      //@field W_P2_MAX VALUE WgtW reset=RstWp2Max cfg=w_p2_max signed q=WgtFrac unit=1 "signed Q.WgtFrac, 24 bits"
   localparam int RegClWv1Max   = 32'h0000_00B0;  //@reg W_V1_MAX RW servo "upper bound of W_V1 (signed Q.16)"
-  localparam int ClWv1MaxLsb   = 0;      //@field W_V1_MAX VALUE WgtW reset=RstWv1Max "signed Q.WgtFrac, 24 bits"
+  localparam int ClWv1MaxLsb   = 0;      //@field W_V1_MAX VALUE WgtW reset=RstWv1Max cfg=w_v1_max signed q=WgtFrac unit=1 "signed Q.WgtFrac, 24 bits"
   localparam int RegClWv2Max   = 32'h0000_00B4;  //@reg W_V2_MAX RW servo "upper bound of W_V2 (signed Q.16)"
-  localparam int ClWv2MaxLsb   = 0;      //@field W_V2_MAX VALUE WgtW reset=RstWv2Max "signed Q.WgtFrac, 24 bits"
+  localparam int ClWv2MaxLsb   = 0;      //@field W_V2_MAX VALUE WgtW reset=RstWv2Max cfg=w_v2_max signed q=WgtFrac unit=1 "signed Q.WgtFrac, 24 bits"
   localparam int RegClVLim     = 32'h0000_00B8;  //@reg V_LIM RW servo "|position-loop output| limit, counts/period Q.16"
-  localparam int ClVLimLsb     = 0;      //@field V_LIM VALUE CtlW reset=RstVLim "Q.CtlFrac (32768 = 5000 pulses/s at 10 kHz)"
+  localparam int ClVLimLsb     = 0;      //@field V_LIM VALUE CtlW reset=RstVLim cfg=v_lim q=CtlFrac unit=counts/period "Q.CtlFrac (32768 = 5000 pulses/s at 10 kHz)"
   localparam int RegClULim     = 32'h0000_00BC;  //@reg U_LIM RW servo "|u| limit (commanded step rate), counts/period Q.16"
-  localparam int ClULimLsb     = 0;      //@field U_LIM VALUE CtlW reset=RstULim "Q.CtlFrac (1179648 = 180,000 pulses/s at 10 kHz)"
+  localparam int ClULimLsb     = 0;      //@field U_LIM VALUE CtlW reset=RstULim cfg=u_lim q=CtlFrac unit=counts/period "Q.CtlFrac (1179648 = 180,000 pulses/s at 10 kHz)"
   localparam int RegClFerrLim  = 32'h0000_00C0;  //@reg FERR_LIM RW servo "following-error fault limit, counts Q.16"
-  localparam int ClFerrLimLsb  = 0;      //@field FERR_LIM VALUE CtlW reset=RstFerrLim "Q.CtlFrac (500 counts)"
+  localparam int ClFerrLimLsb  = 0;      //@field FERR_LIM VALUE CtlW reset=RstFerrLim cfg=ferr_lim q=CtlFrac unit=counts "Q.CtlFrac (500 counts)"
   localparam int RegClInposWin = 32'h0000_00C4;  //@reg INPOS_WIN RW servo "in-position window |P - L|, counts Q.16"
-  localparam int ClInposWinLsb = 0;      //@field INPOS_WIN VALUE CtlW reset=RstInposWin "Q.CtlFrac"
+  localparam int ClInposWinLsb = 0;      //@field INPOS_WIN VALUE CtlW reset=RstInposWin cfg=inpos_win q=CtlFrac unit=counts "Q.CtlFrac"
   localparam int RegClSettle   = 32'h0000_00C8;  //@reg SETTLE_RATE RW servo "corrective step rate after the reference is done, counts/period Q.16"
-  localparam int ClSettleLsb   = 0;      //@field SETTLE_RATE VALUE CtlW reset=RstSettleRate "Q.CtlFrac (3277 = 500 pulses/s at 10 kHz)"
+  localparam int ClSettleLsb   = 0;      //@field SETTLE_RATE VALUE CtlW reset=RstSettleRate cfg=settle_rate q=CtlFrac unit=counts/period "Q.CtlFrac (3277 = 500 pulses/s at 10 kHz)"
   // Closed-loop status (sc_axi_servo only), words RegClStat .. + 4 * (ClStatWords - 1).
   localparam int RegClStat     = 32'h0000_00D0;  //@reg CL_STATUS RO servo "closed-loop status"
   localparam int ClStInPosBit  = 0;      //@field CL_STATUS IN_POS 1 "in position"
   localparam int ClStFerrBit   = 1;      //@field CL_STATUS FAULT_FERR 1 "following-error fault latched (cleared by the next START)"
   localparam int ClStActiveBit = 2;      //@field CL_STATUS CTL_ACTIVE 1 "controller running"
-  localparam int ClStStateLsb  = 4;      //@field CL_STATUS CTL_STATE CtlStW "controller FSM state"
+  localparam int ClStStateLsb  = 4;      //@field CL_STATUS CTL_STATE CtlStW "controller phase of the control period (CtlSt, see Encodings)"
   localparam int ClStIllLsb    = 16;     //@field CL_STATUS ENC_ILLEGAL EncIllW "illegal encoder transitions (saturating)"
   localparam int RegClU        = 32'h0000_00D4;  //@reg CTL_U RO servo "controller output u, signed counts/period Q.16"
   localparam int RegClVCmd     = 32'h0000_00D8;  //@reg CTL_V_CMD RO servo "position-loop output v_cmd, signed counts/period Q.16"
@@ -266,4 +338,215 @@ package sc_pkg;
   localparam int UartStCrcErr  = 128;     // response status: frame CRC wrong, nothing done
   localparam int UartStBadCmd  = 129;     // response status: unknown command byte
 
+  // ---- generated section (scripts/gen_layout.py from the //@ tags above;
+  // do not edit: regenerate with scripts/gen_layout.py --update) ----
+  // Controller configuration: the fields of the settings words as one
+  // vector, first field at the MSB (the layout of a struct packed with
+  // these members in this order).
+  localparam int ClCfgWords = 25;
+  localparam int CtlCfgW    = 653;
+  localparam int CtlCfgEncFiltLsb = 649;  // enc_filt: EncFiltW, CL_CFG.ENC_FILT
+  localparam int CtlCfgEncFiltW = 4;
+  localparam int CtlCfgShiftLsb = 646;  // shift: EncShiftW, CL_CFG.ENC_SHIFT
+  localparam int CtlCfgShiftW = 3;
+  localparam int CtlCfgFfEnLsb = 645;  // ff_en: 1, CL_CFG.FF_EN
+  localparam int CtlCfgFfEnW = 1;
+  localparam int CtlCfgLearnShiftLsb = 640;  // learn_shift: LearnShW, CL_CFG.LEARN_SHIFT
+  localparam int CtlCfgLearnShiftW = 5;
+  localparam int CtlCfgDivLsb = 624;  // div: CtlDivW, CL_PERIOD.DIV
+  localparam int CtlCfgDivW = 16;
+  localparam int CtlCfgInposHoldLsb = 608;  // inpos_hold: HoldW, CL_PERIOD.INPOS_HOLD
+  localparam int CtlCfgInposHoldW = 16;
+  localparam int CtlCfgLearnDzPLsb = 576;  // learn_dz_p: CtlW, LEARN_DZ_P.VALUE
+  localparam int CtlCfgLearnDzPW = 32;
+  localparam int CtlCfgLearnDzVLsb = 544;  // learn_dz_v: CtlW, LEARN_DZ_V.VALUE
+  localparam int CtlCfgLearnDzVW = 32;
+  localparam int CtlCfgKPLsb = 520;  // k_p: CoefW, K_P.VALUE
+  localparam int CtlCfgKPW = 24;
+  localparam int CtlCfgKVLsb = 496;  // k_v: CoefW, K_V.VALUE
+  localparam int CtlCfgKVW = 24;
+  localparam int CtlCfgKbLsb = 472;  // kb: CoefW, KB.VALUE
+  localparam int CtlCfgKbW = 24;
+  localparam int CtlCfgEtaP1Lsb = 448;  // eta_p1: CoefW, ETA_P1.VALUE
+  localparam int CtlCfgEtaP1W = 24;
+  localparam int CtlCfgEtaP2Lsb = 424;  // eta_p2: CoefW, ETA_P2.VALUE
+  localparam int CtlCfgEtaP2W = 24;
+  localparam int CtlCfgEtaV1Lsb = 400;  // eta_v1: CoefW, ETA_V1.VALUE
+  localparam int CtlCfgEtaV1W = 24;
+  localparam int CtlCfgEtaV2Lsb = 376;  // eta_v2: CoefW, ETA_V2.VALUE
+  localparam int CtlCfgEtaV2W = 24;
+  localparam int CtlCfgWP1Lsb = 352;  // w_p1: signed WgtW, W_P1.VALUE
+  localparam int CtlCfgWP1W = 24;
+  localparam int CtlCfgWP2Lsb = 328;  // w_p2: signed WgtW, W_P2.VALUE
+  localparam int CtlCfgWP2W = 24;
+  localparam int CtlCfgWV1Lsb = 304;  // w_v1: signed WgtW, W_V1.VALUE
+  localparam int CtlCfgWV1W = 24;
+  localparam int CtlCfgWV2Lsb = 280;  // w_v2: signed WgtW, W_V2.VALUE
+  localparam int CtlCfgWV2W = 24;
+  localparam int CtlCfgWMinLsb = 256;  // w_min: signed WgtW, W_MIN.VALUE
+  localparam int CtlCfgWMinW = 24;
+  localparam int CtlCfgWP1MaxLsb = 232;  // w_p1_max: signed WgtW, W_P1_MAX.VALUE
+  localparam int CtlCfgWP1MaxW = 24;
+  localparam int CtlCfgWP2MaxLsb = 208;  // w_p2_max: signed WgtW, W_P2_MAX.VALUE
+  localparam int CtlCfgWP2MaxW = 24;
+  localparam int CtlCfgWV1MaxLsb = 184;  // w_v1_max: signed WgtW, W_V1_MAX.VALUE
+  localparam int CtlCfgWV1MaxW = 24;
+  localparam int CtlCfgWV2MaxLsb = 160;  // w_v2_max: signed WgtW, W_V2_MAX.VALUE
+  localparam int CtlCfgWV2MaxW = 24;
+  localparam int CtlCfgVLimLsb = 128;  // v_lim: CtlW, V_LIM.VALUE
+  localparam int CtlCfgVLimW = 32;
+  localparam int CtlCfgULimLsb = 96;  // u_lim: CtlW, U_LIM.VALUE
+  localparam int CtlCfgULimW = 32;
+  localparam int CtlCfgFerrLimLsb = 64;  // ferr_lim: CtlW, FERR_LIM.VALUE
+  localparam int CtlCfgFerrLimW = 32;
+  localparam int CtlCfgInposWinLsb = 32;  // inpos_win: CtlW, INPOS_WIN.VALUE
+  localparam int CtlCfgInposWinW = 32;
+  localparam int CtlCfgSettleRateLsb = 0;  // settle_rate: CtlW, SETTLE_RATE.VALUE
+  localparam int CtlCfgSettleRateW = 32;
+  // implemented bits and reset value of each settings word (word 0 lowest)
+  localparam logic [ClCfgWords*32-1:0] ClCfgMask = {
+      32'hFFFFFFFF,  // SETTLE_RATE
+      32'hFFFFFFFF,  // INPOS_WIN
+      32'hFFFFFFFF,  // FERR_LIM
+      32'hFFFFFFFF,  // U_LIM
+      32'hFFFFFFFF,  // V_LIM
+      32'h00FFFFFF,  // W_V2_MAX
+      32'h00FFFFFF,  // W_V1_MAX
+      32'h00FFFFFF,  // W_P2_MAX
+      32'h00FFFFFF,  // W_P1_MAX
+      32'h00FFFFFF,  // W_MIN
+      32'h00FFFFFF,  // W_V2
+      32'h00FFFFFF,  // W_V1
+      32'h00FFFFFF,  // W_P2
+      32'h00FFFFFF,  // W_P1
+      32'h00FFFFFF,  // ETA_V2
+      32'h00FFFFFF,  // ETA_V1
+      32'h00FFFFFF,  // ETA_P2
+      32'h00FFFFFF,  // ETA_P1
+      32'h00FFFFFF,  // KB
+      32'h00FFFFFF,  // K_V
+      32'h00FFFFFF,  // K_P
+      32'hFFFFFFFF,  // LEARN_DZ_V
+      32'hFFFFFFFF,  // LEARN_DZ_P
+      32'hFFFFFFFF,  // CL_PERIOD
+      32'h0001F17F  // CL_CFG
+  };
+  localparam logic [ClCfgWords*32-1:0] ClCfgReset = {
+      32'h00000CCD,  // SETTLE_RATE
+      32'h00000000,  // INPOS_WIN
+      32'h01F40000,  // FERR_LIM
+      32'h00120000,  // U_LIM
+      32'h00008000,  // V_LIM
+      32'h00200000,  // W_V2_MAX
+      32'h007F0000,  // W_V1_MAX
+      32'h007F0000,  // W_P2_MAX
+      32'h00008000,  // W_P1_MAX
+      32'h00000000,  // W_MIN
+      32'h00100000,  // W_V2
+      32'h00400000,  // W_V1
+      32'h00400000,  // W_P2
+      32'h00000000,  // W_P1
+      32'h0001999A,  // ETA_V2
+      32'h00026666,  // ETA_V1
+      32'h00033333,  // ETA_P2
+      32'h00033333,  // ETA_P1
+      32'h00100000,  // KB
+      32'h000051EC,  // K_V
+      32'h00001062,  // K_P
+      32'h00018000,  // LEARN_DZ_V
+      32'h0000C000,  // LEARN_DZ_P
+      32'h003207D0,  // CL_PERIOD
+      32'h0000A103  // CL_CFG
+  };
+  // settings words -> configuration vector
+  function automatic logic [CtlCfgW-1:0] ctl_cfg_from_words(input logic [ClCfgWords*32-1:0] cl_words);
+    ctl_cfg_from_words = {
+      cl_words[32*0 + ClEncFiltLsb +: EncFiltW],  // enc_filt
+      cl_words[32*0 + ClEncShiftLsb +: EncShiftW],  // shift
+      cl_words[32*0 + ClFfEnBit +: 1],  // ff_en
+      cl_words[32*0 + ClLearnShLsb +: LearnShW],  // learn_shift
+      cl_words[32*1 + ClDivLsb +: CtlDivW],  // div
+      cl_words[32*1 + ClInposHoldLsb +: HoldW],  // inpos_hold
+      cl_words[32*2 + ClLearnDzPLsb +: CtlW],  // learn_dz_p
+      cl_words[32*3 + ClLearnDzVLsb +: CtlW],  // learn_dz_v
+      cl_words[32*4 + ClKpLsb +: CoefW],  // k_p
+      cl_words[32*5 + ClKvLsb +: CoefW],  // k_v
+      cl_words[32*6 + ClKbLsb +: CoefW],  // kb
+      cl_words[32*7 + ClEtaP1Lsb +: CoefW],  // eta_p1
+      cl_words[32*8 + ClEtaP2Lsb +: CoefW],  // eta_p2
+      cl_words[32*9 + ClEtaV1Lsb +: CoefW],  // eta_v1
+      cl_words[32*10 + ClEtaV2Lsb +: CoefW],  // eta_v2
+      cl_words[32*11 + ClWp1Lsb +: WgtW],  // w_p1
+      cl_words[32*12 + ClWp2Lsb +: WgtW],  // w_p2
+      cl_words[32*13 + ClWv1Lsb +: WgtW],  // w_v1
+      cl_words[32*14 + ClWv2Lsb +: WgtW],  // w_v2
+      cl_words[32*15 + ClWminLsb +: WgtW],  // w_min
+      cl_words[32*16 + ClWp1MaxLsb +: WgtW],  // w_p1_max
+      cl_words[32*17 + ClWp2MaxLsb +: WgtW],  // w_p2_max
+      cl_words[32*18 + ClWv1MaxLsb +: WgtW],  // w_v1_max
+      cl_words[32*19 + ClWv2MaxLsb +: WgtW],  // w_v2_max
+      cl_words[32*20 + ClVLimLsb +: CtlW],  // v_lim
+      cl_words[32*21 + ClULimLsb +: CtlW],  // u_lim
+      cl_words[32*22 + ClFerrLimLsb +: CtlW],  // ferr_lim
+      cl_words[32*23 + ClInposWinLsb +: CtlW],  // inpos_win
+      cl_words[32*24 + ClSettleLsb +: CtlW]  // settle_rate
+    };
+  endfunction
+  // CtlSt: phase of the control period: sc_neuron_pi state_o, CL_STATUS.CTL_STATE
+  localparam logic [CtlStW-1:0] CtlStIdle = 4'd0;
+  localparam logic [CtlStW-1:0] CtlStVff = 4'd1;
+  localparam logic [CtlStW-1:0] CtlStDiv = 4'd2;
+  localparam logic [CtlStW-1:0] CtlStErr = 4'd3;
+  localparam logic [CtlStW-1:0] CtlStT1 = 4'd4;
+  localparam logic [CtlStW-1:0] CtlStT2 = 4'd5;
+  localparam logic [CtlStW-1:0] CtlStDu = 4'd6;
+  localparam logic [CtlStW-1:0] CtlStBc = 4'd7;
+  localparam logic [CtlStW-1:0] CtlStH1 = 4'd8;
+  localparam logic [CtlStW-1:0] CtlStDw1 = 4'd9;
+  localparam logic [CtlStW-1:0] CtlStH2 = 4'd10;
+  localparam logic [CtlStW-1:0] CtlStDw2 = 4'd11;
+  localparam logic [CtlStW-1:0] CtlStInit = 4'd12;
+  // Upc: micro-program step of sc_neuron_pi (one operation per clock)
+  localparam logic [UpcW-1:0] UpcIdle = 6'd0;
+  localparam logic [UpcW-1:0] UpcInit = 6'd1;
+  localparam logic [UpcW-1:0] UpcVff = 6'd13;
+  localparam logic [UpcW-1:0] UpcSet1 = 6'd14;
+  localparam logic [UpcW-1:0] UpcSet2 = 6'd15;
+  localparam logic [UpcW-1:0] UpcDiv1 = 6'd16;
+  localparam logic [UpcW-1:0] UpcSet3 = 6'd17;
+  localparam logic [UpcW-1:0] UpcDiv2 = 6'd18;
+  localparam logic [UpcW-1:0] UpcRef = 6'd19;
+  localparam logic [UpcW-1:0] UpcErr = 6'd20;
+  localparam logic [UpcW-1:0] UpcAbs = 6'd21;
+  localparam logic [UpcW-1:0] UpcEq = 6'd22;
+  localparam logic [UpcW-1:0] UpcX2 = 6'd23;
+  localparam logic [UpcW-1:0] UpcE = 6'd24;
+  localparam logic [UpcW-1:0] UpcEp = 6'd25;
+  localparam logic [UpcW-1:0] UpcLearn = 6'd26;
+  localparam logic [UpcW-1:0] UpcFerr = 6'd27;
+  localparam logic [UpcW-1:0] UpcWin = 6'd28;
+  localparam logic [UpcW-1:0] UpcT1 = 6'd29;
+  localparam logic [UpcW-1:0] UpcT2 = 6'd30;
+  localparam logic [UpcW-1:0] UpcSum = 6'd31;
+  localparam logic [UpcW-1:0] UpcDu = 6'd32;
+  localparam logic [UpcW-1:0] UpcBc = 6'd33;
+  localparam logic [UpcW-1:0] UpcAcc1 = 6'd34;
+  localparam logic [UpcW-1:0] UpcAcc2 = 6'd35;
+  localparam logic [UpcW-1:0] UpcTot = 6'd36;
+  localparam logic [UpcW-1:0] UpcHi = 6'd37;
+  localparam logic [UpcW-1:0] UpcLo = 6'd38;
+  localparam logic [UpcW-1:0] UpcOut = 6'd39;
+  localparam logic [UpcW-1:0] UpcH1 = 6'd40;
+  localparam logic [UpcW-1:0] UpcDw1 = 6'd41;
+  localparam logic [UpcW-1:0] UpcW1 = 6'd42;
+  localparam logic [UpcW-1:0] UpcW2 = 6'd43;
+  localparam logic [UpcW-1:0] UpcW3 = 6'd44;
+  localparam logic [UpcW-1:0] UpcW4 = 6'd45;
+  localparam logic [UpcW-1:0] UpcH2 = 6'd46;
+  localparam logic [UpcW-1:0] UpcDw2 = 6'd47;
+  localparam logic [UpcW-1:0] UpcW5 = 6'd48;
+  localparam logic [UpcW-1:0] UpcW6 = 6'd49;
+  localparam logic [UpcW-1:0] UpcW7 = 6'd50;
+  localparam logic [UpcW-1:0] UpcW8 = 6'd51;
+  // ---- end of generated section ----
 endpackage

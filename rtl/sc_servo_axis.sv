@@ -44,35 +44,8 @@ module sc_servo_axis (
   input  logic                                enc_a_i,
   input  logic                                enc_b_i,
 
-  input  logic [sc_pkg::EncFiltW-1:0]         cfg_enc_filt_i,
-  input  logic [sc_pkg::EncShiftW-1:0]        cfg_enc_shift_i,
-  input  logic [sc_pkg::CtlDivW-1:0]          cfg_div_i,
-  input  logic                                cfg_ff_en_i,
-  input  logic [sc_pkg::LearnShW-1:0]         cfg_learn_shift_i,
-  input  logic [sc_pkg::CtlW-1:0]             cfg_learn_dz_p_i,
-  input  logic [sc_pkg::CtlW-1:0]             cfg_learn_dz_v_i,
-  input  logic [sc_pkg::CoefW-1:0]            cfg_k_p_i,
-  input  logic [sc_pkg::CoefW-1:0]            cfg_k_v_i,
-  input  logic [sc_pkg::CoefW-1:0]            cfg_kb_i,
-  input  logic [sc_pkg::CoefW-1:0]            cfg_eta_p1_i,
-  input  logic [sc_pkg::CoefW-1:0]            cfg_eta_p2_i,
-  input  logic [sc_pkg::CoefW-1:0]            cfg_eta_v1_i,
-  input  logic [sc_pkg::CoefW-1:0]            cfg_eta_v2_i,
-  input  logic signed [sc_pkg::WgtW-1:0]      cfg_w_p1_i,
-  input  logic signed [sc_pkg::WgtW-1:0]      cfg_w_p2_i,
-  input  logic signed [sc_pkg::WgtW-1:0]      cfg_w_v1_i,
-  input  logic signed [sc_pkg::WgtW-1:0]      cfg_w_v2_i,
-  input  logic signed [sc_pkg::WgtW-1:0]      cfg_w_min_i,
-  input  logic signed [sc_pkg::WgtW-1:0]      cfg_w_p1_max_i,
-  input  logic signed [sc_pkg::WgtW-1:0]      cfg_w_p2_max_i,
-  input  logic signed [sc_pkg::WgtW-1:0]      cfg_w_v1_max_i,
-  input  logic signed [sc_pkg::WgtW-1:0]      cfg_w_v2_max_i,
-  input  logic [sc_pkg::CtlW-1:0]             cfg_v_lim_i,
-  input  logic [sc_pkg::CtlW-1:0]             cfg_u_lim_i,
-  input  logic [sc_pkg::CtlW-1:0]             cfg_ferr_lim_i,
-  input  logic [sc_pkg::CtlW-1:0]             cfg_inpos_win_i,
-  input  logic [sc_pkg::HoldW-1:0]            cfg_inpos_hold_i,
-  input  logic [sc_pkg::CtlW-1:0]             cfg_settle_rate_i,
+  // controller configuration (fields: sc_pkg::CtlCfg*, docs/regmap.md)
+  input  logic [sc_pkg::CtlCfgW-1:0]          ctl_cfg_i,
 
   output logic                                step_o,
   output logic                                dir_o,
@@ -116,28 +89,13 @@ module sc_servo_axis (
   localparam int VelW       = sc_pkg::VelW;
   localparam int MulAW      = sc_pkg::MulAW;
   localparam int CtlFrac    = sc_pkg::CtlFrac;
-  localparam int EncFiltW   = sc_pkg::EncFiltW;
-  localparam int EncShiftW  = sc_pkg::EncShiftW;
-  localparam int CtlDivW    = sc_pkg::CtlDivW;
-  localparam int LearnShW   = sc_pkg::LearnShW;
-  localparam int CoefW      = sc_pkg::CoefW;
-  localparam int WgtW       = sc_pkg::WgtW;
   localparam int CtlW       = sc_pkg::CtlW;
-  localparam int HoldW      = sc_pkg::HoldW;
   localparam logic signed [sc_pkg::PendW-1:0] PendMax = {1'b0, {(sc_pkg::PendW-1){1'b1}}};
   localparam logic signed [sc_pkg::PendW-1:0] PendMin = {1'b1, {(sc_pkg::PendW-1){1'b0}}};
 
   // ---- registered inputs ---------------------------------------------------
-  logic                   closed_q, ff_en_q;
-  logic [EncFiltW-1:0]    enc_filt_q;
-  logic [EncShiftW-1:0]   enc_shift_q;
-  logic [CtlDivW-1:0]     div_q;
-  logic [LearnShW-1:0]    learn_shift_q;
-  logic [CoefW-1:0]       k_p_q, k_v_q, kb_q, eta_p1_q, eta_p2_q, eta_v1_q, eta_v2_q;
-  logic signed [WgtW-1:0] w_p1_q, w_p2_q, w_v1_q, w_v2_q, w_min_q;
-  logic signed [WgtW-1:0] w_p1_max_q, w_p2_max_q, w_v1_max_q, w_v2_max_q;
-  logic [CtlW-1:0]        v_lim_q, u_lim_q, ferr_lim_q, inpos_win_q, learn_dz_p_q, learn_dz_v_q, settle_rate_q;
-  logic [HoldW-1:0]       inpos_hold_q;
+  logic                   closed_q;
+  logic [sc_pkg::CtlCfgW-1:0] ctl_cfg_q;
 
   // ---- internal ------------------------------------------------------------
   logic                   exec_start, exec_finished, core_abort, sg_busy;
@@ -223,7 +181,7 @@ module sc_servo_axis (
     .rst_ni,
     .enc_a_i,
     .enc_b_i,
-    .cfg_filt_i (enc_filt_q),
+    .cfg_filt_i (ctl_cfg_q[sc_pkg::CtlCfgEncFiltLsb +: sc_pkg::CtlCfgEncFiltW]),
     .count_o    (enc_pos_o),
     .illegal_o  (enc_illegal_o),
     .a_o        (unused_enc_a),
@@ -235,34 +193,7 @@ module sc_servo_axis (
   sc_neuron_pi u_ctl (
     .clk_i,
     .rst_ni,
-    .cfg_div_i         (div_q),
-    .cfg_shift_i       (enc_shift_q),
-    .cfg_ff_en_i       (ff_en_q),
-    .cfg_learn_shift_i (learn_shift_q),
-    .cfg_learn_dz_p_i  (learn_dz_p_q),
-    .cfg_learn_dz_v_i  (learn_dz_v_q),
-    .cfg_k_p_i         (k_p_q),
-    .cfg_k_v_i         (k_v_q),
-    .cfg_kb_i          (kb_q),
-    .cfg_eta_p1_i      (eta_p1_q),
-    .cfg_eta_p2_i      (eta_p2_q),
-    .cfg_eta_v1_i      (eta_v1_q),
-    .cfg_eta_v2_i      (eta_v2_q),
-    .cfg_w_p1_i        (w_p1_q),
-    .cfg_w_p2_i        (w_p2_q),
-    .cfg_w_v1_i        (w_v1_q),
-    .cfg_w_v2_i        (w_v2_q),
-    .cfg_w_min_i       (w_min_q),
-    .cfg_w_p1_max_i    (w_p1_max_q),
-    .cfg_w_p2_max_i    (w_p2_max_q),
-    .cfg_w_v1_max_i    (w_v1_max_q),
-    .cfg_w_v2_max_i    (w_v2_max_q),
-    .cfg_v_lim_i       (v_lim_q),
-    .cfg_u_lim_i       (u_lim_q),
-    .cfg_ferr_lim_i    (ferr_lim_q),
-    .cfg_inpos_win_i   (inpos_win_q),
-    .cfg_inpos_hold_i  (inpos_hold_q),
-    .cfg_settle_rate_i (settle_rate_q),
+    .ctl_cfg_i         (ctl_cfg_q),
     .start_i           (exec_start && closed_q),
     .stop_i            (core_abort),
     .ref_int_i         (ref_pos_int_o),
@@ -306,66 +237,10 @@ module sc_servo_axis (
   always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
       closed_q      <= 1'b0;
-      ff_en_q       <= 1'b0;
-      enc_filt_q    <= '0;
-      enc_shift_q   <= '0;
-      div_q         <= '0;
-      learn_shift_q <= '0;
-      learn_dz_p_q  <= '0;
-      learn_dz_v_q  <= '0;
-      k_p_q         <= '0;
-      k_v_q         <= '0;
-      kb_q          <= '0;
-      eta_p1_q      <= '0;
-      eta_p2_q      <= '0;
-      eta_v1_q      <= '0;
-      eta_v2_q      <= '0;
-      w_p1_q        <= '0;
-      w_p2_q        <= '0;
-      w_v1_q        <= '0;
-      w_v2_q        <= '0;
-      w_min_q       <= '0;
-      w_p1_max_q    <= '0;
-      w_p2_max_q    <= '0;
-      w_v1_max_q    <= '0;
-      w_v2_max_q    <= '0;
-      v_lim_q       <= '0;
-      u_lim_q       <= '0;
-      ferr_lim_q    <= '0;
-      inpos_win_q   <= '0;
-      inpos_hold_q  <= '0;
-      settle_rate_q <= '0;
+      ctl_cfg_q     <= '0;
     end else begin
       closed_q      <= closed_loop_i;
-      ff_en_q       <= cfg_ff_en_i;
-      enc_filt_q    <= cfg_enc_filt_i;
-      enc_shift_q   <= cfg_enc_shift_i;
-      div_q         <= cfg_div_i;
-      learn_shift_q <= cfg_learn_shift_i;
-      learn_dz_p_q  <= cfg_learn_dz_p_i;
-      learn_dz_v_q  <= cfg_learn_dz_v_i;
-      k_p_q         <= cfg_k_p_i;
-      k_v_q         <= cfg_k_v_i;
-      kb_q          <= cfg_kb_i;
-      eta_p1_q      <= cfg_eta_p1_i;
-      eta_p2_q      <= cfg_eta_p2_i;
-      eta_v1_q      <= cfg_eta_v1_i;
-      eta_v2_q      <= cfg_eta_v2_i;
-      w_p1_q        <= cfg_w_p1_i;
-      w_p2_q        <= cfg_w_p2_i;
-      w_v1_q        <= cfg_w_v1_i;
-      w_v2_q        <= cfg_w_v2_i;
-      w_min_q       <= cfg_w_min_i;
-      w_p1_max_q    <= cfg_w_p1_max_i;
-      w_p2_max_q    <= cfg_w_p2_max_i;
-      w_v1_max_q    <= cfg_w_v1_max_i;
-      w_v2_max_q    <= cfg_w_v2_max_i;
-      v_lim_q       <= cfg_v_lim_i;
-      u_lim_q       <= cfg_u_lim_i;
-      ferr_lim_q    <= cfg_ferr_lim_i;
-      inpos_win_q   <= cfg_inpos_win_i;
-      inpos_hold_q  <= cfg_inpos_hold_i;
-      settle_rate_q <= cfg_settle_rate_i;
+      ctl_cfg_q     <= ctl_cfg_i;
     end
   end
 

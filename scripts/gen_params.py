@@ -7,7 +7,9 @@ becomes `inline constexpr int Name`, and
 the phase codes `localparam logic [3:0] PhX = 4'dN;` become
 `enum class Phase : uint8_t` with the same names.
 Fails loudly on anything it does not understand, so a new package entry can
-never be silently missing from the model.
+never be silently missing from the model. The generated section at the end
+of the package (scripts/gen_layout.py) is left to that script's header,
+sc_layout.h.
 """
 import re
 import sys
@@ -15,6 +17,9 @@ import sys
 
 def main(src, dst):
     text = open(src, encoding="utf-8").read()
+    # the generated section (scripts/gen_layout.py) has its own C++ header, sc_layout.h
+    text = re.sub(r"[^\n]*// ---- generated section.*?// ---- end of generated section[^\n]*\n", "", text,
+                  flags=re.S)
     body = re.sub(r"//[^\n]*", "", text)
     params = re.findall(r"localparam\s+int\s+(\w+)\s*=\s*([0-9_]+|[0-9]+'h[0-9a-fA-F_]+)\s*;", body)
     if not params:

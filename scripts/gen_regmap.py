@@ -22,7 +22,13 @@ import sys
 
 LP = re.compile(r"localparam\s+int\s+(\w+)\s*=\s*([0-9_]+|[0-9]+'h[0-9a-fA-F_]+)\s*;\s*(//.*)?$")
 REG = re.compile(r'//@reg\s+(\w+)\s+(RO|RW|WO|W1C)\s*(?:wide=(\w+))?\s*(servo)?\s*"([^"]*)"\s*$')
-FIELD = re.compile(r'//@field\s+(\w+)\s+(\w+)\s+(\w+)\s*(?:reset=(\w+))?\s*"([^"]*)"\s*$')
+FIELD = re.compile(r'//@field\s+(\w+)\s+(\w+)\s+(\w+)((?:\s+[\w=/]+)*)\s*"([^"]*)"\s*$')
+FIELD_OPTS = re.compile(r"^(reset|cfg|q|unit)=([\w/]+)$|^(signed)$")
+ENUM = re.compile(r'^\s*//@enum\s+(\w+)\s+(\w+)\s+"([^"]*)"\s*$')
+VALUE = re.compile(r'^\s*//@value\s+(\w+)\s+(\w+)\s*(?:=(\d+))?\s+"([^"]*)"\s*$')
+# The generated section of sc_pkg.sv (scripts/gen_layout.py) is output, not source.
+GEN_BEGIN = "// ---- generated section"
+GEN_END = "// ---- end of generated section"
 
 
 def num(v):
@@ -32,10 +38,60 @@ def num(v):
     return int(v)
 
 
+def source_lines(path):
+    """(lineno, line) of sc_pkg.sv outside the generated section."""
+    out, skip = [], False
+    for lineno, line in enumerate(open(path, encoding="utf-8"), 1):
+        if GEN_BEGIN in line:
+            skip = True
+        if not skip:
+            out.append((lineno, line))
+        if GEN_END in line:
+            skip = False
+    return out
+
+
+def parse_enums(path, params):
+    """//@enum TYPE WIDTH "text" and //@value TYPE NAME [=N] "text" tags."""
+    enums, by_name = [], {}
+    for lineno, line in source_lines(path):
+        if line.lstrip().startswith("//@enum"):
+            m = ENUM.match(line)
+            if not m:
+                sys.exit(f"{path}:{lineno}: bad //@enum tag: {line.strip()}")
+            width = params.get(m.group(2)) if not m.group(2).isdigit() else int(m.group(2))
+            if width is None:
+                sys.exit(f"{path}:{lineno}: unknown width {m.group(2)}")
+            e = {"name": m.group(1), "width": width, "width_param": m.group(2), "desc": m.group(3),
+                 "values": []}
+            if e["name"] in by_name:
+                sys.exit(f"{path}:{lineno}: enum {e['name']} defined twice")
+            by_name[e["name"]] = e
+            enums.append(e)
+        elif line.lstrip().startswith("//@value"):
+            m = VALUE.match(line)
+            if not m:
+                sys.exit(f"{path}:{lineno}: bad //@value tag: {line.strip()}")
+            e = by_name.get(m.group(1))
+            if e is None:
+                sys.exit(f"{path}:{lineno}: value of unknown enum {m.group(1)}")
+            if m.group(3) is not None:
+                v = int(m.group(3))
+            else:
+                v = e["values"][-1]["value"] + 1 if e["values"] else 0
+            for o in e["values"]:
+                if o["name"] == m.group(2) or o["value"] == v:
+                    sys.exit(f"{path}:{lineno}: {e['name']}{m.group(2)} = {v} repeats a name or value")
+            if v >= (1 << e["width"]):
+                sys.exit(f"{path}:{lineno}: {e['name']}{m.group(2)} = {v} does not fit {e['width']} bits")
+            e["values"].append({"name": m.group(2), "value": v, "desc": m.group(4)})
+    return enums
+
+
 def parse(path):
     params, regs = {}, []
     by_name = {}
-    for lineno, line in enumerate(open(path, encoding="utf-8"), 1):
+    for lineno, line in source_lines(path):
         m = LP.search(line)
         if not m:
             if "//@" in line and not line.lstrip().startswith("//"):
@@ -64,13 +120,27 @@ def parse(path):
             width = int(w) if w.isdigit() else params.get(w)
             if width is None:
                 sys.exit(f"{path}:{lineno}: unknown width {w}")
-            rv = f.group(4) or "0"
+            opts = {}
+            for tok in f.group(4).split():
+                o = FIELD_OPTS.match(tok)
+                if not o:
+                    sys.exit(f"{path}:{lineno}: unknown //@field option {tok}")
+                opts[o.group(1) or "signed"] = o.group(2) or True
+            rv = opts.get("reset", "0")
             reset = int(rv) if rv.isdigit() else params.get(rv)
             if reset is None:
                 sys.exit(f"{path}:{lineno}: unknown reset value {rv}")
+            qv = opts.get("q", "0")
+            q = int(qv) if qv.isdigit() else params.get(qv)
+            if q is None:
+                sys.exit(f"{path}:{lineno}: unknown Q format {qv}")
+            signed = bool(opts.get("signed"))
+            if signed and reset >= (1 << (width - 1)):
+                sys.exit(f"{path}:{lineno}: signed reset value {reset} out of range")
             reg["fields"].append({"name": f.group(2), "lsb": value, "width": width,
                                   "reset": reset, "desc": f.group(5),
-                                  "param": name})
+                                  "param": name, "width_param": w, "cfg": opts.get("cfg"),
+                                  "signed": signed, "q": q, "q_param": qv, "unit": opts.get("unit", "")})
     if not regs:
         sys.exit(f"{path}: no //@reg tags found")
     # expand wide registers into words, check overlaps
@@ -143,7 +213,107 @@ def header(params, words):
     return "\n".join(out)
 
 
-def doc(params, words):
+SOURCE_DOC = """## Register and layout source
+
+Every layout that the RTL, the model, the host software and these docs share has one
+source: the tagged SV package `rtl/sc_pkg.sv`. The register map (`//@reg`, `//@field`),
+the controller configuration (the `cfg=` fields of the settings words, with width,
+signedness, Q format, unit and reset value), the encodings visible outside a module
+(`//@enum` / `//@value`: the controller phase `CtlSt`, which CL_STATUS.CTL_STATE shows,
+and the micro-program steps `Upc` of `sc_neuron_pi`), the phase codes, fault bits and
+UART frame constants are written there once. Generated from it:
+
+| output | by | committed | drift check |
+|---|---|---|---|
+| generated section at the end of `rtl/sc_pkg.sv`: `ClCfgWords`, `CtlCfgW`, `CtlCfg<M>Lsb/W`, `ClCfgMask`, `ClCfgReset`, `ctl_cfg_from_words()`, `CtlSt*`, `Upc*` | `scripts/gen_layout.py --update` | yes | ctest `layout_in_sync` |
+| this file | `scripts/gen_layout.py --update` (or `gen_regmap.py --doc`) | yes | ctest `layout_in_sync`, `regmap_docs_in_sync` |
+| `build/generated/sc_params.h` (widths, codes, addresses, bits) | `scripts/gen_params.py` (CMake) | no | - |
+| `build/generated/sc_regmap.h` (register table) | `scripts/gen_regmap.py --header` (CMake) | no | - |
+| `build/generated/sc_layout.h` (`sc::CtlCfg`, word masks/resets, `ctl_cfg_from_words` / `ctl_cfg_to_words` / `ctl_cfg_pack` / `ctl_cfg_visit`, `CtlSt*`, `Upc*`) | `scripts/gen_layout.py --header` (CMake) | no | - |
+
+A stale committed output fails its ctest with the command that regenerates it
+(`scripts/gen_layout.py --update`).
+
+Why the tagged package and not SystemRDL/PeakRDL: the package already was the source of
+the register map and of every width the model uses, and the RTL reads the same
+localparams, so extending its tags adds no tool to the Verilator / Icarus / yosys /
+Vivado flows. SystemRDL describes registers, not the controller's micro-program and
+phase encodings or the Q formats the bit-exact model shares, so a second source would
+remain; PeakRDL's main product, a generated register block, is what we do not want
+(`sc_axi_regs` stays hand-written for area), and its C headers would not replace the
+model's typed configuration struct.
+
+The configuration travels sc_axi_regs -> sc_axi_servo -> sc_servo_axis -> sc_neuron_pi
+as one vector `logic [sc_pkg::CtlCfgW-1:0]` with generated field positions, the layout a
+`struct packed` with the same members would have. It is not a struct type because no
+struct-typed port works in all three tools here: Icarus 11 asserts on a package-scoped
+type (`sc_pkg::ctl_cfg_t`) and only accepts it through `import`, which yosys 0.23 does
+not accept in a module header or in `$unit`.
+
+### Adding a controller parameter
+
+1. `rtl/sc_pkg.sv`: a `//@reg NAME RW servo` register at the next free settings address
+   (the settings words are contiguous from `RegClFirst`; the generator checks it) with a
+   `//@field ... cfg=member [signed] [q=..] unit=.. reset=..` field; run
+   `scripts/gen_layout.py --update` (rewrites the generated section and this file).
+2. `rtl/sc_neuron_pi.sv`: read it as `ctl_cfg_i[sc_pkg::CtlCfg<Member>Lsb +: sc_pkg::CtlCfg<Member>W]`
+   and use it in the datapath.
+3. `cmodel/neuron_pi.cpp`: use `cfg.member` in the same arithmetic.
+4. One test that exercises it (for example `tests/test_neuron_pi_rtl.cpp`'s random configurations).
+
+The register file (masks, reset values, decode), `sc_axi_servo`, `sc_servo_axis`, the
+model's register file, `sc::CtlCfg`, the host encoding (`encode_servo_config`), the
+Verilator adapters and this document follow from the generated files. Measured on a
+scratch branch: a dummy parameter LEARN_EN (a new settings word at 0xCC, 1 bit,
+reset 1, gating the Hebb update in both the RTL and the model, randomised by the
+neuron-level lockstep test) carried end to end touched 5 files, 4 edited by hand
+(`rtl/sc_pkg.sv` tags, `rtl/sc_neuron_pi.sv`, `cmodel/neuron_pi.cpp`,
+`tests/test_neuron_pi_rtl.cpp`) and 1 regenerated (`docs/regmap.md`; the package's
+generated section is in the source file), with the closed-loop, neuron-level and
+register-file lockstep tests green. Before this layout source the same change
+touched 17 files.
+
+""".splitlines()
+
+
+def config_doc(params, words, enums):
+    """The controller configuration and the encodings (scripts/gen_layout.py)."""
+    cfg = [(w, f) for w in words for f in sorted(w["fields"], key=lambda f: f["lsb"]) if f.get("cfg")]
+    out = []
+    if cfg:
+        out += ["## Controller configuration", "",
+                "The fields of the settings words form the controller configuration: one vector "
+                "`logic [sc_pkg::CtlCfgW-1:0]` in the RTL (sc_axi_regs -> sc_servo_axis -> sc_neuron_pi; "
+                "field `m` at `sc_pkg::CtlCfg<M>Lsb`, first member at the MSB) and `struct sc::CtlCfg` in C++ "
+                "(`build/generated/sc_layout.h`, member defaults = the reset values). Q = fraction bits.", "",
+                "| word | register.field | bits | member | type | Q | unit | reset |",
+                "|---|---|---|---|---|---|---|---|"]
+        first = min(w["addr"] for w, _ in cfg)
+        for w, f in cfg:
+            hi = f["lsb"] + f["width"] - 1
+            bits = f"{hi}:{f['lsb']}" if f["width"] > 1 else f"{f['lsb']}"
+            typ = f"{'s' if f['signed'] else 'u'}{f['width']}"
+            out.append(f"| {(w['addr'] - first) // 4} | {w['name']}.{f['name']} | {bits} | `{f['cfg']}` | {typ} | "
+                       f"{f['q'] or '-'} | {f['unit'] or '-'} | {f['reset']} |")
+        out.append("")
+    if enums:
+        out += ["## Encodings", "",
+                "Generated as `sc_pkg::<Type><Name>` (SV) and `sc::<Type><Name>` (C++).", ""]
+        for e in enums:
+            out += [f"### {e['name']} ({e['width']} bits)", "", e["desc"] + ".", "",
+                    "| value | name | meaning |", "|---|---|---|"]
+            for v in e["values"]:
+                out.append(f"| {v['value']} | {e['name']}{v['name']} | {v['desc']} |")
+            out.append("")
+    return out
+
+
+def doc_for(pkg):
+    params, words = parse(pkg)
+    return doc(params, words, parse_enums(pkg, params))
+
+
+def doc(params, words, enums=None):
     p = params
     out = ["# Register map and UART protocol", "",
            "<!-- Generated from rtl/sc_pkg.sv by scripts/gen_regmap.py - do not edit;",
@@ -159,7 +329,9 @@ def doc(params, words):
            "`sc_axi_axis` (open loop) answers DECERR there. The controller settings (CL_CFG .. "
            "SETTLE_RATE) are locked while STATUS.BUSY is set like the table, and so is CTRL.CLOSED_LOOP "
            "(a CTRL write changing it while busy is refused). Their units: docs/closed_loop.md; reset "
-           "values = the closed-loop runner's defaults (`scurve sim --closed-loop`).", "",
+           "values = the closed-loop runner's defaults (`scurve sim --closed-loop`).", ""]
+    out += SOURCE_DOC
+    out += ["## Registers", "",
            "| offset | name | access | reset | implemented bits | description |",
            "|---|---|---|---|---|---|"]
     for w in words:
@@ -176,6 +348,7 @@ def doc(params, words):
             bits = f"{hi}:{f['lsb']}" if f["width"] > 1 else f"{f['lsb']}"
             out.append(f"| {bits} | {f['name']} | {f['reset']} | {f['desc']} |")
         out.append("")
+    out += config_doc(params, words, enums or [])
     out += ["## Loading and running a move", "",
             "1. CTRL = 1 (enable); optionally PULSE_TIME / DIR_TIME.",
             "2. For each table row i: SEG_PHASE, SEG_CLOCKS, SEG_JERK_0/1, SEG_ACC0_0/1, "
@@ -223,14 +396,15 @@ def main():
         if text is not None:
             open(a.header, "w", encoding="utf-8").write(text)
     if a.doc:
-        open(a.doc, "w", encoding="utf-8").write(doc(params, words))
+        open(a.doc, "w", encoding="utf-8").write(doc_for(a.pkg))
     if a.check:
         try:
             have = open(a.check, encoding="utf-8").read()
         except FileNotFoundError:
             have = ""
-        if have != doc(params, words):
-            sys.exit(f"{a.check} is stale: run scripts/gen_regmap.py rtl/sc_pkg.sv --doc {a.check}")
+        if have != doc_for(a.pkg):
+            sys.exit(f"{a.check} is stale: run scripts/gen_layout.py --update (or scripts/gen_regmap.py "
+                     f"rtl/sc_pkg.sv --doc {a.check}) and commit it")
 
 
 if __name__ == "__main__":

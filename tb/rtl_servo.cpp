@@ -20,8 +20,6 @@ void RtlServo::apply_cfg(const ServoConfig& c) {
   m.cfg_low_i = c.timing.low;
   m.cfg_setup_i = c.timing.setup;
   m.cfg_hold_i = c.timing.hold;
-  m.cfg_enc_filt_i = port_bits(c.enc_filt, EncFiltW);
-  m.cfg_enc_shift_i = port_bits(c.ctl.shift, EncShiftW);
   bind_neuron_config(m, c.ctl);
 }
 

@@ -115,7 +115,7 @@ TEST(NeuronPi, FixedPointMatchesDoubleReference) {
     in.ref_vel = int32_t(uni(rng) * 1e-3 * std::ldexp(1.0, VffFrac));
     run_period(n, c, in);
     const NeuronPi::State& s1 = n.state();
-    ASSERT_EQ(s1.st, NeuronPi::StIdle);
+    ASSERT_EQ(s1.st, CtlStIdle);
     if (k == 0) continue;  // the first period only sets P_prev
     // position loop
     const double r = (double(refq) - kQ / 2) / kQ;
@@ -156,16 +156,16 @@ TEST(NeuronPi, DatapathFitsTheControlPeriod) {
   in.start = true;
   n.step(c, in);
   in.start = false;
-  int init = n.state().st == NeuronPi::StInit ? 1 : 0;
+  int init = n.state().st == CtlStInit ? 1 : 0;
   for (int i = 0; i < c.div; ++i) {  // initialisation, then the first period
     n.step(c, in);
-    if (n.state().st == NeuronPi::StInit) ++init;
+    if (n.state().st == CtlStInit) ++init;
   }
   EXPECT_EQ(init, NeuronPi::kInitSteps);
   int busy = 0;
   for (int i = 0; i < c.div; ++i) {
     n.step(c, in);
-    if (n.state().st != NeuronPi::StIdle) ++busy;
+    if (n.state().st != CtlStIdle) ++busy;
   }
   // VFF + 2 x (divider set-up 3 + 2 divisions of 17 clocks + error 10 + multiplier/sum 5
   //            + accumulate/limit 6 + 2 weight updates of 6)

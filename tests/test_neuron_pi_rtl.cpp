@@ -56,7 +56,6 @@ class RtlNeuronPi : public VerilatedTop<Vsc_neuron_pi> {
   RtlNeuronPi() : VerilatedTop<Vsc_neuron_pi>("sc_neuron_pi") {}
 
   void set_config(const NeuronConfig& n) {
-    top().cfg_shift_i = port_bits(n.shift, EncShiftW);
     bind_neuron_config(top(), n);
   }
 
@@ -113,14 +112,11 @@ SignalValues render_npi(const NpiOutputs& o) {
 }
 
 std::string cfg_str(const NeuronConfig& c) {
-  return fmt::format(
-      "div={} shift={} ff_en={} learn_shift={} learn_dz_p={:#x} learn_dz_v={:#x} k_p={:#x} k_v={:#x} kb={:#x} "
-      "eta_p1={:#x} eta_p2={:#x} eta_v1={:#x} eta_v2={:#x} w_p1={} w_p2={} w_v1={} w_v2={} w_min={} "
-      "w_p1_max={} w_p2_max={} w_v1_max={} w_v2_max={} v_lim={:#x} u_lim={:#x} ferr_lim={:#x} inpos_win={:#x} "
-      "inpos_hold={} settle_rate={:#x}",
-      c.div, c.shift, c.ff_en, c.learn_shift, c.learn_dz_p, c.learn_dz_v, c.k_p, c.k_v, c.kb, c.eta_p1, c.eta_p2,
-      c.eta_v1, c.eta_v2, c.w_p1, c.w_p2, c.w_v1, c.w_v2, c.w_min, c.w_p1_max, c.w_p2_max, c.w_v1_max, c.w_v2_max,
-      c.v_lim, c.u_lim, c.ferr_lim, c.inpos_win, c.inpos_hold, c.settle_rate);
+  std::string s;
+  ctl_cfg_visit(c, [&s](const char* name, int64_t v) {
+    s += fmt::format("{}{}={}", s.empty() ? "" : " ", name, v < 0 ? fmt::format("{}", v) : fmt::format("{:#x}", v));
+  });
+  return s;
 }
 
 std::string in_str(const NeuronPi::Inputs& i, bool rst_n) {
@@ -157,9 +153,9 @@ void count(Coverage& c, bool& corr_sat, const NeuronConfig& cfg, const NeuronPi:
            const NeuronPi::State& q) {
   const int s = p.sel ? 1 : 0;
   if (in.start) {
-    if (p.active && p.st != NeuronPi::StIdle) ++c[kStartMidFsm];
+    if (p.active && p.st != CtlStIdle) ++c[kStartMidFsm];
     if (in.stop) ++c[kStartStop];
-  } else if (in.stop && p.active && p.st != NeuronPi::StIdle) {
+  } else if (in.stop && p.active && p.st != CtlStIdle) {
     ++c[kStopMidFsm];
   }
   if (!p.in_pos && q.in_pos) ++c[kInPos];
@@ -178,76 +174,76 @@ void count(Coverage& c, bool& corr_sat, const NeuronConfig& cfg, const NeuronPi:
   using N = NeuronPi;
   const bool hush_now = !p.sel && p.fin;
   switch (p.upc) {
-    case N::UVff:
+    case UpcVff:
       ++c[kPeriods];
       if (sat(q.vff())) ++c[kSatVff];
       if (p.vmeas >= (1 << 30) || p.vmeas <= -(1 << 30)) ++c[kVmeasHuge];
       break;
-    case N::UDiv1:
-    case N::UDiv2:
+    case UpcDiv1:
+    case UpcDiv2:
       if (p.dbit == 0) {
         if (p.dsum == 0) ++c[kDivZero];
         if (p.dsum > (1u << (WgtW - 1))) ++c[kDivBig];
-        const int32_t wn = p.upc == N::UDiv2 ? q.lp[s].n2 : q.lp[s].n1;
+        const int32_t wn = p.upc == UpcDiv2 ? q.lp[s].n2 : q.lp[s].n1;
         if (wn == (1 << NWgtFrac) || wn == -(1 << NWgtFrac)) ++c[kWnOne];
       }
       break;
-    case N::URef:
+    case UpcRef:
       if (p.sel) {
         const int64_t ref = int64_t(p.rf[N::RfOutP]) + (cfg.ff_en ? p.vff() : 0);
         if (ref > INT32_MAX || ref < INT32_MIN) ++c[kRefWrap];
       }
       break;
-    case N::UX2: {
+    case UpcX2: {
       const int64_t e = hush_now ? 0 : p.rf[N::RfEraw];
       if (e - p.rf[N::RfEp + s] != int64_t(q.rf[N::RfX2])) ++c[kX2Wrap];
       break;
     }
-    case N::UEp:
+    case UpcEp:
       if (!p.sel && q.hush) ++c[kHush];
       break;
-    case N::ULearn:
+    case UpcLearn:
       if (!hush_now) ++c[q.learn ? kLearnOn : kLearnOff];
       break;
-    case N::UWin:
+    case UpcWin:
       if (!p.sel && p.fin && p.corr == 0 && q.hold == 0 && (q.in_pos || q.corr != 0)) ++c[kHoldDone];
       if (!p.sel && p.corr == 0 && q.corr != 0 && cfg.settle_rate >= (1u << 31)) ++c[kSettleNeg];
       break;
-    case N::UT1:
+    case UpcT1:
       if (sat(q.rf[N::RfT1])) ++c[kSatT];
       break;
-    case N::UT2:
+    case UpcT2:
       if (sat(q.rf[N::RfT2])) ++c[kSatT];
       break;
-    case N::USum: {
+    case UpcSum: {
       const int64_t t12 = int64_t(p.rf[N::RfT1]) + p.rf[N::RfT2];
       if (t12 > INT32_MAX || t12 < INT32_MIN) ++c[kSatT12];
       break;
     }
-    case N::UDu:
+    case UpcDu:
       if (sat(q.rf[N::RfDu])) ++c[kSatDu];
       break;
-    case N::UAcc2:
+    case UpcAcc2:
       if (cfg.kb != 0 && p.es(s) != 0 && !p.hush) ++c[kBackCalc];
       if (sat(q.acc(s))) ++c[kSatAcc];
       break;
-    case N::UTot: {
+    case UpcTot: {
       const int64_t tot = int64_t(p.acc(s)) + ((p.sel && cfg.ff_en) ? p.vff() : 0);
       if (tot > INT32_MAX || tot < INT32_MIN) ++c[kSatTot];
       break;
     }
-    case N::ULo: {
+    case UpcLo: {
       const uint32_t lim = p.sel ? cfg.u_lim : cfg.v_lim;
       if (q.es(s) != 0) ++c[p.sel ? kLimV : kLimP];
       if (lim == 0) ++c[kLimZero];
       if (lim >= (1u << 31)) ++c[kLimHuge];
       break;
     }
-    case N::UH1:
+    case UpcH1:
       if (sat(q.rf[N::RfH])) ++c[kSatH];
       if (p.learn && (p.rf[N::RfE] > (1 << (MulBW - 1)) - 1 || p.rf[N::RfE] < -((1 << (MulBW - 1)) - 1))) ++c[kEbClamp];
       break;
-    case N::UH2:
+    case UpcH2:
       if (sat(q.rf[N::RfH])) ++c[kSatH];
       if (p.learn && p.rf[N::RfE] == -(1 << (MulBW - 1)) &&
           NeuronPi::mul_round_sat(p.rf[N::RfX2], -((1 << (MulBW - 1)) - 1), CtlFrac) !=
@@ -255,9 +251,9 @@ void count(Coverage& c, bool& corr_sat, const NeuronConfig& cfg, const NeuronPi:
         ++c[kEbMin];  // the clamp changes the product
       }
       break;
-    case N::UW1:
-    case N::UW5: {
-      const bool one = p.upc == N::UW1;
+    case UpcW1:
+    case UpcW5: {
+      const bool one = p.upc == UpcW1;
       const int32_t hi = one ? (p.sel ? cfg.w_v1_max : cfg.w_p1_max) : (p.sel ? cfg.w_v2_max : cfg.w_p2_max);
       const int32_t old = p.rf[(one ? N::RfW1 : N::RfW2) + s];
       const int64_t sum = int64_t(old) + p.rf[N::RfDw];
@@ -693,7 +689,7 @@ class NeuronLockstep {
     } else {
       ++t_;
       const bool done = !s.active && !in_.start;
-      const bool wait_fsm = run_left_ == 0 && mid_fsm_ && s.active && s.st == NeuronPi::StIdle;
+      const bool wait_fsm = run_left_ == 0 && mid_fsm_ && s.active && s.st == CtlStIdle;
       if ((run_left_ == 0 && !wait_fsm) || (done && r_.chance(0.01))) {
         if (end_ == End::Restart && s.active) {
           begin_move();  // a new start while active (config may change)
@@ -925,7 +921,7 @@ TEST(NeuronPiLockstep, InjectedWeightDifferenceIsReported) {
     auto m = ls.step();
     ASSERT_FALSE(m) << m->text;
     const NeuronPi::State& q = ls.model().state();
-    if (i > 5000 && q.active && q.st == NeuronPi::StIdle && q.cnt > 2 && ls.steady_next_clock()) break;
+    if (i > 5000 && q.active && q.st == CtlStIdle && q.cnt > 2 && ls.steady_next_clock()) break;
   }
   ASSERT_LT(i, 200000u) << "controller never active";
   NeuronPi::State& q = ls.model().mutable_state();

@@ -33,23 +33,9 @@ std::vector<RegWrite> encode_row(const Segment& s, unsigned row) {
 }
 
 std::vector<RegWrite> encode_servo_config(const ServoConfig& c) {
-  const NeuronConfig& n = c.ctl;
-  auto f = [](uint32_t v, int lsb, int width) {
-    return uint32_t((uint64_t(v) & ((uint64_t(1) << width) - 1)) << lsb);
-  };
-  auto w = [&](int32_t v) { return f(uint32_t(v), 0, WgtW); };
-  const uint32_t words[ClCfgWords] = {
-      f(c.enc_filt, ClEncFiltLsb, EncFiltW) | f(n.shift, ClEncShiftLsb, EncShiftW) | f(n.ff_en ? 1 : 0, ClFfEnBit, 1) |
-          f(n.learn_shift, ClLearnShLsb, LearnShW),
-      f(n.div, ClDivLsb, CtlDivW) | f(n.inpos_hold, ClInposHoldLsb, HoldW),
-      n.learn_dz_p, n.learn_dz_v,
-      f(n.k_p, 0, CoefW), f(n.k_v, 0, CoefW), f(n.kb, 0, CoefW),
-      f(n.eta_p1, 0, CoefW), f(n.eta_p2, 0, CoefW), f(n.eta_v1, 0, CoefW), f(n.eta_v2, 0, CoefW),
-      w(n.w_p1), w(n.w_p2), w(n.w_v1), w(n.w_v2), w(n.w_min),
-      w(n.w_p1_max), w(n.w_p2_max), w(n.w_v1_max), w(n.w_v2_max),
-      n.v_lim, n.u_lim, n.ferr_lim, n.inpos_win, n.settle_rate};
+  const std::array<uint32_t, hw::ClCfgWords> words = hw::ctl_cfg_to_words(c.ctl);
   std::vector<RegWrite> out;
-  for (int i = 0; i < ClCfgWords; ++i) out.push_back({uint32_t(RegClFirst + 4 * i), words[i]});
+  for (int i = 0; i < ClCfgWords; ++i) out.push_back({uint32_t(RegClFirst + 4 * i), words[size_t(i)]});
   return out;
 }
 

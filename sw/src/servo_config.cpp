@@ -27,8 +27,8 @@ ServoConfigResult to_servo_config(const ControllerParams& p, double counts_per_s
   if (p.enc_filt < 0 || p.enc_filt >= (1 << EncFiltW)) {
     return Error{"enc_filt", fmt::format("enc-filter={} outside 0..{}", p.enc_filt, (1 << EncFiltW) - 1)};
   }
-  c.enc_filt = uint8_t(p.enc_filt);
   NeuronConfig& n = c.ctl;
+  n.enc_filt = uint8_t(p.enc_filt);
   const double div = std::round(f / p.rate_hz);
   if (!(div >= kMinControlDiv && div < 65536)) {
     return Error{"rate_hz", fmt::format("ctl-rate={} Hz: needs {}..{} Hz ({}..65535 clocks)", p.rate_hz, f / 65535.0,

@@ -7,6 +7,7 @@
 #include <variant>
 
 #include "scurve/planner.h"
+#include "scurve/hw/layout.h"
 #include "scurve/types.h"
 
 namespace scurve {
@@ -14,35 +15,17 @@ namespace scurve {
 // Shortest control period the time-multiplexed controller accepts, clocks.
 inline constexpr int kMinControlDiv = 256;
 
-// Controller register values (fixed point, see docs/closed_loop.md).
-struct NeuronConfig {
-  uint16_t div = 2000;         // control period, clocks
-  uint8_t shift = 0;           // log2(encoder counts per pulse)
-  bool ff_en = true;           // velocity feed-forward from V*
-  uint8_t learn_shift = 0;     // Hebb scale 2^-learn_shift
-  uint32_t learn_dz_p = 0;     // no learning while |e| <= dz (Q.CtlFrac), position loop
-  uint32_t learn_dz_v = 0;     //   speed loop
-  uint32_t k_p = 0, k_v = 0;   // neuron gains, Q.CoefFrac
-  uint32_t kb = 0;             // back-calculation gain, Q.CoefFrac
-  uint32_t eta_p1 = 0, eta_p2 = 0, eta_v1 = 0, eta_v2 = 0;  // learning rates, Q.CoefFrac
-  int32_t w_p1 = 0, w_p2 = 0, w_v1 = 0, w_v2 = 0;           // initial weights, Q.WgtFrac
-  int32_t w_min = 0;                                        // lower bound, all weights
-  int32_t w_p1_max = 0, w_p2_max = 0, w_v1_max = 0, w_v2_max = 0;  // upper bounds
-  uint32_t v_lim = 0;          // |position-loop output| limit, counts/period Q.CtlFrac
-  uint32_t u_lim = 0;          // |u| limit
-  uint32_t ferr_lim = 0;       // following-error limit, counts Q.CtlFrac
-  uint32_t inpos_win = 0;      // in-position window, counts Q.CtlFrac
-  uint16_t inpos_hold = 1;     // control periods
-  uint32_t settle_rate = 0;    // settle-phase corrective step rate, counts/period Q.CtlFrac
-};
+// Controller register values (fixed point, see docs/closed_loop.md): the
+// struct generated from rtl/sc_pkg.sv (field widths, Q formats and units in
+// docs/regmap.md); member defaults are the register reset values.
+using NeuronConfig = hw::CtlCfg;
 
 // Everything the closed-loop axis is configured with.
 struct ServoConfig {
   bool enable = true;
   bool closed_loop = true;
   PulseTiming timing{};
-  uint8_t enc_filt = 3;
-  NeuronConfig ctl{};
+  NeuronConfig ctl{};  // incl. the decoder's glitch filter (ctl.enc_filt)
 };
 
 // Controller settings in physical units.
