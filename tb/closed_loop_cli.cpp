@@ -3,8 +3,12 @@
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <atomic>
+#include <string_view>
+#include <vector>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <nlohmann/json.hpp>
@@ -12,8 +16,58 @@
 #include <thread>
 
 #include "scenarios.h"
+#include "user_input.h"
 
 namespace sc {
+
+namespace {
+
+// A plant setting a user can give: its flag, its scenario key, its range.
+struct PlantParam {
+  const char* flag;  // without "--"
+  const char* key;   // in a scenario's "plant" object
+  double lo, hi;
+  bool integer;
+  const char* what;
+  void (*set)(PlantConfig&, double);
+};
+
+const std::vector<PlantParam>& plant_params() {
+  static const std::vector<PlantParam> params = {
+      {"f-n", "f_n", 0.1, 1e5, false, "rotor natural frequency, Hz", [](PlantConfig& p, double v) { p.f_n = v; }},
+      {"zeta", "zeta", 1e-3, 10, false, "rotor damping ratio", [](PlantConfig& p, double v) { p.zeta = v; }},
+      {"load-torque", "load_torque", 0, 100, false, "constant load torque, N m",
+       [](PlantConfig& p, double v) { p.load_torque = v; }},
+      {"inertia", "inertia", 1e-9, 10, false, "rotor + load inertia, kg m^2",
+       [](PlantConfig& p, double v) { p.inertia = v; }},
+      {"pulses-per-rev", "pulses_per_rev", 1, 1e7, false, "driver pulses per revolution",
+       [](PlantConfig& p, double v) { p.pulses_per_rev = v; }},
+      {"counts-per-step", "counts_per_step", 1, 64, false, "encoder counts per pulse (power of 2)",
+       [](PlantConfig& p, double v) { p.counts_per_step = v; }},
+      {"tau", "tau", 1e-6, 100, false, "first-order plant time constant, s", [](PlantConfig& p, double v) { p.tau = v; }},
+      {"enc-noise", "noise_counts", 0, 1e6, false, "encoder position noise, sigma in counts",
+       [](PlantConfig& p, double v) { p.noise_counts = v; }},
+      {"enc-glitch-rate", "glitch_rate", 0, 1e7, false, "A/B glitches per second",
+       [](PlantConfig& p, double v) { p.glitch_rate = v; }},
+      {"enc-glitch-clocks", "glitch_clocks", 1, 65535, true, "glitch length, clocks",
+       [](PlantConfig& p, double v) { p.glitch_clocks = int(v); }},
+      {"plant-seed", "seed", 0, 9007199254740992.0, true, "noise/glitch seed",
+       [](PlantConfig& p, double v) { p.seed = uint64_t(v); }},
+  };
+  return params;
+}
+
+// A flag's text through the validation layer; CLI11 reports it (exit 2).
+double checked_flag(const char* flag, const std::string& text, double lo, double hi, bool integer) {
+  try {
+    return integer ? double(input::parse_int(flag, text, int64_t(lo), int64_t(hi)))
+                   : input::parse_real(flag, text, lo, hi);
+  } catch (const input::Error& e) {
+    throw CLI::ValidationError(e.what());
+  }
+}
+
+}  // namespace
 
 void add_closed_loop_flags(CLI::App* sim, ClosedLoopCli& f) {
   const std::string g = "Closed loop";
@@ -23,23 +77,22 @@ void add_closed_loop_flags(CLI::App* sim, ClosedLoopCli& f) {
       ->group(g);
   sim->add_option("--weights-csv", f.weights_csv, "write the neuron weight trajectories (CSV; -<name> per run)")->group(g);
   sim->add_option("--scenario", f.scenario, "JSON file: {\"plant\": {...}, \"controller\": {...}}")->group(g);
-  sim->add_option("--tail", f.tail_s, "quiet time after done for the residual vibration, s")->group(g);
-  // plant
+  sim->add_option_function<std::string>(
+         "--tail", [&f](const std::string& v) { f.tail_s = checked_flag("tail", v, 0, 10, false); },
+         "quiet time after done for the residual vibration, s (0..10)")
+      ->group(g);
+  // plant: every number through the one table (flags and scenario keys alike)
   const std::string pg = "Plant";
   sim->add_option("--plant", f.plant_kind, "stepper | first-order")
       ->check(CLI::IsMember({"stepper", "first-order"}))->group(pg);
-  sim->add_option("--f-n", f.plant.f_n, "rotor natural frequency, Hz")->group(pg);
-  sim->add_option("--zeta", f.plant.zeta, "rotor damping ratio")->group(pg);
-  sim->add_option("--load-torque", f.plant.load_torque, "constant load torque, N m")->group(pg);
-  sim->add_option("--inertia", f.plant.inertia, "rotor + load inertia, kg m^2")->group(pg);
+  for (const PlantParam& prm : plant_params()) {
+    sim->add_option_function<std::string>(
+           std::string("--") + prm.flag,
+           [&f, &prm](const std::string& v) { prm.set(f.plant, checked_flag(prm.flag, v, prm.lo, prm.hi, prm.integer)); },
+           fmt::format("{} ({}..{})", prm.what, prm.lo, prm.hi))
+        ->group(pg);
+  }
   sim->add_flag("--missed-steps", f.plant.missed_steps, "sinusoidal torque-angle curve: the rotor can slip")->group(pg);
-  sim->add_option("--pulses-per-rev", f.plant.pulses_per_rev, "driver pulses per revolution")->group(pg);
-  sim->add_option("--counts-per-step", f.plant.counts_per_step, "encoder counts per pulse (power of 2)")->group(pg);
-  sim->add_option("--tau", f.plant.tau, "first-order plant time constant, s")->group(pg);
-  sim->add_option("--enc-noise", f.plant.noise_counts, "encoder position noise, sigma in counts")->group(pg);
-  sim->add_option("--enc-glitch-rate", f.plant.glitch_rate, "A/B glitches per second")->group(pg);
-  sim->add_option("--enc-glitch-clocks", f.plant.glitch_clocks, "glitch length, clocks")->group(pg);
-  sim->add_option("--plant-seed", f.plant.seed, "noise/glitch seed")->group(pg);
   // controller
   const std::string cg = "Controller";
   ControllerParams& c = f.ctl;
@@ -81,62 +134,62 @@ std::string apply_scenario_json(const std::string& text, ControllerParams& c, Pl
   try {
     j = nlohmann::json::parse(text);
   } catch (const std::exception& e) {
-    return std::string("scenario: ") + e.what();
+    return std::string("scenario: not JSON: ") + e.what();
   }
+  // Every key known and typed, the plant's numbers in the flags' ranges (one
+  // table), so a typo is an error instead of the default plant.
   try {
+    using namespace input;
+    json_known_keys("scenario", j, {"_comment", "description", "plant", "controller"});
     if (j.contains("plant")) {
-      const auto& q = j["plant"];
-      if (q.contains("kind")) p.kind = q["kind"] == "first-order" ? PlantConfig::Kind::FirstOrder : PlantConfig::Kind::Stepper;
-      auto num = [&](const char* k, double& v) { if (q.contains(k)) v = q[k].get<double>(); };
-      num("f_n", p.f_n);
-      num("zeta", p.zeta);
-      num("load_torque", p.load_torque);
-      num("inertia", p.inertia);
-      num("pulses_per_rev", p.pulses_per_rev);
-      num("counts_per_step", p.counts_per_step);
-      num("tau", p.tau);
-      num("noise_counts", p.noise_counts);
-      num("glitch_rate", p.glitch_rate);
-      if (q.contains("missed_steps")) p.missed_steps = q["missed_steps"].get<bool>();
-      if (q.contains("glitch_clocks")) p.glitch_clocks = q["glitch_clocks"].get<int>();
-      if (q.contains("seed")) p.seed = q["seed"].get<uint64_t>();
+      const auto& q = json_object("scenario.plant", j["plant"]);
+      std::vector<std::string_view> keys = {"kind", "missed_steps"};
+      for (const PlantParam& prm : plant_params()) keys.push_back(prm.key);
+      json_known_keys("scenario.plant", q, keys);
+      if (q.contains("kind")) {
+        const std::string kind = json_string("scenario.plant.kind", q["kind"]);
+        if (kind != "stepper" && kind != "first-order") {
+          throw Error("scenario.plant.kind", "'" + kind + "'", "must be stepper or first-order");
+        }
+        p.kind = kind == "first-order" ? PlantConfig::Kind::FirstOrder : PlantConfig::Kind::Stepper;
+      }
+      if (q.contains("missed_steps")) p.missed_steps = json_bool("scenario.plant.missed_steps", q["missed_steps"]);
+      for (const PlantParam& prm : plant_params()) {
+        if (!q.contains(prm.key)) continue;
+        const std::string at = std::string("scenario.plant.") + prm.key;
+        prm.set(p, prm.integer ? double(json_int(at, q[prm.key], int64_t(prm.lo), int64_t(prm.hi)))
+                               : json_real(at, q[prm.key], prm.lo, prm.hi));
+      }
     }
     if (j.contains("controller")) {
-      const auto& q = j["controller"];
-      auto num = [&](const char* k, double& v) { if (q.contains(k)) v = q[k].get<double>(); };
-      num("rate_hz", c.rate_hz);
-      num("k_p", c.k_p);
-      num("k_v", c.k_v);
-      num("kb", c.kb);
-      num("eta_p1", c.eta_p1);
-      num("eta_p2", c.eta_p2);
-      num("eta_v1", c.eta_v1);
-      num("eta_v2", c.eta_v2);
-      num("learn_dz_p", c.learn_dz_p);
-      num("learn_dz_v", c.learn_dz_v);
-      num("w_p1", c.w_p1);
-      num("fixed_w_p1", c.fixed_w_p1);
-      num("w_p2", c.w_p2);
-      num("w_v1", c.w_v1);
-      num("w_v2", c.w_v2);
-      num("w_min", c.w_min);
-      num("w_p1_max", c.w_p1_max);
-      num("w_p2_max", c.w_p2_max);
-      num("w_v1_max", c.w_v1_max);
-      num("w_v2_max", c.w_v2_max);
-      num("v_lim", c.v_lim);
-      num("u_lim", c.u_lim);
-      num("ferr_lim", c.ferr_lim);
-      num("inpos_win", c.inpos_win);
-      num("inpos_hold_s", c.inpos_hold_s);
-      num("settle_rate", c.settle_rate);
-      if (q.contains("ff")) c.ff = q["ff"].get<bool>();
-      if (q.contains("adaptive")) c.adaptive = q["adaptive"].get<bool>();
-      if (q.contains("learn_shift")) c.learn_shift = q["learn_shift"].get<int>();
-      if (q.contains("enc_filt")) c.enc_filt = q["enc_filt"].get<int>();
+      const auto& q = json_object("scenario.controller", j["controller"]);
+      json_known_keys("scenario.controller", q,
+                      {"rate_hz", "k_p", "k_v", "kb", "eta_p1", "eta_p2", "eta_v1", "eta_v2", "learn_dz_p",
+                       "learn_dz_v", "w_p1", "fixed_w_p1", "w_p2", "w_v1", "w_v2", "w_min", "w_p1_max", "w_p2_max",
+                       "w_v1_max", "w_v2_max", "v_lim", "u_lim", "ferr_lim", "inpos_win", "inpos_hold_s",
+                       "settle_rate", "ff", "adaptive", "learn_shift", "enc_filt"});
+      // Ranges of the controller settings are checked where they become
+      // register values (to_servo_config), for flags and scenarios alike.
+      auto num = [&](const char* k, double& v) {
+        if (q.contains(k)) v = json_real(std::string("scenario.controller.") + k, q[k], -1e12, 1e12);
+      };
+      for (const auto& [k, v] : std::initializer_list<std::pair<const char*, double*>>{
+               {"rate_hz", &c.rate_hz}, {"k_p", &c.k_p}, {"k_v", &c.k_v}, {"kb", &c.kb}, {"eta_p1", &c.eta_p1},
+               {"eta_p2", &c.eta_p2}, {"eta_v1", &c.eta_v1}, {"eta_v2", &c.eta_v2}, {"learn_dz_p", &c.learn_dz_p},
+               {"learn_dz_v", &c.learn_dz_v}, {"w_p1", &c.w_p1}, {"fixed_w_p1", &c.fixed_w_p1}, {"w_p2", &c.w_p2},
+               {"w_v1", &c.w_v1}, {"w_v2", &c.w_v2}, {"w_min", &c.w_min}, {"w_p1_max", &c.w_p1_max},
+               {"w_p2_max", &c.w_p2_max}, {"w_v1_max", &c.w_v1_max}, {"w_v2_max", &c.w_v2_max}, {"v_lim", &c.v_lim},
+               {"u_lim", &c.u_lim}, {"ferr_lim", &c.ferr_lim}, {"inpos_win", &c.inpos_win},
+               {"inpos_hold_s", &c.inpos_hold_s}, {"settle_rate", &c.settle_rate}}) {
+        num(k, *v);
+      }
+      if (q.contains("ff")) c.ff = json_bool("scenario.controller.ff", q["ff"]);
+      if (q.contains("adaptive")) c.adaptive = json_bool("scenario.controller.adaptive", q["adaptive"]);
+      if (q.contains("learn_shift")) c.learn_shift = int(json_int("scenario.controller.learn_shift", q["learn_shift"], 0, 31));
+      if (q.contains("enc_filt")) c.enc_filt = int(json_int("scenario.controller.enc_filt", q["enc_filt"], 0, 15));
     }
   } catch (const std::exception& e) {
-    return std::string("scenario: ") + e.what();
+    return e.what();
   }
   return {};
 }
@@ -254,7 +307,7 @@ int run_closed_loop_cli(ClosedLoopCli f, const std::vector<std::pair<std::string
                         const PulseTiming& timing, const std::string& engine, unsigned n_threads, bool json) {
   if (!f.scenario.empty()) {
     std::ifstream in(f.scenario);
-    if (!in) {
+    if (!std::filesystem::is_regular_file(f.scenario) || !in) {
       std::fprintf(stderr, "error: --scenario %s: cannot read\n", f.scenario.c_str());
       return 2;
     }

@@ -4,6 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
+#include <tuple>
+#include <utility>
 
 namespace scurve {
 
@@ -12,6 +15,16 @@ using namespace hw;
 namespace {
 
 uint32_t coef(double v) { return uint32_t(std::llround(v * double(1u << CoefFrac))); }
+
+std::string show(double v) { return fmt::format("{}", v); }
+
+// A setting in physical units within [lo, hi] (finite): the error names the
+// flag, the value and the bound.
+std::optional<Error> in_range(const char* name, double v, double lo, double hi, const char* unit) {
+  if (std::isfinite(v) && v >= lo && v <= hi) return std::nullopt;
+  return Error{name, fmt::format("{}={}: must be a finite number in [{}, {}]{}{}", name, show(v), show(lo), show(hi),
+                                 *unit ? " " : "", unit)};
+}
 int32_t wgt(double v) { return int32_t(std::llround(v * double(1 << WgtFrac))); }
 
 }  // namespace
@@ -42,6 +55,22 @@ ServoConfigResult to_servo_config(const ControllerParams& p, double counts_per_s
                                                 1 << ((1 << EncShiftW) - 1))};
   }
   n.shift = uint8_t(shift);
+  // Physical settings: ranges the register words can hold with this encoder
+  // ratio, so no value is silently clamped.
+  const double q16 = std::floor(2147483647.0 / (double(1 << CtlFrac) * cps));  // pulses below 2^31 LSB
+  for (const auto& [name, v, lo, hi, unit] : {
+           std::tuple{"ctl-rate", p.rate_hz, 1.0, f, "Hz"},
+           std::tuple{"v-lim", p.v_lim, 0.0, 1e7, "pulses/s"},
+           std::tuple{"u-lim", p.u_lim, 0.0, 1e7, "pulses/s"},
+           std::tuple{"ferr-lim", p.ferr_lim, 1.0, q16, "pulses"},
+           std::tuple{"inpos-win", p.inpos_win, 0.0, q16, "pulses"},
+           std::tuple{"inpos-hold", p.inpos_hold_s, 0.0, 6.5535, "s"},
+           std::tuple{"settle-rate", p.settle_rate, 0.0, 1e7, "pulses/s"},
+           std::tuple{"learn-dz-p", p.learn_dz_p, 0.0, q16, "pulses"},
+           std::tuple{"learn-dz-v", p.learn_dz_v, 0.0, q16, "pulses/period"},
+       }) {
+    if (auto e = in_range(name, v, lo, hi, unit)) return *e;
+  }
   n.ff_en = p.ff;
   if (p.learn_shift < 0 || p.learn_shift >= (1 << LearnShW)) {
     return Error{"learn_shift", fmt::format("learn-shift={} outside 0..31", p.learn_shift)};
@@ -51,8 +80,11 @@ ServoConfigResult to_servo_config(const ControllerParams& p, double counts_per_s
   n.learn_dz_p = uint32_t(std::llround(p.learn_dz_p * cps * q8));
   n.learn_dz_v = uint32_t(std::llround(p.learn_dz_v * cps * q8));
   const double cmax = double(1u << (CoefW - CoefFrac));
-  for (double v : {p.k_p, p.k_v, p.kb, p.eta_p1, p.eta_p2, p.eta_v1, p.eta_v2}) {
-    if (!(v >= 0 && v < cmax)) return Error{"gain", fmt::format("gain/learning rate {} outside [0, {})", v, cmax)};
+  const double cmax_lsb = cmax - 1.0 / double(1u << CoefFrac);
+  for (const auto& [name, v] : {std::pair{"k-p", p.k_p}, std::pair{"k-v", p.k_v}, std::pair{"kb", p.kb},
+                                std::pair{"eta-p1", p.eta_p1}, std::pair{"eta-p2", p.eta_p2},
+                                std::pair{"eta-v1", p.eta_v1}, std::pair{"eta-v2", p.eta_v2}}) {
+    if (auto e = in_range(name, v, 0.0, cmax_lsb, "")) return *e;
   }
   n.k_p = coef(p.k_p);
   n.k_v = coef(p.k_v);
@@ -63,8 +95,22 @@ ServoConfigResult to_servo_config(const ControllerParams& p, double counts_per_s
   n.eta_v1 = coef(p.eta_v1 * k);
   n.eta_v2 = coef(p.eta_v2 * k);
   const double wmax = double(1 << (WgtW - 1 - WgtFrac));
-  for (double v : {p.w_p1, p.w_p2, p.w_v1, p.w_v2, p.w_min, p.w_p1_max, p.w_p2_max, p.w_v1_max, p.w_v2_max}) {
-    if (!(v > -wmax && v < wmax)) return Error{"weight", fmt::format("weight {} outside (-{}, {})", v, wmax, wmax)};
+  const double wmax_lsb = wmax - 1.0 / double(1 << WgtFrac);
+  for (const auto& [name, v] : {std::pair{"w-p1", p.w_p1}, std::pair{"fixed-w-p1", p.fixed_w_p1},
+                                std::pair{"w-p2", p.w_p2}, std::pair{"w-v1", p.w_v1}, std::pair{"w-v2", p.w_v2},
+                                std::pair{"w-min", p.w_min}, std::pair{"w-p1-max", p.w_p1_max},
+                                std::pair{"w-p2-max", p.w_p2_max}, std::pair{"w-v1-max", p.w_v1_max},
+                                std::pair{"w-v2-max", p.w_v2_max}}) {
+    if (auto e = in_range(name, v, -wmax_lsb, wmax_lsb, "")) return *e;
+  }
+  // Each weight's bounds must be ordered (the controller clamps into
+  // [w_min, w_max]; an empty interval has no meaning).
+  for (const auto& [name, hi] : {std::pair{"w-p1-max", p.w_p1_max}, std::pair{"w-p2-max", p.w_p2_max},
+                                 std::pair{"w-v1-max", p.w_v1_max}, std::pair{"w-v2-max", p.w_v2_max}}) {
+    if (hi < p.w_min) {
+      return Error{name, fmt::format("{}={}: below w-min={} (the weight's interval would be empty)", name, show(hi),
+                                     show(p.w_min))};
+    }
   }
   n.w_p1 = wgt(p.adaptive ? p.w_p1 : p.fixed_w_p1);
   n.w_p2 = wgt(p.w_p2);
@@ -82,13 +128,23 @@ ServoConfigResult to_servo_config(const ControllerParams& p, double counts_per_s
   if (u_lim > rate_limit) {
     return Error{"u_lim", fmt::format("u-lim={} pulses/s above the step-rate limit {}", u_lim, rate_limit)};
   }
-  n.v_lim = uint32_t(std::llround(std::min(p.v_lim * per, 2147483647.0)));
+  for (const auto& [name, v, words] : {std::tuple{"v-lim", p.v_lim, p.v_lim * per},
+                                       std::tuple{"settle-rate", p.settle_rate, p.settle_rate * per}}) {
+    if (words > 2147483647.0) {
+      return Error{name, fmt::format("{}={} pulses/s: {} counts per control period exceed the register", name,
+                                     show(v), words / q8)};
+    }
+  }
+  n.v_lim = uint32_t(std::llround(p.v_lim * per));
   n.u_lim = uint32_t(std::llround(u_lim * per));
-  n.ferr_lim = uint32_t(std::llround(std::min(p.ferr_lim * cps * q8, 2147483647.0)));
+  n.ferr_lim = uint32_t(std::llround(p.ferr_lim * cps * q8));
   n.inpos_win = uint32_t(std::llround(p.inpos_win * cps * q8));
   n.settle_rate = uint32_t(std::llround(p.settle_rate * per));
   const double hold = std::ceil(p.inpos_hold_s * p.rate_hz);
-  n.inpos_hold = uint16_t(std::clamp(hold, 1.0, 65535.0));
+  if (hold > 65535.0) {
+    return Error{"inpos-hold", fmt::format("inpos-hold={} s: {} control periods exceed 65535", show(p.inpos_hold_s), hold)};
+  }
+  n.inpos_hold = uint16_t(std::max(hold, 1.0));
   return c;
 }
 

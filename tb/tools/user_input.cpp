@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 
@@ -135,17 +136,18 @@ const nlohmann::json& json_array(const std::string& param, const nlohmann::json&
   return v;
 }
 
-void json_known_keys(const std::string& param, const nlohmann::json& obj, std::initializer_list<std::string_view> allowed) {
+void json_known_keys(const std::string& param, const nlohmann::json& obj, const std::vector<std::string_view>& allowed) {
   json_object(param, obj);
   for (const auto& [k, v] : obj.items()) {
-    bool known = false;
+    if (std::find(allowed.begin(), allowed.end(), k) != allowed.end()) continue;
     std::string list;
-    for (std::string_view a : allowed) {
-      known = known || a == k;
-      list += (list.empty() ? "" : ", ") + std::string(a);
-    }
-    if (!known) throw Error(param + "." + k, shown(v), "unknown key (known: " + list + ")");
+    for (std::string_view a : allowed) list += (list.empty() ? "" : ", ") + std::string(a);
+    throw Error(param + "." + k, shown(v), "unknown key (known: " + list + ")");
   }
+}
+
+void json_known_keys(const std::string& param, const nlohmann::json& obj, std::initializer_list<std::string_view> allowed) {
+  json_known_keys(param, obj, std::vector<std::string_view>(allowed));
 }
 
 }  // namespace sc::input

@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace sc::input {
 
@@ -42,6 +43,7 @@ const nlohmann::json& json_object(const std::string& param, const nlohmann::json
 const nlohmann::json& json_array(const std::string& param, const nlohmann::json& v);
 // Fails on a key of `obj` that is not in `allowed` (a typo must not be ignored).
 void json_known_keys(const std::string& param, const nlohmann::json& obj, std::initializer_list<std::string_view> allowed);
+void json_known_keys(const std::string& param, const nlohmann::json& obj, const std::vector<std::string_view>& allowed);
 
 // A JSON value as the user wrote it, shortened for one-line messages.
 std::string shown(const nlohmann::json& v);
