@@ -26,12 +26,6 @@ Limits4Check limits_of(const MoveRequest& r, const Plan& p) {
   return l;
 }
 
-std::string describe(const SimResult& r) {
-  std::string s;
-  for (const auto& f : r.failures) s += f + "\n";
-  return s;
-}
-
 }  // namespace
 
 TEST(Lockstep, SixtyRandomPlannedMovesMatchEveryClockAndEmitExactlyL) {
@@ -60,7 +54,7 @@ TEST(Lockstep, SixtyRandomPlannedMovesMatchEveryClockAndEmitExactlyL) {
     ASSERT_TRUE(s.pass()) << "move " << run << " (distance " << r.distance << " vs " << r.v_start << " vc "
                           << r.v_cruise << " ve " << r.v_end << " a " << r.a_max << " j " << r.j_max << " kind "
                           << int(r.kind) << " high/low/setup/hold " << t.high << "/" << t.low << "/" << t.setup
-                          << "/" << t.hold << "): " << describe(s);
+                          << "/" << t.hold << "): " << s.failure_lines();
     EXPECT_EQ(s.mismatches, 0u);
     EXPECT_EQ(s.pulses, r.distance);
     clocks += s.total_clocks;
@@ -350,7 +344,7 @@ TEST_P(PaperGroup, FullLengthLockstepIsExactAndInPhase) {
   const MoveRequest r = paper_group(g);
   const Plan p = std::get<Plan>(plan_move(r, {}));
   const SimResult s = run_move(p, {}, limits_of(r, p), SimOptions{});
-  EXPECT_TRUE(s.pass()) << describe(s);
+  EXPECT_TRUE(s.pass()) << s.failure_lines();
   EXPECT_EQ(s.mismatches, 0u);
   EXPECT_EQ(s.pulses, 30000);
   EXPECT_EQ(s.final_error, 0);
