@@ -243,11 +243,7 @@ TEST(Lockstep, FinishFlagsARunThatComparedNothing) {
 // the queue at 400k+200. `drop_request` loses one request (a step-queue
 // overrun RTL and model would agree on).
 std::vector<std::string> run_reference_accounting(int steps, int drop_request) {
-  PulseTiming t;
-  t.high = 10;
-  t.low = 10;
-  t.setup = 5;
-  t.hold = 5;
+  PulseTiming t{10, 10, 5, 5};  // high, low, setup, hold
   PinMonitor pins(PinRules{t, false, StepAccounting::ReferencePosition});
   int32_t ref = 1000;  // the executor does not start at 0
   int32_t queued = 0;
@@ -292,11 +288,7 @@ TEST(PinMonitor, ReferenceAccountingReportsALostLastRequestAtTheEnd) {
 }
 
 TEST(PinMonitor, PulseCounterAccountingReportsAPulseTheCounterMissedAndFollowsItsClear) {
-  PulseTiming t;
-  t.high = 4;
-  t.low = 4;
-  t.setup = 0;
-  t.hold = 0;
+  PulseTiming t{4, 4, 0, 0};  // high, low, setup, hold
   PinMonitor pins(PinRules{t, false, StepAccounting::PulseCounter});
   int32_t count = 0;
   uint64_t clock = 0;
@@ -316,11 +308,7 @@ TEST(PinMonitor, PulseCounterAccountingReportsAPulseTheCounterMissedAndFollowsIt
 }
 
 TEST(PinMonitor, ClosedLoopRulesKeepTimingChecksWithoutProfilePhases) {
-  PulseTiming t;
-  t.high = 4;
-  t.low = 4;
-  t.setup = 10;
-  t.hold = 0;
+  PulseTiming t{4, 4, 10, 0};  // high, low, setup, hold
   PinMonitor pins(PinRules{t, false, StepAccounting::None});
   // pulses while the reported phase is "done" are fine in closed loop ...
   const uint8_t done = uint8_t(Phase::PhDone);
