@@ -253,15 +253,6 @@ def header(pkg):
     return "\n".join(o)
 
 
-def write_if_changed(path, text):
-    try:
-        if open(path, encoding="utf-8").read() == text:
-            return
-    except FileNotFoundError:
-        pass
-    open(path, "w", encoding="utf-8").write(text)
-
-
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--pkg", default=os.path.join(ROOT, "rtl", "sc_pkg.sv"))
@@ -275,8 +266,8 @@ def main():
     want = sv_section(a.pkg)
     doc = gen_regmap.doc_for(a.pkg)
     if a.update:
-        write_if_changed(a.pkg, before + want + after)
-        write_if_changed(a.doc, doc)
+        gen_regmap.write_if_changed(a.pkg, before + want + after)
+        gen_regmap.write_if_changed(a.doc, doc)
     if a.check:
         stale = []
         if have != want:
@@ -290,7 +281,7 @@ def main():
             sys.exit("stale generated layout: " + ", ".join(stale) +
                      "\nregenerate with: scripts/gen_layout.py --update  (then commit)")
     if a.header:
-        write_if_changed(a.header, header(a.pkg))
+        gen_regmap.write_if_changed(a.header, header(a.pkg))
 
 
 if __name__ == "__main__":

@@ -11,8 +11,12 @@ never be silently missing from the model. The generated section at the end
 of the package (scripts/gen_layout.py) is left to that script's header,
 sc_layout.h.
 """
+import os
 import re
 import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import gen_regmap  # noqa: E402
 
 
 def main(src, dst):
@@ -52,13 +56,7 @@ def main(src, dst):
     for name, value in items:
         out.append(f"  {name} = {value},")
     out += ["};", "", "}  // namespace sc", ""]
-    new = "\n".join(out)
-    try:
-        if open(dst, encoding="utf-8").read() == new:
-            return
-    except FileNotFoundError:
-        pass
-    open(dst, "w", encoding="utf-8").write(new)
+    gen_regmap.write_if_changed(dst, "\n".join(out))
 
 
 if __name__ == "__main__":

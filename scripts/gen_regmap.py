@@ -378,6 +378,17 @@ def doc(params, words, enums=None):
     return "\n".join(out)
 
 
+def write_if_changed(path, text):
+    """Write text to path unless it already holds it (keeps the timestamp, so
+    nothing that depends on the file rebuilds)."""
+    try:
+        if open(path, encoding="utf-8").read() == text:
+            return
+    except FileNotFoundError:
+        pass
+    open(path, "w", encoding="utf-8").write(text)
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("pkg")
@@ -387,14 +398,7 @@ def main():
     a = ap.parse_args()
     params, words = parse(a.pkg)
     if a.header:
-        text = header(params, words)
-        try:
-            if open(a.header, encoding="utf-8").read() == text:
-                text = None
-        except FileNotFoundError:
-            pass
-        if text is not None:
-            open(a.header, "w", encoding="utf-8").write(text)
+        write_if_changed(a.header, header(params, words))
     if a.doc:
         open(a.doc, "w", encoding="utf-8").write(doc_for(a.pkg))
     if a.check:

@@ -62,16 +62,12 @@ void AxiMaster::note(const LockstepLog& checker, const PinMonitor& pins) {
   }
 }
 
-AxiBench::AxiBench(bool with_rtl, uint32_t seed) : AxiMaster(seed) {
-  if (with_rtl) rtl_ = std::make_unique<RtlAxiAxis>();
+AxiBench::AxiBench(bool with_rtl, uint32_t seed) : AxiLockstepBench(with_rtl, seed, StepAccounting::ReferencePosition) {
   reset();
 }
 
 void AxiBench::reset() {
-  if (rtl_) rtl_->reset(4);
-  model_.reset();
-  in_ = AxiIn{};
-  out_ = model_.outputs();
+  AxiLockstepBench::reset();
   last_step_ = out_.step;
 }
 
@@ -98,16 +94,9 @@ void AxiBench::tick() {
 
 // ---- sc_axi_servo ------------------------------------------------------------------
 
-AxiServoBench::AxiServoBench(bool with_rtl, uint32_t seed) : AxiMaster(seed) {
-  if (with_rtl) rtl_ = std::make_unique<RtlAxiServo>();
+AxiServoBench::AxiServoBench(bool with_rtl, uint32_t seed)
+    : AxiLockstepBench(with_rtl, seed, StepAccounting::PulseCounter) {
   reset();
-}
-
-void AxiServoBench::reset() {
-  if (rtl_) rtl_->reset(4);
-  model_.reset();
-  in_ = AxiIn{};
-  out_ = model_.outputs();
 }
 
 void AxiServoBench::tick() {

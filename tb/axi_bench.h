@@ -57,9 +57,48 @@ class AxiMaster {
   std::string error_;
 };
 
-class AxiBench : public AxiMaster {
+// What both register-level benches hold: the Verilated top (optional), its
+// model, the side inputs, the outputs of this clock, the lockstep checker
+// and the pin monitor.
+template <class Rtl, class Model, class Outputs>
+class AxiLockstepBench : public AxiMaster {
  public:
+  void reset() {
+    if (rtl_) rtl_->reset(4);
+    model_.reset();
+    in_ = AxiIn{};
+    out_ = model_.outputs();
+  }
+
+  RegsSide& side() { return side_; }
+  const Outputs& out() const { return out_; }
+  const Model& model() const { return model_; }
+  uint64_t clock() const { return clock_; }
+  int64_t net_steps() const { return pins_.net_steps(); }
+  uint64_t matched() const { return checker_.matched(); }
+  const PinMonitor& pins() const { return pins_; }
+
+ protected:
   // with_rtl = false runs the model alone (for speed comparisons).
+  AxiLockstepBench(bool with_rtl, uint32_t seed, StepAccounting accounting)
+      : AxiMaster(seed), pins_{PinRules{PulseTiming{}, false, accounting}} {
+    if (with_rtl) rtl_ = std::make_unique<Rtl>();
+  }
+  AxiOut axi_out() const override { return out_.axi; }
+  std::unique_ptr<Rtl> rtl_;
+  Model model_;
+  RegsSide side_;
+  Outputs out_;
+  uint64_t clock_ = 0;
+  Lockstep<Outputs> checker_{&render_signals};
+  PinMonitor pins_;
+};
+
+// sc_axi_axis: Verilated RTL and AxiAxis in lockstep every clock. Open loop:
+// the pins against the core's position (its step queue read from the model,
+// as sc_axi_axis has no port for it).
+class AxiBench : public AxiLockstepBench<RtlAxiAxis, AxiAxis, AxiAxisOutputs> {
+ public:
   explicit AxiBench(bool with_rtl = true, uint32_t seed = 1);
 
   void reset();
@@ -67,28 +106,10 @@ class AxiBench : public AxiMaster {
   // Checker self-test: the model sees the encoder position off by `d`.
   void inject_model_enc_offset(int32_t d) { model_enc_offset_ = d; }
 
-  RegsSide& side() { return side_; }
-  const AxiAxisOutputs& out() const { return out_; }
-  const AxiAxis& model() const { return model_; }
-
   // STEP rising edges, as clocks after the last START pulse to the core.
   const std::vector<uint64_t>& rise_times() const { return rise_times_; }
-  uint64_t clock() const { return clock_; }
-  int64_t net_steps() const { return pins_.net_steps(); }
-  uint64_t matched() const { return checker_.matched(); }
-  const PinMonitor& pins() const { return pins_; }
 
  private:
-  AxiOut axi_out() const override { return out_.axi; }
-  std::unique_ptr<RtlAxiAxis> rtl_;
-  AxiAxis model_;
-  RegsSide side_;
-  AxiAxisOutputs out_;
-  uint64_t clock_ = 0;
-  Lockstep<AxiAxisOutputs> checker_{&render_signals};
-  // Open loop: the pins against the core's position (its step queue read
-  // from the model, as sc_axi_axis has no port for it).
-  PinMonitor pins_{PinRules{PulseTiming{}, false, StepAccounting::ReferencePosition}};
   bool last_step_ = false;
   int32_t model_enc_offset_ = 0;
   uint64_t start_clock_ = 0;
@@ -98,36 +119,19 @@ class AxiBench : public AxiMaster {
 // The same for sc_axi_servo (closed-loop axis): Verilated RTL and AxiServo
 // in lockstep every clock. With a plant attached, the STEP/DIR pins drive
 // the plant and its encoder A/B go back to the DUT (as tb/closed_loop_run);
-// without one, side().enc_ab drives the encoder inputs.
-class AxiServoBench : public AxiMaster {
+// without one, side().enc_ab drives the encoder inputs. Both modes: the pins
+// against the step generator's counter.
+class AxiServoBench : public AxiLockstepBench<RtlAxiServo, AxiServo, AxiServoOutputs> {
  public:
   explicit AxiServoBench(bool with_rtl = true, uint32_t seed = 1);
-  void reset();
   void tick() override;
   void attach_plant(const PlantConfig& cfg) { plant_ = std::make_unique<Plant>(cfg, double(ClkHz)); }
   const Plant* plant() const { return plant_.get(); }
   // Checker self-test: from now on the model sees encoder A inverted.
   void inject_model_fault() { inject_ = true; }
 
-  RegsSide& side() { return side_; }
-  const AxiServoOutputs& out() const { return out_; }
-  const AxiServo& model() const { return model_; }
-  uint64_t clock() const { return clock_; }
-  int64_t net_steps() const { return pins_.net_steps(); }
-  uint64_t matched() const { return checker_.matched(); }
-  const PinMonitor& pins() const { return pins_; }
-
  private:
-  AxiOut axi_out() const override { return out_.axi; }
-  std::unique_ptr<RtlAxiServo> rtl_;
   std::unique_ptr<Plant> plant_;
-  AxiServo model_;
-  RegsSide side_;
-  AxiServoOutputs out_;
-  uint64_t clock_ = 0;
-  Lockstep<AxiServoOutputs> checker_{&render_signals};
-  // Both modes: the pins against the step generator's counter.
-  PinMonitor pins_{PinRules{PulseTiming{}, false, StepAccounting::PulseCounter}};
   bool inject_ = false;
 };
 

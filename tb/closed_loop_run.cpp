@@ -84,30 +84,40 @@ bool write_weights_csv(const std::string& path, const std::vector<WeightSample>&
 
 namespace {
 
+// Mean of the last `win` values added.
+class MovingAverage {
+ public:
+  explicit MovingAverage(int win) : win_(win) {}
+  // Adds x; once `win` values are in, true with their mean in *mean.
+  bool add(double x, double* mean) {
+    sum_ += x;
+    buf_.push_back(x);
+    if (int(buf_.size()) > win_) {
+      sum_ -= buf_.front();
+      buf_.pop_front();
+    }
+    if (int(buf_.size()) < win_) return false;
+    *mean = sum_ / win_;
+    return true;
+  }
+
+ private:
+  int win_;
+  double sum_ = 0;
+  std::deque<double> buf_;
+};
+
 // Peak |acceleration| and |jerk| from a position sampled every `dt` s:
 // two cascaded moving averages of `win` samples, then differences over
 // `lag` samples. The same filter runs on the encoder and on the reference,
 // so the two figures are comparable (quantisation noise shows in both).
 class KinEstimator {
  public:
-  KinEstimator(double dt, int win, int lag) : dt_(dt), win_(win), lag_(lag) {}
+  KinEstimator(double dt, int win, int lag) : dt_(dt), lag_(lag), avg1_(win), avg2_(win) {}
   void add(double p) {
-    s1_ += p;
-    b1_.push_back(p);
-    if (int(b1_.size()) > win_) {
-      s1_ -= b1_.front();
-      b1_.pop_front();
-    }
-    if (int(b1_.size()) < win_) return;
-    const double m1 = s1_ / win_;
-    s2_ += m1;
-    b2_.push_back(m1);
-    if (int(b2_.size()) > win_) {
-      s2_ -= b2_.front();
-      b2_.pop_front();
-    }
-    if (int(b2_.size()) < win_) return;
-    hist_.push_back(s2_ / win_);
+    double m1 = 0, m2 = 0;
+    if (!avg1_.add(p, &m1) || !avg2_.add(m1, &m2)) return;
+    hist_.push_back(m2);
     if (int(hist_.size()) > 3 * lag_ + 1) hist_.pop_front();
     if (int(hist_.size()) == 3 * lag_ + 1) {
       const double h = dt_ * lag_;
@@ -122,9 +132,9 @@ class KinEstimator {
 
  private:
   double dt_;
-  int win_, lag_;
-  double s1_ = 0, s2_ = 0;
-  std::deque<double> b1_, b2_, hist_;
+  int lag_;
+  MovingAverage avg1_, avg2_;
+  std::deque<double> hist_;
 };
 
 }  // namespace

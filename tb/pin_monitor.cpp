@@ -31,6 +31,16 @@ DutyTrend trend_of_phase(uint8_t phase) {
   }
 }
 
+std::vector<DutyTrend> expected_trends(const std::vector<Segment>& rows) {
+  std::vector<DutyTrend> seq;
+  for (const Segment& s : rows) {
+    const DutyTrend t = trend_of_phase(uint8_t(s.phase));
+    if (seq.empty() || seq.back() != t) seq.push_back(t);
+  }
+  seq.push_back(DutyTrend::Zero);
+  return seq;
+}
+
 void PinMonitor::error(std::string s) {
   if (errors_.size() < max_errors_) errors_.push_back(std::move(s));
 }

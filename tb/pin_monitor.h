@@ -19,6 +19,8 @@ namespace sc {
 enum class DutyTrend { Rising, Steady, Falling, Zero, None };
 const char* trend_name(DutyTrend t);
 DutyTrend trend_of_phase(uint8_t phase);
+// The duty trends a table should show: its rows' phases, repeats merged, + zero.
+std::vector<DutyTrend> expected_trends(const std::vector<Segment>& rows);
 
 struct PhaseRun {
   uint8_t phase = 0;

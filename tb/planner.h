@@ -139,6 +139,23 @@ inline TableReport run_table(const std::vector<Segment>& rows, u128 pos_frac0, i
   return scurve::run_table(h, pos_frac0, direction);
 }
 
+// Write the rows into the executor model's table and start it (one clock
+// per row, one for the start).
+inline void load_and_start(ProfileExec& ex, const std::vector<Segment>& rows, u128 pos_frac0) {
+  for (size_t i = 0; i < rows.size(); ++i) {
+    ProfileExec::Inputs w;
+    w.seg_we = true;
+    w.seg_waddr = uint8_t(i);
+    w.seg_wdata = rows[i];
+    ex.step(w);
+  }
+  ProfileExec::Inputs st;
+  st.start = true;
+  st.seg_count = uint8_t(rows.size());
+  st.pos_frac0 = pos_frac0;
+  ex.step(st);
+}
+
 inline const char* phase_name(Phase p) { return scurve::phase_name(scurve::Phase(uint8_t(p))); }
 
 }  // namespace sc

@@ -40,14 +40,8 @@ AxiOut read_axi(const V& m) {
 // The axis outputs both register-file tops share.
 template <class V, class O>
 void read_axis(const V& m, O& o) {
-  o.step = m.step_o;
-  o.dir = m.dir_o;
-  o.en = m.en_o;
-  o.busy = m.busy_o;
-  o.done = m.done_o;
+  read_step_outputs(m, o);
   o.fault = m.fault_o;
-  o.phase = m.phase_o;
-  o.pulse_count = int32_t(m.pulse_count_o);
   o.ref_pos = int32_t(m.ref_pos_o);
 }
 

@@ -49,13 +49,7 @@ void RtlCore::step(const CoreInputs& in) {
   }
   if (in.seg_we != last_.seg_we) m.seg_we_i = in.seg_we;
   if (in.seg_we) {
-    m.seg_waddr_i = in.seg_waddr;
-    const Segment& s = in.seg_wdata;
-    m.seg_phase_i = uint8_t(s.phase);
-    m.seg_clocks_i = s.clocks;
-    m.seg_jerk_i = uint64_t(s.jerk) & ((uint64_t(1) << JerkW) - 1);
-    m.seg_acc0_i = uint64_t(s.acc0);
-    put_bits(m.seg_vel0_i, 0, VelW, u128(s.vel0));
+    drive_row_write(m, in.seg_waddr, in.seg_wdata);
   }
   if (in.seg_count != last_.seg_count) m.seg_count_i = in.seg_count;
   if (in.pos_frac0 != last_.pos_frac0) put_bits(m.pos_frac0_i, 0, FracBits, in.pos_frac0);
@@ -80,16 +74,7 @@ CoreOutputs RtlCore::outputs() const {
 void RtlCore::read_outputs(CoreOutputs& o) const {
   const Vsc_axis_core& m = top_->top();
   static_assert(FracBits > 64 && FracBits <= 96 && VelW > 64 && VelW <= 96, "3-word wide ports");
-  o.step = m.step_o;
-  o.dir = m.dir_o;
-  o.en = m.en_o;
-  o.busy = m.busy_o;
-  o.done = m.done_o;
-  o.phase = m.phase_o;
-  o.fault_table = m.fault_table_o;
-  o.fault_overrun = m.fault_overrun_o;
-  o.pulse_count = int32_t(m.pulse_count_o);
-  o.ref_pos_int = int32_t(m.ref_pos_int_o);
+  read_axis_outputs(m, o);
   const auto& f = m.ref_pos_frac_o;
   o.ref_pos_frac = (u128(f[2]) << 64) | (uint64_t(f[1]) << 32) | f[0];
   const auto& v = m.ref_vel_o;

@@ -32,13 +32,7 @@ void RtlServo::step(const ServoInputs& in) {
   }
   m.seg_we_i = in.seg_we;
   if (in.seg_we) {
-    m.seg_waddr_i = in.seg_waddr;
-    const Segment& s = in.seg_wdata;
-    m.seg_phase_i = uint8_t(s.phase);
-    m.seg_clocks_i = s.clocks;
-    m.seg_jerk_i = uint64_t(s.jerk) & ((uint64_t(1) << JerkW) - 1);
-    m.seg_acc0_i = uint64_t(s.acc0);
-    put_bits(m.seg_vel0_i, 0, VelW, u128(s.vel0));
+    drive_row_write(m, in.seg_waddr, in.seg_wdata);
   }
   m.seg_count_i = in.seg_count;
   if (in.pos_frac0 != pos_frac0_) {
@@ -55,20 +49,11 @@ void RtlServo::step(const ServoInputs& in) {
 ServoOutputs RtlServo::outputs() const {
   const Vsc_servo_axis& m = top_->top();
   ServoOutputs o;
-  o.step = m.step_o;
-  o.dir = m.dir_o;
-  o.en = m.en_o;
-  o.busy = m.busy_o;
-  o.done = m.done_o;
-  o.phase = m.phase_o;
-  o.fault_table = m.fault_table_o;
-  o.fault_overrun = m.fault_overrun_o;
+  read_axis_outputs(m, o);
   o.fault_ferr = m.fault_ferr_o;
   o.in_pos = m.in_pos_o;
-  o.pulse_count = int32_t(m.pulse_count_o);
   o.enc_pos = int32_t(m.enc_pos_o);
   o.enc_illegal = uint16_t(m.enc_illegal_o);
-  o.ref_pos_int = int32_t(m.ref_pos_int_o);
   o.ref_frac_hi = uint32_t(m.ref_frac_hi_o);
   o.ref_vel = int32_t(m.ref_vel_o);
   o.ref_done = m.ref_done_o;

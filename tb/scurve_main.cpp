@@ -120,15 +120,7 @@ int main(int argc, char** argv) {
 
   auto tools = add_tool_commands(app);  // diff, regress (issue 4, tb/tools/tool_commands.h)
 
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::CallForAllHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::ParseError& e) {
-    return bad_input(e.what());
-  }
+  if (const auto rc = scurve::cli::parse_command_line(app, argc, argv)) return *rc;
 
   if (int rc = 0; run_tool_command(*tools, &rc)) return rc;
 

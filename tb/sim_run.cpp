@@ -37,16 +37,6 @@ std::vector<CoreInputs> load_sequence(const std::vector<Segment>& rows, u128 pos
   return seq;
 }
 
-std::vector<DutyTrend> expected_trends(const Plan& plan) {
-  std::vector<DutyTrend> seq;
-  for (const Segment& s : plan.segments) {
-    const DutyTrend t = trend_of_phase(uint8_t(s.phase));
-    if (seq.empty() || seq.back() != t) seq.push_back(t);
-  }
-  seq.push_back(DutyTrend::Zero);
-  return seq;
-}
-
 namespace {
 
 // Peak tracking on the reference outputs, every clock: register values and
@@ -98,7 +88,7 @@ SimResult run_move(const Plan& plan, const PulseTiming& timing, const Limits4Che
   SimResult res;
   res.engine = opt.engine;
   res.distance = plan.distance;
-  res.expected_trends = expected_trends(plan);
+  res.expected_trends = expected_trends(plan.segments);
   const bool use_rtl = opt.engine == SimEngine::Lockstep || opt.engine == SimEngine::RtlOnly;
   const bool use_model = opt.engine != SimEngine::RtlOnly;
 

@@ -53,6 +53,12 @@ struct SimResult {
   double clocks_per_s = 0;
   std::vector<std::string> failures;  // everything that makes the run fail
   bool pass() const { return failures.empty(); }
+  // The failures, one a line (for a test's failure message).
+  std::string failure_lines() const {
+    std::string s;
+    for (const std::string& f : failures) s += f + "\n";
+    return s;
+  }
 };
 
 struct Limits4Check {
@@ -66,8 +72,5 @@ SimResult run_move(const Plan& plan, const PulseTiming& timing, const Limits4Che
 // clock (seg_we), then one clock with start; `base` supplies enable, timing.
 // The last element's inputs, with start dropped, are what a run then holds.
 std::vector<CoreInputs> load_sequence(const std::vector<Segment>& rows, u128 pos_frac0, const CoreInputs& base);
-
-// The duty trends a plan should show: its rows' phases, repeats merged, + zero.
-std::vector<DutyTrend> expected_trends(const Plan& plan);
 
 }  // namespace sc

@@ -14,6 +14,7 @@
 #include <string>
 
 #include "fixed_point.h"
+#include "profile_exec.h"
 
 // VM_TRACE_FST is defined (0/1) only inside the target verilate() built.
 #if defined(VM_TRACE_FST) && VM_TRACE_FST
@@ -126,5 +127,40 @@ void put_bits(W& w, int lsb, int width, u128 v) {
 inline uint32_t port_bits(int64_t v, int width) { return uint32_t(uint64_t(v) & ((uint64_t(1) << width) - 1)); }
 // A `width`-bit port value sign-extended.
 inline int32_t sign_extend(uint32_t v, int width) { return int32_t(wrap_signed64(int64_t(v), width)); }
+
+// The row-write ports (seg_*_i but seg_we_i) of the axis tops
+// (sc_axis_core, sc_servo_axis).
+template <class V>
+void drive_row_write(V& m, uint8_t addr, const Segment& s) {
+  m.seg_waddr_i = addr;
+  m.seg_phase_i = uint8_t(s.phase);
+  m.seg_clocks_i = s.clocks;
+  m.seg_jerk_i = uint64_t(s.jerk) & ((uint64_t(1) << JerkW) - 1);
+  m.seg_acc0_i = uint64_t(s.acc0);
+  put_bits(m.seg_vel0_i, 0, VelW, u128(s.vel0));
+}
+
+// The STEP/DIR and status outputs every top with an axis has under the same
+// port names (sc_axis_core, sc_servo_axis, sc_axi_axis, sc_axi_servo).
+template <class V, class O>
+void read_step_outputs(const V& m, O& o) {
+  o.step = m.step_o;
+  o.dir = m.dir_o;
+  o.en = m.en_o;
+  o.busy = m.busy_o;
+  o.done = m.done_o;
+  o.phase = m.phase_o;
+  o.pulse_count = int32_t(m.pulse_count_o);
+}
+
+// The fault and reference outputs of the axis tops (sc_axis_core,
+// sc_servo_axis) besides the STEP/DIR and status ones.
+template <class V, class O>
+void read_axis_outputs(const V& m, O& o) {
+  read_step_outputs(m, o);
+  o.fault_table = m.fault_table_o;
+  o.fault_overrun = m.fault_overrun_o;
+  o.ref_pos_int = int32_t(m.ref_pos_int_o);
+}
 
 }  // namespace sc

@@ -8,45 +8,20 @@
 #include <vector>
 
 #include "axi_bench.h"
+#include "board_regs.h"
 #include "planner.h"
 #include "reg_encode.h"
 #include "sc_regmap.h"
 #include "scenarios.h"
 
 using namespace sc;
+using namespace sc::board_test;
 
 namespace {
 
-const regmap::Reg& reg(const std::string& name) {
-  for (const regmap::Reg& r : regmap::kRegs)
-    if (name == r.name) return r;
-  throw std::runtime_error("no register " + name);
-}
-// Field mask from the generated table (the docs), not from the RTL constants.
-uint32_t fmask(const std::string& rname, const std::string& fname) {
-  const regmap::Reg& r = reg(rname);
-  for (int i = 0; i < r.nfields; ++i)
-    if (fname == r.fields[i].name) return ((r.fields[i].width >= 32 ? 0 : (1u << r.fields[i].width)) - 1) << r.fields[i].lsb;
-  throw std::runtime_error("no field " + rname + "." + fname);
-}
-uint32_t addr(const std::string& name) { return reg(name).addr; }
-
-Plan plan_or_die(const MoveRequest& req, const PulseTiming& t) {
-  const PlanResult r = plan_move(req, t);
-  if (const auto* e = std::get_if<PlanError>(&r)) throw std::runtime_error(e->message);
-  return std::get<Plan>(r);
-}
-
 // 30,000 pulses in about a quarter of a second.
 MoveRequest short_move(int64_t distance = 30000) {
-  MoveRequest r;
-  r.distance = distance;
-  r.v_start = 0;
-  r.v_cruise = 150000;
-  r.v_end = 0;
-  r.a_max = 2e6;
-  r.j_max = 2e8;
-  return r;
+  return scurve::test::move_request(distance, 0, 150000, 0, 2e6, 2e8);
 }
 
 void load(AxiBench& b, const Plan& p, const PulseTiming& t) {
@@ -57,12 +32,12 @@ void load(AxiBench& b, const Plan& p, const PulseTiming& t) {
 
 // Start, poll STATUS until DONE; returns clocks from START to DONE seen.
 uint64_t run_to_done(AxiBench& b, uint64_t limit, int poll = 2000) {
-  EXPECT_EQ(b.write(addr("CMD"), fmask("CMD", "START")), kOkay);
+  EXPECT_EQ(b.write(reg_addr("CMD"), field_mask("CMD", "START")), kOkay);
   const uint64_t t0 = b.clock();
   while (b.clock() - t0 < limit && !b.failed()) {
-    const auto [st, resp] = b.read(addr("STATUS"));
+    const auto [st, resp] = b.read(reg_addr("STATUS"));
     EXPECT_EQ(resp, kOkay);
-    if (st & fmask("STATUS", "DONE")) return b.clock() - t0;
+    if (st & field_mask("STATUS", "DONE")) return b.clock() - t0;
     b.idle(poll);
   }
   ADD_FAILURE() << "no DONE within " << limit << " clocks";
@@ -77,12 +52,7 @@ TEST(AxiRegs, ResetValuesReservedBitsAndAccessTypes) {
   b.set_jitter(true);
   for (const regmap::Reg& r : regmap::kRegs) {
     if (r.servo) continue;  // sc_axi_servo only (tests/test_board_servo.cpp)
-    const auto [v, resp] = b.read(r.addr);
-    EXPECT_EQ(resp, kOkay) << r.name;
-    EXPECT_EQ(v & ~r.mask, 0u) << r.name << ": reserved bits read 1";
-    if (r.access == regmap::Access::RW || r.access == regmap::Access::WO || std::string(r.name) == "ID") {
-      EXPECT_EQ(v, r.reset) << r.name << " reset value";
-    }
+    expect_reset_read(b, r);
   }
   for (const regmap::Reg& r : regmap::kRegs) {
     if (r.servo) continue;
@@ -98,17 +68,17 @@ TEST(AxiRegs, ResetValuesReservedBitsAndAccessTypes) {
       if (n == "ID") {
         EXPECT_EQ(b.read(r.addr).first, before);
       }
-      EXPECT_TRUE(b.read(addr("ERR")).first & fmask("ERR", "BAD_ACCESS"));
-      EXPECT_EQ(b.write(addr("ERR"), fmask("ERR", "BAD_ACCESS")), kOkay);
-      EXPECT_EQ(b.read(addr("ERR")).first, 0u) << "ERR is write-1-to-clear";
+      EXPECT_TRUE(b.read(reg_addr("ERR")).first & field_mask("ERR", "BAD_ACCESS"));
+      EXPECT_EQ(b.write(reg_addr("ERR"), field_mask("ERR", "BAD_ACCESS")), kOkay);
+      EXPECT_EQ(b.read(reg_addr("ERR")).first, 0u) << "ERR is write-1-to-clear";
     } else if (r.access == regmap::Access::WO) {
       EXPECT_EQ(b.read(r.addr).first, 0u) << n << " reads 0";
     }
   }
   // byte strobes: only the selected bytes change
-  EXPECT_EQ(b.write(addr("SEG_CLOCKS"), 0x11223344u), kOkay);
-  EXPECT_EQ(b.write(addr("SEG_CLOCKS"), 0xaabbccddu, 0x5), kOkay);
-  EXPECT_EQ(b.read(addr("SEG_CLOCKS")).first, 0x11bb33ddu);
+  EXPECT_EQ(b.write(reg_addr("SEG_CLOCKS"), 0x11223344u), kOkay);
+  EXPECT_EQ(b.write(reg_addr("SEG_CLOCKS"), 0xaabbccddu, 0x5), kOkay);
+  EXPECT_EQ(b.read(reg_addr("SEG_CLOCKS")).first, 0x11bb33ddu);
   EXPECT_FALSE(b.failed()) << b.error();
   EXPECT_GT(b.matched(), 500u);
 }
@@ -131,8 +101,8 @@ TEST(AxiRegs, IllegalAddressesAnswerDecErrAndChangeNothing) {
     EXPECT_EQ(b.write(a, 0xffffffffu), kDecErr) << "write 0x" << std::hex << a;
   }
   EXPECT_GT(illegal, 150);  // unaligned and unmapped
-  EXPECT_EQ(b.read(addr("ERR")).first, fmask("ERR", "BAD_ACCESS"));
-  EXPECT_EQ(b.write(addr("ERR"), 0xffffffffu), kOkay);
+  EXPECT_EQ(b.read(reg_addr("ERR")).first, field_mask("ERR", "BAD_ACCESS"));
+  EXPECT_EQ(b.write(reg_addr("ERR"), 0xffffffffu), kOkay);
   size_t i = 0;
   for (const regmap::Reg& r : regmap::kRegs) {
     if (r.servo) continue;
@@ -148,15 +118,15 @@ TEST(AxiRegs, ShortMoveLoadedByRegistersEmitsExactPulses) {
   b.set_jitter(true);
   load(b, p, t);
   // the staged last row and table size read back
-  EXPECT_EQ(b.read(addr("SEG_COUNT")).first, uint32_t(p.segments.size()));
+  EXPECT_EQ(b.read(reg_addr("SEG_COUNT")).first, uint32_t(p.segments.size()));
   const uint64_t clocks = run_to_done(b, p.total_clocks + 100000);
   b.idle(2000);
   EXPECT_FALSE(b.failed()) << b.error();
-  EXPECT_EQ(int32_t(b.read(addr("PULSE_COUNT")).first), 30000);
+  EXPECT_EQ(int32_t(b.read(reg_addr("PULSE_COUNT")).first), 30000);
   EXPECT_EQ(b.net_steps(), 30000);
-  EXPECT_EQ(int32_t(b.read(addr("REF_POS")).first), 30000);
-  EXPECT_EQ(b.read(addr("STATUS")).first & fmask("STATUS", "PHASE"), uint32_t(Phase::PhDone));
-  EXPECT_EQ(b.read(addr("ERR")).first, 0u);
+  EXPECT_EQ(int32_t(b.read(reg_addr("REF_POS")).first), 30000);
+  EXPECT_EQ(b.read(reg_addr("STATUS")).first & field_mask("STATUS", "PHASE"), uint32_t(Phase::PhDone));
+  EXPECT_EQ(b.read(reg_addr("ERR")).first, 0u);
   EXPECT_GE(clocks, p.total_clocks);
   EXPECT_GT(b.matched(), p.total_clocks);
 }
@@ -172,28 +142,28 @@ TEST(AxiRegs, WritesWhileBusyAreRejectedFlaggedAndTheMoveIsUnharmed) {
   AxiBench b(true, 14);
   b.set_jitter(true);
   load(b, p, t);
-  EXPECT_EQ(b.write(addr("CMD"), fmask("CMD", "START")), kOkay);
+  EXPECT_EQ(b.write(reg_addr("CMD"), field_mask("CMD", "START")), kOkay);
   const uint64_t t0 = b.clock() - 0;
   b.idle(50000);
   ASSERT_TRUE(b.out().busy);
   const std::vector<std::pair<std::string, uint32_t>> attempts = {
       {"SEG_COUNT", 1}, {"PULSE_TIME", 0x00010001}, {"DIR_TIME", 0}, {"POS_FRAC0_0", 0},
       {"POS_FRAC0_2", 0xffff}, {"SEG_PHASE", 0}, {"SEG_CLOCKS", 1}, {"SEG_JERK_0", 0},
-      {"SEG_ACC0_1", 0}, {"SEG_VEL0_2", 0x1ffff}, {"SEG_COMMIT", 0}, {"CMD", fmask("CMD", "START")}};
+      {"SEG_ACC0_1", 0}, {"SEG_VEL0_2", 0x1ffff}, {"SEG_COMMIT", 0}, {"CMD", field_mask("CMD", "START")}};
   for (const auto& [name, value] : attempts) {
-    const uint32_t before = b.read(addr(name)).first;
-    EXPECT_EQ(b.write(addr(name), value), kSlvErr) << name << " written while busy";
-    EXPECT_EQ(b.read(addr(name)).first, before) << name << " changed while busy";
-    EXPECT_TRUE(b.read(addr("ERR")).first & fmask("ERR", "REJECT")) << name;
-    EXPECT_TRUE(b.read(addr("STATUS")).first & fmask("STATUS", "ERR"));
-    EXPECT_EQ(b.write(addr("ERR"), fmask("ERR", "REJECT")), kOkay);
+    const uint32_t before = b.read(reg_addr(name)).first;
+    EXPECT_EQ(b.write(reg_addr(name), value), kSlvErr) << name << " written while busy";
+    EXPECT_EQ(b.read(reg_addr(name)).first, before) << name << " changed while busy";
+    EXPECT_TRUE(b.read(reg_addr("ERR")).first & field_mask("ERR", "REJECT")) << name;
+    EXPECT_TRUE(b.read(reg_addr("STATUS")).first & field_mask("STATUS", "ERR"));
+    EXPECT_EQ(b.write(reg_addr("ERR"), field_mask("ERR", "REJECT")), kOkay);
   }
   // CTRL and the table rows outside the lock stay writable? CTRL yes (EN pin).
   while (!b.out().done && b.clock() - t0 < p.total_clocks + 100000 && !b.failed()) b.idle(1000);
   b.idle(1000);
   EXPECT_FALSE(b.failed()) << b.error();
   EXPECT_EQ(b.net_steps(), 6000);
-  EXPECT_EQ(int32_t(b.read(addr("PULSE_COUNT")).first), 6000);
+  EXPECT_EQ(int32_t(b.read(reg_addr("PULSE_COUNT")).first), 6000);
   // unharmed: every STEP edge at the same clock (after START) as undisturbed
   ASSERT_EQ(b.rise_times().size(), 6000u);
   EXPECT_TRUE(b.rise_times() == ref.rise_times()) << "the refused writes moved a STEP edge";
@@ -205,65 +175,65 @@ TEST(AxiRegs, StartRefusedWhenDisabledOrEstoppedStopAndEstopAbort) {
   const Plan p = plan_or_die(short_move(6000), t);
   AxiBench b(true, 15);
   load(b, p, t);
-  const uint32_t start = fmask("CMD", "START");
+  const uint32_t start = field_mask("CMD", "START");
   // disabled: refused
-  EXPECT_EQ(b.write(addr("CTRL"), 0), kOkay);
-  EXPECT_EQ(b.write(addr("CMD"), start), kSlvErr);
-  EXPECT_TRUE(b.read(addr("ERR")).first & fmask("ERR", "REJECT"));
-  EXPECT_EQ(b.write(addr("ERR"), 0xff), kOkay);
+  EXPECT_EQ(b.write(reg_addr("CTRL"), 0), kOkay);
+  EXPECT_EQ(b.write(reg_addr("CMD"), start), kSlvErr);
+  EXPECT_TRUE(b.read(reg_addr("ERR")).first & field_mask("ERR", "REJECT"));
+  EXPECT_EQ(b.write(reg_addr("ERR"), 0xff), kOkay);
   // enabled: runs; STOP aborts
-  EXPECT_EQ(b.write(addr("CTRL"), 1), kOkay);
-  EXPECT_EQ(b.write(addr("CMD"), start), kOkay);
+  EXPECT_EQ(b.write(reg_addr("CTRL"), 1), kOkay);
+  EXPECT_EQ(b.write(reg_addr("CMD"), start), kOkay);
   b.idle(200000);
-  EXPECT_EQ(b.write(addr("CMD"), fmask("CMD", "STOP")), kOkay);
+  EXPECT_EQ(b.write(reg_addr("CMD"), field_mask("CMD", "STOP")), kOkay);
   b.idle(1000);
-  uint32_t st = b.read(addr("STATUS")).first;
-  EXPECT_EQ(st & fmask("STATUS", "PHASE"), uint32_t(Phase::PhAbort));
-  EXPECT_FALSE(st & fmask("STATUS", "BUSY"));
+  uint32_t st = b.read(reg_addr("STATUS")).first;
+  EXPECT_EQ(st & field_mask("STATUS", "PHASE"), uint32_t(Phase::PhAbort));
+  EXPECT_FALSE(st & field_mask("STATUS", "BUSY"));
   const int64_t after_stop = b.net_steps();
   EXPECT_GT(after_stop, 0);
   EXPECT_LT(after_stop, 6000);
   b.idle(20000);
   EXPECT_EQ(b.net_steps(), after_stop) << "pulses after STOP";
   // restart, then the e-stop input: abort, EN off, latched, START refused
-  EXPECT_EQ(b.write(addr("CMD"), start), kOkay);
+  EXPECT_EQ(b.write(reg_addr("CMD"), start), kOkay);
   b.idle(100000);
   b.side().estop = true;
   b.idle(3);
   b.side().estop = false;
   b.idle(1000);
-  st = b.read(addr("STATUS")).first;
-  EXPECT_TRUE(st & fmask("STATUS", "ESTOP"));
-  EXPECT_FALSE(st & fmask("STATUS", "EN"));
+  st = b.read(reg_addr("STATUS")).first;
+  EXPECT_TRUE(st & field_mask("STATUS", "ESTOP"));
+  EXPECT_FALSE(st & field_mask("STATUS", "EN"));
   EXPECT_FALSE(b.out().en);
-  EXPECT_EQ(b.read(addr("CTRL")).first, 0u);
-  EXPECT_EQ(b.write(addr("CTRL"), 1), kOkay);
-  EXPECT_EQ(b.write(addr("CMD"), start), kSlvErr) << "START while e-stop latched";
-  EXPECT_EQ(b.write(addr("ERR"), fmask("ERR", "ESTOP") | fmask("ERR", "REJECT")), kOkay);
-  EXPECT_EQ(b.write(addr("CMD"), start), kOkay);
+  EXPECT_EQ(b.read(reg_addr("CTRL")).first, 0u);
+  EXPECT_EQ(b.write(reg_addr("CTRL"), 1), kOkay);
+  EXPECT_EQ(b.write(reg_addr("CMD"), start), kSlvErr) << "START while e-stop latched";
+  EXPECT_EQ(b.write(reg_addr("ERR"), field_mask("ERR", "ESTOP") | field_mask("ERR", "REJECT")), kOkay);
+  EXPECT_EQ(b.write(reg_addr("CMD"), start), kOkay);
   // CMD.ESTOP does the same from the bus
   b.idle(1000);
-  EXPECT_EQ(b.write(addr("CMD"), fmask("CMD", "ESTOP")), kOkay);
+  EXPECT_EQ(b.write(reg_addr("CMD"), field_mask("CMD", "ESTOP")), kOkay);
   b.idle(100);
-  EXPECT_TRUE(b.read(addr("ERR")).first & fmask("ERR", "ESTOP"));
-  EXPECT_EQ(b.read(addr("CTRL")).first, 0u);
+  EXPECT_TRUE(b.read(reg_addr("ERR")).first & field_mask("ERR", "ESTOP"));
+  EXPECT_EQ(b.read(reg_addr("CTRL")).first, 0u);
   // encoder position and following error
   b.side().enc_pos = -5;
   b.side().enc_ab = 2;
   b.idle(2);
-  const int32_t ref_pos = int32_t(b.read(addr("REF_POS")).first);
-  EXPECT_EQ(int32_t(b.read(addr("ENC_POS")).first), -5);
-  EXPECT_EQ(int32_t(b.read(addr("FOLLOW_ERR")).first), ref_pos + 5);
-  EXPECT_EQ((b.read(addr("STATUS")).first & fmask("STATUS", "ENC_AB")) >> 12, 2u);
+  const int32_t ref_pos = int32_t(b.read(reg_addr("REF_POS")).first);
+  EXPECT_EQ(int32_t(b.read(reg_addr("ENC_POS")).first), -5);
+  EXPECT_EQ(int32_t(b.read(reg_addr("FOLLOW_ERR")).first), ref_pos + 5);
+  EXPECT_EQ((b.read(reg_addr("STATUS")).first & field_mask("STATUS", "ENC_AB")) >> 12, 2u);
   EXPECT_FALSE(b.failed()) << b.error();
 }
 
 TEST(AxiRegs, CheckerCatchesAnInjectedDifference) {
   AxiBench b(true, 16);
-  EXPECT_EQ(b.read(addr("FOLLOW_ERR")).first, 0u);
+  EXPECT_EQ(b.read(reg_addr("FOLLOW_ERR")).first, 0u);
   EXPECT_FALSE(b.failed());
   b.inject_model_enc_offset(1);
-  b.read(addr("FOLLOW_ERR"));
+  b.read(reg_addr("FOLLOW_ERR"));
   ASSERT_TRUE(b.failed());
   EXPECT_NE(b.error().find("rdata"), std::string::npos) << b.error();
 }
@@ -281,7 +251,7 @@ struct Board {
 
 TEST(BoardUart, LoadMoveStartPollAndCountPulses) {
   Board bd;
-  UartResponse r = bd.host.read(uint8_t(addr("ID")));
+  UartResponse r = bd.host.read(uint8_t(reg_addr("ID")));
   ASSERT_TRUE(r.ok) << r.error;
   EXPECT_EQ(r.status, kOkay);
   EXPECT_EQ(r.data, reg("ID").reset);
@@ -297,12 +267,12 @@ TEST(BoardUart, LoadMoveStartPollAndCountPulses) {
   }
   bool done = false;
   for (int i = 0; i < 200 && !done; ++i) {
-    r = bd.host.read(uint8_t(addr("STATUS")));
+    r = bd.host.read(uint8_t(reg_addr("STATUS")));
     ASSERT_TRUE(r.ok) << r.error;
-    done = r.data & fmask("STATUS", "DONE");
+    done = r.data & field_mask("STATUS", "DONE");
   }
   ASSERT_TRUE(done);
-  r = bd.host.read(uint8_t(addr("PULSE_COUNT")));
+  r = bd.host.read(uint8_t(reg_addr("PULSE_COUNT")));
   EXPECT_EQ(int32_t(r.data), 2000);
   EXPECT_EQ(bd.host.net_steps(), 2000);
   EXPECT_EQ(bd.host.pulses(), 2000u);
@@ -316,23 +286,23 @@ TEST(BoardUart, IllegalAddressReservedBitsAndWriteWhileBusy) {
   EXPECT_EQ(r.status, kDecErr);
   r = bd.host.write(0xfc, 1);
   EXPECT_EQ(r.status, kDecErr);
-  r = bd.host.write(uint8_t(addr("ID")), 0);
+  r = bd.host.write(uint8_t(reg_addr("ID")), 0);
   EXPECT_EQ(r.status, kSlvErr);
-  r = bd.host.write(uint8_t(addr("SEG_PHASE")), 0xffffffffu);
+  r = bd.host.write(uint8_t(reg_addr("SEG_PHASE")), 0xffffffffu);
   EXPECT_EQ(r.status, kOkay);
-  EXPECT_EQ(bd.host.read(uint8_t(addr("SEG_PHASE"))).data, reg("SEG_PHASE").mask);
-  EXPECT_EQ(bd.host.read(uint8_t(addr("ERR"))).data, fmask("ERR", "BAD_ACCESS"));
-  EXPECT_EQ(bd.host.write(uint8_t(addr("ERR")), 0xff).status, kOkay);
+  EXPECT_EQ(bd.host.read(uint8_t(reg_addr("SEG_PHASE"))).data, reg("SEG_PHASE").mask);
+  EXPECT_EQ(bd.host.read(uint8_t(reg_addr("ERR"))).data, field_mask("ERR", "BAD_ACCESS"));
+  EXPECT_EQ(bd.host.write(uint8_t(reg_addr("ERR")), 0xff).status, kOkay);
   // a move, then writes while it runs
   const PulseTiming t{};
   const Plan p = plan_or_die(short_move(3000), t);
   for (const RegWrite& w : encode_move(p, t, true)) ASSERT_EQ(bd.host.write(uint8_t(w.addr), w.data).status, kOkay);
-  r = bd.host.write(uint8_t(addr("SEG_COUNT")), 1);
+  r = bd.host.write(uint8_t(reg_addr("SEG_COUNT")), 1);
   EXPECT_EQ(r.status, kSlvErr);
-  EXPECT_EQ(bd.host.read(uint8_t(addr("SEG_COUNT"))).data, uint32_t(p.segments.size()));
-  EXPECT_TRUE(bd.host.read(uint8_t(addr("ERR"))).data & fmask("ERR", "REJECT"));
+  EXPECT_EQ(bd.host.read(uint8_t(reg_addr("SEG_COUNT"))).data, uint32_t(p.segments.size()));
+  EXPECT_TRUE(bd.host.read(uint8_t(reg_addr("ERR"))).data & field_mask("ERR", "REJECT"));
   bool done = false;
-  for (int i = 0; i < 400 && !done; ++i) done = bd.host.read(uint8_t(addr("STATUS"))).data & fmask("STATUS", "DONE");
+  for (int i = 0; i < 400 && !done; ++i) done = bd.host.read(uint8_t(reg_addr("STATUS"))).data & field_mask("STATUS", "DONE");
   ASSERT_TRUE(done);
   EXPECT_EQ(bd.host.net_steps(), 3000);
   EXPECT_TRUE(bd.host.pins().errors().empty()) << bd.host.pins().errors().front();
@@ -340,7 +310,7 @@ TEST(BoardUart, IllegalAddressReservedBitsAndWriteWhileBusy) {
 
 TEST(BoardUart, CorruptedFramesAreRejectedWithNothingWritten) {
   Board bd;
-  const uint8_t a = uint8_t(addr("SEG_CLOCKS"));
+  const uint8_t a = uint8_t(reg_addr("SEG_CLOCKS"));
   ASSERT_EQ(bd.host.write(a, 0x12345678u).status, kOkay);
   // one data bit flipped after the CRC was computed
   std::vector<uint8_t> f = uart_write_frame(a, 0xdeadbeefu);
@@ -351,11 +321,11 @@ TEST(BoardUart, CorruptedFramesAreRejectedWithNothingWritten) {
   EXPECT_EQ(r.status, uint8_t(UartStCrcErr));
   EXPECT_EQ(bd.host.read(a).data, 0x12345678u) << "corrupted frame wrote";
   // wrong CRC byte on a write to CMD (would start / stop): ignored
-  f = uart_write_frame(uint8_t(addr("CTRL")), 1);
+  f = uart_write_frame(uint8_t(reg_addr("CTRL")), 1);
   f.back() ^= 0xff;
   r = parse_uart_response(bd.host.transact(f, 3), false);
   EXPECT_EQ(r.status, uint8_t(UartStCrcErr));
-  EXPECT_EQ(bd.host.read(uint8_t(addr("CTRL"))).data, 0u);
+  EXPECT_EQ(bd.host.read(uint8_t(reg_addr("CTRL"))).data, 0u);
   // address byte corrupted: nothing written anywhere
   f = uart_write_frame(a, 1);
   f[2] ^= 0x04;
@@ -392,17 +362,17 @@ TEST(BoardUart, EncoderPinsCountThroughTheQuadratureDecoder) {
     bd.host.enc_ab = kGray[i & 3];
     bd.host.idle(500);
   }
-  UartResponse r = bd.host.read(uint8_t(addr("ENC_POS")));
+  UartResponse r = bd.host.read(uint8_t(reg_addr("ENC_POS")));
   ASSERT_TRUE(r.ok) << r.error;
   EXPECT_EQ(int32_t(r.data), 10);
-  EXPECT_EQ((bd.host.read(uint8_t(addr("STATUS"))).data & fmask("STATUS", "ENC_AB")) >> 12, uint32_t(kGray[10 & 3]));
+  EXPECT_EQ((bd.host.read(uint8_t(reg_addr("STATUS"))).data & field_mask("STATUS", "ENC_AB")) >> 12, uint32_t(kGray[10 & 3]));
   for (int i = 9; i >= 7; --i) {
     bd.host.enc_ab = kGray[i & 3];
     bd.host.idle(500);
   }
-  EXPECT_EQ(int32_t(bd.host.read(uint8_t(addr("ENC_POS"))).data), 7);
-  EXPECT_EQ(int32_t(bd.host.read(uint8_t(addr("FOLLOW_ERR"))).data), -7);
-  EXPECT_EQ(bd.host.read(uint8_t(addr("CL_STATUS"))).data & fmask("CL_STATUS", "ENC_ILLEGAL"), 0u);
+  EXPECT_EQ(int32_t(bd.host.read(uint8_t(reg_addr("ENC_POS"))).data), 7);
+  EXPECT_EQ(int32_t(bd.host.read(uint8_t(reg_addr("FOLLOW_ERR"))).data), -7);
+  EXPECT_EQ(bd.host.read(uint8_t(reg_addr("CL_STATUS"))).data & field_mask("CL_STATUS", "ENC_ILLEGAL"), 0u);
 }
 
 // ---------------------------------------------------------------------------------
@@ -415,7 +385,7 @@ TEST(BoardLong, PaperGroup1OverAxiExactly30000Pulses) {
   run_to_done(b, p.total_clocks + 1000000, 200000);
   b.idle(2000);
   EXPECT_FALSE(b.failed()) << b.error();
-  EXPECT_EQ(int32_t(b.read(addr("PULSE_COUNT")).first), 30000);
+  EXPECT_EQ(int32_t(b.read(reg_addr("PULSE_COUNT")).first), 30000);
   EXPECT_EQ(b.net_steps(), 30000);
   EXPECT_GT(b.matched(), p.total_clocks);
 }

@@ -11,27 +11,16 @@
 #include <vector>
 
 #include "axi_bench.h"
+#include "board_regs.h"
 #include "closed_loop_run.h"
 #include "planner.h"
 #include "reg_encode.h"
 #include "sc_regmap.h"
 
 using namespace sc;
+using namespace sc::board_test;
 
 namespace {
-
-const regmap::Reg& sreg(const std::string& name) {
-  for (const regmap::Reg& r : regmap::kRegs)
-    if (name == r.name) return r;
-  throw std::runtime_error("no register " + name);
-}
-uint32_t sfmask(const std::string& rname, const std::string& fname) {
-  const regmap::Reg& r = sreg(rname);
-  for (int i = 0; i < r.nfields; ++i)
-    if (fname == r.fields[i].name) return ((r.fields[i].width >= 32 ? 0 : (1u << r.fields[i].width)) - 1) << r.fields[i].lsb;
-  throw std::runtime_error("no field " + rname + "." + fname);
-}
-uint32_t sa(const std::string& name) { return sreg(name).addr; }
 
 // The controller-settings registers, in cfg-word order.
 std::vector<const regmap::Reg*> settings() {
@@ -41,22 +30,7 @@ std::vector<const regmap::Reg*> settings() {
   return v;
 }
 
-Plan plan_or_die(const MoveRequest& req) {
-  const PlanResult r = plan_move(req, PulseTiming{});
-  if (const auto* e = std::get_if<PlanError>(&r)) throw std::runtime_error(e->message);
-  return std::get<Plan>(r);
-}
-
-MoveRequest cl_move(int64_t distance) {
-  MoveRequest r;
-  r.distance = distance;
-  r.v_start = 0;
-  r.v_cruise = 4000;
-  r.v_end = 0;
-  r.a_max = 100000;
-  r.j_max = 4e6;
-  return r;
-}
+MoveRequest cl_move(int64_t distance) { return scurve::test::move_request(distance, 0, 4000, 0, 100000, 4e6); }
 
 }  // namespace
 
@@ -77,12 +51,7 @@ TEST(AxiServo, ControllerSettingsResetReadBackAndAccessTypes) {
   EXPECT_TRUE(have == want) << "register reset values differ from the closed-loop runner's defaults";
 
   for (const regmap::Reg& r : regmap::kRegs) {
-    const auto [v, resp] = b.read(r.addr);
-    EXPECT_EQ(resp, kOkay) << r.name;
-    EXPECT_EQ(v & ~r.mask, 0u) << r.name << ": reserved bits read 1";
-    if (r.access == regmap::Access::RW || r.access == regmap::Access::WO || std::string(r.name) == "ID") {
-      EXPECT_EQ(v, r.reset) << r.name << " reset value";
-    }
+    expect_reset_read(b, r);
   }
   for (const regmap::Reg& r : regmap::kRegs) {
     if (!r.servo) continue;
@@ -94,17 +63,17 @@ TEST(AxiServo, ControllerSettingsResetReadBackAndAccessTypes) {
       EXPECT_EQ(b.write(r.addr, r.reset), kOkay) << r.name;
     } else {
       EXPECT_EQ(b.write(r.addr, 0xffffffffu), kSlvErr) << r.name << ": write to a read-only register";
-      EXPECT_TRUE(b.read(sa("ERR")).first & sfmask("ERR", "BAD_ACCESS"));
-      EXPECT_EQ(b.write(sa("ERR"), sfmask("ERR", "BAD_ACCESS")), kOkay);
+      EXPECT_TRUE(b.read(reg_addr("ERR")).first & field_mask("ERR", "BAD_ACCESS"));
+      EXPECT_EQ(b.write(reg_addr("ERR"), field_mask("ERR", "BAD_ACCESS")), kOkay);
     }
   }
   // byte strobes on a settings word
-  EXPECT_EQ(b.write(sa("K_P"), 0x00112233u), kOkay);
-  EXPECT_EQ(b.write(sa("K_P"), 0xffaabbccu, 0x2), kOkay);
-  EXPECT_EQ(b.read(sa("K_P")).first, 0x0011bb33u);
+  EXPECT_EQ(b.write(reg_addr("K_P"), 0x00112233u), kOkay);
+  EXPECT_EQ(b.write(reg_addr("K_P"), 0xffaabbccu, 0x2), kOkay);
+  EXPECT_EQ(b.read(reg_addr("K_P")).first, 0x0011bb33u);
   // CTRL.CLOSED_LOOP
-  EXPECT_EQ(b.write(sa("CTRL"), sfmask("CTRL", "ENABLE") | sfmask("CTRL", "CLOSED_LOOP")), kOkay);
-  EXPECT_EQ(b.read(sa("CTRL")).first, 3u);
+  EXPECT_EQ(b.write(reg_addr("CTRL"), field_mask("CTRL", "ENABLE") | field_mask("CTRL", "CLOSED_LOOP")), kOkay);
+  EXPECT_EQ(b.read(reg_addr("CTRL")).first, 3u);
   // everything else in the window answers DECERR
   int illegal = 0;
   for (uint32_t a = 0; a < 256; ++a) {
@@ -138,73 +107,73 @@ TEST(AxiServo, ClosedLoopMoveOverAxiWithPlant) {
   const ControllerParams cp;
   ASSERT_EQ(to_servo_config(cp, PlantConfig{}, PulseTiming{}, cfg), "");
   for (const RegWrite& w : encode_servo_config(cfg)) ASSERT_EQ(b.write(w.addr, w.data), kOkay) << reg_name(w.addr);
-  EXPECT_EQ(b.read(sa("CL_PERIOD")).first >> ClInposHoldLsb, uint32_t(cfg.ctl.inpos_hold));
+  EXPECT_EQ(b.read(reg_addr("CL_PERIOD")).first >> ClInposHoldLsb, uint32_t(cfg.ctl.inpos_hold));
   EXPECT_TRUE(AxiServo::decode_config(true, true, PulseTiming{}, b.model().regs().state().cl) == cfg)
       << "encode_servo_config / decode_config round trip";
   for (const RegWrite& w : encode_move(p, PulseTiming{}, false)) ASSERT_EQ(b.write(w.addr, w.data), kOkay) << reg_name(w.addr);
-  const uint32_t ctrl = sfmask("CTRL", "ENABLE") | sfmask("CTRL", "CLOSED_LOOP");
-  ASSERT_EQ(b.write(sa("CTRL"), ctrl), kOkay);
-  ASSERT_EQ(b.write(sa("CMD"), sfmask("CMD", "START")), kOkay);
+  const uint32_t ctrl = field_mask("CTRL", "ENABLE") | field_mask("CTRL", "CLOSED_LOOP");
+  ASSERT_EQ(b.write(reg_addr("CTRL"), ctrl), kOkay);
+  ASSERT_EQ(b.write(reg_addr("CMD"), field_mask("CMD", "START")), kOkay);
   b.idle(20000);
   ASSERT_TRUE(b.out().busy);
 
   // refused while busy: settings, the loop mode; CTRL keeping the mode is fine
   for (const char* n : {"K_P", "CL_CFG", "CL_PERIOD", "W_V2_MAX", "SETTLE_RATE"}) {
-    const uint32_t before = b.read(sa(n)).first;
-    EXPECT_EQ(b.write(sa(n), 0), kSlvErr) << n << " written while busy";
-    EXPECT_EQ(b.read(sa(n)).first, before) << n;
-    EXPECT_TRUE(b.read(sa("ERR")).first & sfmask("ERR", "REJECT")) << n;
-    EXPECT_EQ(b.write(sa("ERR"), sfmask("ERR", "REJECT")), kOkay);
+    const uint32_t before = b.read(reg_addr(n)).first;
+    EXPECT_EQ(b.write(reg_addr(n), 0), kSlvErr) << n << " written while busy";
+    EXPECT_EQ(b.read(reg_addr(n)).first, before) << n;
+    EXPECT_TRUE(b.read(reg_addr("ERR")).first & field_mask("ERR", "REJECT")) << n;
+    EXPECT_EQ(b.write(reg_addr("ERR"), field_mask("ERR", "REJECT")), kOkay);
   }
-  EXPECT_EQ(b.write(sa("CTRL"), sfmask("CTRL", "ENABLE")), kSlvErr) << "CLOSED_LOOP changed while busy";
-  EXPECT_EQ(b.read(sa("CTRL")).first, ctrl);
-  EXPECT_EQ(b.write(sa("ERR"), sfmask("ERR", "REJECT")), kOkay);
-  EXPECT_EQ(b.write(sa("CTRL"), ctrl), kOkay);
+  EXPECT_EQ(b.write(reg_addr("CTRL"), field_mask("CTRL", "ENABLE")), kSlvErr) << "CLOSED_LOOP changed while busy";
+  EXPECT_EQ(b.read(reg_addr("CTRL")).first, ctrl);
+  EXPECT_EQ(b.write(reg_addr("ERR"), field_mask("ERR", "REJECT")), kOkay);
+  EXPECT_EQ(b.write(reg_addr("CTRL"), ctrl), kOkay);
 
   // observe the loop while it moves
   int32_t max_ferr = 0, last_enc = 0;
   bool saw_u = false, saw_active = false, done = false;
   const uint64_t t0 = b.clock();
   while (!done && b.clock() - t0 < p.total_clocks + 2 * uint64_t(ClkHz) && !b.failed()) {
-    const int32_t enc = int32_t(b.read(sa("ENC_POS")).first);
-    const int32_t ferr = int32_t(b.read(sa("FOLLOW_ERR")).first);
-    const int32_t ref = int32_t(b.read(sa("REF_POS")).first);
+    const int32_t enc = int32_t(b.read(reg_addr("ENC_POS")).first);
+    const int32_t ferr = int32_t(b.read(reg_addr("FOLLOW_ERR")).first);
+    const int32_t ref = int32_t(b.read(reg_addr("REF_POS")).first);
     EXPECT_LE(std::abs(ref - enc - ferr), 40) << "FOLLOW_ERR far from REF_POS - ENC_POS";
     max_ferr = std::max(max_ferr, std::abs(ferr));
     EXPECT_GE(enc, last_enc - 2) << "encoder ran backwards";
     last_enc = enc;
-    saw_u = saw_u || b.read(sa("CTL_U")).first != 0;
-    const uint32_t cs = b.read(sa("CL_STATUS")).first;
-    saw_active = saw_active || (cs & sfmask("CL_STATUS", "CTL_ACTIVE"));
-    EXPECT_FALSE(cs & sfmask("CL_STATUS", "FAULT_FERR"));
-    done = b.read(sa("STATUS")).first & sfmask("STATUS", "DONE");
+    saw_u = saw_u || b.read(reg_addr("CTL_U")).first != 0;
+    const uint32_t cs = b.read(reg_addr("CL_STATUS")).first;
+    saw_active = saw_active || (cs & field_mask("CL_STATUS", "CTL_ACTIVE"));
+    EXPECT_FALSE(cs & field_mask("CL_STATUS", "FAULT_FERR"));
+    done = b.read(reg_addr("STATUS")).first & field_mask("STATUS", "DONE");
     b.idle(5000);
   }
-  ASSERT_TRUE(done) << "no DONE (in position): ENC_POS " << int32_t(b.read(sa("ENC_POS")).first) << " FOLLOW_ERR "
-                    << int32_t(b.read(sa("FOLLOW_ERR")).first) << " STATUS 0x" << std::hex
-                    << b.read(sa("STATUS")).first << " CL_STATUS 0x" << b.read(sa("CL_STATUS")).first
-                    << " ERR 0x" << b.read(sa("ERR")).first << " max_ferr " << std::dec << max_ferr
+  ASSERT_TRUE(done) << "no DONE (in position): ENC_POS " << int32_t(b.read(reg_addr("ENC_POS")).first) << " FOLLOW_ERR "
+                    << int32_t(b.read(reg_addr("FOLLOW_ERR")).first) << " STATUS 0x" << std::hex
+                    << b.read(reg_addr("STATUS")).first << " CL_STATUS 0x" << b.read(reg_addr("CL_STATUS")).first
+                    << " ERR 0x" << b.read(reg_addr("ERR")).first << " max_ferr " << std::dec << max_ferr
                     << " plant count " << b.plant()->count() << " commanded " << b.plant()->commanded();
   EXPECT_TRUE(saw_u);
   EXPECT_TRUE(saw_active);
   EXPECT_GT(max_ferr, 0);
   EXPECT_LT(max_ferr, 30) << "following error";
-  const uint32_t st = b.read(sa("STATUS")).first;
-  EXPECT_TRUE(st & sfmask("STATUS", "IN_POS"));
-  EXPECT_FALSE(st & sfmask("STATUS", "FAULT_FERR"));
-  EXPECT_EQ(st & sfmask("STATUS", "PHASE"), uint32_t(Phase::PhDone));
-  EXPECT_EQ(int32_t(b.read(sa("ENC_POS")).first), L);
-  EXPECT_EQ(int32_t(b.read(sa("FOLLOW_ERR")).first), 0);
-  EXPECT_EQ(int32_t(b.read(sa("REF_POS")).first), L);
-  EXPECT_EQ(b.read(sa("CL_STATUS")).first & sfmask("CL_STATUS", "IN_POS"), sfmask("CL_STATUS", "IN_POS"));
-  EXPECT_EQ(b.read(sa("CL_STATUS")).first & sfmask("CL_STATUS", "ENC_ILLEGAL"), 0u);
-  EXPECT_GT(int32_t(b.read(sa("CTL_W_P1")).first), 0) << "w_p1 learns up from 0";
-  EXPECT_EQ(b.read(sa("ERR")).first, 0u);
+  const uint32_t st = b.read(reg_addr("STATUS")).first;
+  EXPECT_TRUE(st & field_mask("STATUS", "IN_POS"));
+  EXPECT_FALSE(st & field_mask("STATUS", "FAULT_FERR"));
+  EXPECT_EQ(st & field_mask("STATUS", "PHASE"), uint32_t(Phase::PhDone));
+  EXPECT_EQ(int32_t(b.read(reg_addr("ENC_POS")).first), L);
+  EXPECT_EQ(int32_t(b.read(reg_addr("FOLLOW_ERR")).first), 0);
+  EXPECT_EQ(int32_t(b.read(reg_addr("REF_POS")).first), L);
+  EXPECT_EQ(b.read(reg_addr("CL_STATUS")).first & field_mask("CL_STATUS", "IN_POS"), field_mask("CL_STATUS", "IN_POS"));
+  EXPECT_EQ(b.read(reg_addr("CL_STATUS")).first & field_mask("CL_STATUS", "ENC_ILLEGAL"), 0u);
+  EXPECT_GT(int32_t(b.read(reg_addr("CTL_W_P1")).first), 0) << "w_p1 learns up from 0";
+  EXPECT_EQ(b.read(reg_addr("ERR")).first, 0u);
   EXPECT_EQ(b.plant()->count(), L);
   EXPECT_EQ(b.net_steps(), b.plant()->commanded());
   // settings writable again once idle
-  EXPECT_EQ(b.write(sa("K_P"), 1234), kOkay);
-  EXPECT_EQ(b.read(sa("K_P")).first, 1234u);
+  EXPECT_EQ(b.write(reg_addr("K_P"), 1234), kOkay);
+  EXPECT_EQ(b.read(reg_addr("K_P")).first, 1234u);
   EXPECT_FALSE(b.failed()) << b.error();
   EXPECT_GT(b.matched(), p.total_clocks);
   std::printf("closed loop over AXI: L=%lld, %llu clocks matched, max |FOLLOW_ERR| %d\n", (long long)L,
@@ -221,8 +190,8 @@ TEST(AxiServo, OpenLoopModeEmitsExactPulses) {
   while (!b.out().done && b.clock() - t0 < p.total_clocks + 200000 && !b.failed()) b.idle(1000);
   EXPECT_TRUE(b.out().done);
   EXPECT_EQ(b.net_steps(), 300);
-  EXPECT_EQ(int32_t(b.read(sa("PULSE_COUNT")).first), 300);
-  EXPECT_FALSE(b.read(sa("STATUS")).first & sfmask("STATUS", "IN_POS"));
+  EXPECT_EQ(int32_t(b.read(reg_addr("PULSE_COUNT")).first), 300);
+  EXPECT_FALSE(b.read(reg_addr("STATUS")).first & field_mask("STATUS", "IN_POS"));
   EXPECT_FALSE(b.failed()) << b.error();
 }
 
@@ -233,7 +202,7 @@ TEST(AxiServo, CheckerCatchesAnInjectedDifference) {
   EXPECT_FALSE(b.failed());
   b.inject_model_fault();
   b.idle(20);
-  b.read(sa("ENC_POS"));
+  b.read(reg_addr("ENC_POS"));
   ASSERT_TRUE(b.failed());
   EXPECT_EQ(b.error().rfind("clock ", 0), 0u) << b.error();
   EXPECT_NE(b.error().find(" signal enc_pos_o: rtl=0x"), std::string::npos) << b.error();

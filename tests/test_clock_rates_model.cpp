@@ -11,6 +11,7 @@
 
 #include "planner.h"
 #include "profile_exec.h"
+#include "random_moves.h"
 #include "scenarios.h"
 
 using namespace sc;
@@ -28,18 +29,7 @@ struct Peaks {
 
 ProfileExec load(const Plan& p) {
   ProfileExec ex;
-  for (size_t i = 0; i < p.segments.size(); ++i) {
-    ProfileExec::Inputs w;
-    w.seg_we = true;
-    w.seg_waddr = uint8_t(i);
-    w.seg_wdata = p.segments[i];
-    ex.step(w);
-  }
-  ProfileExec::Inputs st;
-  st.start = true;
-  st.seg_count = uint8_t(p.segments.size());
-  st.pos_frac0 = p.pos_frac0;
-  ex.step(st);
+  load_and_start(ex, p.segments, p.pos_frac0);
   return ex;
 }
 
@@ -80,11 +70,6 @@ Peaks run_on_model(const Plan& p, bool per_clock, uint64_t sample = 1000) {
   return r;
 }
 
-double jerk_cap(const MoveRequest& r) {
-  if (r.kind != ProfileKind::SCurve) return 0;
-  return r.jerks ? std::max({(*r.jerks)[0], (*r.jerks)[1], (*r.jerks)[2], (*r.jerks)[3]}) : r.j_max;
-}
-
 void expect_exact_within_limits(const Plan& p, const MoveRequest& r, const PulseTiming& t, const Peaks& m,
                                 const std::string& what) {
   EXPECT_TRUE(m.finished) << what;
@@ -94,7 +79,7 @@ void expect_exact_within_limits(const Plan& p, const MoveRequest& r, const Pulse
   const double v_rate = scurve::step_rate_limit(to_host(t), p.clock);
   EXPECT_LE(m.v, std::min(std::max({r.v_cruise, r.v_start, p.v_end_used}), v_rate) * tol) << what;
   EXPECT_LE(m.a, r.a_max * tol) << what;
-  if (r.kind == ProfileKind::SCurve) EXPECT_LE(m.j, jerk_cap(r) * tol) << what;
+  if (r.kind == ProfileKind::SCurve) EXPECT_LE(m.j, scurve::test::jerk_cap(r) * tol) << what;
 }
 
 }  // namespace

@@ -26,12 +26,6 @@ Limits4Check limits_of(const MoveRequest& r, const Plan& p) {
   return l;
 }
 
-std::string describe(const SimResult& r) {
-  std::string s;
-  for (const auto& f : r.failures) s += f + "\n";
-  return s;
-}
-
 }  // namespace
 
 TEST(Lockstep, SixtyRandomPlannedMovesMatchEveryClockAndEmitExactlyL) {
@@ -60,7 +54,7 @@ TEST(Lockstep, SixtyRandomPlannedMovesMatchEveryClockAndEmitExactlyL) {
     ASSERT_TRUE(s.pass()) << "move " << run << " (distance " << r.distance << " vs " << r.v_start << " vc "
                           << r.v_cruise << " ve " << r.v_end << " a " << r.a_max << " j " << r.j_max << " kind "
                           << int(r.kind) << " high/low/setup/hold " << t.high << "/" << t.low << "/" << t.setup
-                          << "/" << t.hold << "): " << describe(s);
+                          << "/" << t.hold << "): " << s.failure_lines();
     EXPECT_EQ(s.mismatches, 0u);
     EXPECT_EQ(s.pulses, r.distance);
     clocks += s.total_clocks;
@@ -249,11 +243,7 @@ TEST(Lockstep, FinishFlagsARunThatComparedNothing) {
 // the queue at 400k+200. `drop_request` loses one request (a step-queue
 // overrun RTL and model would agree on).
 std::vector<std::string> run_reference_accounting(int steps, int drop_request) {
-  PulseTiming t;
-  t.high = 10;
-  t.low = 10;
-  t.setup = 5;
-  t.hold = 5;
+  PulseTiming t{10, 10, 5, 5};  // high, low, setup, hold
   PinMonitor pins(PinRules{t, false, StepAccounting::ReferencePosition});
   int32_t ref = 1000;  // the executor does not start at 0
   int32_t queued = 0;
@@ -298,11 +288,7 @@ TEST(PinMonitor, ReferenceAccountingReportsALostLastRequestAtTheEnd) {
 }
 
 TEST(PinMonitor, PulseCounterAccountingReportsAPulseTheCounterMissedAndFollowsItsClear) {
-  PulseTiming t;
-  t.high = 4;
-  t.low = 4;
-  t.setup = 0;
-  t.hold = 0;
+  PulseTiming t{4, 4, 0, 0};  // high, low, setup, hold
   PinMonitor pins(PinRules{t, false, StepAccounting::PulseCounter});
   int32_t count = 0;
   uint64_t clock = 0;
@@ -322,11 +308,7 @@ TEST(PinMonitor, PulseCounterAccountingReportsAPulseTheCounterMissedAndFollowsIt
 }
 
 TEST(PinMonitor, ClosedLoopRulesKeepTimingChecksWithoutProfilePhases) {
-  PulseTiming t;
-  t.high = 4;
-  t.low = 4;
-  t.setup = 10;
-  t.hold = 0;
+  PulseTiming t{4, 4, 10, 0};  // high, low, setup, hold
   PinMonitor pins(PinRules{t, false, StepAccounting::None});
   // pulses while the reported phase is "done" are fine in closed loop ...
   const uint8_t done = uint8_t(Phase::PhDone);
@@ -350,7 +332,7 @@ TEST_P(PaperGroup, FullLengthLockstepIsExactAndInPhase) {
   const MoveRequest r = paper_group(g);
   const Plan p = std::get<Plan>(plan_move(r, {}));
   const SimResult s = run_move(p, {}, limits_of(r, p), SimOptions{});
-  EXPECT_TRUE(s.pass()) << describe(s);
+  EXPECT_TRUE(s.pass()) << s.failure_lines();
   EXPECT_EQ(s.mismatches, 0u);
   EXPECT_EQ(s.pulses, 30000);
   EXPECT_EQ(s.final_error, 0);

@@ -32,21 +32,6 @@ std::vector<Segment> random_table(std::mt19937_64& g, int rows) {
   return t;
 }
 
-void load_and_start(ProfileExec& ex, const std::vector<Segment>& t, u128 frac0) {
-  for (size_t i = 0; i < t.size(); ++i) {
-    ProfileExec::Inputs w;
-    w.seg_we = true;
-    w.seg_waddr = uint8_t(i);
-    w.seg_wdata = t[i];
-    ex.step(w);
-  }
-  ProfileExec::Inputs st;
-  st.start = true;
-  st.seg_count = uint8_t(t.size());
-  st.pos_frac0 = frac0;
-  ex.step(st);
-}
-
 }  // namespace
 
 TEST(ExecFastForward, MatchesStepOnRandomTablesIncludingReversals) {

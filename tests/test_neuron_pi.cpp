@@ -47,6 +47,15 @@ NeuronConfig base_cfg() {
 }
 
 // Run one control period (strobe + FSM to idle); returns the clocks used.
+// A controller after one clock with start and `c`; `in` is left with start low.
+NeuronPi started(const NeuronConfig& c, NeuronPi::Inputs& in) {
+  NeuronPi n;
+  in.start = true;
+  n.step(c, in);
+  in.start = false;
+  return n;
+}
+
 int run_period(NeuronPi& n, const NeuronConfig& c, const NeuronPi::Inputs& in) {
   int clocks = 0;
   for (int i = 0; i < c.div; ++i) {
@@ -95,11 +104,8 @@ TEST(NeuronPi, FixedPointMatchesDoubleReference) {
   std::mt19937_64 rng(3);
   std::uniform_real_distribution<double> uni(-1.0, 1.0);
   NeuronConfig c = base_cfg();
-  NeuronPi n;
   NeuronPi::Inputs in;
-  in.start = true;
-  n.step(c, in);
-  in.start = false;
+  NeuronPi n = started(c, in);
   double max_dn = 0, max_dout = 0, max_dw = 0;
   int32_t enc = 0;
   int64_t refq = 0;  // reference in Q.CtlFrac counts + 1/2
@@ -151,11 +157,8 @@ TEST(NeuronPi, FixedPointMatchesDoubleReference) {
 
 TEST(NeuronPi, DatapathFitsTheControlPeriod) {
   NeuronConfig c = base_cfg();
-  NeuronPi n;
   NeuronPi::Inputs in;
-  in.start = true;
-  n.step(c, in);
-  in.start = false;
+  NeuronPi n = started(c, in);
   int init = n.state().st == CtlStInit ? 1 : 0;
   for (int i = 0; i < c.div; ++i) {  // initialisation, then the first period
     n.step(c, in);
@@ -222,11 +225,8 @@ TEST(NeuronPi, WeightsStayWithinBounds) {
   c.w_p2_max = int32_t(15.0 * kW);
   c.w_v1_max = int32_t(10.0 * kW);
   c.w_v2_max = int32_t(5.0 * kW);
-  NeuronPi n;
   NeuronPi::Inputs in;
-  in.start = true;
-  n.step(c, in);
-  in.start = false;
+  NeuronPi n = started(c, in);
   std::mt19937 rng(5);
   for (int k = 0; k < 500; ++k) {
     in.ref_int = int32_t(rng() % 400) - 200;
@@ -244,11 +244,8 @@ TEST(NeuronPi, WeightsStayWithinBounds) {
 TEST(NeuronPi, DeadZoneStopsLearning) {
   NeuronConfig c = base_cfg();
   c.learn_dz_p = uint32_t(1.0 * kQ);
-  NeuronPi n;
   NeuronPi::Inputs in;
-  in.start = true;
-  n.step(c, in);
-  in.start = false;
+  NeuronPi n = started(c, in);
   for (int k = 0; k < 50; ++k) {
     in.ref_int = (k & 1);  // |e| <= 1/2 count
     run_period(n, c, in);
@@ -260,11 +257,8 @@ TEST(NeuronPi, DeadZoneStopsLearning) {
 TEST(NeuronPi, FollowingErrorFaultStopsAndLatches) {
   NeuronConfig c = base_cfg();
   c.ferr_lim = uint32_t(10.0 * kQ);
-  NeuronPi n;
   NeuronPi::Inputs in;
-  in.start = true;
-  n.step(c, in);
-  in.start = false;
+  NeuronPi n = started(c, in);
   in.ref_int = 5;
   for (int k = 0; k < 3; ++k) run_period(n, c, in);
   EXPECT_TRUE(n.state().active);
@@ -286,11 +280,8 @@ TEST(NeuronPi, FollowingErrorFaultStopsAndLatches) {
 TEST(NeuronPi, InPositionNeedsHoldWithoutSteps) {
   NeuronConfig c = base_cfg();
   c.inpos_hold = 4;
-  NeuronPi n;
   NeuronPi::Inputs in;
-  in.start = true;
-  n.step(c, in);
-  in.start = false;
+  NeuronPi n = started(c, in);
   in.ref_done = true;
   in.ref_int = 0;
   in.cmd_busy = true;  // steps still being commanded: never in position

@@ -11,49 +11,11 @@
 
 #include "planner.h"
 #include "profile_exec.h"
+#include "random_moves.h"
 
 using namespace sc;
 
 namespace {
-
-double log_uniform(std::mt19937_64& g, double lo, double hi) {
-  std::uniform_real_distribution<double> u(std::log(lo), std::log(hi));
-  return std::exp(u(g));
-}
-
-struct RandomRequest {
-  MoveRequest req;
-  PulseTiming timing;
-};
-
-RandomRequest random_request(std::mt19937_64& g) {
-  RandomRequest rr;
-  std::uniform_int_distribution<int> coin(0, 99);
-  rr.timing.high = uint16_t(1 + g() % 200);
-  rr.timing.low = uint16_t(1 + g() % 200);
-  const double v_lim = step_rate_limit(rr.timing);
-  auto speed = [&](bool can_be_zero) {
-    const int c = coin(g);
-    if (can_be_zero && c < 30) return 0.0;
-    if (c < 35) return v_lim;  // exactly at the step-rate limit
-    return log_uniform(g, 1.0, v_lim);
-  };
-  MoveRequest& r = rr.req;
-  r.distance = int64_t(std::llround(log_uniform(g, 1, 2e6)));
-  if (coin(g) < 50) r.distance = -r.distance;
-  r.v_start = speed(true);
-  r.v_cruise = speed(false);
-  r.v_end = coin(g) < 20 ? r.v_start : speed(true);
-  r.a_max = log_uniform(g, 10, 1e7);
-  r.j_max = log_uniform(g, 100, 1e10);
-  r.kind = coin(g) < 15 ? ProfileKind::Trapezoid : ProfileKind::SCurve;
-  if (coin(g) < 15) {
-    r.jerks = std::array<double, 4>{log_uniform(g, 100, 1e10), log_uniform(g, 100, 1e10),
-                                    log_uniform(g, 100, 1e10), log_uniform(g, 100, 1e10)};
-  }
-  r.adjust_end_speed = coin(g) < 10;
-  return rr;
-}
 
 // Execute the table on the bit-exact executor model with fast_forward().
 struct ExecOutcome {
@@ -64,18 +26,7 @@ struct ExecOutcome {
 };
 ExecOutcome execute_fast(const Plan& p) {
   ProfileExec ex;
-  for (size_t i = 0; i < p.segments.size(); ++i) {
-    ProfileExec::Inputs w;
-    w.seg_we = true;
-    w.seg_waddr = uint8_t(i);
-    w.seg_wdata = p.segments[i];
-    ex.step(w);
-  }
-  ProfileExec::Inputs st;
-  st.start = true;
-  st.seg_count = uint8_t(p.segments.size());
-  st.pos_frac0 = p.pos_frac0;
-  ex.step(st);
+  load_and_start(ex, p.segments, p.pos_frac0);
   ExecOutcome o;
   const int32_t p0 = ex.state().pint;
   // A finished executor stops fast_forward early; total_clocks + 1 covers
@@ -92,9 +43,10 @@ void run_campaign(uint64_t seed, int moves) {
   std::map<std::string, int> rejected_by;
   int accepted = 0;
   for (int i = 0; i < moves; ++i) {
-    const RandomRequest rr = random_request(g);
+    const scurve::test::RandomRequest rr = scurve::test::random_request(g, model_clock());
     const MoveRequest& r = rr.req;
-    const PlanResult res = plan_move(r, rr.timing);
+    const PulseTiming timing = to_model(rr.timing);
+    const PlanResult res = plan_move(r, timing);
     if (const auto* e = std::get_if<PlanError>(&res)) {
       ASSERT_NE(e->parameter, "internal") << "seed " << seed << " move " << i << ": " << e->message;
       ASSERT_FALSE(e->parameter.empty());
@@ -113,12 +65,11 @@ void run_campaign(uint64_t seed, int moves) {
     const int dir = r.distance < 0 ? -1 : 1;
     const TableReport rep = run_table(p.segments, p.pos_frac0, dir);
     ASSERT_GE(rep.min_signed_vel, 0) << "seed " << seed << " move " << i;
-    const double v_cap = std::min(std::max({r.v_cruise, r.v_start, p.v_end_used}), step_rate_limit(rr.timing));
+    const double v_cap = std::min(std::max({r.v_cruise, r.v_start, p.v_end_used}), step_rate_limit(timing));
     ASSERT_LE(vel_to_phys(rep.peak_vel), v_cap * (1 + 1e-12)) << "seed " << seed << " move " << i;
     ASSERT_LE(acc_to_phys(rep.peak_acc), r.a_max * (1 + 1e-12)) << "seed " << seed << " move " << i;
     if (r.kind == ProfileKind::SCurve) {
-      const double j = r.jerks ? std::max({(*r.jerks)[0], (*r.jerks)[1], (*r.jerks)[2], (*r.jerks)[3]}) : r.j_max;
-      ASSERT_LE(jerk_to_phys(rep.peak_jerk), j * (1 + 1e-12)) << "seed " << seed << " move " << i;
+      ASSERT_LE(jerk_to_phys(rep.peak_jerk), scurve::test::jerk_cap(r) * (1 + 1e-12)) << "seed " << seed << " move " << i;
     }
   }
   // The campaign must exercise both outcomes substantially.

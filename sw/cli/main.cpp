@@ -11,15 +11,7 @@ int main(int argc, char** argv) {
   CLI::App app{"scurve: jerk-limited S-curve step generator - host planner and register encoding"};
   app.require_subcommand(1);
   auto host = scurve::cli::add_host_commands(app);
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::CallForAllHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::ParseError& e) {
-    return scurve::cli::bad_input(e.what());
-  }
+  if (const auto rc = scurve::cli::parse_command_line(app, argc, argv)) return *rc;
   int rc = 0;
   host->run(&rc);
   return rc;

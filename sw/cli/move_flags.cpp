@@ -81,6 +81,19 @@ int bad_input(const std::string& msg) {
   return 2;
 }
 
+std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv) {
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    return bad_input(e.what());
+  }
+  return std::nullopt;
+}
+
 bool write_json_file(const std::string& path, const nlohmann::json& j) {
   if (path.empty()) return true;
   std::FILE* f = std::fopen(path.c_str(), "w");

@@ -2,6 +2,7 @@
 // project's jerk limit, for the host library's tests.
 #pragma once
 
+#include <cstdint>
 #include <string>
 
 #include "scurve/planner.h"
@@ -9,6 +10,19 @@
 namespace scurve::test {
 
 inline constexpr double kPaperJerk = 2500.0;
+
+// A request from its six numbers (distance, start/cruise/end speed, a, j).
+inline MoveRequest move_request(int64_t distance, double v_start, double v_cruise, double v_end, double a_max,
+                                double j_max) {
+  MoveRequest r;
+  r.distance = distance;
+  r.v_start = v_start;
+  r.v_cruise = v_cruise;
+  r.v_end = v_end;
+  r.a_max = a_max;
+  r.j_max = j_max;
+  return r;
+}
 
 inline MoveRequest paper_group(int group) {
   static const double speeds[4][3] = {{1500, 3000, 0}, {3000, 1500, 0}, {0, 1500, 3000}, {0, 3000, 1500}};

@@ -14,14 +14,7 @@ using scurve::test::paper_group;
 namespace {
 
 MoveRequest move(int64_t l, double vs, double vc, double ve, double a = 500, double j = 2500) {
-  MoveRequest r;
-  r.distance = l;
-  r.v_start = vs;
-  r.v_cruise = vc;
-  r.v_end = ve;
-  r.a_max = a;
-  r.j_max = j;
-  return r;
+  return scurve::test::move_request(l, vs, vc, ve, a, j);
 }
 
 Plan plan_ok(const MoveRequest& r, const PulseTiming& t = {}) {

@@ -220,18 +220,6 @@ struct Limits {
   double v_max = 0, a_max = 0, j_max = 0;  // 0 = not checked
 };
 
-std::vector<DutyTrend> plan_trends(const Plan& plan) {
-  // Same rule as sim_run's expected_trends(); kept here so the --sc bench
-  // does not link the --cc harness.
-  std::vector<DutyTrend> seq;
-  for (const Segment& s : plan.segments) {
-    const DutyTrend t = trend_of_phase(uint8_t(s.phase));
-    if (seq.empty() || seq.back() != t) seq.push_back(t);
-  }
-  seq.push_back(DutyTrend::Zero);
-  return seq;
-}
-
 std::string join(const std::vector<DutyTrend>& v) {
   std::string s;
   for (DutyTrend t : v) s += std::string(s.empty() ? "" : ",") + trend_name(t);
@@ -294,7 +282,7 @@ int BenchRunImpl::report(const RunStats& st) {
   const uint64_t start_clock = plan_.segments.size() + 1;
   const int64_t pulses = pins.net_steps();
   const int64_t pulse_reg = st.last_rtl ? st.last_rtl->pulse_count : 0;
-  const std::vector<DutyTrend> trends = pins.trend_sequence(), expected = plan_trends(plan_);
+  const std::vector<DutyTrend> trends = pins.trend_sequence(), expected = expected_trends(plan_.segments);
   const double peak_v = vel_to_phys(scoreboard_.peaks_.v);
   const double peak_a = acc_to_phys(scoreboard_.peaks_.a);
   const double peak_j = jerk_to_phys(scoreboard_.peaks_.j);
@@ -460,14 +448,8 @@ std::unique_ptr<BenchRun> BenchRun::from_args(int argc, char** argv, bool batche
     app.add_option("--inject-model-fault", opt.inject_model_fault,
                    "test hook: add 1 to the model's pulse counter after this clock");
   }
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::CallForHelp& e) {
-    *exit_code = app.exit(e);
-    return nullptr;
-  } catch (const CLI::ParseError& e) {
-    std::fprintf(stderr, "error: %s\n", e.what());
-    *exit_code = 2;
+  if (const auto rc = scurve::cli::parse_command_line(app, argc, argv)) {
+    *exit_code = *rc;
     return nullptr;
   }
   std::string name = opt.name;

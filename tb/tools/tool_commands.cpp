@@ -11,6 +11,7 @@
 #include <thread>
 
 #include "regress.h"
+#include "scurve/cli/move_flags.h"
 #include "trace_diff.h"
 
 namespace sc {
@@ -70,10 +71,7 @@ std::shared_ptr<ToolCommands> add_tool_commands(CLI::App& app) {
 
 namespace {
 
-int bad_input(const std::string& msg) {
-  std::fprintf(stderr, "error: %s\n", msg.c_str());
-  return 2;
-}
+using scurve::cli::bad_input;
 
 int run_diff(const ToolCommands& t) {
   DiffReport rep;

@@ -7,11 +7,7 @@
 #include "sim_run.h"
 
 using namespace sc;
-
-static double lu(std::mt19937_64& g, double lo, double hi) {
-  std::uniform_real_distribution<double> u(std::log(lo), std::log(hi));
-  return std::exp(u(g));
-}
+using scurve::test::log_uniform;
 
 int main(int argc, char** argv) {
   const uint64_t seed = argc > 1 ? std::stoull(argv[1]) : 1;
@@ -32,14 +28,14 @@ int main(int argc, char** argv) {
     t.setup = uint16_t(g() % (setup_max + 1));
     t.hold = uint16_t(g() % 65536);
     const double vl = step_rate_limit(t);
-    auto speed = [&](bool z) { int c = int(g() % 10); if (z && c < 3) return 0.0; if (c < 5) return vl; return lu(g, std::min(1.0, vl), vl); };
+    auto speed = [&](bool z) { int c = int(g() % 10); if (z && c < 3) return 0.0; if (c < 5) return vl; return log_uniform(g, std::min(1.0, vl), vl); };
     MoveRequest r;
-    r.distance = int64_t(std::llround(lu(g, 1, 50000))) * (g() % 2 ? -1 : 1);
+    r.distance = int64_t(std::llround(log_uniform(g, 1, 50000))) * (g() % 2 ? -1 : 1);
     r.v_start = speed(true); r.v_cruise = speed(false); r.v_end = g() % 5 == 0 ? r.v_start : speed(true);
-    r.a_max = vl * lu(g, 1, 1e4);
-    r.j_max = std::min(1e11, r.a_max * lu(g, 1, 1e5));
+    r.a_max = vl * log_uniform(g, 1, 1e4);
+    r.j_max = std::min(1e11, r.a_max * log_uniform(g, 1, 1e5));
     if (g() % 5 == 0) r.kind = ProfileKind::Trapezoid;
-    if (g() % 5 == 0) { std::array<double, 4> js; for (auto& x : js) x = std::min(1e11, r.a_max * lu(g, 1, 1e5)); r.jerks = js; r.j_max = std::max({js[0], js[1], js[2], js[3]}); }
+    if (g() % 5 == 0) { std::array<double, 4> js; for (auto& x : js) x = std::min(1e11, r.a_max * log_uniform(g, 1, 1e5)); r.jerks = js; r.j_max = std::max({js[0], js[1], js[2], js[3]}); }
     r.adjust_end_speed = g() % 5 == 0;
     if (r.a_max > 1e8) continue;
     PlanResult pr = plan_move(r, t);

@@ -8,11 +8,7 @@
 #include "rt_util.h"
 
 using namespace sc;
-
-static double lu(std::mt19937_64& g, double lo, double hi) {
-  std::uniform_real_distribution<double> u(std::log(lo), std::log(hi));
-  return std::exp(u(g));
-}
+using scurve::test::log_uniform;
 
 int main(int argc, char** argv) {
   const uint64_t seed = argc > 1 ? std::stoull(argv[1]) : 1;
@@ -36,21 +32,21 @@ int main(int argc, char** argv) {
       const int c = coin(g);
       if (zero && c < 30) return 0.0;
       if (c < 40) return vlim;
-      return lu(g, std::min(1e-3, vlim), vlim);
+      return log_uniform(g, std::min(1e-3, vlim), vlim);
     };
     MoveRequest r;
-    r.distance = int64_t(std::llround(lu(g, 1, 2147483646.0)));
+    r.distance = int64_t(std::llround(log_uniform(g, 1, 2147483646.0)));
     if (coin(g) < 50) r.distance = -r.distance;
     r.v_start = speed(true);
     r.v_cruise = speed(false);
     r.v_end = coin(g) < 15 ? r.v_start : speed(true);
-    r.a_max = lu(g, 0.01, 1e8);
-    if (mode == 1) r.j_max = r.a_max * lu(g, 0.1, 1e5);
-    else r.j_max = lu(g, 10, 1e11);
+    r.a_max = log_uniform(g, 0.01, 1e8);
+    if (mode == 1) r.j_max = r.a_max * log_uniform(g, 0.1, 1e5);
+    else r.j_max = log_uniform(g, 10, 1e11);
     r.kind = coin(g) < 15 ? ProfileKind::Trapezoid : ProfileKind::SCurve;
     if (coin(g) < 20) {
       std::array<double, 4> js;
-      for (auto& x : js) x = mode == 1 ? std::min(1e11, std::max(10.0, r.a_max * lu(g, 0.1, 1e5))) : lu(g, 10, 1e11);
+      for (auto& x : js) x = mode == 1 ? std::min(1e11, std::max(10.0, r.a_max * log_uniform(g, 0.1, 1e5))) : log_uniform(g, 10, 1e11);
       r.jerks = js;
     }
     r.adjust_end_speed = coin(g) < 15;

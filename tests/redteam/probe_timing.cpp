@@ -5,11 +5,7 @@
 #include "rt_util.h"
 
 using namespace sc;
-
-static double lu(std::mt19937_64& g, double lo, double hi) {
-  std::uniform_real_distribution<double> u(std::log(lo), std::log(hi));
-  return std::exp(u(g));
-}
+using scurve::test::log_uniform;
 
 int main(int argc, char** argv) {
   const int n = argc > 1 ? std::stoi(argv[1]) : 2000;
@@ -36,13 +32,13 @@ int main(int argc, char** argv) {
     PulseTiming tt; tt.high = uint16_t(1 + g() % 100); tt.low = uint16_t(1 + g() % 100);
     const double vl = step_rate_limit(tt);
     MoveRequest q;
-    q.distance = int64_t(std::llround(lu(g, 1, 2e9))) * (g() % 2 ? 1 : -1);
-    q.v_start = g() % 2 ? 0.0 : lu(g, 1e-3, vl);
-    q.v_cruise = g() % 3 ? vl : lu(g, 1e-3, vl);
-    q.v_end = g() % 2 ? vl : lu(g, 1e-3, vl);
-    q.a_max = lu(g, 0.01, 1e8);
-    q.j_max = lu(g, 10, 1e11);
-    if (g() % 4 == 0) { std::array<double, 4> js; for (auto& x : js) x = lu(g, 10, 1e11); q.jerks = js; }
+    q.distance = int64_t(std::llround(log_uniform(g, 1, 2e9))) * (g() % 2 ? 1 : -1);
+    q.v_start = g() % 2 ? 0.0 : log_uniform(g, 1e-3, vl);
+    q.v_cruise = g() % 3 ? vl : log_uniform(g, 1e-3, vl);
+    q.v_end = g() % 2 ? vl : log_uniform(g, 1e-3, vl);
+    q.a_max = log_uniform(g, 0.01, 1e8);
+    q.j_max = log_uniform(g, 10, 1e11);
+    if (g() % 4 == 0) { std::array<double, 4> js; for (auto& x : js) x = log_uniform(g, 10, 1e11); q.jerks = js; }
     if (g() % 5 == 0) q.kind = ProfileKind::Trapezoid;
     q.adjust_end_speed = true;
     const auto t0 = std::chrono::steady_clock::now();

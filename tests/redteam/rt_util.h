@@ -11,6 +11,7 @@
 
 #include "planner.h"
 #include "profile_exec.h"
+#include "random_moves.h"
 
 namespace rt {
 
@@ -51,18 +52,7 @@ inline Outcome run(const MoveRequest& r, const PulseTiming& t, uint64_t step_lim
   if (o.plan_ms > 100) o.problems += "slow planning; ";
   const Plan& p = o.plan;
   ProfileExec ex;
-  for (size_t i = 0; i < p.segments.size(); ++i) {
-    ProfileExec::Inputs w;
-    w.seg_we = true;
-    w.seg_waddr = uint8_t(i);
-    w.seg_wdata = p.segments[i];
-    ex.step(w);
-  }
-  ProfileExec::Inputs st;
-  st.start = true;
-  st.seg_count = uint8_t(p.segments.size());
-  st.pos_frac0 = p.pos_frac0;
-  ex.step(st);
+  load_and_start(ex, p.segments, p.pos_frac0);
   const int32_t p0 = ex.state().pint;
   const int dir = r.distance < 0 ? -1 : 1;
   if (p.total_clocks <= step_limit) {
@@ -119,7 +109,7 @@ inline Outcome run(const MoveRequest& r, const PulseTiming& t, uint64_t step_lim
   const double pa = o.stepped ? o.peak_a : acc_to_phys(rep.peak_acc);
   if (pa > r.a_max * (1 + 1e-12)) o.problems += "a " + std::to_string(pa) + " > a_max; ";
   if (r.kind == ProfileKind::SCurve) {
-    const double j = r.jerks ? std::max({(*r.jerks)[0], (*r.jerks)[1], (*r.jerks)[2], (*r.jerks)[3]}) : r.j_max;
+    const double j = scurve::test::jerk_cap(r);
     const double pj = o.stepped ? o.peak_j : jerk_to_phys(rep.peak_jerk);
     if (pj > j * (1 + 1e-12)) o.problems += "j " + std::to_string(pj) + " > j_max; ";
   }

@@ -5,6 +5,7 @@
 #include <CLI/CLI.hpp>
 #include <cstdint>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -41,6 +42,10 @@ std::string check_clock_flag(double hz);
 
 // One line "error: <msg>" on stderr; returns 2 (bad input).
 int bad_input(const std::string& msg);
+// Parses the command line. When parsing ends the program (--help, or a usage
+// error reported by bad_input) returns its exit code; empty when the
+// command is to run.
+std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv);
 // Writes j (indented) to path; true if path is empty or the write worked.
 bool write_json_file(const std::string& path, const nlohmann::json& j);
 

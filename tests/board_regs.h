@@ -1,0 +1,53 @@
+// Helpers shared by the register-level board tests (test_board.cpp,
+// test_board_servo.cpp): registers and fields looked up in the generated
+// register table (the documented map, not the RTL constants), the reset
+// read-back check, a planner call that throws on a rejected request, and the
+// host library's request helper.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+#include <string>
+#include <variant>
+
+#include "axi_bench.h"
+#include "paper_moves.h"
+#include "planner.h"
+#include "sc_regmap.h"
+
+namespace sc::board_test {
+
+inline const regmap::Reg& reg(const std::string& name) {
+  for (const regmap::Reg& r : regmap::kRegs)
+    if (name == r.name) return r;
+  throw std::runtime_error("no register " + name);
+}
+// Field mask from the generated table (the docs), not from the RTL constants.
+inline uint32_t field_mask(const std::string& rname, const std::string& fname) {
+  const regmap::Reg& r = reg(rname);
+  for (int i = 0; i < r.nfields; ++i)
+    if (fname == r.fields[i].name) return ((r.fields[i].width >= 32 ? 0 : (1u << r.fields[i].width)) - 1) << r.fields[i].lsb;
+  throw std::runtime_error("no field " + rname + "." + fname);
+}
+inline uint32_t reg_addr(const std::string& name) { return reg(name).addr; }
+
+// Read right after reset: OKAY, reserved bits 0 and, for the registers the
+// host writes (RW, WO) and ID, the reset value.
+template <class Bench>
+void expect_reset_read(Bench& b, const regmap::Reg& r) {
+  const auto [v, resp] = b.read(r.addr);
+  EXPECT_EQ(resp, kOkay) << r.name;
+  EXPECT_EQ(v & ~r.mask, 0u) << r.name << ": reserved bits read 1";
+  if (r.access == regmap::Access::RW || r.access == regmap::Access::WO || std::string(r.name) == "ID") {
+    EXPECT_EQ(v, r.reset) << r.name << " reset value";
+  }
+}
+
+inline Plan plan_or_die(const MoveRequest& req, const PulseTiming& t = PulseTiming{}) {
+  const PlanResult r = plan_move(req, t);
+  if (const auto* e = std::get_if<PlanError>(&r)) throw std::runtime_error(e->message);
+  return std::get<Plan>(r);
+}
+
+}  // namespace sc::board_test
