@@ -35,7 +35,7 @@ package sc_pkg;
   localparam int PulseTimeW = 16;  // high/low/setup/hold in clocks
   localparam int PendW      = 4;   // signed queue of requested steps
 
-  // ---- closed loop: encoder, neuron-PI cascade, step NCO (issue 3) -------
+  // ---- closed loop: encoder, neuron-PI cascade, step NCO ----------------
   // Controller word: Q(CtlW-CtlFrac).CtlFrac, in encoder counts (positions,
   // errors) or counts per control period (speeds, u). Weights Q.WgtFrac,
   // normalised weights Q1.NWgtFrac, coefficients (K, eta, Kb) unsigned

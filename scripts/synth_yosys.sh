@@ -4,7 +4,7 @@
 #   scripts/synth_yosys.sh [top] [outdir]      (default: sc_axis_core build/synth)
 # Area budget (fails when over): SC_LUT_BUDGET / SC_DSP_BUDGET in the
 # environment; the single-axis cores (sc_axis_core, sc_servo_axis) default
-# to 3000 LUT (logic + LUTs used as memory) and 8 DSP48E1 (issue 5).
+# to 3000 LUT (logic + LUTs used as memory) and 8 DSP48E1.
 # Sources: the files the top instantiates (scripts/rtl_deps.py), so a
 # half-written module elsewhere in rtl/ does not break this check.
 set -euo pipefail
@@ -53,7 +53,7 @@ printf '{"top":"%s","lut":%d,"lut_mem":%d,"lut_total":%d,"ff":%d,"carry4":%d,"ds
   "$top" "$luts" "$lut_mem" "$((luts + lut_mem))" "$ffs" "$carry" "$dsp" "$bram" "$lutram" "${depth:-0}" | tee "$out/$top.util.json"
 # ---- area budget ---------------------------------------------------------------
 lut_budget=${SC_LUT_BUDGET:-}; dsp_budget=${SC_DSP_BUDGET:-}
-# the single-axis cores: open loop and with the closed loop (issue 5)
+# the single-axis cores: open loop and with the closed loop
 case "$top" in
   sc_axis_core|sc_servo_axis) lut_budget=${lut_budget:-3000}; dsp_budget=${dsp_budget:-8} ;;
 esac

@@ -118,7 +118,7 @@ int main(int argc, char** argv) {
   ClosedLoopCli closed_loop;  // --closed-loop and its plant/controller flags (tb/closed_loop_cli.h)
   add_closed_loop_flags(sim_cmd, closed_loop);
 
-  auto tools = add_tool_commands(app);  // diff, regress (issue 4, tb/tools/tool_commands.h)
+  auto tools = add_tool_commands(app);  // diff, regress (tb/tools/tool_commands.h)
 
   if (const auto rc = scurve::cli::parse_command_line(app, argc, argv)) return *rc;
 

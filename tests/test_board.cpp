@@ -1,4 +1,4 @@
-// Register-level tests of the host interface (issue 5):
+// Register-level tests of the host interface:
 //   AxiRegs.*   AXI4-Lite master on sc_axi_axis, RTL and model in lockstep
 //   BoardUart.* UART host on the Verilated board top (sc_board_top)
 //   BoardLong.* a paper group (30,000 pulses, ~14 s of motion) over AXI
