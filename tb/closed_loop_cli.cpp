@@ -16,7 +16,7 @@
 #include <thread>
 
 #include "scenarios.h"
-#include "user_input.h"
+#include "scurve/cli/user_input.h"
 
 namespace sc {
 

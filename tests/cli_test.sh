@@ -34,6 +34,14 @@ check_bad v_end plan --distance 5000 --v-cruise 3000 --v-end 3000 --a-max 500 --
 check_bad a_max sim --distance 100 --v-cruise 100 --a-max -5 --j-max 2500
 check_bad distance plan --distance abc --v-cruise 100 --a-max 500 --j-max 2500
 check_bad group sim --group 7
+# Numbers are decimal: no octal, hex, nan or inf reading, and the value as given.
+check_bad "distance=0100" plan --distance 0100 --v-cruise 100 --a-max 500 --j-max 2500
+check_bad "distance=09" plan --distance 09 --v-cruise 100 --a-max 500 --j-max 2500
+check_bad "distance=18446744073709551616" plan --distance 18446744073709551616 --v-cruise 100 --a-max 500 --j-max 2500
+check_bad "pulse-high=010" regs --distance 100 --v-cruise 100 --a-max 500 --j-max 2500 --pulse-high 010
+check_bad "v-start=0x10" plan --distance 100 --v-start 0x10 --v-cruise 100 --a-max 500 --j-max 2500
+check_bad "v-cruise=nan" plan --distance 100 --v-cruise nan --a-max 500 --j-max 2500
+check_bad "v_start=200000.0001" plan --distance 100 --v-start 200000.0001 --v-cruise 1000 --a-max 1000 --j-max 10000
 
 out=$("$scurve" sim --distance 300 --v-cruise 20000 --a-max 200000 --j-max 2e7)
 echo "$out" | grep -q PASS || fail "short sim did not pass: $out"

@@ -1,4 +1,5 @@
 #include "scurve/cli/move_flags.h"
+#include "scurve/cli/user_input.h"
 
 #include <fmt/format.h>
 
@@ -7,25 +8,75 @@
 
 namespace scurve::cli {
 
+namespace {
+
+// Every number on the command line goes through the validation layer
+// (decimal notation, finite, integer, range); CLI11 reports its message
+// (exit 2). Ranges of the move itself are the planner's, checked there.
+constexpr double kAnyReal = 1e300;
+
+CLI::Option* real_flag(CLI::App* app, const char* flag, double& target, const char* what) {
+  return app->add_option_function<std::string>(
+      flag,
+      [&target, flag](const std::string& v) {
+        try {
+          target = input::parse_real(flag + 2, v, -kAnyReal, kAnyReal);
+        } catch (const input::Error& e) {
+          throw CLI::ValidationError(e.what());
+        }
+      },
+      what)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
+}
+
+template <typename T>
+CLI::Option* int_flag(CLI::App* app, const char* flag, T& target, int64_t lo, int64_t hi, const std::string& what) {
+  return app->add_option_function<std::string>(
+      flag,
+      [&target, flag, lo, hi](const std::string& v) {
+        try {
+          target = T(input::parse_int(flag + 2, v, lo, hi));
+        } catch (const input::Error& e) {
+          throw CLI::ValidationError(e.what());
+        }
+      },
+      what)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
+}
+
+}  // namespace
+
 void add_move_flags(CLI::App* app, MoveFlags& f, std::vector<CLI::Option*>* move_opts) {
   std::vector<CLI::Option*> opts;
-  opts.push_back(app->add_option("--distance", f.distance, "move length in pulses (sign = direction)"));
-  opts.push_back(app->add_option("--v-start", f.v_start, "start speed, pulses/s"));
-  opts.push_back(app->add_option("--v-cruise", f.v_cruise, "cruise speed, pulses/s"));
-  opts.push_back(app->add_option("--v-end", f.v_end, "end speed, pulses/s"));
-  opts.push_back(app->add_option("--a-max", f.a_max, "acceleration limit, pulses/s^2"));
-  opts.push_back(app->add_option("--j-max", f.j_max, "jerk limit, pulses/s^3 (scurve)"));
+  const int64_t max_distance = PlannerLimits::kMaxDistance;
+  opts.push_back(int_flag(app, "--distance", f.distance, -max_distance, max_distance,
+                          "move length in pulses (sign = direction)"));
+  opts.push_back(real_flag(app, "--v-start", f.v_start, "start speed, pulses/s"));
+  opts.push_back(real_flag(app, "--v-cruise", f.v_cruise, "cruise speed, pulses/s"));
+  opts.push_back(real_flag(app, "--v-end", f.v_end, "end speed, pulses/s"));
+  opts.push_back(real_flag(app, "--a-max", f.a_max, "acceleration limit, pulses/s^2"));
+  opts.push_back(real_flag(app, "--j-max", f.j_max, "jerk limit, pulses/s^3 (scurve)"));
   opts.push_back(app->add_option("--profile", f.profile, "scurve | trapezoid")
                      ->check(CLI::IsMember({"scurve", "trapezoid"})));
-  opts.push_back(app->add_option("--jerks", f.jerks, "asymmetric jerks Ts1 Ts2 Te1 Te2 (paper 002), pulses/s^3")
+  opts.push_back(app->add_option_function<std::vector<std::string>>(
+                        "--jerks",
+                        [&f](const std::vector<std::string>& v) {
+                          f.jerks.clear();
+                          try {
+                            for (const std::string& x : v) f.jerks.push_back(input::parse_real("jerks", x, -kAnyReal, kAnyReal));
+                          } catch (const input::Error& e) {
+                            throw CLI::ValidationError(e.what());
+                          }
+                        },
+                        "asymmetric jerks Ts1 Ts2 Te1 Te2 (paper 002), pulses/s^3")
                      ->expected(4));
   opts.push_back(app->add_flag("--adjust-end-speed", f.adjust_end_speed,
                                "use the closest reachable end speed instead of failing"));
   if (move_opts) move_opts->insert(move_opts->end(), opts.begin(), opts.end());
-  app->add_option("--pulse-high", f.pulse_high, "STEP high time, clocks")->check(CLI::Range(1, 65535));
-  app->add_option("--pulse-low", f.pulse_low, "minimum STEP low time, clocks")->check(CLI::Range(1, 65535));
-  app->add_option("--dir-setup", f.dir_setup, "DIR setup before STEP rise, clocks")->check(CLI::Range(0, 65535));
-  app->add_option("--dir-hold", f.dir_hold, "DIR hold after STEP rise, clocks")->check(CLI::Range(0, 65535));
+  int_flag(app, "--pulse-high", f.pulse_high, 1, 65535, "STEP high time, clocks (1..65535)");
+  int_flag(app, "--pulse-low", f.pulse_low, 1, 65535, "minimum STEP low time, clocks (1..65535)");
+  int_flag(app, "--dir-setup", f.dir_setup, 0, 65535, "DIR setup before STEP rise, clocks (0..65535)");
+  int_flag(app, "--dir-hold", f.dir_hold, 0, 65535, "DIR hold after STEP rise, clocks (0..65535)");
 }
 
 void add_clock_flag(CLI::App* app, MoveFlags& f) {

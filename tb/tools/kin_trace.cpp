@@ -1,5 +1,5 @@
 #include "kin_trace.h"
-#include "user_input.h"
+#include "scurve/cli/user_input.h"
 
 #include <fmt/format.h>
 

@@ -22,7 +22,7 @@
 #include <thread>
 
 #include "planner.h"
-#include "user_input.h"
+#include "scurve/cli/user_input.h"
 
 extern char** environ;
 

@@ -1,4 +1,4 @@
-#include "user_input.h"
+#include "scurve/cli/user_input.h"
 
 #include <fmt/format.h>
 
@@ -6,7 +6,7 @@
 #include <charconv>
 #include <cmath>
 
-namespace sc::input {
+namespace scurve::input {
 
 Error::Error(std::string parameter, std::string value, const std::string& why)
     : std::invalid_argument(fmt::format("{}={}: {}", parameter, value, why)),
@@ -16,7 +16,10 @@ Error::Error(std::string parameter, std::string value, const std::string& why)
 namespace {
 
 std::string bounds(int64_t lo, int64_t hi) { return fmt::format("an integer in [{}, {}]", lo, hi); }
-std::string bounds(double lo, double hi) { return fmt::format("a finite number in [{}, {}]", lo, hi); }
+std::string bounds(double lo, double hi) {
+  if (lo <= -1e299 && hi >= 1e299) return "a finite number";  // the range is checked elsewhere
+  return fmt::format("a finite number in [{}, {}]", lo, hi);
+}
 
 bool decimal_integer(std::string_view t) {
   size_t i = (!t.empty() && (t[0] == '-' || t[0] == '+')) ? 1 : 0;
@@ -150,4 +153,4 @@ void json_known_keys(const std::string& param, const nlohmann::json& obj, std::i
   json_known_keys(param, obj, std::vector<std::string_view>(allowed));
 }
 
-}  // namespace sc::input
+}  // namespace scurve::input

@@ -12,7 +12,7 @@
 #include <string_view>
 #include <vector>
 
-namespace sc::input {
+namespace scurve::input {
 
 class Error : public std::invalid_argument {
  public:
@@ -48,4 +48,9 @@ void json_known_keys(const std::string& param, const nlohmann::json& obj, const 
 // A JSON value as the user wrote it, shortened for one-line messages.
 std::string shown(const nlohmann::json& v);
 
-}  // namespace sc::input
+}  // namespace scurve::input
+
+// The testbench's tools use the same layer.
+namespace sc {
+namespace input = scurve::input;
+}  // namespace sc
