@@ -43,6 +43,18 @@ check_bad "v-start=0x10" plan --distance 100 --v-start 0x10 --v-cruise 100 --a-m
 check_bad "v-cruise=nan" plan --distance 100 --v-cruise nan --a-max 500 --j-max 2500
 check_bad "v_start=200000.0001" plan --distance 100 --v-start 200000.0001 --v-cruise 1000 --a-max 1000 --j-max 10000
 
+# --json-out: regs writes its JSON too; a failed write (file-size limit) is
+# exit 2 and leaves no partial file.
+"$scurve" regs --distance 1000 --v-cruise 20000 --a-max 1e6 --j-max 1e9 --json-out "$tmp/regs.json" > /dev/null
+python3 -c 'import json,sys; w=json.load(open(sys.argv[1])); assert len(w) > 10 and w[0]["reg"], w' "$tmp/regs.json"
+set +e
+(ulimit -f 1; "$scurve" plan --distance 30000 --v-cruise 3000 --a-max 500 --j-max 2500 --json-out "$tmp/big.json" \
+  > /dev/null 2> "$tmp/err")
+rc=$?
+set -e
+[ "$rc" -eq 2 ] || fail "--json-out under a file-size limit -> exit $rc, want 2"
+[ ! -e "$tmp/big.json" ] && [ ! -e "$tmp/big.json.part" ] || fail "--json-out left a partial file"
+
 out=$("$scurve" sim --distance 300 --v-cruise 20000 --a-max 200000 --j-max 2e7)
 echo "$out" | grep -q PASS || fail "short sim did not pass: $out"
 "$scurve" sim --distance -300 --v-cruise 20000 --a-max 200000 --j-max 2e7 --json > "$tmp/sim.json"

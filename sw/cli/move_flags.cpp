@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 
 namespace scurve::cli {
@@ -133,6 +134,9 @@ int bad_input(const std::string& msg) {
 }
 
 std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv) {
+  // A file-size limit makes a write fail (EFBIG) instead of killing the
+  // program, so it reports the failure and removes its partial files.
+  std::signal(SIGXFSZ, SIG_IGN);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -147,11 +151,19 @@ std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv) {
 
 bool write_json_file(const std::string& path, const nlohmann::json& j) {
   if (path.empty()) return true;
-  std::FILE* f = std::fopen(path.c_str(), "w");
+  // Written whole to "<path>.part", then renamed: a failed write (a full
+  // disk, a file-size limit) leaves no truncated file behind.
+  const std::string part = path + ".part";
+  std::FILE* f = std::fopen(part.c_str(), "w");
   if (!f) return false;
   const std::string s = j.dump(2) + "\n";
-  const bool ok = std::fwrite(s.data(), 1, s.size(), f) == s.size();
-  return std::fclose(f) == 0 && ok;
+  const bool written = std::fwrite(s.data(), 1, s.size(), f) == s.size() && std::fflush(f) == 0;
+  const bool closed = std::fclose(f) == 0;
+  if (!written || !closed || std::rename(part.c_str(), path.c_str()) != 0) {
+    std::remove(part.c_str());
+    return false;
+  }
+  return true;
 }
 
 }  // namespace scurve::cli

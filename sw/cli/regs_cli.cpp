@@ -5,6 +5,8 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 
+#include "scurve/cli/move_flags.h"
+
 #include "scurve/reg_encode.h"
 #include "scurve/servo_config.h"
 
@@ -20,7 +22,8 @@ void add_regs_flags(CLI::App* cmd, RegsCliFlags& f) {
                 "defaults for this pulse timing) and CTRL.CLOSED_LOOP before the table");
 }
 
-int run_regs_cli(const RegsCliFlags& f, const Plan& plan, const PulseTiming& timing, bool json) {
+int run_regs_cli(const RegsCliFlags& f, const Plan& plan, const PulseTiming& timing, bool json,
+                 const std::string& json_out) {
   std::vector<RegWrite> writes = encode_move(plan, timing, !f.no_start);
   if (f.closed_loop) {
     const double counts_per_step = 1.0;  // the closed-loop runner's default encoder
@@ -34,7 +37,7 @@ int run_regs_cli(const RegsCliFlags& f, const Plan& plan, const PulseTiming& tim
     writes.erase(writes.begin());  // CTRL = enable: replaced by the closed-loop CTRL write
     writes.insert(writes.begin(), cl.begin(), cl.end());
   }
-  if (json) {
+  if (json || !json_out.empty()) {
     nlohmann::json out = nlohmann::json::array();
     for (const RegWrite& w : writes) {
       nlohmann::json j = {{"addr", w.addr}, {"reg", reg_name(w.addr)}, {"data", w.data}};
@@ -45,8 +48,14 @@ int run_regs_cli(const RegsCliFlags& f, const Plan& plan, const PulseTiming& tim
       }
       out.push_back(j);
     }
-    std::cout << out.dump(2) << "\n";
-    return 0;
+    if (!write_json_file(json_out, out)) {
+      std::cerr << "error: --json-out: cannot write " << json_out << "\n";
+      return 2;
+    }
+    if (json) {
+      std::cout << out.dump(2) << "\n";
+      return 0;
+    }
   }
   for (const RegWrite& w : writes) {
     if (f.uart) {

@@ -427,7 +427,8 @@ std::unique_ptr<BenchRun> BenchRun::from_args(int argc, char** argv, bool batche
   int group = 0;
   scurve::cli::MoveFlags move;  // the move flags of `scurve plan` / `scurve sim`
   app.add_option("--group", group, "paper 000 Table 2 group 1..4 (L=30000, a=500, j=2500)")->check(CLI::Range(1, 4));
-  scurve::cli::add_move_flags(&app, move);
+  std::vector<CLI::Option*> move_opts;
+  scurve::cli::add_move_flags(&app, move, &move_opts);
   app.add_option("--name", opt.name, "run name in the report");
   app.add_flag("--json", opt.json, "print one JSON object");
   app.add_option("--trace-rtl", opt.trace_rtl, "kinematics trace (CSV) of the RTL");
@@ -455,6 +456,13 @@ std::unique_ptr<BenchRun> BenchRun::from_args(int argc, char** argv, bool batche
   std::string name = opt.name;
   MoveRequest req = scurve::cli::to_request(move);
   if (group) {
+    for (const CLI::Option* o : move_opts) {
+      if (o->count() > 0) {
+        std::fprintf(stderr, "error: %s: give --group 1..4 or a move, not both\n", o->get_name().c_str());
+        *exit_code = 2;
+        return nullptr;
+      }
+    }
     req = paper_group(group);
     if (name.empty()) name = paper_group_name(group);
   } else {

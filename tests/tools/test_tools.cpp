@@ -292,6 +292,7 @@ TEST(Cli, BadInputExitsWithTwo) {
   EXPECT_EQ(run(scurve + " regress --list " + (d / "missing.json").string() + " --out-dir " + d.string()), 2);
   EXPECT_EQ(run(scurve + " regress --shard 3/2 --list-only --out-dir " + d.string()), 2);
   EXPECT_EQ(run(std::string(SC_BENCH) + " --group 5"), 2);
+  EXPECT_EQ(run(std::string(SC_BENCH) + " --group 1 --distance 5"), 2);  // a group or a move, not both
   EXPECT_EQ(run(std::string(SC_BENCH) + " --distance 100 --v-cruise 1000 --a-max 0 --j-max 100"), 2);
 }
 

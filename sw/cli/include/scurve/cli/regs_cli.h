@@ -2,6 +2,8 @@
 // AXI4-Lite register file, or as UART bridge frames (docs/regmap.md).
 #pragma once
 
+#include <string>
+
 #include <CLI/CLI.hpp>
 
 #include "scurve/planner.h"
@@ -16,6 +18,8 @@ struct RegsCliFlags {
 
 void add_regs_flags(CLI::App* cmd, RegsCliFlags& f);
 // Prints the writes for `plan` (its clock sets the controller's period).
-int run_regs_cli(const RegsCliFlags& f, const Plan& plan, const PulseTiming& timing, bool json);
+// json_out: also write the writes as JSON to this file (empty: no file).
+int run_regs_cli(const RegsCliFlags& f, const Plan& plan, const PulseTiming& timing, bool json,
+                 const std::string& json_out = {});
 
 }  // namespace scurve::cli
