@@ -16,6 +16,7 @@
 #include <thread>
 
 #include "scenarios.h"
+#include "scurve/cli/move_flags.h"
 #include "scurve/cli/user_input.h"
 
 namespace sc {
@@ -304,7 +305,8 @@ std::string comparison_table(const std::vector<ClosedLoopResult>& rs) {
 }
 
 int run_closed_loop_cli(ClosedLoopCli f, const std::vector<std::pair<std::string, MoveRequest>>& jobs,
-                        const PulseTiming& timing, const std::string& engine, unsigned n_threads, bool json) {
+                        const PulseTiming& timing, const std::string& engine, unsigned n_threads, bool json,
+                        const std::string& json_out) {
   if (!f.scenario.empty()) {
     std::ifstream in(f.scenario);
     if (!std::filesystem::is_regular_file(f.scenario) || !in) {
@@ -420,13 +422,17 @@ int run_closed_loop_cli(ClosedLoopCli f, const std::vector<std::pair<std::string
     }
   }
   pass = pass && table_fail.empty();
+  nlohmann::json out;
+  out["runs"] = nlohmann::json::array();
+  for (const ClosedLoopResult& r : results) out["runs"].push_back(result_json(r));
+  out["plant"] = f.plant.describe();
+  out["table3_failures"] = table_fail;
+  out["pass"] = pass;
+  if (!scurve::cli::write_json_file(json_out, out)) {
+    std::fprintf(stderr, "error: --json-out: cannot write %s\n", json_out.c_str());
+    return 2;
+  }
   if (json) {
-    nlohmann::json out;
-    out["runs"] = nlohmann::json::array();
-    for (const ClosedLoopResult& r : results) out["runs"].push_back(result_json(r));
-    out["plant"] = f.plant.describe();
-    out["table3_failures"] = table_fail;
-    out["pass"] = pass;
     std::cout << out.dump(2) << "\n";
   } else {
     std::cout << "plant: " << f.plant.describe() << "\n";

@@ -30,9 +30,11 @@ void add_closed_loop_flags(CLI::App* sim, ClosedLoopCli& f);
 
 // Runs every job (name, request) in closed loop; prints the results table,
 // the paper's Table 3 layout for paper groups, and with compare the
-// controller comparison. Returns the exit code (0 pass, 1 fail, 2 bad input).
+// controller comparison; json_out: also write the JSON result to this file.
+// Returns the exit code (0 pass, 1 fail, 2 bad input).
 int run_closed_loop_cli(ClosedLoopCli f, const std::vector<std::pair<std::string, MoveRequest>>& jobs,
-                        const PulseTiming& timing, const std::string& engine, unsigned n_threads, bool json);
+                        const PulseTiming& timing, const std::string& engine, unsigned n_threads, bool json,
+                        const std::string& json_out = {});
 
 // Paper 000 Table 3 (hardware): max error, RMSE, relative error (%), per group.
 struct PaperRow {

@@ -146,7 +146,7 @@ int main(int argc, char** argv) {
   if (closed_loop.enabled || closed_loop.compare) {
     std::vector<std::pair<std::string, MoveRequest>> cl_jobs;
     for (const Job& j : jobs_list) cl_jobs.emplace_back(j.name, j.req);
-    return run_closed_loop_cli(closed_loop, cl_jobs, timing, engine, jobs, sf.json);
+    return run_closed_loop_cli(closed_loop, cl_jobs, timing, engine, jobs, sf.json, sf.json_out);
   }
   std::vector<Plan> plans;
   for (const Job& j : jobs_list) {

@@ -5,7 +5,8 @@ set -euo pipefail
 scurve=$1; src=$2; out=$(mktemp -d); trap 'rm -rf "$out"' EXIT
 move="--distance 1500 --v-start 0 --v-cruise 3000 --v-end 0 --a-max 20000 --j-max 400000"
 "$scurve" sim --closed-loop $move --engine lockstep --scenario "$src/tb/scenarios/nema23_1000line.json" \
-  --json --weights-csv "$out/w.csv" > "$out/r.json"
+  --json --weights-csv "$out/w.csv" --json-out "$out/r2.json" > "$out/r.json"
+cmp -s "$out/r.json" "$out/r2.json" || { echo "FAIL: --json-out differs from the printed JSON"; exit 1; }
 python3 - "$out/r.json" "$out/w.csv" <<'PY'
 import json, sys, csv
 r = json.load(open(sys.argv[1]))
