@@ -83,16 +83,12 @@ std::vector<std::string> split(const std::string& s, char sep) {
 
 }  // namespace
 
-struct KinTraceReader::File {
-  std::ifstream in;
-};
-
-KinTraceReader::KinTraceReader(const std::string& path) : in_(std::make_unique<File>()), path_(path) {
+KinTraceReader::KinTraceReader(const std::string& path) : path_(path) {
   if (!std::filesystem::is_regular_file(path)) throw std::runtime_error(fmt::format("{}: not a readable file", path));
-  in_->in.open(path);
-  if (!in_->in) throw std::runtime_error(fmt::format("{}: cannot read", path));
+  in_.open(path);
+  if (!in_) throw std::runtime_error(fmt::format("{}: cannot read", path));
   // Header: "# scurve-kin-trace v1 ..." then the column line.
-  while (columns_.empty() && std::getline(in_->in, line_)) {
+  while (columns_.empty() && std::getline(in_, line_)) {
     ++lineno_;
     if (line_.empty()) continue;
     if (line_[0] == '#') {
@@ -121,8 +117,6 @@ KinTraceReader::KinTraceReader(const std::string& path) : in_(std::make_unique<F
   if (columns_.empty()) throw std::runtime_error(fmt::format("{}: empty trace (no header)", path));
 }
 
-KinTraceReader::~KinTraceReader() = default;
-
 void KinTraceReader::parse_meta(const std::string& line) {
   for (const std::string& kv : split(line.substr(1), ' ')) {
     if (kv.empty()) continue;
@@ -150,7 +144,7 @@ void KinTraceReader::parse_meta(const std::string& line) {
 }
 
 bool KinTraceReader::next(uint64_t& clock, std::vector<std::string>& row) {
-  while (std::getline(in_->in, line_)) {
+  while (std::getline(in_, line_)) {
     ++lineno_;
     if (line_.empty()) continue;
     if (line_[0] == '#') {
@@ -177,7 +171,7 @@ bool KinTraceReader::next(uint64_t& clock, std::vector<std::string>& row) {
     have_row_ = true;
     return true;
   }
-  if (in_->in.bad()) throw std::runtime_error(fmt::format("{}: read error", path_));
+  if (in_.bad()) throw std::runtime_error(fmt::format("{}: read error", path_));
   return false;
 }
 

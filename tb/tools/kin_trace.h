@@ -9,7 +9,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <map>
-#include <memory>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -64,7 +64,6 @@ class KinTraceWriter {
 class KinTraceReader {
  public:
   explicit KinTraceReader(const std::string& path);
-  ~KinTraceReader();
   KinTraceReader(const KinTraceReader&) = delete;
   KinTraceReader& operator=(const KinTraceReader&) = delete;
 
@@ -80,8 +79,7 @@ class KinTraceReader {
 
  private:
   void parse_meta(const std::string& line);
-  struct File;
-  std::unique_ptr<File> in_;
+  std::ifstream in_;
   std::string path_;
   size_t lineno_ = 0;
   std::map<std::string, std::string> meta_;

@@ -42,8 +42,10 @@ double range_hi(const nlohmann::json& r, const char* key) { return r.at(key).at(
 
 }  // namespace
 
-std::vector<std::string> random_move_args(uint64_t seed, const nlohmann::json& raw_ranges) {
-  const nlohmann::json ranges = checked_ranges("ranges", raw_ranges);
+namespace {
+
+// The move of a seed from ranges already checked (checked_ranges).
+std::vector<std::string> random_move_from(uint64_t seed, const nlohmann::json& ranges) {
   std::mt19937_64 rng(seed);
   const double max_clocks = ranges.at("max_clocks").get<double>();  // keep each run short
   for (int attempt = 0; attempt < 1000; ++attempt) {
@@ -64,6 +66,12 @@ std::vector<std::string> random_move_args(uint64_t seed, const nlohmann::json& r
             r.kind == ProfileKind::Trapezoid ? "trapezoid" : "scurve"};
   }
   throw std::runtime_error(fmt::format("seed {}: no plannable random move in 1000 draws", seed));
+}
+
+}  // namespace
+
+std::vector<std::string> random_move_args(uint64_t seed, const nlohmann::json& ranges) {
+  return random_move_from(seed, checked_ranges("ranges", ranges));
 }
 
 namespace {
@@ -222,7 +230,7 @@ std::vector<TestCase> expand_list(const nlohmann::json& list, const std::vector<
         TestCase t = base;
         t.seed = s;
         t.name = fmt::format("{}.s{}", base.entry, s);
-        t.argv = bench_cmd(t.name, random_move_args(s, ranges));
+        t.argv = bench_cmd(t.name, random_move_from(s, ranges));  // ranges checked once above
         expanded.push_back(t);
       }
     } else if (base.kind == "command") {
