@@ -10,6 +10,7 @@ pkgs=(
   libgtest-dev googletest libbenchmark-dev
   zlib1g-dev
   python3-matplotlib
+  tcl procps
 )
 missing=()
 for p in "${pkgs[@]}"; do
