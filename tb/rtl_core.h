@@ -30,7 +30,9 @@ class RtlCore {
   // One clock with the inputs of the previous step() held.
   void tick();
 
-  // FST waveform (needs the tracing build); dumps clocks in [from, to).
+  // FST waveform (needs the tracing build) of the clocks in [from, to);
+  // trace_close() leaves it whole at its path or throws input::Error (an
+  // unclosed waveform is not kept).
   bool trace_supported() const;
   void trace_open(const std::string& path, uint64_t from_clock, uint64_t to_clock);
   void trace_close();

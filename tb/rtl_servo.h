@@ -25,6 +25,7 @@ class RtlServo {
   void step(const ServoInputs& in);
   ServoOutputs outputs() const;
 
+  // As RtlCore's: trace_close() or no file.
   bool trace_supported() const;
   void trace_open(const std::string& path, uint64_t from_clock, uint64_t to_clock);
   void trace_close();

@@ -17,6 +17,7 @@
 #include <thread>
 
 #include "closed_loop_cli.h"
+#include "fst_flags.h"
 #include "planner.h"
 #include "report.h"
 #include "scurve/cli/host_commands.h"
@@ -99,22 +100,27 @@ int main(int argc, char** argv) {
   std::vector<CLI::Option*> sim_opts;
   std::vector<int> groups;
   std::string engine = "lockstep";
-  std::string fst;
-  uint64_t fst_from = 0, fst_to = UINT64_MAX;
+  FstFlags fst;
   unsigned jobs = std::max(1u, std::thread::hardware_concurrency());
   CLI::App* sim_cmd = app.add_subcommand("sim", "run a move on the RTL and the model in lockstep");
   scurve::cli::add_move_flags(sim_cmd, sf, &sim_opts);
   scurve::cli::add_clock_flag(sim_cmd, sf);
   scurve::cli::add_output_flags(sim_cmd, sf);
-  auto* gopt = sim_cmd->add_option("--group", groups, "paper 000 Table 2 group(s) 1..4 (L=30000, a=500, j=2500)")
-                   ->check(CLI::Range(1, 4));
+  auto* gopt = sim_cmd->add_option_function<std::vector<std::string>>(
+      "--group",
+      [&groups](const std::vector<std::string>& v) {
+        try {
+          for (const std::string& g : v) groups.push_back(int(input::parse_int("group", g, 1, 4)));
+        } catch (const input::Error& e) {
+          throw CLI::ValidationError(e.what());
+        }
+      },
+      "paper 000 Table 2 group(s) 1..4 (L=30000, a=500, j=2500)");
   for (CLI::Option* o : sim_opts) gopt->excludes(o);
   sim_cmd->add_option("--engine", engine, "lockstep | rtl | model | model-fast")
       ->check(CLI::IsMember({"lockstep", "rtl", "model", "model-fast"}));
-  sim_cmd->add_option("--fst", fst, "write an FST waveform of the RTL (tracing build)");
-  sim_cmd->add_option("--fst-from", fst_from, "first clock to trace");
-  sim_cmd->add_option("--fst-to", fst_to, "clock after the last one to trace");
-  sim_cmd->add_option("--jobs", jobs, "parallel runs (default: cores)")->check(CLI::Range(1, 64));
+  add_fst_flags(sim_cmd, fst, "the RTL (engines lockstep, rtl)");
+  scurve::cli::int_flag(sim_cmd, "--jobs", jobs, 1, 64, "parallel runs (default: cores)");
   ClosedLoopCli closed_loop;  // --closed-loop and its plant/controller flags (tb/closed_loop_cli.h)
   add_closed_loop_flags(sim_cmd, closed_loop);
 
@@ -135,13 +141,22 @@ int main(int argc, char** argv) {
   if (!groups.empty()) {
     for (int g : groups) jobs_list.push_back({paper_group_name(g), paper_group(g)});
   } else {
+    if (std::string e = scurve::cli::check_move_flags(sf); !e.empty()) return bad_input(e + "; or give --group 1..4");
     jobs_list.push_back({"move", scurve::cli::to_request(sf)});
+  }
+  if (std::string e = fst.resolve(); !e.empty()) return bad_input(e);
+  if (!fst.path.empty() && jobs_list.size() != 1) return bad_input("--fst: trace one run at a time (one --group)");
+  if (!fst.path.empty() && (engine == "model" || engine == "model-fast")) {
+    return bad_input(fmt::format("fst={}: --engine {} runs no RTL to trace (use lockstep or rtl)", fst.path, engine));
   }
   const PulseTiming timing = to_model(scurve::cli::to_timing(sf));
   if (std::string e = scurve::cli::check_clock_flag(sf.clock_hz); !e.empty()) return bad_input(e);
   const scurve::Clock clock = scurve::cli::to_clock(sf);
   if (clock != model_clock() && (closed_loop.enabled || closed_loop.compare)) {
     return bad_input(fmt::format("--clock-hz={}: the closed-loop bench runs at the model's {} Hz", sf.clock_hz, ClkHz));
+  }
+  if ((closed_loop.enabled || closed_loop.compare) && !fst.path.empty()) {
+    return bad_input("--fst: the closed-loop bench writes no waveform");
   }
   if (closed_loop.enabled || closed_loop.compare) {
     std::vector<std::pair<std::string, MoveRequest>> cl_jobs;
@@ -159,12 +174,12 @@ int main(int argc, char** argv) {
                : engine == "model" ? SimEngine::ModelOnly
                : engine == "model-fast" ? SimEngine::ModelFast
                                         : SimEngine::Lockstep;
-  if (!fst.empty() && jobs_list.size() != 1) return bad_input("--fst: trace one run at a time");
-  opt.fst_path = fst;
-  opt.fst_from = fst_from;
-  opt.fst_to = fst_to;
+  opt.fst_path = fst.path;
+  opt.fst_from = fst.from;
+  opt.fst_to = fst.to;
 
   std::vector<SimResult> results(jobs_list.size());
+  std::vector<std::string> output_errors(jobs_list.size());  // an output file that could not be written
   Progress progress(jobs_list.size());
   std::atomic<size_t> next{0};
   auto worker = [&]() {
@@ -174,6 +189,8 @@ int main(int argc, char** argv) {
       try {
         results[i] = run_move(plans[i], timing, at_model_clock(limits_of(jobs_list[i].req, plans[i].v_end_used), clock),
                               o);
+      } catch (const input::Error& e) {
+        output_errors[i] = e.what();
       } catch (const std::exception& e) {
         results[i].failures.push_back(e.what());
       }
@@ -185,6 +202,9 @@ int main(int argc, char** argv) {
   for (unsigned t = 0; t < std::min<size_t>(jobs, jobs_list.size()); ++t) pool.emplace_back(worker);
   for (auto& t : pool) t.join();
   progress.done();
+  for (const std::string& e : output_errors) {
+    if (!e.empty()) return bad_input(e);
+  }
 
   bool pass = true;
   for (const SimResult& r : results) pass = pass && r.pass();

@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "rtl_core.h"
+#include "scurve/cli/user_input.h"
 
 namespace sc {
 
@@ -93,6 +94,9 @@ SimResult run_move(const Plan& plan, const PulseTiming& timing, const Limits4Che
   const bool use_model = opt.engine != SimEngine::RtlOnly;
 
   std::unique_ptr<RtlCore> rtl;
+  if (!opt.fst_path.empty() && !use_rtl) {
+    throw input::Error("fst", opt.fst_path, fmt::format("engine {} runs no RTL to trace", engine_name(opt.engine)));
+  }
   if (use_rtl) {
     rtl = std::make_unique<RtlCore>();
     if (!opt.fst_path.empty()) rtl->trace_open(opt.fst_path, opt.fst_from, opt.fst_to);
@@ -195,6 +199,7 @@ SimResult run_move(const Plan& plan, const PulseTiming& timing, const Limits4Che
   for (uint64_t i = 0; i < tail && !stopped; ++i) tick(in, true);
   out = *cur;
   pins.finish(clock);
+  if (rtl) rtl->trace_close();
   res.total_clocks = clock;
   res.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   res.clocks_per_s = res.wall_s > 0 ? double(clock) / res.wall_s : 0;

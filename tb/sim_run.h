@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "fst_output.h"
 #include "lockstep.h"
 #include "pin_monitor.h"
 #include "planner.h"
@@ -25,8 +26,8 @@ const char* engine_name(SimEngine e);
 struct SimOptions {
   SimEngine engine = SimEngine::Lockstep;
   uint64_t tail_clocks = 0;  // 0: automatic (covers the longest pulse timing)
-  std::string fst_path;      // RTL waveform (tracing build only)
-  uint64_t fst_from = 0, fst_to = UINT64_MAX;
+  std::string fst_path;      // RTL waveform (tracing build only); input::Error when unwritable
+  uint64_t fst_from = 0, fst_to = kDefaultFstWindow;
   size_t max_mismatches = 1;
   std::function<void(double)> progress;  // fraction done, every ~16 M clocks
 };

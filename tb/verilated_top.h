@@ -14,6 +14,7 @@
 #include <string>
 
 #include "fixed_point.h"
+#include "fst_output.h"
 #include "profile_exec.h"
 
 // VM_TRACE_FST is defined (0/1) only inside the target verilate() built.
@@ -35,7 +36,7 @@ class VerilatedTop {
     m_.eval();
   }
   ~VerilatedTop() {
-    trace_close();
+    trace_abandon();
     m_.final();
   }
   VerilatedTop(const VerilatedTop&) = delete;
@@ -45,13 +46,16 @@ class VerilatedTop {
   const V& top() const { return m_; }
   uint64_t clock() const { return clock_; }
 
-  // Hold rst_ni low for `cycles` clocks, then release it.
+  // Hold rst_ni low for `cycles` clocks, then release it. Reset clocks are
+  // not counted (clock 0 is the first after reset) nor traced.
   void reset(int cycles) {
     m_.rst_ni = 0;
+    in_reset_ = true;
     for (int i = 0; i < cycles; ++i) {
       edge(1);
       edge(0);
     }
+    in_reset_ = false;
     m_.rst_ni = 1;
   }
   // One clock with the inputs as driven now.
@@ -62,39 +66,58 @@ class VerilatedTop {
   }
 
   static constexpr bool trace_supported() { return SC_VERILATED_FST != 0; }
-  // FST waveform of the clocks in [from_clock, to_clock), times in ns.
-  void trace_open(const std::string& path, uint64_t from_clock, uint64_t to_clock) {
+  // FST waveform of the clocks in [from_clock, to_clock), times in ns,
+  // written to `path` when trace_close() finds it whole. `param` names the
+  // user's flag in error messages (input::Error).
+  void trace_open(const std::string& path, uint64_t from_clock, uint64_t to_clock, const std::string& param = "fst") {
 #if SC_VERILATED_FST
+    out_ = std::make_unique<FstOutput>(param, path);
     ctx_->traceEverOn(true);
     ctx_->timeunit(-9);
     ctx_->timeprecision(-9);
     fst_ = std::make_unique<VerilatedFstC>();
     m_.trace(fst_.get(), 99);
-    fst_->open(path.c_str());
+    fst_->open(out_->part_path().c_str());
+    if (!fst_->isOpen()) {
+      fst_.reset();
+      out_->creation_failed();
+    }
     trace_from_ = from_clock;
     trace_to_ = to_clock;
 #else
     (void)path;
     (void)from_clock;
     (void)to_clock;
-    throw std::runtime_error("FST tracing needs the tracing build of this top");
+    throw std::runtime_error(param + ": FST tracing needs the tracing build of this top");
 #endif
   }
+  // Ends the waveform: the file appears whole at its path, or input::Error
+  // says why not (and nothing is left behind).
   void trace_close() {
 #if SC_VERILATED_FST
     if (fst_) {
       fst_->close();
       fst_.reset();
+      std::unique_ptr<FstOutput> out = std::move(out_);
+      out->commit();
     }
 #endif
   }
 
  private:
+  // A run that ends early (an exception) leaves no waveform behind.
+  void trace_abandon() noexcept {
+#if SC_VERILATED_FST
+    if (fst_) fst_->close();
+    fst_.reset();
+    out_.reset();
+#endif
+  }
   void edge(int clk) {
     m_.clk_i = uint8_t(clk);
     m_.eval();
 #if SC_VERILATED_FST
-    if (fst_ && clock_ >= trace_from_ && clock_ < trace_to_) [[unlikely]] {
+    if (fst_ && !in_reset_ && clock_ >= trace_from_ && clock_ < trace_to_) [[unlikely]] {
       fst_->dump(clock_ * 50 + (clk ? 0 : 25));  // ns at 20 MHz
     }
 #endif
@@ -102,10 +125,12 @@ class VerilatedTop {
   std::unique_ptr<VerilatedContext> ctx_;
   V m_;
 #if SC_VERILATED_FST
+  std::unique_ptr<FstOutput> out_;
   std::unique_ptr<VerilatedFstC> fst_;
   uint64_t trace_from_ = 0, trace_to_ = 0;
 #endif
   uint64_t clock_ = 0;
+  bool in_reset_ = false;
 };
 
 // Write `width` bits of v at bit `lsb` of a Verilated wide port (32-bit words).

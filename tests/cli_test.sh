@@ -42,6 +42,18 @@ check_bad "pulse-high=010" regs --distance 100 --v-cruise 100 --a-max 500 --j-ma
 check_bad "v-start=0x10" plan --distance 100 --v-start 0x10 --v-cruise 100 --a-max 500 --j-max 2500
 check_bad "v-cruise=nan" plan --distance 100 --v-cruise nan --a-max 500 --j-max 2500
 check_bad "v_start=200000.0001" plan --distance 100 --v-start 200000.0001 --v-cruise 1000 --a-max 1000 --j-max 10000
+# Missing or meaningless flags are named, not defaulted or ignored.
+check_bad "distance: required" plan --v-cruise 100 --a-max 500 --j-max 2500
+check_bad "distance: required" sim --v-cruise 100 --a-max 500 --j-max 2500
+check_bad "v-start='': required" plan --distance 100 --v-start "" --v-cruise 100 --a-max 500 --j-max 2500
+check_bad "jerks" plan --distance 100 --v-cruise 100 --a-max 500 --profile trapezoid --jerks 1 2 3 4
+check_bad "frob: unknown command (commands: plan" frob
+check_bad "group=010" sim --group 010
+check_bad "jobs=0x2" sim --group 1 --jobs 0x2
+check_bad "clock-hz=0x10" plan --distance 100 --v-cruise 100 --a-max 500 --j-max 2500 --clock-hz 0x10
+check_bad "context=-1" diff a.csv b.csv --context -1
+check_bad "shard=01" regress --shard 01/2 --list-only
+check_bad "json-out=$tmp: is a directory" plan --distance 100 --v-cruise 100 --a-max 500 --j-max 2500 --json-out "$tmp"
 
 # --json-out: regs writes its JSON too; a failed write (file-size limit) is
 # exit 2 and leaves no partial file.

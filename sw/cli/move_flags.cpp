@@ -11,32 +11,18 @@ namespace scurve::cli {
 
 namespace {
 
-// Every number on the command line goes through the validation layer
-// (decimal notation, finite, integer, range); CLI11 reports its message
-// (exit 2). Ranges of the move itself are the planner's, checked there.
+// Ranges of the move itself are the planner's, checked there.
 constexpr double kAnyReal = 1e300;
 
-CLI::Option* real_flag(CLI::App* app, const char* flag, double& target, const char* what) {
-  return app->add_option_function<std::string>(
-      flag,
-      [&target, flag](const std::string& v) {
-        try {
-          target = input::parse_real(flag + 2, v, -kAnyReal, kAnyReal);
-        } catch (const input::Error& e) {
-          throw CLI::ValidationError(e.what());
-        }
-      },
-      what)
-      ->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
-}
+}  // namespace
 
-template <typename T>
-CLI::Option* int_flag(CLI::App* app, const char* flag, T& target, int64_t lo, int64_t hi, const std::string& what) {
+CLI::Option* real_flag(CLI::App* app, const char* flag, double& target, const std::string& what, double lo,
+                       double hi) {
   return app->add_option_function<std::string>(
       flag,
       [&target, flag, lo, hi](const std::string& v) {
         try {
-          target = T(input::parse_int(flag + 2, v, lo, hi));
+          target = input::parse_real(flag + 2, v, lo, hi);
         } catch (const input::Error& e) {
           throw CLI::ValidationError(e.what());
         }
@@ -45,13 +31,27 @@ CLI::Option* int_flag(CLI::App* app, const char* flag, T& target, int64_t lo, in
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
 }
 
-}  // namespace
+CLI::Option* output_file_flag(CLI::App* app, const char* flag, std::string& target, const std::string& what) {
+  return app->add_option_function<std::string>(
+      flag,
+      [&target, flag](const std::string& v) {
+        try {
+          input::output_path(flag + 2, v);
+        } catch (const input::Error& e) {
+          throw CLI::ValidationError(e.what());
+        }
+        target = v;
+      },
+      what)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
+}
 
 void add_move_flags(CLI::App* app, MoveFlags& f, std::vector<CLI::Option*>* move_opts) {
   std::vector<CLI::Option*> opts;
   const int64_t max_distance = PlannerLimits::kMaxDistance;
   opts.push_back(int_flag(app, "--distance", f.distance, -max_distance, max_distance,
                           "move length in pulses (sign = direction)"));
+  opts.back()->each([&f](const std::string&) { f.distance_given = true; });
   opts.push_back(real_flag(app, "--v-start", f.v_start, "start speed, pulses/s"));
   opts.push_back(real_flag(app, "--v-cruise", f.v_cruise, "cruise speed, pulses/s"));
   opts.push_back(real_flag(app, "--v-end", f.v_end, "end speed, pulses/s"));
@@ -81,14 +81,15 @@ void add_move_flags(CLI::App* app, MoveFlags& f, std::vector<CLI::Option*>* move
 }
 
 void add_clock_flag(CLI::App* app, MoveFlags& f) {
-  app->add_option("--clock-hz", f.clock_hz,
-                  fmt::format("system clock of the board, Hz ({:.0f}..{:.0f}; default {:.0f})", Clock::kMinHz,
-                              Clock::kMaxHz, Clock::kDefaultHz));
+  real_flag(app, "--clock-hz", f.clock_hz,
+            fmt::format("system clock of the board, Hz ({:.0f}..{:.0f}; default {:.0f})", Clock::kMinHz, Clock::kMaxHz,
+                        Clock::kDefaultHz),
+            Clock::kMinHz, Clock::kMaxHz);
 }
 
 void add_output_flags(CLI::App* app, MoveFlags& f) {
   app->add_flag("--json", f.json, "print one JSON object");
-  app->add_option("--json-out", f.json_out, "also write the JSON object to this file");
+  output_file_flag(app, "--json-out", f.json_out, "also write the JSON object to this file");
 }
 
 MoveRequest to_request(const MoveFlags& f) {
@@ -115,6 +116,14 @@ PulseTiming to_timing(const MoveFlags& f) {
 }
 
 Clock to_clock(const MoveFlags& f) { return Clock{f.clock_hz}; }
+
+std::string check_move_flags(const MoveFlags& f) {
+  if (!f.distance_given) return "--distance: required (the move length in pulses, sign = direction)";
+  if (!f.jerks.empty() && f.profile != "scurve") {
+    return fmt::format("--jerks: the four jerks shape an S-curve; --profile={} has none", f.profile);
+  }
+  return {};
+}
 
 std::string check_clock_flag(double hz) {
   if (!std::isfinite(hz) || !(hz > 0)) {
@@ -144,6 +153,13 @@ std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv) {
   } catch (const CLI::CallForAllHelp& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
+    // "scurve frob": name the word and the commands there are, not only
+    // that one is required.
+    if (app.get_require_subcommand_min() > 0 && app.get_subcommands().empty() && argc > 1 && argv[1][0] != '-') {
+      std::string known;
+      for (const CLI::App* sub : app.get_subcommands({})) known += (known.empty() ? "" : ", ") + sub->get_name();
+      return bad_input(fmt::format("{}: unknown command (commands: {})", argv[1], known));
+    }
     return bad_input(e.what());
   }
   return std::nullopt;

@@ -5,6 +5,10 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <filesystem>
+#include <system_error>
+
+#include <unistd.h>
 
 namespace scurve::input {
 
@@ -151,6 +155,24 @@ void json_known_keys(const std::string& param, const nlohmann::json& obj, const 
 
 void json_known_keys(const std::string& param, const nlohmann::json& obj, std::initializer_list<std::string_view> allowed) {
   json_known_keys(param, obj, std::vector<std::string_view>(allowed));
+}
+
+void output_path(const std::string& param, const std::string& path) {
+  namespace fs = std::filesystem;
+  if (path.empty()) throw Error(param, "''", "required: a file name");
+  std::error_code ec;
+  const fs::file_status st = fs::status(path, ec);
+  if (fs::exists(st) && !fs::is_regular_file(st)) {
+    throw Error(param, path, fs::is_directory(st) ? "is a directory, not a file" : "exists and is not a regular file");
+  }
+  fs::path dir = fs::path(path).parent_path();
+  if (dir.empty()) dir = ".";
+  const fs::file_status dst = fs::status(dir, ec);
+  if (!fs::exists(dst)) throw Error(param, path, "directory " + dir.string() + " does not exist");
+  if (!fs::is_directory(dst)) throw Error(param, path, dir.string() + " is not a directory");
+  // The file is written as "<path>.part" and renamed: both need the directory writable.
+  if (::access(dir.c_str(), W_OK | X_OK) != 0) throw Error(param, path, "directory " + dir.string() + " is not writable");
+  if (fs::exists(st) && ::access(path.c_str(), W_OK) != 0) throw Error(param, path, "file is not writable");
 }
 
 }  // namespace scurve::input

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "axis_core.h"
+#include "fst_flags.h"
 #include "kin_trace.h"
 #include "lockstep.h"
 #include "model_fst.h"
@@ -155,10 +156,12 @@ class OpenLoopPlant : public Plant {
 // ---- traces -------------------------------------------------------------------
 class KinTracer : public Tracer {
  public:
-  explicit KinTracer(const BenchOptions& o) {
+  explicit KinTracer(const BenchOptions& o) : opt_(o) {
     if (!o.trace_rtl.empty()) rtl_ = std::make_unique<KinTraceWriter>(o.trace_rtl, "rtl", o.trace_decimate);
     if (!o.trace_model.empty()) model_ = std::make_unique<KinTraceWriter>(o.trace_model, "model", o.trace_decimate);
-    if (!o.fst_model_path.empty()) fst_ = std::make_unique<ModelFstWriter>(o.fst_model_path, o.fst_from, o.fst_to);
+    if (!o.fst_model_path.empty()) {
+      fst_ = std::make_unique<ModelFstWriter>("fst-model", o.fst_model_path, o.fst_from, o.fst_to);
+    }
   }
   void on_clock(uint64_t clock, const CoreOutputs& rtl, const CoreOutputs& model) override {
     if (rtl_) rtl_->on_clock(clock, rtl);
@@ -166,12 +169,22 @@ class KinTracer : public Tracer {
     if (fst_) fst_->on_clock(clock, model);
   }
   void close(uint64_t end_clock) override {
-    if (rtl_) rtl_->close(end_clock);
-    if (model_) model_->close(end_clock);
+    // The trace writers say what failed; the message names the flag.
+    auto close_trace = [end_clock](std::unique_ptr<KinTraceWriter>& w, const char* flag, const std::string& path) {
+      if (!w) return;
+      try {
+        w->close(end_clock);
+      } catch (const std::runtime_error& e) {
+        throw input::Error(flag, path, e.what());
+      }
+    };
+    close_trace(rtl_, "trace-rtl", opt_.trace_rtl);
+    close_trace(model_, "trace-model", opt_.trace_model);
     if (fst_) fst_->close(end_clock);
   }
 
  private:
+  const BenchOptions& opt_;
   std::unique_ptr<KinTraceWriter> rtl_, model_;
   std::unique_ptr<ModelFstWriter> fst_;
 };
@@ -262,6 +275,15 @@ class BenchRunImpl : public BenchRun {
   Tracer* tracer() override { return tracer_.get(); }
   const Stimulus& stimulus() const override { return stimulus_; }
   int report(const RunStats& st) override;
+  int close_outputs(uint64_t end_clock, Core* rtl) override {
+    try {
+      if (rtl) rtl->close_outputs();
+      if (tracer_) tracer_->close(end_clock);
+    } catch (const std::exception& e) {
+      return scurve::cli::bad_input(e.what());
+    }
+    return 0;
+  }
 
  private:
   BenchOptions opt_;
@@ -426,33 +448,44 @@ std::unique_ptr<BenchRun> BenchRun::from_args(int argc, char** argv, bool batche
   BenchOptions opt;
   int group = 0;
   scurve::cli::MoveFlags move;  // the move flags of `scurve plan` / `scurve sim`
-  app.add_option("--group", group, "paper 000 Table 2 group 1..4 (L=30000, a=500, j=2500)")->check(CLI::Range(1, 4));
+  using scurve::cli::int_flag;
+  using scurve::cli::output_file_flag;
+  constexpr int64_t kMaxClocks = int64_t(1) << 40;
+  int_flag(&app, "--group", group, 1, 4, "paper 000 Table 2 group 1..4 (L=30000, a=500, j=2500)");
   std::vector<CLI::Option*> move_opts;
   scurve::cli::add_move_flags(&app, move, &move_opts);
   app.add_option("--name", opt.name, "run name in the report");
   app.add_flag("--json", opt.json, "print one JSON object");
-  app.add_option("--trace-rtl", opt.trace_rtl, "kinematics trace (CSV) of the RTL");
-  app.add_option("--trace-model", opt.trace_model, "kinematics trace (CSV) of the model");
-  app.add_option("--trace-decimate", opt.trace_decimate, "sample the reference every N clocks (pins: every change)")
-      ->check(CLI::Range(uint64_t(1), uint64_t(1) << 40));
+  output_file_flag(&app, "--trace-rtl", opt.trace_rtl, "kinematics trace (CSV) of the RTL");
+  output_file_flag(&app, "--trace-model", opt.trace_model, "kinematics trace (CSV) of the model");
+  int_flag(&app, "--trace-decimate", opt.trace_decimate, 1, kMaxClocks,
+           "sample the reference every N clocks (pins: every change)");
+  FstFlags fst;
   if (batched) {
-    app.add_option("--quantum", opt.quantum, "clocks per SystemC wait() (temporal decoupling)")
-        ->check(CLI::Range(uint64_t(1), uint64_t(1) << 40));
-    app.add_option("--sync-period", opt.sync_period, "quanta end on multiples of this many clocks (control period)")
-        ->check(CLI::Range(uint64_t(1), uint64_t(1) << 40));
-    app.add_option("--fst", opt.fst_path, "FST waveform of the RTL (GTKWave)");
-    app.add_option("--fst-model", opt.fst_model_path, "FST of the model's outputs (RTL port names, same window)");
-    app.add_option("--fst-from", opt.fst_from, "first clock in the waveform");
-    app.add_option("--fst-to", opt.fst_to, "clock after the last one in the waveform");
-    app.add_option("--max-mismatches", opt.max_mismatches, "stop after this many mismatching signals")
-        ->check(CLI::Range(size_t(1), size_t(1) << 30));
-    app.add_option("--inject-model-fault", opt.inject_model_fault,
-                   "test hook: add 1 to the model's pulse counter after this clock");
+    int_flag(&app, "--quantum", opt.quantum, 1, kMaxClocks, "clocks per SystemC wait() (temporal decoupling)");
+    int_flag(&app, "--sync-period", opt.sync_period, 1, kMaxClocks,
+             "quanta end on multiples of this many clocks (control period)");
+    add_fst_flags(&app, fst, "the RTL");
+    output_file_flag(&app, "--fst-model", opt.fst_model_path, "FST of the model's outputs (RTL port names, same window)");
+    int_flag(&app, "--max-mismatches", opt.max_mismatches, 1, int64_t(1) << 30,
+             "stop after this many mismatching signals");
+    int_flag(&app, "--inject-model-fault", opt.inject_model_fault, 0, kMaxClocks,
+             "test hook: add 1 to the model's pulse counter after this clock");
   }
   if (const auto rc = scurve::cli::parse_command_line(app, argc, argv)) {
     *exit_code = *rc;
     return nullptr;
   }
+  // --fst-model shares the window of --fst and works without it.
+  const std::string fst_path = fst.path;
+  if (fst.path.empty() && !opt.fst_model_path.empty()) fst.path = opt.fst_model_path;
+  if (const std::string e = fst.resolve(); !e.empty()) {
+    *exit_code = scurve::cli::bad_input(e);
+    return nullptr;
+  }
+  opt.fst_path = fst_path;
+  opt.fst_from = fst.from;
+  opt.fst_to = fst.to;
   std::string name = opt.name;
   MoveRequest req = scurve::cli::to_request(move);
   if (group) {
@@ -466,9 +499,8 @@ std::unique_ptr<BenchRun> BenchRun::from_args(int argc, char** argv, bool batche
     req = paper_group(group);
     if (name.empty()) name = paper_group_name(group);
   } else {
-    if (req.distance == 0) {
-      std::fprintf(stderr, "error: --distance: give a move (or --group 1..4)\n");
-      *exit_code = 2;
+    if (const std::string e = scurve::cli::check_move_flags(move); !e.empty()) {
+      *exit_code = scurve::cli::bad_input(e + "; or give --group 1..4");
       return nullptr;
     }
     if (name.empty()) name = "move";
@@ -488,8 +520,14 @@ std::unique_ptr<BenchRun> BenchRun::from_args(int argc, char** argv, bool batche
   if (req.kind == ProfileKind::SCurve) {
     lim.j_max = req.jerks ? std::max({(*req.jerks)[0], (*req.jerks)[1], (*req.jerks)[2], (*req.jerks)[3]}) : req.j_max;
   }
-  *exit_code = 0;
-  return std::make_unique<BenchRunImpl>(opt, name, std::move(plan), t, lim);
+  try {
+    auto run = std::make_unique<BenchRunImpl>(opt, name, std::move(plan), t, lim);
+    *exit_code = 0;
+    return run;
+  } catch (const std::exception& e) {  // an output file that cannot be created
+    *exit_code = scurve::cli::bad_input(e.what());
+    return nullptr;
+  }
 }
 
 }  // namespace sc::bench

@@ -15,6 +15,8 @@
 #include <memory>
 #include <string>
 
+#include "fst_output.h"
+
 namespace sc {
 struct CoreInputs;
 struct CoreOutputs;
@@ -37,6 +39,9 @@ class Core {
   virtual bool done() const = 0;
   virtual uint32_t phase() const = 0;
   virtual int32_t pulse_count() const = 0;
+  // Ends the run's output files (an FST waveform): each is whole at its path
+  // or this throws input::Error naming its flag. Called outside SystemC.
+  virtual void close_outputs() {}
 };
 
 // The lockstep scoreboard: every output of the RTL compared every clock with
@@ -72,6 +77,8 @@ class Tracer {
  public:
   virtual ~Tracer() = default;
   virtual void on_clock(uint64_t clock, const CoreOutputs& rtl, const CoreOutputs& model) = 0;
+  // Each file whole at its path, or input::Error naming its flag (the bench
+  // calls this after sc_start returns, never from inside a process).
   virtual void close(uint64_t end_clock) = 0;
 };
 
@@ -122,7 +129,7 @@ struct BenchOptions {
   uint64_t quantum = 20000;     // clocks per SystemC wait()
   uint64_t sync_period = 2000;  // control period: quanta end on its multiples
   std::string fst_path;
-  uint64_t fst_from = 0, fst_to = UINT64_MAX;
+  uint64_t fst_from = 0, fst_to = kDefaultFstWindow;
   std::string fst_model_path;  // the model's outputs as FST, same window and port names
   std::string trace_rtl, trace_model;
   uint64_t trace_decimate = 20000;
@@ -152,6 +159,10 @@ class BenchRun {
   virtual const Stimulus& stimulus() const = 0;
   // Judges the run, prints the table or JSON; returns the exit code (0/1).
   virtual int report(const RunStats& stats) = 0;
+  // Closes the output files (traces, waveforms) of the run and of `rtl` (if
+  // any) after sc_start returned; 0, or 2 with one line on stderr when one
+  // of them could not be written whole.
+  virtual int close_outputs(uint64_t end_clock, Core* rtl) = 0;
 };
 
 }  // namespace sc::bench

@@ -144,7 +144,6 @@ class PinSequencer : public sc_core::sc_module {
     while (!stop_ && clock_ < tail_end) clock(in);
     total_clocks = clock_;
     plant_->finish(clock_);
-    if (trace_) trace_->close(clock_);
     sc_core::sc_stop();
   }
 
@@ -306,5 +305,8 @@ int sc_main(int argc, char** argv) {
   stats.syncs = seq.total_clocks;
   stats.reached_done = seq.reached_done;
   stats.last_rtl = &pins->outputs();
+  if (const int rc = run->close_outputs(stats.total_clocks, nullptr)) return rc;
   return run->report(stats);
 }
+
+int main(int argc, char** argv) { return run_systemc_main(argc, argv); }

@@ -12,7 +12,7 @@ class RtlCcCore : public Core {
   RtlCcCore(const std::string& fst, uint64_t from, uint64_t to) {
     if (!fst.empty()) rtl_.trace_open(fst, from, to);
   }
-  ~RtlCcCore() override { rtl_.trace_close(); }
+  void close_outputs() override { rtl_.trace_close(); }
   void reset(int cycles) override { rtl_.reset(cycles); }
   void step(const CoreInputs& in) override {
     rtl_.step(in);

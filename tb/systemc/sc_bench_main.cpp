@@ -84,7 +84,8 @@ int sc_main(int argc, char** argv) {
   stats.syncs = sequencer.syncs();
   stats.reached_done = sequencer.reached_done();
   stats.last_rtl = &rtl->outputs();
-  const int rc = run->report(stats);
-  rtl.reset();  // closes the FST
-  return rc;
+  if (const int rc = run->close_outputs(stats.total_clocks, rtl.get())) return rc;
+  return run->report(stats);
 }
+
+int main(int argc, char** argv) { return run_systemc_main(argc, argv); }

@@ -21,9 +21,13 @@ namespace sc::bench {
 
 // stdout carries the report (JSON for the regression runner): no banner, no
 // "simulation stopped" info line.
-inline void quiet_systemc() {
+inline void quiet_systemc() { sc_core::sc_report_handler::set_actions(sc_core::SC_INFO, sc_core::SC_DO_NOTHING); }
+
+// The benches' main(): libsystemc prints its banner before sc_main() runs,
+// which would add four lines to every one-line error.
+inline int run_systemc_main(int argc, char** argv) {
   setenv("SYSTEMC_DISABLE_COPYRIGHT_MESSAGE", "1", 0);
-  sc_core::sc_report_handler::set_actions(sc_core::SC_INFO, sc_core::SC_DO_NOTHING);
+  return sc_core::sc_elab_and_sim(argc, argv);
 }
 
 // ---- interfaces: each hands out its component for direct calls -------------------
@@ -223,7 +227,6 @@ class BatchSequencer : public sc_core::sc_module {
       sync();
     }
     plant_->finish(clock_);
-    if (trace_) trace_->close(clock_);
     sc_core::sc_stop();
   }
 

@@ -48,7 +48,8 @@ KinTraceWriter::~KinTraceWriter() {
 
 void KinTraceWriter::close(uint64_t end_clock) {
   if (!f_) return;
-  fmt::print(f_, "# end_clock={} rows={}\n", end_clock, rows_);
+  const std::string trailer = fmt::format("# end_clock={} rows={}\n", end_clock, rows_);
+  std::fwrite(trailer.data(), 1, trailer.size(), f_);
   const bool ok = std::fflush(f_) == 0 && !std::ferror(f_);
   const int err = errno;
   const bool closed = std::fclose(f_) == 0;
@@ -61,9 +62,14 @@ void KinTraceWriter::close(uint64_t end_clock) {
 }
 
 void KinTraceWriter::write_row(uint64_t clock, const CoreOutputs& o) {
-  fmt::print(f_, "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", clock, int(o.step), int(o.dir), int(o.en),
+  // Formatted in memory and written with fwrite, which does not throw: a
+  // failed write (a full disk) is found and reported by close(), outside
+  // whatever loop (a SystemC process) is running the clocks.
+  fmt::memory_buffer row;
+  fmt::format_to(std::back_inserter(row), "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", clock, int(o.step), int(o.dir), int(o.en),
              int(o.busy), int(o.done), int(o.phase), int(o.seg_idx), o.pulse_count, int(o.step_pending),
              o.ref_pos_int, to_string_i128(i128(o.ref_pos_frac)), to_string_i128(o.ref_vel), o.ref_acc, o.ref_jerk);
+  std::fwrite(row.data(), 1, row.size(), f_);
   ++rows_;
   last_ = o;
   have_last_ = true;

@@ -49,9 +49,10 @@ std::vector<std::string> values(const CoreOutputs& o) {
 
 }  // namespace
 
-ModelFstWriter::ModelFstWriter(const std::string& path, uint64_t from, uint64_t to) : from_(from), to_(to) {
-  ctx_ = fstWriterCreate(path.c_str(), 1);
-  if (!ctx_) throw std::runtime_error(fmt::format("cannot write FST {}", path));
+ModelFstWriter::ModelFstWriter(const std::string& param, const std::string& path, uint64_t from, uint64_t to)
+    : out_(std::make_unique<FstOutput>(param, path)), from_(from), to_(to) {
+  ctx_ = fstWriterCreate(out_->part_path().c_str(), 1);
+  if (!ctx_) out_->creation_failed();
   fstWriterSetTimescale(ctx_, -9);  // ns, as tb/rtl_core.cpp: 50 per 20 MHz clock
   fstWriterSetScope(ctx_, FST_ST_VCD_MODULE, "sc_axis_core", nullptr);
   for (const Port& p : kPorts) {
@@ -61,7 +62,9 @@ ModelFstWriter::ModelFstWriter(const std::string& path, uint64_t from, uint64_t 
   fstWriterSetUpscope(ctx_);
 }
 
-ModelFstWriter::~ModelFstWriter() { close(UINT64_MAX); }
+ModelFstWriter::~ModelFstWriter() {
+  if (ctx_) fstWriterClose(ctx_);  // not committed: out_ removes the file
+}
 
 void ModelFstWriter::write(uint64_t clock, const CoreOutputs& o) {
   const std::vector<std::string> v = values(o);
@@ -85,6 +88,7 @@ void ModelFstWriter::close(uint64_t end_clock) {
   if (!first_ && end != UINT64_MAX && end > from_) fstWriterEmitTimeChange(ctx_, (end - 1) * 50 + 25);
   fstWriterClose(ctx_);
   ctx_ = nullptr;
+  out_->commit();
 }
 
 }  // namespace sc

@@ -5,17 +5,20 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "axis_core.h"
+#include "fst_output.h"
 
 namespace sc {
 
 class ModelFstWriter {
  public:
   // Clocks in [from, to) are written (a value change only when it changes).
-  ModelFstWriter(const std::string& path, uint64_t from, uint64_t to);
+  // `param` names the user's flag in errors (input::Error).
+  ModelFstWriter(const std::string& param, const std::string& path, uint64_t from, uint64_t to);
   ~ModelFstWriter();
   ModelFstWriter(const ModelFstWriter&) = delete;
   ModelFstWriter& operator=(const ModelFstWriter&) = delete;
@@ -23,10 +26,13 @@ class ModelFstWriter {
   void on_clock(uint64_t clock, const CoreOutputs& o) {
     if (clock >= from_ && clock < to_) [[unlikely]] write(clock, o);
   }
+  // The waveform whole at its path, or input::Error; without close() the
+  // file is not written.
   void close(uint64_t end_clock);
 
  private:
   void write(uint64_t clock, const CoreOutputs& o);
+  std::unique_ptr<FstOutput> out_;
   void* ctx_ = nullptr;
   uint64_t from_, to_;
   std::vector<uint32_t> handles_;

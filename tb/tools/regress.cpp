@@ -260,12 +260,10 @@ std::vector<TestCase> expand_list(const nlohmann::json& list, const std::vector<
 }
 
 std::pair<int, int> parse_shard(const std::string& s) {
-  int i = 0, n = 0;
-  char slash = 0;
-  std::istringstream is(s);
-  if (!(is >> i >> slash >> n) || slash != '/' || n < 1 || i < 1 || i > n || !is.eof()) {
-    throw std::invalid_argument(fmt::format("--shard {}: expected i/n with 1 <= i <= n", s));
-  }
+  const size_t slash = s.find('/');
+  if (slash == std::string::npos) throw input::Error("shard", s, "expected i/n with 1 <= i <= n");
+  const int n = int(input::parse_int("shard", std::string_view(s).substr(slash + 1), 1, 1 << 20));
+  const int i = int(input::parse_int("shard", std::string_view(s).substr(0, slash), 1, n));
   return {i, n};
 }
 

@@ -41,19 +41,17 @@ std::shared_ptr<ToolCommands> add_tool_commands(CLI::App& app) {
   t->diff->add_option("a", t->diff_a, "first trace (.csv from --trace-rtl/--trace-model, or .fst)")->required();
   t->diff->add_option("b", t->diff_b, "second trace")->required();
   t->diff->add_option("--ignore", t->diff_opt.ignore, "signal to leave out (repeatable)");
-  t->diff->add_option("--context", t->diff_opt.context_rows, "rows/changes of context each side");
-  t->diff->add_option("--fst-ticks-per-clock", t->diff_opt.fst_ticks_per_clock,
-                      "FST time units per clock (tb/rtl_core.cpp writes 50)")
-      ->check(CLI::Range(uint64_t(1), uint64_t(1) << 40));
+  scurve::cli::int_flag(t->diff, "--context", t->diff_opt.context_rows, 0, 1000000,
+                        "rows/changes of context each side (default 3)");
+  scurve::cli::int_flag(t->diff, "--fst-ticks-per-clock", t->diff_opt.fst_ticks_per_clock, 1, int64_t(1) << 40,
+                        "FST time units per clock (the benches write 50: ns at 20 MHz)");
   t->diff->add_flag("--json", t->diff_json, "print the report as JSON");
 
   t->regress = app.add_subcommand("regress", "run a regression list in parallel; JUnit XML + JSON");
   // The last of repeated flags wins, so scripts/regress.sh's defaults can be overridden.
   const auto last = CLI::MultiOptionPolicy::TakeLast;
   t->regress->add_option("--list", t->list, "test list (default: the installed default list, share/scurve/regress_list.json next to bin/)")->multi_option_policy(last);
-  t->regress->add_option("--jobs", t->jobs, "parallel runs (default: cores)")
-      ->check(CLI::Range(1, 256))
-      ->multi_option_policy(last);
+  scurve::cli::int_flag(t->regress, "--jobs", t->jobs, 1, 256, "parallel runs (default: cores)");
   t->regress->add_option("--out-dir", t->out_dir, "results, logs, junit.xml, results.json")
       ->multi_option_policy(last);
   t->regress->add_option("--shard", t->shard, "run part i of n (i/n): tests k with k % n == i-1");

@@ -250,6 +250,8 @@ TEST(Regress, ShardsPartitionTheList) {
   EXPECT_THROW(regress::parse_shard("0/2"), std::invalid_argument);
   EXPECT_THROW(regress::parse_shard("3/2"), std::invalid_argument);
   EXPECT_THROW(regress::parse_shard("1-2"), std::invalid_argument);
+  EXPECT_THROW(regress::parse_shard("01/2"), std::invalid_argument);  // decimal only
+  EXPECT_THROW(regress::parse_shard("1/0x2"), std::invalid_argument);
 }
 
 TEST(Regress, CommandEntriesAreExtensible) {

@@ -9,12 +9,14 @@
 #include <string>
 #include <vector>
 
+#include "scurve/cli/user_input.h"
 #include "scurve/planner.h"
 
 namespace scurve::cli {
 
 struct MoveFlags {
   int64_t distance = 0;
+  bool distance_given = false;
   double v_start = 0, v_cruise = 0, v_end = 0, a_max = 0, j_max = 0;
   std::string profile = "scurve";
   std::vector<double> jerks;  // ts1 ts2 te1 te2
@@ -34,11 +36,36 @@ void add_clock_flag(CLI::App* app, MoveFlags& f);
 // --json, --json-out.
 void add_output_flags(CLI::App* app, MoveFlags& f);
 
+// Empty when the flags make a move; else one line naming the flag: a missing
+// --distance, --jerks without an S-curve.
+std::string check_move_flags(const MoveFlags& f);
 MoveRequest to_request(const MoveFlags& f);
 PulseTiming to_timing(const MoveFlags& f);
 Clock to_clock(const MoveFlags& f);
 // Empty if --clock-hz is usable, else one line naming the flag and the bound.
 std::string check_clock_flag(double hz);
+
+// Number flags read through the validation layer (decimal notation, finite,
+// integer, range); CLI11 reports its message (exit 2).
+CLI::Option* real_flag(CLI::App* app, const char* flag, double& target, const std::string& what,
+                       double lo = -1e300, double hi = 1e300);
+template <typename T>
+CLI::Option* int_flag(CLI::App* app, const char* flag, T& target, int64_t lo, int64_t hi, const std::string& what) {
+  return app
+      ->add_option_function<std::string>(
+          flag,
+          [&target, flag, lo, hi](const std::string& v) {
+            try {
+              target = T(input::parse_int(flag + 2, v, lo, hi));
+            } catch (const input::Error& e) {
+              throw CLI::ValidationError(e.what());
+            }
+          },
+          what)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
+}
+// A file the command writes, checked when parsed (input::output_path).
+CLI::Option* output_file_flag(CLI::App* app, const char* flag, std::string& target, const std::string& what);
 
 // One line "error: <msg>" on stderr; returns 2 (bad input).
 int bad_input(const std::string& msg);

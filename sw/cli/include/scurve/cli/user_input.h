@@ -45,6 +45,12 @@ const nlohmann::json& json_array(const std::string& param, const nlohmann::json&
 void json_known_keys(const std::string& param, const nlohmann::json& obj, std::initializer_list<std::string_view> allowed);
 void json_known_keys(const std::string& param, const nlohmann::json& obj, const std::vector<std::string_view>& allowed);
 
+// A file a tool is asked to write (--json-out, --fst, a trace): fails before
+// any work is done when it cannot be one: empty, an existing directory or
+// device (/dev/full), a missing or non-directory parent, an unwritable
+// directory. The file itself is not created.
+void output_path(const std::string& param, const std::string& path);
+
 // A JSON value as the user wrote it, shortened for one-line messages.
 std::string shown(const nlohmann::json& v);
 
