@@ -21,42 +21,86 @@
 
 namespace sc {
 
-namespace {
-
-// A plant setting a user can give: its flag, its scenario key, its range.
-struct PlantParam {
-  const char* flag;  // without "--"
-  const char* key;   // in a scenario's "plant" object
-  double lo, hi;
-  bool integer;
-  const char* what;
-  void (*set)(PlantConfig&, double);
-};
-
+// Plant settings: physical ranges of the model (tb/plant.h).
 const std::vector<PlantParam>& plant_params() {
+#define SC_GET(f) [](const PlantConfig& p) { return double(p.f); }
+#define SC_FIELD(f) [](PlantConfig& p, double v) { p.f = v; }, SC_GET(f)
   static const std::vector<PlantParam> params = {
-      {"f-n", "f_n", 0.1, 1e5, false, "rotor natural frequency, Hz", [](PlantConfig& p, double v) { p.f_n = v; }},
-      {"zeta", "zeta", 1e-3, 10, false, "rotor damping ratio", [](PlantConfig& p, double v) { p.zeta = v; }},
-      {"load-torque", "load_torque", 0, 100, false, "constant load torque, N m",
-       [](PlantConfig& p, double v) { p.load_torque = v; }},
-      {"inertia", "inertia", 1e-9, 10, false, "rotor + load inertia, kg m^2",
-       [](PlantConfig& p, double v) { p.inertia = v; }},
-      {"pulses-per-rev", "pulses_per_rev", 1, 1e7, false, "driver pulses per revolution",
-       [](PlantConfig& p, double v) { p.pulses_per_rev = v; }},
+      {"f-n", "f_n", 0.1, 1e5, false, "rotor natural frequency, Hz", SC_FIELD(f_n)},
+      {"zeta", "zeta", 1e-3, 10, false, "rotor damping ratio", SC_FIELD(zeta)},
+      {"load-torque", "load_torque", 0, 100, false, "constant load torque, N m", SC_FIELD(load_torque)},
+      {"inertia", "inertia", 1e-9, 10, false, "rotor + load inertia, kg m^2", SC_FIELD(inertia)},
+      {"pulses-per-rev", "pulses_per_rev", 1, 1e7, false, "driver pulses per revolution", SC_FIELD(pulses_per_rev)},
       {"counts-per-step", "counts_per_step", 1, 64, false, "encoder counts per pulse (power of 2)",
-       [](PlantConfig& p, double v) { p.counts_per_step = v; }},
-      {"tau", "tau", 1e-6, 100, false, "first-order plant time constant, s", [](PlantConfig& p, double v) { p.tau = v; }},
-      {"enc-noise", "noise_counts", 0, 1e6, false, "encoder position noise, sigma in counts",
-       [](PlantConfig& p, double v) { p.noise_counts = v; }},
-      {"enc-glitch-rate", "glitch_rate", 0, 1e7, false, "A/B glitches per second",
-       [](PlantConfig& p, double v) { p.glitch_rate = v; }},
+       SC_FIELD(counts_per_step)},
+      {"tau", "tau", 1e-6, 100, false, "first-order plant time constant, s", SC_FIELD(tau)},
+      {"enc-noise", "noise_counts", 0, 1e6, false, "encoder position noise, sigma in counts", SC_FIELD(noise_counts)},
+      {"enc-glitch-rate", "glitch_rate", 0, 1e7, false, "A/B glitches per second", SC_FIELD(glitch_rate)},
       {"enc-glitch-clocks", "glitch_clocks", 1, 65535, true, "glitch length, clocks",
-       [](PlantConfig& p, double v) { p.glitch_clocks = int(v); }},
+       [](PlantConfig& p, double v) { p.glitch_clocks = int(v); }, SC_GET(glitch_clocks)},
       {"plant-seed", "seed", 0, 9007199254740992.0, true, "noise/glitch seed",
-       [](PlantConfig& p, double v) { p.seed = uint64_t(v); }},
+       [](PlantConfig& p, double v) { p.seed = uint64_t(v); }, SC_GET(seed)},
   };
   return params;
+#undef SC_FIELD
+#undef SC_GET
 }
+
+// Controller settings: the ranges the register words hold (servo_config.h).
+// Ranges that also depend on another setting (the control rate, the
+// encoder's counts per pulse, the weight bounds' order) are checked
+// together by to_servo_config, with one message naming both.
+const std::vector<ControllerParam>& controller_params() {
+#define SC_FIELD(f) [](ControllerParams& c, double v) { c.f = v; }, [](const ControllerParams& c) { return double(c.f); }
+#define SC_INT_FIELD(f) [](ControllerParams& c, double v) { c.f = int(v); }, [](const ControllerParams& c) { return double(c.f); }
+  using namespace scurve;
+  const double pulses = max_pulses(1.0);  // the widest: one count per pulse
+  static const std::vector<ControllerParam> params = {
+      {"ctl-rate", "rate_hz", double(ClkHz) / kMaxControlDiv, double(ClkHz) / kMinControlDiv, false,
+       "control rate, Hz", SC_FIELD(rate_hz)},
+      {"k-p", "k_p", 0, kMaxCoef, false, "position neuron gain K_p, per control period", SC_FIELD(k_p)},
+      {"k-v", "k_v", 0, kMaxCoef, false, "speed neuron gain K_v, per control period", SC_FIELD(k_v)},
+      {"kb", "kb", 0, kMaxCoef, false, "back-calculation anti-windup gain Kb", SC_FIELD(kb)},
+      {"eta-p1", "eta_p1", 0, kMaxCoef, false, "learning rate, position loop, integral weight", SC_FIELD(eta_p1)},
+      {"eta-p2", "eta_p2", 0, kMaxCoef, false, "learning rate, position loop, proportional weight", SC_FIELD(eta_p2)},
+      {"eta-v1", "eta_v1", 0, kMaxCoef, false, "learning rate, speed loop, integral weight", SC_FIELD(eta_v1)},
+      {"eta-v2", "eta_v2", 0, kMaxCoef, false, "learning rate, speed loop, proportional weight", SC_FIELD(eta_v2)},
+      {"learn-shift", "learn_shift", 0, kMaxLearnShift, true, "Hebb scale 2^-n", SC_INT_FIELD(learn_shift)},
+      {"learn-dz-p", "learn_dz_p", 0, pulses, false, "no position learning while |e_p| <= this, pulses",
+       SC_FIELD(learn_dz_p)},
+      {"learn-dz-v", "learn_dz_v", 0, pulses, false, "no speed learning while |e_v| <= this, pulses/period",
+       SC_FIELD(learn_dz_v)},
+      {"w-p1", "w_p1", -kMaxWeight, kMaxWeight, false, "initial weight, position integral", SC_FIELD(w_p1)},
+      {"fixed-w-p1", "fixed_w_p1", -kMaxWeight, kMaxWeight, false, "position integral weight of the fixed-gain PI",
+       SC_FIELD(fixed_w_p1)},
+      {"w-p2", "w_p2", -kMaxWeight, kMaxWeight, false, "initial weight, position proportional", SC_FIELD(w_p2)},
+      {"w-v1", "w_v1", -kMaxWeight, kMaxWeight, false, "initial weight, speed integral", SC_FIELD(w_v1)},
+      {"w-v2", "w_v2", -kMaxWeight, kMaxWeight, false, "initial weight, speed proportional", SC_FIELD(w_v2)},
+      {"w-min", "w_min", -kMaxWeight, kMaxWeight, false, "lower weight bound (all weights)", SC_FIELD(w_min)},
+      {"w-p1-max", "w_p1_max", -kMaxWeight, kMaxWeight, false, "upper bound, position integral weight",
+       SC_FIELD(w_p1_max)},
+      {"w-p2-max", "w_p2_max", -kMaxWeight, kMaxWeight, false, "upper bound, position proportional weight",
+       SC_FIELD(w_p2_max)},
+      {"w-v1-max", "w_v1_max", -kMaxWeight, kMaxWeight, false, "upper bound, speed integral weight",
+       SC_FIELD(w_v1_max)},
+      {"w-v2-max", "w_v2_max", -kMaxWeight, kMaxWeight, false, "upper bound, speed proportional weight",
+       SC_FIELD(w_v2_max)},
+      {"v-lim", "v_lim", 0, kMaxSpeed, false, "position-loop output limit, pulses/s", SC_FIELD(v_lim)},
+      {"u-lim", "u_lim", 0, kMaxSpeed, false, "speed-loop output limit, pulses/s (0: 90 % of the step-rate limit)",
+       SC_FIELD(u_lim)},
+      {"ferr-lim", "ferr_lim", 1, pulses, false, "following-error fault limit, pulses", SC_FIELD(ferr_lim)},
+      {"inpos-win", "inpos_win", 0, pulses, false, "in-position window, pulses", SC_FIELD(inpos_win)},
+      {"inpos-hold", "inpos_hold_s", 0, kMaxInposHold, false, "in-position hold time, s", SC_FIELD(inpos_hold_s)},
+      {"settle-rate", "settle_rate", 0, kMaxSpeed, false, "corrective step rate after the reference, pulses/s",
+       SC_FIELD(settle_rate)},
+      {"enc-filter", "enc_filt", 0, kMaxEncFilter, true, "encoder glitch filter, clocks", SC_INT_FIELD(enc_filt)},
+  };
+  return params;
+#undef SC_FIELD
+#undef SC_INT_FIELD
+}
+
+namespace {
 
 // A flag's text through the validation layer; CLI11 reports it (exit 2).
 double checked_flag(const char* flag, const std::string& text, double lo, double hi, bool integer) {
@@ -68,66 +112,91 @@ double checked_flag(const char* flag, const std::string& text, double lo, double
   }
 }
 
+// One flag per table row; the last of repeated flags counts (as for the
+// move flags).
+template <class Target>
+void add_number_flags(CLI::App* sim, const std::vector<NumberParam<Target>>& params, Target& target,
+                      const std::string& group) {
+  for (const NumberParam<Target>& prm : params) {
+    sim->add_option_function<std::string>(
+           std::string("--") + prm.flag,
+           [&target, &prm](const std::string& v) {
+             prm.set(target, checked_flag(prm.flag, v, prm.lo, prm.hi, prm.integer));
+           },
+           fmt::format("{} ({}..{})", prm.what, prm.lo, prm.hi))
+        ->type_name(prm.integer ? "INT" : "NUM")
+        ->multi_option_policy(CLI::MultiOptionPolicy::TakeLast)
+        ->group(group);
+  }
+}
+
+// A file path flag: empty text is an error, not "no file".
+CLI::Option* add_path_flag(CLI::App* sim, const char* flag, std::string& target, const std::string& what) {
+  return sim->add_option_function<std::string>(
+                std::string("--") + flag,
+                [&target, flag](const std::string& v) {
+                  if (v.empty()) throw CLI::ValidationError(input::Error(flag, "''", "required, a file path").what());
+                  target = v;
+                },
+                what)
+      ->type_name("FILE")
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
+}
+
+// A scenario object's numbers through the same table as the flags.
+template <class Target>
+void apply_scenario_numbers(const std::string& where, const nlohmann::json& q,
+                            const std::vector<NumberParam<Target>>& params, Target& target) {
+  for (const NumberParam<Target>& prm : params) {
+    if (!q.contains(prm.key)) continue;
+    const std::string at = where + "." + prm.key;
+    prm.set(target, prm.integer ? double(input::json_int(at, q[prm.key], int64_t(prm.lo), int64_t(prm.hi)))
+                                : input::json_real(at, q[prm.key], prm.lo, prm.hi));
+  }
+}
+
 }  // namespace
 
 void add_closed_loop_flags(CLI::App* sim, ClosedLoopCli& f) {
   const std::string g = "Closed loop";
-  sim->add_flag("--closed-loop", f.enabled, "run sc_servo_axis in closed loop with the plant model")->group(g);
+  sim->add_flag("--closed-loop", f.enabled, "run sc_servo_axis in closed loop with the plant model")
+      ->disable_flag_override()
+      ->group(g);
   sim->add_flag("--compare", f.compare,
                 "comparison: adaptive vs fixed-gain PI, with/without feed-forward, S-curve vs trapezoid")
+      ->disable_flag_override()
       ->group(g);
-  sim->add_option("--weights-csv", f.weights_csv, "write the neuron weight trajectories (CSV; -<name> per run)")->group(g);
-  sim->add_option("--scenario", f.scenario, "JSON file: {\"plant\": {...}, \"controller\": {...}}")->group(g);
+  add_path_flag(sim, "weights-csv", f.weights_csv, "write the neuron weight trajectories (CSV; -<name> per run)")
+      ->group(g);
+  add_path_flag(sim, "scenario", f.scenario, "JSON file: {\"plant\": {...}, \"controller\": {...}}")->group(g);
   sim->add_option_function<std::string>(
          "--tail", [&f](const std::string& v) { f.tail_s = checked_flag("tail", v, 0, 10, false); },
          "quiet time after done for the residual vibration, s (0..10)")
+      ->type_name("NUM")
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeLast)
       ->group(g);
-  // plant: every number through the one table (flags and scenario keys alike)
+  // plant and controller: every number through its table (flags and
+  // scenario keys alike)
   const std::string pg = "Plant";
   sim->add_option("--plant", f.plant_kind, "stepper | first-order")
       ->check(CLI::IsMember({"stepper", "first-order"}))->group(pg);
-  for (const PlantParam& prm : plant_params()) {
-    sim->add_option_function<std::string>(
-           std::string("--") + prm.flag,
-           [&f, &prm](const std::string& v) { prm.set(f.plant, checked_flag(prm.flag, v, prm.lo, prm.hi, prm.integer)); },
-           fmt::format("{} ({}..{})", prm.what, prm.lo, prm.hi))
-        ->group(pg);
-  }
-  sim->add_flag("--missed-steps", f.plant.missed_steps, "sinusoidal torque-angle curve: the rotor can slip")->group(pg);
-  // controller
+  add_number_flags(sim, plant_params(), f.plant, pg);
+  sim->add_flag("--missed-steps", f.plant.missed_steps, "sinusoidal torque-angle curve: the rotor can slip")
+      ->disable_flag_override()
+      ->group(pg);
   const std::string cg = "Controller";
   ControllerParams& c = f.ctl;
-  sim->add_option("--ctl-rate", c.rate_hz, "control rate, Hz")->group(cg);
-  sim->add_flag("!--no-ff", c.ff, "no velocity feed-forward")->group(cg);
-  sim->add_flag("!--fixed-gain", c.adaptive, "learning rates 0: fixed-gain PI cascade")->group(cg);
-  sim->add_flag("!--open-loop", c.closed_loop, "same top, open-loop step path (baseline)")->group(cg);
-  sim->add_option("--k-p", c.k_p, "position neuron gain K_p")->group(cg);
-  sim->add_option("--k-v", c.k_v, "speed neuron gain K_v")->group(cg);
-  sim->add_option("--kb", c.kb, "back-calculation anti-windup gain Kb")->group(cg);
-  sim->add_option("--eta-p1", c.eta_p1, "learning rate, position loop, integral weight")->group(cg);
-  sim->add_option("--eta-p2", c.eta_p2, "learning rate, position loop, proportional weight")->group(cg);
-  sim->add_option("--eta-v1", c.eta_v1, "learning rate, speed loop, integral weight")->group(cg);
-  sim->add_option("--eta-v2", c.eta_v2, "learning rate, speed loop, proportional weight")->group(cg);
-  sim->add_option("--learn-shift", c.learn_shift, "Hebb scale 2^-n")->group(cg);
-  sim->add_option("--learn-dz-p", c.learn_dz_p, "no position learning while |e_p| <= this, pulses")->group(cg);
-  sim->add_option("--learn-dz-v", c.learn_dz_v, "no speed learning while |e_v| <= this, pulses/period")->group(cg);
-  sim->add_option("--w-p1", c.w_p1, "initial weight, position integral")->group(cg);
-  sim->add_option("--fixed-w-p1", c.fixed_w_p1, "position integral weight of the fixed-gain PI")->group(cg);
-  sim->add_option("--w-p2", c.w_p2, "initial weight, position proportional")->group(cg);
-  sim->add_option("--w-v1", c.w_v1, "initial weight, speed integral")->group(cg);
-  sim->add_option("--w-v2", c.w_v2, "initial weight, speed proportional")->group(cg);
-  sim->add_option("--w-min", c.w_min, "lower weight bound")->group(cg);
-  sim->add_option("--w-p1-max", c.w_p1_max, "upper bound, position integral weight")->group(cg);
-  sim->add_option("--w-p2-max", c.w_p2_max, "upper bound, position proportional weight")->group(cg);
-  sim->add_option("--w-v1-max", c.w_v1_max, "upper bound, speed integral weight")->group(cg);
-  sim->add_option("--w-v2-max", c.w_v2_max, "upper bound, speed proportional weight")->group(cg);
-  sim->add_option("--v-lim", c.v_lim, "position-loop output limit, pulses/s")->group(cg);
-  sim->add_option("--u-lim", c.u_lim, "speed-loop output limit, pulses/s (0: 90 % of the step-rate limit)")->group(cg);
-  sim->add_option("--ferr-lim", c.ferr_lim, "following-error fault limit, pulses")->group(cg);
-  sim->add_option("--inpos-win", c.inpos_win, "in-position window, pulses")->group(cg);
-  sim->add_option("--inpos-hold", c.inpos_hold_s, "in-position hold time, s")->group(cg);
-  sim->add_option("--settle-rate", c.settle_rate, "corrective step rate after the reference, pulses/s")->group(cg);
-  sim->add_option("--enc-filter", c.enc_filt, "encoder glitch filter, clocks (0..15)")->group(cg);
+  add_number_flags(sim, controller_params(), c, cg);
+  // Switches take no value ("--no-ff=false" would read as a double negation).
+  sim->add_flag_callback("--no-ff", [&c] { c.ff = false; }, "no velocity feed-forward")
+      ->disable_flag_override()
+      ->group(cg);
+  sim->add_flag_callback("--fixed-gain", [&c] { c.adaptive = false; }, "learning rates 0: fixed-gain PI cascade")
+      ->disable_flag_override()
+      ->group(cg);
+  sim->add_flag_callback("--open-loop", [&c] { c.closed_loop = false; }, "same top, open-loop step path (baseline)")
+      ->disable_flag_override()
+      ->group(cg);
 }
 
 std::string apply_scenario_json(const std::string& text, ControllerParams& c, PlantConfig& p) {
@@ -137,8 +206,8 @@ std::string apply_scenario_json(const std::string& text, ControllerParams& c, Pl
   } catch (const std::exception& e) {
     return std::string("scenario: not JSON: ") + e.what();
   }
-  // Every key known and typed, the plant's numbers in the flags' ranges (one
-  // table), so a typo is an error instead of the default plant.
+  // Every key known and typed, the numbers in the flags' ranges (the same
+  // tables), so a typo is an error instead of the default.
   try {
     using namespace input;
     json_known_keys("scenario", j, {"_comment", "description", "plant", "controller"});
@@ -155,39 +224,16 @@ std::string apply_scenario_json(const std::string& text, ControllerParams& c, Pl
         p.kind = kind == "first-order" ? PlantConfig::Kind::FirstOrder : PlantConfig::Kind::Stepper;
       }
       if (q.contains("missed_steps")) p.missed_steps = json_bool("scenario.plant.missed_steps", q["missed_steps"]);
-      for (const PlantParam& prm : plant_params()) {
-        if (!q.contains(prm.key)) continue;
-        const std::string at = std::string("scenario.plant.") + prm.key;
-        prm.set(p, prm.integer ? double(json_int(at, q[prm.key], int64_t(prm.lo), int64_t(prm.hi)))
-                               : json_real(at, q[prm.key], prm.lo, prm.hi));
-      }
+      apply_scenario_numbers("scenario.plant", q, plant_params(), p);
     }
     if (j.contains("controller")) {
       const auto& q = json_object("scenario.controller", j["controller"]);
-      json_known_keys("scenario.controller", q,
-                      {"rate_hz", "k_p", "k_v", "kb", "eta_p1", "eta_p2", "eta_v1", "eta_v2", "learn_dz_p",
-                       "learn_dz_v", "w_p1", "fixed_w_p1", "w_p2", "w_v1", "w_v2", "w_min", "w_p1_max", "w_p2_max",
-                       "w_v1_max", "w_v2_max", "v_lim", "u_lim", "ferr_lim", "inpos_win", "inpos_hold_s",
-                       "settle_rate", "ff", "adaptive", "learn_shift", "enc_filt"});
-      // Ranges of the controller settings are checked where they become
-      // register values (to_servo_config), for flags and scenarios alike.
-      auto num = [&](const char* k, double& v) {
-        if (q.contains(k)) v = json_real(std::string("scenario.controller.") + k, q[k], -1e12, 1e12);
-      };
-      for (const auto& [k, v] : std::initializer_list<std::pair<const char*, double*>>{
-               {"rate_hz", &c.rate_hz}, {"k_p", &c.k_p}, {"k_v", &c.k_v}, {"kb", &c.kb}, {"eta_p1", &c.eta_p1},
-               {"eta_p2", &c.eta_p2}, {"eta_v1", &c.eta_v1}, {"eta_v2", &c.eta_v2}, {"learn_dz_p", &c.learn_dz_p},
-               {"learn_dz_v", &c.learn_dz_v}, {"w_p1", &c.w_p1}, {"fixed_w_p1", &c.fixed_w_p1}, {"w_p2", &c.w_p2},
-               {"w_v1", &c.w_v1}, {"w_v2", &c.w_v2}, {"w_min", &c.w_min}, {"w_p1_max", &c.w_p1_max},
-               {"w_p2_max", &c.w_p2_max}, {"w_v1_max", &c.w_v1_max}, {"w_v2_max", &c.w_v2_max}, {"v_lim", &c.v_lim},
-               {"u_lim", &c.u_lim}, {"ferr_lim", &c.ferr_lim}, {"inpos_win", &c.inpos_win},
-               {"inpos_hold_s", &c.inpos_hold_s}, {"settle_rate", &c.settle_rate}}) {
-        num(k, *v);
-      }
+      std::vector<std::string_view> keys = {"ff", "adaptive"};
+      for (const ControllerParam& prm : controller_params()) keys.push_back(prm.key);
+      json_known_keys("scenario.controller", q, keys);
       if (q.contains("ff")) c.ff = json_bool("scenario.controller.ff", q["ff"]);
       if (q.contains("adaptive")) c.adaptive = json_bool("scenario.controller.adaptive", q["adaptive"]);
-      if (q.contains("learn_shift")) c.learn_shift = int(json_int("scenario.controller.learn_shift", q["learn_shift"], 0, 31));
-      if (q.contains("enc_filt")) c.enc_filt = int(json_int("scenario.controller.enc_filt", q["enc_filt"], 0, 15));
+      apply_scenario_numbers("scenario.controller", q, controller_params(), c);
     }
   } catch (const std::exception& e) {
     return e.what();

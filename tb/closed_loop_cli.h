@@ -28,6 +28,24 @@ struct ClosedLoopCli {
 
 void add_closed_loop_flags(CLI::App* sim, ClosedLoopCli& f);
 
+// A number a user can give as a flag and as a scenario key: one table per
+// target (plant, controller), so both ways in share the range, the
+// integer-ness and the meaning, and go through the validation layer.
+template <class Target>
+struct NumberParam {
+  const char* flag;  // without "--"
+  const char* key;   // in the scenario's "plant" / "controller" object
+  double lo, hi;
+  bool integer;
+  const char* what;  // meaning and unit (the flag's help)
+  void (*set)(Target&, double);
+  double (*get)(const Target&);
+};
+using PlantParam = NumberParam<PlantConfig>;
+using ControllerParam = NumberParam<ControllerParams>;
+const std::vector<PlantParam>& plant_params();
+const std::vector<ControllerParam>& controller_params();
+
 // Runs every job (name, request) in closed loop; prints the results table,
 // the paper's Table 3 layout for paper groups, and with compare the
 // controller comparison; json_out: also write the JSON result to this file.

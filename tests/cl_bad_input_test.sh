@@ -28,6 +28,30 @@ for a in "tail=-1:--tail -1" "tail=nan:--tail nan" "tail=1e308:--tail 1e308" \
          "w-p1-max=1:--w-min 10 --w-p1-max 1" "k-p=nan:--k-p nan"; do
   expect2 "${a%%:*}" ${a#*:}
 done
+# Every controller flag (the table in tb/closed_loop_cli.cpp): not a number,
+# not finite, empty, below and above its range, octal-looking integers.
+for f in k-p k-v kb eta-p1 eta-p2 eta-v1 eta-v2 learn-dz-p learn-dz-v v-lim u-lim inpos-win inpos-hold settle-rate \
+         ctl-rate ferr-lim w-p1 fixed-w-p1 w-p2 w-v1 w-v2 w-min w-p1-max w-p2-max w-v1-max w-v2-max \
+         learn-shift enc-filter tail; do
+  for v in nan inf -inf 0x10 1e999 ten; do expect2 "$f=$v" "--$f" "$v"; done
+  expect2 "$f=''" "--$f" ""
+done
+for a in k-p=-1 k-p=16 k-v=-1 kb=-1 eta-p1=-1 eta-v2=16 learn-dz-p=-1 learn-dz-p=32768 learn-dz-v=-1 \
+         v-lim=-1 v-lim=1e8 u-lim=-1 u-lim=1e8 inpos-win=-1 inpos-hold=-1 inpos-hold=7 settle-rate=1e8 \
+         ctl-rate=305 ctl-rate=78126 ctl-rate=0 ctl-rate=-1 ferr-lim=0.5 ferr-lim=32768 \
+         w-p1=128 w-p2=-128 w-min=-128 w-v2-max=128 learn-shift=-1 learn-shift=32 learn-shift=010 learn-shift=1e1 \
+         learn-shift=1.5 enc-filter=16 enc-filter=-1 enc-filter=010 enc-filter=0x1; do
+  expect2 "$a" "--${a%%=*}" "${a#*=}"
+done
+# Switches take no value; the last of repeated numbers counts (checked each).
+for a in no-ff=false fixed-gain=0 open-loop=no missed-steps=false; do expect2 "${a%%=*}" "--$a"; done
+expect2 "k-p=nan" --k-p 0.004 --k-p nan
+# Settings valid alone, not together: one line naming both.
+expect2 "inpos-hold=1 s" --ctl-rate 78125 --inpos-hold 1
+expect2 "ferr-lim=32767" --counts-per-step 4 --ferr-lim 32767
+expect2 "u-lim=10000000" --u-lim 1e7
+expect2 "w-v2-max=-1: below w-min=0" --w-v2-max -1
+
 scenario() { printf '%s' "$2" > "$tmp/s.json"; expect2 "$1" --scenario "$tmp/s.json"; }
 scenario 'scenario.plant.f_nn' '{"plant":{"f_nn":100}}'
 scenario 'scenario.plantt' '{"plantt":{}}'
@@ -41,6 +65,13 @@ scenario 'scenario.plant.glitch_clocks=1e+30' '{"plant":{"glitch_clocks":1e30}}'
 scenario 'scenario.plant.seed=-1' '{"plant":{"seed":-1}}'
 scenario 'scenario.plant.seed=1.5' '{"plant":{"seed":1.5}}'
 scenario 'scenario.controller.learn_shift=1e+30' '{"controller":{"learn_shift":1e30}}'
+scenario 'scenario.controller.k_p=-1' '{"controller":{"k_p":-1}}'
+scenario 'scenario.controller.k_v="0.02"' '{"controller":{"k_v":"0.02"}}'
+scenario 'scenario.controller.rate_hz=100000' '{"controller":{"rate_hz":100000}}'
+scenario 'scenario.controller.enc_filt=3.5' '{"controller":{"enc_filt":3.5}}'
+scenario 'scenario.controller.w_p1_max=null' '{"controller":{"w_p1_max":null}}'
+scenario 'scenario.controller.k_pp' '{"controller":{"k_pp":0.004}}'
+scenario 'w-p1-max=1: below w-min=10' '{"controller":{"w_min":10,"w_p1_max":1}}'
 scenario 'not JSON' '{not json'
 expect2 "--scenario $tmp: cannot read" --scenario "$tmp"
 [ "$fails" -eq 0 ] || { echo "$fails bad-input cases broke the contract"; exit 1; }

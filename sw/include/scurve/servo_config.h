@@ -2,6 +2,7 @@
 // the neuron-PI servo axis out (the words encode_servo_config() writes).
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <string>
 #include <variant>
@@ -14,6 +15,26 @@ namespace scurve {
 
 // Shortest control period the time-multiplexed controller accepts, clocks.
 inline constexpr int kMinControlDiv = 256;
+// Longest control period, clocks (the width of cfg_div).
+inline constexpr int kMaxControlDiv = (1 << hw::CtlCfgDivW) - 1;
+
+// The ranges the register words can hold, for every user of the settings
+// (to_servo_config, the command-line and scenario tables): gains and
+// learning rates (unsigned Q.CoefFrac), weights (signed Q.WgtFrac), shifts.
+inline constexpr double kMaxCoef = double(1u << (hw::CoefW - hw::CoefFrac)) - 1.0 / double(1u << hw::CoefFrac);
+inline constexpr double kMaxWeight = double(1 << (hw::WgtW - 1 - hw::WgtFrac)) - 1.0 / double(1 << hw::WgtFrac);
+inline constexpr int kMaxLearnShift = (1 << hw::LearnShW) - 1;
+inline constexpr int kMaxEncFilter = (1 << hw::EncFiltW) - 1;
+// Speeds (v_lim, u_lim, settle_rate), pulses/s; their per-period words are
+// checked against the register at the configured rate as well.
+inline constexpr double kMaxSpeed = 1e7;
+// In-position hold time, s (the per-period count is checked at the rate).
+inline constexpr double kMaxInposHold = 6.5535;
+// Largest distance-like setting (ferr_lim, inpos_win, learning dead zones)
+// in pulses: a Q.CtlFrac word below 2^31 counts.
+inline double max_pulses(double counts_per_step) {
+  return std::floor(2147483647.0 / (double(1 << hw::CtlFrac) * counts_per_step));
+}
 
 // Controller register values (fixed point, see docs/closed_loop.md): the
 // struct generated from rtl/sc_pkg.sv (field widths, Q formats and units in
