@@ -291,6 +291,23 @@ nlohmann::json result_json(const ClosedLoopResult& r) {
   return j;
 }
 
+// Where an output file flag's file can go, checked before the (long) runs:
+// its directory exists, and the path is not a directory or a device (the
+// file is renamed into place). Empty, or the one-line reason.
+std::string check_output_path(const char* flag, const std::string& given, const std::string& path) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::path p(path);
+  const fs::file_status st = fs::status(p, ec);
+  if (fs::is_directory(st)) return input::Error(flag, given, path + " is a directory").what();
+  if (fs::exists(st) && !fs::is_regular_file(st)) {
+    return input::Error(flag, given, path + " exists and is not a regular file").what();
+  }
+  const fs::path dir = p.parent_path().empty() ? fs::path(".") : p.parent_path();
+  if (!fs::is_directory(dir, ec)) return input::Error(flag, given, "no directory " + dir.string()).what();
+  return {};
+}
+
 std::string csv_path(const std::string& base, const std::string& name, bool several) {
   if (!several) return base;
   std::string n = name;
@@ -412,6 +429,16 @@ int run_closed_loop_cli(ClosedLoopCli f, const std::vector<std::pair<std::string
   } else {
     for (const auto& [name, req] : jobs) list.push_back({name, req, f.ctl});
   }
+  // The weights' files can be written: refused now, not after the runs.
+  if (!f.weights_csv.empty()) {
+    for (const Job& j : list) {
+      const std::string e = check_output_path("weights-csv", f.weights_csv, csv_path(f.weights_csv, j.name, list.size() > 1));
+      if (!e.empty()) {
+        std::fprintf(stderr, "error: %s\n", e.c_str());
+        return 2;
+      }
+    }
+  }
   std::vector<Plan> plans;
   for (const Job& j : list) {
     const PlanResult r = plan_move(j.req, timing);
@@ -448,12 +475,13 @@ int run_closed_loop_cli(ClosedLoopCli f, const std::vector<std::pair<std::string
   bool pass = true;
   for (const ClosedLoopResult& r : results) pass = pass && r.pass();
   if (!f.weights_csv.empty()) {
+    std::vector<WeightsCsv> files;
     for (const ClosedLoopResult& r : results) {
-      const std::string p = csv_path(f.weights_csv, r.name, results.size() > 1);
-      if (!write_weights_csv(p, r.weights)) {
-        std::fprintf(stderr, "error: --weights-csv %s: cannot write\n", p.c_str());
-        return 2;
-      }
+      files.push_back({csv_path(f.weights_csv, r.name, results.size() > 1), &r.weights});
+    }
+    if (const std::string e = write_weights_csvs(files); !e.empty()) {
+      std::fprintf(stderr, "error: %s\n", input::Error("weights-csv", f.weights_csv, "cannot write " + e).what());
+      return 2;
     }
   }
   // Paper-table verdict: below Table 3 and final error 0 for each paper group.

@@ -1,10 +1,13 @@
 #!/usr/bin/env bash
-# scurve sim --closed-loop: every bad plant, controller or scenario value is
-# exit 2 with one stderr line naming the parameter (never a hang, a silent
-# default or a run).
+# scurve sim --closed-loop: every bad plant, controller or scenario value,
+# and a --weights-csv that cannot be written, is exit 2 with one stderr line
+# naming the parameter (never a hang, a silent default, a run, or a file
+# left behind).
 set -euo pipefail
-scurve=$1
+scurve=$(realpath "$1")
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
+# Run from an empty directory: no case may leave a file behind (checked last).
+mkdir "$tmp/cwd"; cd "$tmp/cwd"
 move="--closed-loop --distance 300 --v-cruise 3000 --a-max 50000 --j-max 500000 --engine model"
 fails=0
 expect2() {  # expect2 <substring> <args...>
@@ -74,5 +77,38 @@ scenario 'scenario.controller.k_pp' '{"controller":{"k_pp":0.004}}'
 scenario 'w-p1-max=1: below w-min=10' '{"controller":{"w_min":10,"w_p1_max":1}}'
 scenario 'not JSON' '{not json'
 expect2 "--scenario $tmp: cannot read" --scenario "$tmp"
+# --weights-csv: refused before the run when it cannot be written, and
+# written whole or not at all (a file-size limit fails the write, SIGXFSZ is
+# ignored): exit 2, one line, no file, no "<path>.part".
+w=$tmp/wcsv; mkdir "$w"; mkdir "$w/dir"
+expect_no_csv() {
+  local left; left=$(cd "$w" && ls -A | grep -v '^dir$' || true)
+  [ -z "$left" ] || { echo "FAIL: $1 left files: $left"; fails=$((fails + 1)); rm -f "$w"/*.csv "$w"/*.part; }
+}
+expect2 "weights-csv=$w/nodir/w.csv: no directory" --weights-csv "$w/nodir/w.csv"; expect_no_csv "missing directory"
+expect2 "weights-csv=$w/dir: $w/dir is a directory" --weights-csv "$w/dir"; expect_no_csv "directory as path"
+expect2 "weights-csv=$w/dir/: $w/dir/ is a directory" --weights-csv "$w/dir/"; expect_no_csv "directory as path"
+# Under a file-size limit the subshell's own output goes to a fresh file,
+# with SIGXFSZ ignored, so only the program under test meets the limit.
+limited() {  # limited <kb> <expected> <args...>
+  local kb=$1; shift
+  set +e
+  ( trap '' XFSZ; ulimit -f "$kb"; fails=0; expect2 "$@"; exit "$fails" ) > "$tmp/limited.log" 2>&1
+  fails=$((fails + $?))
+  set -e
+  cat "$tmp/limited.log"
+}
+limited 1 "weights-csv=$w/w.csv: cannot write $w/w.csv.part: File too large" --weights-csv "$w/w.csv"
+expect_no_csv "ulimit -f 1"
+# Several runs, several files: the largest cannot be written, so none is.
+"$scurve" sim $move --compare --jobs 2 --weights-csv "$w/c.csv" > /dev/null
+n_csv=$(ls "$w"/c-*.csv | wc -l)
+[ "$n_csv" -eq 8 ] || { echo "FAIL: --compare wrote $n_csv weight files, want 8"; fails=$((fails + 1)); }
+max_kb=$(( $(stat -c %s "$w"/c-*.csv | sort -n | tail -1) / 1024 ))
+rm -f "$w"/c-*.csv
+limited "$max_kb" "File too large" --compare --jobs 2 --weights-csv "$w/c.csv"
+expect_no_csv "--compare under ulimit -f $max_kb"
+left=$(ls -A "$tmp/cwd")
+[ -z "$left" ] || { echo "FAIL: files left in the working directory: $left"; fails=$((fails + 1)); }
 [ "$fails" -eq 0 ] || { echo "$fails bad-input cases broke the contract"; exit 1; }
 echo "closed-loop bad input: every case exit 2 with one line naming the parameter"
