@@ -51,8 +51,9 @@ const std::vector<PlantParam>& plant_params() {
 // encoder's counts per pulse, the weight bounds' order) are checked
 // together by to_servo_config, with one message naming both.
 const std::vector<ControllerParam>& controller_params() {
-#define SC_FIELD(f) [](ControllerParams& c, double v) { c.f = v; }, [](const ControllerParams& c) { return double(c.f); }
-#define SC_INT_FIELD(f) [](ControllerParams& c, double v) { c.f = int(v); }, [](const ControllerParams& c) { return double(c.f); }
+#define SC_GET(f) [](const ControllerParams& c) { return double(c.f); }
+#define SC_FIELD(f) [](ControllerParams& c, double v) { c.f = v; }, SC_GET(f)
+#define SC_INT_FIELD(f) [](ControllerParams& c, double v) { c.f = int(v); }, SC_GET(f)
   using namespace scurve;
   const double pulses = max_pulses(1.0);  // the widest: one count per pulse
   static const std::vector<ControllerParam> params = {
@@ -98,6 +99,24 @@ const std::vector<ControllerParam>& controller_params() {
   return params;
 #undef SC_FIELD
 #undef SC_INT_FIELD
+#undef SC_GET
+}
+
+ControllerInput::ControllerInput() : given(controller_params().size(), false) {}
+
+void ControllerInput::set(size_t param, double v) {
+  controller_params()[param].set(values, v);
+  given[param] = true;
+}
+
+ControllerParams ControllerInput::resolve() const {
+  ControllerParams r = values;
+  const ControllerParams defaults = scurve::controller_defaults(values.rate_hz);
+  for (size_t i = 0; i < given.size(); ++i) {
+    const ControllerParam& prm = controller_params()[i];
+    if (!given[i]) prm.set(r, prm.get(defaults));
+  }
+  return r;
 }
 
 namespace {
@@ -112,17 +131,16 @@ double checked_flag(const char* flag, const std::string& text, double lo, double
   }
 }
 
-// One flag per table row; the last of repeated flags counts (as for the
-// move flags).
-template <class Target>
-void add_number_flags(CLI::App* sim, const std::vector<NumberParam<Target>>& params, Target& target,
+// One flag per table row, set(row index, value); the last of repeated
+// flags counts (as for the move flags).
+template <class Target, class Set>
+void add_number_flags(CLI::App* sim, const std::vector<NumberParam<Target>>& params, Set set,
                       const std::string& group) {
-  for (const NumberParam<Target>& prm : params) {
+  for (size_t i = 0; i < params.size(); ++i) {
+    const NumberParam<Target>& prm = params[i];
     sim->add_option_function<std::string>(
            std::string("--") + prm.flag,
-           [&target, &prm](const std::string& v) {
-             prm.set(target, checked_flag(prm.flag, v, prm.lo, prm.hi, prm.integer));
-           },
+           [set, &prm, i](const std::string& v) { set(i, checked_flag(prm.flag, v, prm.lo, prm.hi, prm.integer)); },
            fmt::format("{} ({}..{})", prm.what, prm.lo, prm.hi))
         ->type_name(prm.integer ? "INT" : "NUM")
         ->multi_option_policy(CLI::MultiOptionPolicy::TakeLast)
@@ -144,14 +162,15 @@ CLI::Option* add_path_flag(CLI::App* sim, const char* flag, std::string& target,
 }
 
 // A scenario object's numbers through the same table as the flags.
-template <class Target>
+template <class Target, class Set>
 void apply_scenario_numbers(const std::string& where, const nlohmann::json& q,
-                            const std::vector<NumberParam<Target>>& params, Target& target) {
-  for (const NumberParam<Target>& prm : params) {
+                            const std::vector<NumberParam<Target>>& params, Set set) {
+  for (size_t i = 0; i < params.size(); ++i) {
+    const NumberParam<Target>& prm = params[i];
     if (!q.contains(prm.key)) continue;
     const std::string at = where + "." + prm.key;
-    prm.set(target, prm.integer ? double(input::json_int(at, q[prm.key], int64_t(prm.lo), int64_t(prm.hi)))
-                                : input::json_real(at, q[prm.key], prm.lo, prm.hi));
+    set(i, prm.integer ? double(input::json_int(at, q[prm.key], int64_t(prm.lo), int64_t(prm.hi)))
+                       : input::json_real(at, q[prm.key], prm.lo, prm.hi));
   }
 }
 
@@ -180,13 +199,13 @@ void add_closed_loop_flags(CLI::App* sim, ClosedLoopCli& f) {
   const std::string pg = "Plant";
   sim->add_option("--plant", f.plant_kind, "stepper | first-order")
       ->check(CLI::IsMember({"stepper", "first-order"}))->group(pg);
-  add_number_flags(sim, plant_params(), f.plant, pg);
+  add_number_flags(sim, plant_params(), [&f](size_t i, double v) { plant_params()[i].set(f.plant, v); }, pg);
   sim->add_flag("--missed-steps", f.plant.missed_steps, "sinusoidal torque-angle curve: the rotor can slip")
       ->disable_flag_override()
       ->group(pg);
   const std::string cg = "Controller";
-  ControllerParams& c = f.ctl;
-  add_number_flags(sim, controller_params(), c, cg);
+  add_number_flags(sim, controller_params(), [&f](size_t i, double v) { f.ctl.set(i, v); }, cg);
+  ControllerParams& c = f.ctl.values;
   // Switches take no value ("--no-ff=false" would read as a double negation).
   sim->add_flag_callback("--no-ff", [&c] { c.ff = false; }, "no velocity feed-forward")
       ->disable_flag_override()
@@ -199,7 +218,7 @@ void add_closed_loop_flags(CLI::App* sim, ClosedLoopCli& f) {
       ->group(cg);
 }
 
-std::string apply_scenario_json(const std::string& text, ControllerParams& c, PlantConfig& p) {
+std::string apply_scenario_json(const std::string& text, ControllerInput& c, PlantConfig& p) {
   nlohmann::json j;
   try {
     j = nlohmann::json::parse(text);
@@ -224,16 +243,17 @@ std::string apply_scenario_json(const std::string& text, ControllerParams& c, Pl
         p.kind = kind == "first-order" ? PlantConfig::Kind::FirstOrder : PlantConfig::Kind::Stepper;
       }
       if (q.contains("missed_steps")) p.missed_steps = json_bool("scenario.plant.missed_steps", q["missed_steps"]);
-      apply_scenario_numbers("scenario.plant", q, plant_params(), p);
+      apply_scenario_numbers("scenario.plant", q, plant_params(),
+                             [&p](size_t i, double v) { plant_params()[i].set(p, v); });
     }
     if (j.contains("controller")) {
       const auto& q = json_object("scenario.controller", j["controller"]);
       std::vector<std::string_view> keys = {"ff", "adaptive"};
       for (const ControllerParam& prm : controller_params()) keys.push_back(prm.key);
       json_known_keys("scenario.controller", q, keys);
-      if (q.contains("ff")) c.ff = json_bool("scenario.controller.ff", q["ff"]);
-      if (q.contains("adaptive")) c.adaptive = json_bool("scenario.controller.adaptive", q["adaptive"]);
-      apply_scenario_numbers("scenario.controller", q, controller_params(), c);
+      if (q.contains("ff")) c.values.ff = json_bool("scenario.controller.ff", q["ff"]);
+      if (q.contains("adaptive")) c.values.adaptive = json_bool("scenario.controller.adaptive", q["adaptive"]);
+      apply_scenario_numbers("scenario.controller", q, controller_params(), [&c](size_t i, double v) { c.set(i, v); });
     }
   } catch (const std::exception& e) {
     return e.what();
@@ -306,6 +326,22 @@ std::string check_output_path(const char* flag, const std::string& given, const 
   const fs::path dir = p.parent_path().empty() ? fs::path(".") : p.parent_path();
   if (!fs::is_directory(dir, ec)) return input::Error(flag, given, "no directory " + dir.string()).what();
   return {};
+}
+
+// Every setting of the table as used (the defaults for the rate included).
+nlohmann::json controller_json(const ControllerParams& c) {
+  nlohmann::json j;
+  for (const ControllerParam& prm : controller_params()) {
+    if (prm.integer) {
+      j[prm.key] = int64_t(prm.get(c));
+    } else {
+      j[prm.key] = prm.get(c);
+    }
+  }
+  j["ff"] = c.ff;
+  j["adaptive"] = c.adaptive;
+  j["closed_loop"] = c.closed_loop;
+  return j;
 }
 
 std::string csv_path(const std::string& base, const std::string& name, bool several) {
@@ -384,12 +420,13 @@ int run_closed_loop_cli(ClosedLoopCli f, const std::vector<std::pair<std::string
     }
   }
   if (f.plant_kind == "first-order") f.plant.kind = PlantConfig::Kind::FirstOrder;
+  const ControllerParams ctl = f.ctl.resolve();
   ClEngine eng = engine == "rtl" ? ClEngine::RtlOnly
                  : (engine == "model" || engine == "model-fast") ? ClEngine::ModelOnly
                                                                  : ClEngine::Lockstep;
   {
     ServoConfig probe;
-    if (std::string e = to_servo_config(f.ctl, f.plant, timing, probe); !e.empty()) {
+    if (std::string e = to_servo_config(ctl, f.plant, timing, probe); !e.empty()) {
       std::fprintf(stderr, "error: %s\n", e.c_str());
       return 2;
     }
@@ -418,7 +455,7 @@ int run_closed_loop_cli(ClosedLoopCli f, const std::vector<std::pair<std::string
           {"open-loop trapezoid", false, false, true, ProfileKind::Trapezoid},
       };
       for (const V& v : vs) {
-        Job j{name + "/" + v.tag, req0, f.ctl};
+        Job j{name + "/" + v.tag, req0, ctl};
         j.req.kind = v.kind;
         j.ctl.closed_loop = v.closed;
         j.ctl.adaptive = v.adaptive;
@@ -427,12 +464,13 @@ int run_closed_loop_cli(ClosedLoopCli f, const std::vector<std::pair<std::string
       }
     }
   } else {
-    for (const auto& [name, req] : jobs) list.push_back({name, req, f.ctl});
+    for (const auto& [name, req] : jobs) list.push_back({name, req, ctl});
   }
   // The weights' files can be written: refused now, not after the runs.
   if (!f.weights_csv.empty()) {
     for (const Job& j : list) {
-      const std::string e = check_output_path("weights-csv", f.weights_csv, csv_path(f.weights_csv, j.name, list.size() > 1));
+      const std::string path = csv_path(f.weights_csv, j.name, list.size() > 1);
+      const std::string e = check_output_path("weights-csv", f.weights_csv, path);
       if (!e.empty()) {
         std::fprintf(stderr, "error: %s\n", e.c_str());
         return 2;
@@ -489,7 +527,7 @@ int run_closed_loop_cli(ClosedLoopCli f, const std::vector<std::pair<std::string
   if (!f.compare) {
     for (const ClosedLoopResult& r : results) {
       const int g = group_of(r.name);
-      if (g == 0 || !f.ctl.closed_loop) continue;
+      if (g == 0 || !ctl.closed_loop) continue;
       const PaperRow& p = kPaperTable3[g - 1];
       if (!(r.max_error < p.max_error)) table_fail.push_back(fmt::format("{}: max error {:.3f} >= paper {}", r.name, r.max_error, p.max_error));
       if (!(r.rmse < p.rmse)) table_fail.push_back(fmt::format("{}: RMSE {:.4f} >= paper {}", r.name, r.rmse, p.rmse));
@@ -500,6 +538,7 @@ int run_closed_loop_cli(ClosedLoopCli f, const std::vector<std::pair<std::string
   out["runs"] = nlohmann::json::array();
   for (const ClosedLoopResult& r : results) out["runs"].push_back(result_json(r));
   out["plant"] = f.plant.describe();
+  out["controller"] = controller_json(ctl);
   out["table3_failures"] = table_fail;
   out["pass"] = pass;
   if (!scurve::cli::write_json_file(json_out, out)) {
@@ -510,13 +549,15 @@ int run_closed_loop_cli(ClosedLoopCli f, const std::vector<std::pair<std::string
     std::cout << out.dump(2) << "\n";
   } else {
     std::cout << "plant: " << f.plant.describe() << "\n";
+    std::cout << fmt::format("controller: {} Hz, K_p {}, K_v {}, w_p1 <= {}{}\n", ctl.rate_hz, ctl.k_p, ctl.k_v,
+                             ctl.w_p1_max, ctl.adaptive ? "" : fmt::format(" (fixed {})", ctl.fixed_w_p1));
     if (f.compare) {
       std::cout << comparison_table(results);
     } else {
       std::cout << closed_loop_table(results);
       bool any_group = false;
       for (const ClosedLoopResult& r : results) any_group = any_group || group_of(r.name) != 0;
-      if (any_group && f.ctl.closed_loop) std::cout << "\n" << table3_layout(results);
+      if (any_group && ctl.closed_loop) std::cout << "\n" << table3_layout(results);
     }
     for (const std::string& t : table_fail) std::cout << "FAIL: " << t << "\n";
   }

@@ -15,10 +15,21 @@ class App;
 
 namespace sc {
 
+// Controller settings as given (flags, then the scenario's "controller"
+// object): the ones not given take scurve::controller_defaults() at the
+// control rate, so the default gains suit the rate (docs/closed_loop.md).
+struct ControllerInput {
+  ControllerParams values{};
+  std::vector<bool> given;  // by controller_params() index
+  ControllerInput();
+  void set(size_t param, double v);
+  ControllerParams resolve() const;
+};
+
 struct ClosedLoopCli {
   bool enabled = false;
   bool compare = false;
-  ControllerParams ctl{};
+  ControllerInput ctl{};
   PlantConfig plant{};
   std::string plant_kind = "stepper";
   std::string weights_csv;
@@ -66,6 +77,6 @@ std::string table3_layout(const std::vector<ClosedLoopResult>& r);  // rows name
 std::string comparison_table(const std::vector<ClosedLoopResult>& r);
 
 // Applies a JSON scenario ({"plant": {...}, "controller": {...}}); error text or "".
-std::string apply_scenario_json(const std::string& text, ControllerParams& c, PlantConfig& p);
+std::string apply_scenario_json(const std::string& text, ControllerInput& c, PlantConfig& p);
 
 }  // namespace sc

@@ -57,11 +57,11 @@ TEST(ClosedLoopCliParams, FlagAndScenarioKeySetTheSameControllerField) {
     const double v = inside(p);
     ClosedLoopCli by_flag;
     ASSERT_EQ(parse_flags({std::string("--") + p.flag, decimal(v)}, by_flag), "") << p.flag;
-    EXPECT_EQ(p.get(by_flag.ctl), v) << p.flag;
-    ControllerParams by_key;
+    EXPECT_EQ(p.get(by_flag.ctl.values), v) << p.flag;
+    ControllerInput by_key;
     PlantConfig plant;
     ASSERT_EQ(apply_scenario_json(scenario_with("controller", p.key, decimal(v)), by_key, plant), "") << p.key;
-    EXPECT_EQ(p.get(by_key), v) << p.key;
+    EXPECT_EQ(p.get(by_key.values), v) << p.key;
   }
 }
 
@@ -71,7 +71,7 @@ TEST(ClosedLoopCliParams, FlagAndScenarioKeySetTheSamePlantField) {
     ClosedLoopCli by_flag;
     ASSERT_EQ(parse_flags({std::string("--") + p.flag, decimal(v)}, by_flag), "") << p.flag;
     EXPECT_EQ(p.get(by_flag.plant), v) << p.flag;
-    ControllerParams ctl;
+    ControllerInput ctl;
     PlantConfig by_key;
     ASSERT_EQ(apply_scenario_json(scenario_with("plant", p.key, decimal(v)), ctl, by_key), "") << p.key;
     EXPECT_EQ(p.get(by_key), v) << p.key;
@@ -88,11 +88,11 @@ TEST(ClosedLoopCliParams, ControllerFlagsRefuseNonDecimalNonFiniteAndOutOfRangeT
     }
     for (const std::string& text : bad) {
       ClosedLoopCli f;
-      const double before = p.get(f.ctl);
+      const double before = p.get(f.ctl.values);
       const std::string err = parse_flags({std::string("--") + p.flag, text}, f);
       EXPECT_NE(err.find(std::string(p.flag) + "=" + (text.empty() ? "''" : text)), std::string::npos)
           << p.flag << " " << text << ": " << err;
-      EXPECT_EQ(p.get(f.ctl), before) << p.flag << " " << text;
+      EXPECT_EQ(p.get(f.ctl.values), before) << p.flag << " " << text;
     }
   }
 }
@@ -100,9 +100,9 @@ TEST(ClosedLoopCliParams, ControllerFlagsRefuseNonDecimalNonFiniteAndOutOfRangeT
 TEST(ClosedLoopCliParams, RealControllerFlagsTakeDecimalExponents) {
   ClosedLoopCli f;
   ASSERT_EQ(parse_flags({"--k-p", "4e-3", "--ctl-rate", "2.5e4", "--v-lim", "5E3"}, f), "");
-  EXPECT_EQ(f.ctl.k_p, 0.004);
-  EXPECT_EQ(f.ctl.rate_hz, 25000);
-  EXPECT_EQ(f.ctl.v_lim, 5000);
+  EXPECT_EQ(f.ctl.values.k_p, 0.004);
+  EXPECT_EQ(f.ctl.values.rate_hz, 25000);
+  EXPECT_EQ(f.ctl.values.v_lim, 5000);
 }
 
 TEST(ClosedLoopCliParams, ScenarioControllerKeysRefuseWrongTypesAndRanges) {
@@ -111,7 +111,7 @@ TEST(ClosedLoopCliParams, ScenarioControllerKeysRefuseWrongTypesAndRanges) {
     if (p.lo >= 0) bad.push_back("-1");
     if (p.integer) bad.push_back("1.5");
     for (const std::string& v : bad) {
-      ControllerParams c;
+      ControllerInput c;
       PlantConfig plant;
       const std::string err = apply_scenario_json(scenario_with("controller", p.key, v), c, plant);
       EXPECT_NE(err.find(std::string("scenario.controller.") + p.key + "="), std::string::npos)
@@ -130,9 +130,9 @@ TEST(ClosedLoopCliParams, SwitchesTakeNoValue) {
   }
   ClosedLoopCli f;
   ASSERT_EQ(parse_flags({"--no-ff", "--fixed-gain", "--open-loop"}, f), "");
-  EXPECT_FALSE(f.ctl.ff);
-  EXPECT_FALSE(f.ctl.adaptive);
-  EXPECT_FALSE(f.ctl.closed_loop);
+  EXPECT_FALSE(f.ctl.values.ff);
+  EXPECT_FALSE(f.ctl.values.adaptive);
+  EXPECT_FALSE(f.ctl.values.closed_loop);
 }
 
 TEST(ClosedLoopCliParams, EmptyFilePathsAreRefused) {
@@ -141,6 +141,29 @@ TEST(ClosedLoopCliParams, EmptyFilePathsAreRefused) {
     const std::string err = parse_flags({flag, ""}, f);
     EXPECT_NE(err.find(std::string(flag + 2) + "=''"), std::string::npos) << err;
   }
+}
+
+// Gains not given follow the control rate; given ones (flag or scenario)
+// are used as given.
+TEST(ClosedLoopCliParams, UngivenGainsTakeTheDefaultsForTheControlRate) {
+  ClosedLoopCli f;
+  ASSERT_EQ(parse_flags({"--ctl-rate", "40000"}, f), "");
+  const ControllerParams r = f.ctl.resolve();
+  const ControllerParams want = scurve::controller_defaults(40000);
+  for (const ControllerParam& p : controller_params()) EXPECT_EQ(p.get(r), p.get(want)) << p.key;
+  EXPECT_EQ(r.k_v, 0.005);
+
+  ClosedLoopCli g;
+  ASSERT_EQ(parse_flags({"--ctl-rate", "40000", "--k-v", "0.02"}, g), "");
+  EXPECT_EQ(g.ctl.resolve().k_v, 0.02);
+  EXPECT_EQ(g.ctl.resolve().w_p1_max, want.w_p1_max);
+
+  ControllerInput s;
+  PlantConfig plant;
+  ASSERT_EQ(apply_scenario_json(R"({"controller": {"rate_hz": 20000, "w_p1_max": 0.5}})", s, plant), "");
+  EXPECT_EQ(s.resolve().k_v, 0.01);
+  EXPECT_EQ(s.resolve().w_p1_max, 0.5);
+  EXPECT_EQ(ClosedLoopCli{}.ctl.resolve().k_v, ControllerParams{}.k_v);
 }
 
 // Settings that keep the cross-checks of to_servo_config satisfied while
@@ -175,7 +198,7 @@ TEST(ClosedLoopCliParams, ShippedScenarioNamesEveryTableKey) {
   ASSERT_TRUE(in);
   std::stringstream text;
   text << in.rdbuf();
-  ControllerParams c;
+  ControllerInput c;
   PlantConfig plant;
   ASSERT_EQ(apply_scenario_json(text.str(), c, plant), "");
   const nlohmann::json j = nlohmann::json::parse(text.str());

@@ -29,6 +29,19 @@ int32_t wgt(double v) { return int32_t(std::llround(v * double(1 << WgtFrac))); 
 
 }  // namespace
 
+ControllerParams controller_defaults(double rate_hz) {
+  ControllerParams p;
+  p.rate_hz = rate_hz;
+  if (!(rate_hz > 0) || !std::isfinite(rate_hz)) return p;  // to_servo_config names the bad rate
+  const double s = kTunedControlRate / rate_hz;
+  p.k_v *= s;
+  p.k_p *= std::max(1.0, s);
+  p.w_p1 *= s;
+  p.fixed_w_p1 *= s;
+  p.w_p1_max *= s;
+  return p;
+}
+
 ServoConfigResult to_servo_config(const ControllerParams& p, double counts_per_step, const PulseTiming& t,
                                   Clock clock) {
   if (std::string e = check_clock(clock); !e.empty()) return Error{"clock_hz", e};

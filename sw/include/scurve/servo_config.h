@@ -75,6 +75,24 @@ struct ControllerParams {
   int enc_filt = 3;             // glitch filter, clocks
 };
 
+// The control rate the defaults of ControllerParams are tuned at.
+inline constexpr double kTunedControlRate = 10000;
+
+// The defaults for a control rate: ControllerParams{} at kTunedControlRate;
+// at another rate the per-period settings that keep the tuned loop's gains
+// per second (docs/closed_loop.md, "Control rate"), with s = 10 kHz / rate:
+//  * k_v x s: the speed loop's integral gain per second, K_v w_v1' rate
+//    (160/s), must stay below what the rotor's lightly damped resonance
+//    allows (about 2 zeta w_n = 205/s for the default plant);
+//  * k_p x max(1, s): the position loop's gain per second, K_p w_p2' rate,
+//    is kept at 40/s below 10 kHz; above, K_p stays 0.004 per period, since
+//    a smaller per-period gain leaves each increment of the incremental PI
+//    a few LSB of the Q16 velocity word and its rounding dominates;
+//  * w_p1, fixed_w_p1, w_p1_max x s: the position integral weight keeps
+//    the ratio of the loop's integral to proportional gain per second.
+// Everything else is per second or per pulse already, or not rate-bound.
+ControllerParams controller_defaults(double rate_hz);
+
 using ServoConfigResult = std::variant<ServoConfig, Error>;
 
 // Register values for the settings, an encoder with `counts_per_step`
