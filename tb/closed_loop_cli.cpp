@@ -9,6 +9,7 @@
 #include <vector>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <fstream>
 #include <iostream>
 #include <nlohmann/json.hpp>
@@ -121,14 +122,28 @@ ControllerParams ControllerInput::resolve() const {
 
 namespace {
 
-// A flag's text through the validation layer; CLI11 reports it (exit 2).
+// A flag's text through the validation layer; CLI11 reports it (exit 2)
+// as given (a ConversionError: a ValidationError would get the flag's name
+// put in front once more).
 double checked_flag(const char* flag, const std::string& text, double lo, double hi, bool integer) {
   try {
     return integer ? double(input::parse_int(flag, text, int64_t(lo), int64_t(hi)))
                    : input::parse_real(flag, text, lo, hi);
   } catch (const input::Error& e) {
-    throw CLI::ValidationError(e.what());
+    throw CLI::ConversionError(e.what());
   }
+}
+
+// A number flag: every occurrence checked, the last one counts (as for the
+// move flags), so "--k-p nan --k-p 0.004" is refused, not half-read.
+CLI::Option* add_number_flag(CLI::App* sim, const char* flag, double lo, double hi, bool integer,
+                             std::function<void(double)> set, const std::string& what) {
+  return sim
+      ->add_option_function<std::string>(
+          std::string("--") + flag, [=](const std::string& v) { set(checked_flag(flag, v, lo, hi, integer)); }, what)
+      ->each([=](const std::string& v) { checked_flag(flag, v, lo, hi, integer); })
+      ->type_name(integer ? "INT" : "NUM")
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
 }
 
 // One flag per table row, set(row index, value); the last of repeated
@@ -138,25 +153,25 @@ void add_number_flags(CLI::App* sim, const std::vector<NumberParam<Target>>& par
                       const std::string& group) {
   for (size_t i = 0; i < params.size(); ++i) {
     const NumberParam<Target>& prm = params[i];
-    sim->add_option_function<std::string>(
-           std::string("--") + prm.flag,
-           [set, &prm, i](const std::string& v) { set(i, checked_flag(prm.flag, v, prm.lo, prm.hi, prm.integer)); },
-           fmt::format("{} ({}..{})", prm.what, prm.lo, prm.hi))
-        ->type_name(prm.integer ? "INT" : "NUM")
-        ->multi_option_policy(CLI::MultiOptionPolicy::TakeLast)
+    add_number_flag(sim, prm.flag, prm.lo, prm.hi, prm.integer, [set, i](double v) { set(i, v); },
+                    fmt::format("{} ({}..{})", prm.what, prm.lo, prm.hi))
         ->group(group);
   }
 }
 
 // A file path flag: empty text is an error, not "no file".
 CLI::Option* add_path_flag(CLI::App* sim, const char* flag, std::string& target, const std::string& what) {
+  auto check = [flag](const std::string& v) {
+    if (v.empty()) throw CLI::ConversionError(input::Error(flag, "''", "required, a file path").what());
+  };
   return sim->add_option_function<std::string>(
                 std::string("--") + flag,
-                [&target, flag](const std::string& v) {
-                  if (v.empty()) throw CLI::ValidationError(input::Error(flag, "''", "required, a file path").what());
+                [&target, check](const std::string& v) {
+                  check(v);
                   target = v;
                 },
                 what)
+      ->each(check)
       ->type_name("FILE")
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
 }
@@ -188,11 +203,8 @@ void add_closed_loop_flags(CLI::App* sim, ClosedLoopCli& f) {
   add_path_flag(sim, "weights-csv", f.weights_csv, "write the neuron weight trajectories (CSV; -<name> per run)")
       ->group(g);
   add_path_flag(sim, "scenario", f.scenario, "JSON file: {\"plant\": {...}, \"controller\": {...}}")->group(g);
-  sim->add_option_function<std::string>(
-         "--tail", [&f](const std::string& v) { f.tail_s = checked_flag("tail", v, 0, 10, false); },
-         "quiet time after done for the residual vibration, s (0..10)")
-      ->type_name("NUM")
-      ->multi_option_policy(CLI::MultiOptionPolicy::TakeLast)
+  add_number_flag(sim, "tail", 0, 10, false, [&f](double v) { f.tail_s = v; },
+                  "quiet time after done for the residual vibration, s (0..10)")
       ->group(g);
   // plant and controller: every number through its table (flags and
   // scenario keys alike)

@@ -46,9 +46,12 @@ for a in k-p=-1 k-p=16 k-v=-1 kb=-1 eta-p1=-1 eta-v2=16 learn-dz-p=-1 learn-dz-p
          learn-shift=1.5 enc-filter=16 enc-filter=-1 enc-filter=010 enc-filter=0x1; do
   expect2 "$a" "--${a%%=*}" "${a#*=}"
 done
-# Switches take no value; the last of repeated numbers counts (checked each).
+# Switches take no value; of repeated numbers the last counts, each checked.
 for a in no-ff=false fixed-gain=0 open-loop=no missed-steps=false; do expect2 "${a%%=*}" "--$a"; done
 expect2 "k-p=nan" --k-p 0.004 --k-p nan
+expect2 "k-p=nan" --k-p nan --k-p 0.004
+expect2 "enc-filter=010" --enc-filter 010 --enc-filter 3
+expect2 "weights-csv=''" --weights-csv "" --weights-csv w.csv
 # Settings valid alone, not together: one line naming both.
 expect2 "inpos-hold=1 s" --ctl-rate 78125 --inpos-hold 1
 expect2 "ferr-lim=32767" --counts-per-step 4 --ferr-lim 32767

@@ -120,6 +120,23 @@ TEST(ClosedLoopCliParams, ScenarioControllerKeysRefuseWrongTypesAndRanges) {
   }
 }
 
+// Of repeated flags the last counts, and every one is checked: an earlier
+// bad value is refused, not dropped.
+TEST(ClosedLoopCliParams, RepeatedFlagsAreEachCheckedAndTheLastCounts) {
+  ClosedLoopCli f;
+  ASSERT_EQ(parse_flags({"--k-p", "0.002", "--k-p", "0.003", "--enc-filter", "1", "--enc-filter", "5"}, f), "");
+  EXPECT_EQ(f.ctl.values.k_p, 0.003);
+  EXPECT_EQ(f.ctl.values.enc_filt, 5);
+  for (const std::vector<std::string>& args : std::vector<std::vector<std::string>>{
+           {"--k-p", "nan", "--k-p", "0.004"}, {"--enc-filter", "010", "--enc-filter", "3"},
+           {"--tail", "-1", "--tail", "0.1"}, {"--weights-csv", "", "--weights-csv", "w.csv"}}) {
+    ClosedLoopCli g;
+    const std::string err = parse_flags(args, g);
+    EXPECT_NE(err.find(args[0].substr(2) + "=" + (args[1].empty() ? "''" : args[1])), std::string::npos)
+        << args[0] << " " << args[1] << ": " << err;
+  }
+}
+
 // Switches are given or not: a value after them would be read as a
 // double negation ("--no-ff=false").
 TEST(ClosedLoopCliParams, SwitchesTakeNoValue) {
