@@ -478,10 +478,12 @@ int run_closed_loop_cli(ClosedLoopCli f, const std::vector<std::pair<std::string
   } else {
     for (const auto& [name, req] : jobs) list.push_back({name, req, ctl});
   }
-  // The weights' files can be written: refused now, not after the runs.
+  // The weights' files can be written: refused now, not after the runs
+  // (the path as given too: "dir/" is no file name for several runs either).
   if (!f.weights_csv.empty()) {
-    for (const Job& j : list) {
-      const std::string path = csv_path(f.weights_csv, j.name, list.size() > 1);
+    std::vector<std::string> paths = {f.weights_csv};
+    for (const Job& j : list) paths.push_back(csv_path(f.weights_csv, j.name, list.size() > 1));
+    for (const std::string& path : paths) {
       const std::string e = check_output_path("weights-csv", f.weights_csv, path);
       if (!e.empty()) {
         std::fprintf(stderr, "error: %s\n", e.c_str());

@@ -91,6 +91,12 @@ expect_no_csv() {
 expect2 "weights-csv=$w/nodir/w.csv: no directory" --weights-csv "$w/nodir/w.csv"; expect_no_csv "missing directory"
 expect2 "weights-csv=$w/dir: $w/dir is a directory" --weights-csv "$w/dir"; expect_no_csv "directory as path"
 expect2 "weights-csv=$w/dir/: $w/dir/ is a directory" --weights-csv "$w/dir/"; expect_no_csv "directory as path"
+expect2 "weights-csv=$w/dir/: $w/dir/ is a directory" --compare --weights-csv "$w/dir/"; expect_no_csv "directory, several runs"
+# Not a regular file (a FIFO here; the same check keeps a device such as
+# /dev/null from being replaced by the renamed file).
+mkfifo "$w/fifo"
+expect2 "weights-csv=$w/fifo: $w/fifo exists and is not a regular file" --weights-csv "$w/fifo"
+rm "$w/fifo"; expect_no_csv "FIFO as path"
 # Under a file-size limit the subshell's own output goes to a fresh file,
 # with SIGXFSZ ignored, so only the program under test meets the limit.
 limited() {  # limited <kb> <expected> <args...>
