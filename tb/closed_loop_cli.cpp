@@ -9,6 +9,7 @@
 #include <vector>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <fstream>
 #include <iostream>
 #include <nlohmann/json.hpp>
@@ -21,50 +22,170 @@
 
 namespace sc {
 
-namespace {
-
-// A plant setting a user can give: its flag, its scenario key, its range.
-struct PlantParam {
-  const char* flag;  // without "--"
-  const char* key;   // in a scenario's "plant" object
-  double lo, hi;
-  bool integer;
-  const char* what;
-  void (*set)(PlantConfig&, double);
-};
-
+// Plant settings: physical ranges of the model (tb/plant.h).
 const std::vector<PlantParam>& plant_params() {
+#define SC_GET(f) [](const PlantConfig& p) { return double(p.f); }
+#define SC_FIELD(f) [](PlantConfig& p, double v) { p.f = v; }, SC_GET(f)
   static const std::vector<PlantParam> params = {
-      {"f-n", "f_n", 0.1, 1e5, false, "rotor natural frequency, Hz", [](PlantConfig& p, double v) { p.f_n = v; }},
-      {"zeta", "zeta", 1e-3, 10, false, "rotor damping ratio", [](PlantConfig& p, double v) { p.zeta = v; }},
-      {"load-torque", "load_torque", 0, 100, false, "constant load torque, N m",
-       [](PlantConfig& p, double v) { p.load_torque = v; }},
-      {"inertia", "inertia", 1e-9, 10, false, "rotor + load inertia, kg m^2",
-       [](PlantConfig& p, double v) { p.inertia = v; }},
-      {"pulses-per-rev", "pulses_per_rev", 1, 1e7, false, "driver pulses per revolution",
-       [](PlantConfig& p, double v) { p.pulses_per_rev = v; }},
+      {"f-n", "f_n", 0.1, 1e5, false, "rotor natural frequency, Hz", SC_FIELD(f_n)},
+      {"zeta", "zeta", 1e-3, 10, false, "rotor damping ratio", SC_FIELD(zeta)},
+      {"load-torque", "load_torque", 0, 100, false, "constant load torque, N m", SC_FIELD(load_torque)},
+      {"inertia", "inertia", 1e-9, 10, false, "rotor + load inertia, kg m^2", SC_FIELD(inertia)},
+      {"pulses-per-rev", "pulses_per_rev", 1, 1e7, false, "driver pulses per revolution", SC_FIELD(pulses_per_rev)},
       {"counts-per-step", "counts_per_step", 1, 64, false, "encoder counts per pulse (power of 2)",
-       [](PlantConfig& p, double v) { p.counts_per_step = v; }},
-      {"tau", "tau", 1e-6, 100, false, "first-order plant time constant, s", [](PlantConfig& p, double v) { p.tau = v; }},
-      {"enc-noise", "noise_counts", 0, 1e6, false, "encoder position noise, sigma in counts",
-       [](PlantConfig& p, double v) { p.noise_counts = v; }},
-      {"enc-glitch-rate", "glitch_rate", 0, 1e7, false, "A/B glitches per second",
-       [](PlantConfig& p, double v) { p.glitch_rate = v; }},
+       SC_FIELD(counts_per_step)},
+      {"tau", "tau", 1e-6, 100, false, "first-order plant time constant, s", SC_FIELD(tau)},
+      {"enc-noise", "noise_counts", 0, 1e6, false, "encoder position noise, sigma in counts", SC_FIELD(noise_counts)},
+      {"enc-glitch-rate", "glitch_rate", 0, 1e7, false, "A/B glitches per second", SC_FIELD(glitch_rate)},
       {"enc-glitch-clocks", "glitch_clocks", 1, 65535, true, "glitch length, clocks",
-       [](PlantConfig& p, double v) { p.glitch_clocks = int(v); }},
+       [](PlantConfig& p, double v) { p.glitch_clocks = int(v); }, SC_GET(glitch_clocks)},
       {"plant-seed", "seed", 0, 9007199254740992.0, true, "noise/glitch seed",
-       [](PlantConfig& p, double v) { p.seed = uint64_t(v); }},
+       [](PlantConfig& p, double v) { p.seed = uint64_t(v); }, SC_GET(seed)},
   };
   return params;
+#undef SC_FIELD
+#undef SC_GET
 }
 
-// A flag's text through the validation layer; CLI11 reports it (exit 2).
+// Controller settings: the ranges the register words hold (servo_config.h).
+// Ranges that also depend on another setting (the control rate, the
+// encoder's counts per pulse, the weight bounds' order) are checked
+// together by to_servo_config, with one message naming both.
+const std::vector<ControllerParam>& controller_params() {
+#define SC_GET(f) [](const ControllerParams& c) { return double(c.f); }
+#define SC_FIELD(f) [](ControllerParams& c, double v) { c.f = v; }, SC_GET(f)
+#define SC_INT_FIELD(f) [](ControllerParams& c, double v) { c.f = int(v); }, SC_GET(f)
+  using namespace scurve;
+  const double pulses = max_pulses(1.0);  // the widest: one count per pulse
+  static const std::vector<ControllerParam> params = {
+      {"ctl-rate", "rate_hz", double(ClkHz) / kMaxControlDiv, double(ClkHz) / kMinControlDiv, false,
+       "control rate, Hz", SC_FIELD(rate_hz)},
+      {"k-p", "k_p", 0, kMaxCoef, false, "position neuron gain K_p, per control period", SC_FIELD(k_p)},
+      {"k-v", "k_v", 0, kMaxCoef, false, "speed neuron gain K_v, per control period", SC_FIELD(k_v)},
+      {"kb", "kb", 0, kMaxCoef, false, "back-calculation anti-windup gain Kb", SC_FIELD(kb)},
+      {"eta-p1", "eta_p1", 0, kMaxCoef, false, "learning rate, position loop, integral weight", SC_FIELD(eta_p1)},
+      {"eta-p2", "eta_p2", 0, kMaxCoef, false, "learning rate, position loop, proportional weight", SC_FIELD(eta_p2)},
+      {"eta-v1", "eta_v1", 0, kMaxCoef, false, "learning rate, speed loop, integral weight", SC_FIELD(eta_v1)},
+      {"eta-v2", "eta_v2", 0, kMaxCoef, false, "learning rate, speed loop, proportional weight", SC_FIELD(eta_v2)},
+      {"learn-shift", "learn_shift", 0, kMaxLearnShift, true, "Hebb scale 2^-n", SC_INT_FIELD(learn_shift)},
+      {"learn-dz-p", "learn_dz_p", 0, pulses, false, "no position learning while |e_p| <= this, pulses",
+       SC_FIELD(learn_dz_p)},
+      {"learn-dz-v", "learn_dz_v", 0, pulses, false, "no speed learning while |e_v| <= this, pulses/period",
+       SC_FIELD(learn_dz_v)},
+      {"w-p1", "w_p1", -kMaxWeight, kMaxWeight, false, "initial weight, position integral", SC_FIELD(w_p1)},
+      {"fixed-w-p1", "fixed_w_p1", -kMaxWeight, kMaxWeight, false, "position integral weight of the fixed-gain PI",
+       SC_FIELD(fixed_w_p1)},
+      {"w-p2", "w_p2", -kMaxWeight, kMaxWeight, false, "initial weight, position proportional", SC_FIELD(w_p2)},
+      {"w-v1", "w_v1", -kMaxWeight, kMaxWeight, false, "initial weight, speed integral", SC_FIELD(w_v1)},
+      {"w-v2", "w_v2", -kMaxWeight, kMaxWeight, false, "initial weight, speed proportional", SC_FIELD(w_v2)},
+      {"w-min", "w_min", -kMaxWeight, kMaxWeight, false, "lower weight bound (all weights)", SC_FIELD(w_min)},
+      {"w-p1-max", "w_p1_max", -kMaxWeight, kMaxWeight, false, "upper bound, position integral weight",
+       SC_FIELD(w_p1_max)},
+      {"w-p2-max", "w_p2_max", -kMaxWeight, kMaxWeight, false, "upper bound, position proportional weight",
+       SC_FIELD(w_p2_max)},
+      {"w-v1-max", "w_v1_max", -kMaxWeight, kMaxWeight, false, "upper bound, speed integral weight",
+       SC_FIELD(w_v1_max)},
+      {"w-v2-max", "w_v2_max", -kMaxWeight, kMaxWeight, false, "upper bound, speed proportional weight",
+       SC_FIELD(w_v2_max)},
+      {"v-lim", "v_lim", 0, kMaxSpeed, false, "position-loop output limit, pulses/s", SC_FIELD(v_lim)},
+      {"u-lim", "u_lim", 0, kMaxSpeed, false, "speed-loop output limit, pulses/s (0: 90 % of the step-rate limit)",
+       SC_FIELD(u_lim)},
+      {"ferr-lim", "ferr_lim", 1, pulses, false, "following-error fault limit, pulses", SC_FIELD(ferr_lim)},
+      {"inpos-win", "inpos_win", 0, pulses, false, "in-position window, pulses", SC_FIELD(inpos_win)},
+      {"inpos-hold", "inpos_hold_s", 0, kMaxInposHold, false, "in-position hold time, s", SC_FIELD(inpos_hold_s)},
+      {"settle-rate", "settle_rate", 0, kMaxSpeed, false, "corrective step rate after the reference, pulses/s",
+       SC_FIELD(settle_rate)},
+      {"enc-filter", "enc_filt", 0, kMaxEncFilter, true, "encoder glitch filter, clocks", SC_INT_FIELD(enc_filt)},
+  };
+  return params;
+#undef SC_FIELD
+#undef SC_INT_FIELD
+#undef SC_GET
+}
+
+ControllerInput::ControllerInput() : given(controller_params().size(), false) {}
+
+void ControllerInput::set(size_t param, double v) {
+  controller_params()[param].set(values, v);
+  given[param] = true;
+}
+
+ControllerParams ControllerInput::resolve() const {
+  ControllerParams r = values;
+  const ControllerParams defaults = scurve::controller_defaults(values.rate_hz);
+  for (size_t i = 0; i < given.size(); ++i) {
+    const ControllerParam& prm = controller_params()[i];
+    if (!given[i]) prm.set(r, prm.get(defaults));
+  }
+  return r;
+}
+
+namespace {
+
+// A flag's text through the validation layer; CLI11 reports it (exit 2)
+// as given (a ConversionError: a ValidationError would get the flag's name
+// put in front once more).
 double checked_flag(const char* flag, const std::string& text, double lo, double hi, bool integer) {
   try {
     return integer ? double(input::parse_int(flag, text, int64_t(lo), int64_t(hi)))
                    : input::parse_real(flag, text, lo, hi);
   } catch (const input::Error& e) {
-    throw CLI::ValidationError(e.what());
+    throw CLI::ConversionError(e.what());
+  }
+}
+
+// A number flag: every occurrence checked, the last one counts (as for the
+// move flags), so "--k-p nan --k-p 0.004" is refused, not half-read.
+CLI::Option* add_number_flag(CLI::App* sim, const char* flag, double lo, double hi, bool integer,
+                             std::function<void(double)> set, const std::string& what) {
+  return sim
+      ->add_option_function<std::string>(
+          std::string("--") + flag, [=](const std::string& v) { set(checked_flag(flag, v, lo, hi, integer)); }, what)
+      ->each([=](const std::string& v) { checked_flag(flag, v, lo, hi, integer); })
+      ->type_name(integer ? "INT" : "NUM")
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
+}
+
+// One flag per table row, set(row index, value); the last of repeated
+// flags counts (as for the move flags).
+template <class Target, class Set>
+void add_number_flags(CLI::App* sim, const std::vector<NumberParam<Target>>& params, Set set,
+                      const std::string& group) {
+  for (size_t i = 0; i < params.size(); ++i) {
+    const NumberParam<Target>& prm = params[i];
+    add_number_flag(sim, prm.flag, prm.lo, prm.hi, prm.integer, [set, i](double v) { set(i, v); },
+                    fmt::format("{} ({}..{})", prm.what, prm.lo, prm.hi))
+        ->group(group);
+  }
+}
+
+// A file path flag: empty text is an error, not "no file".
+CLI::Option* add_path_flag(CLI::App* sim, const char* flag, std::string& target, const std::string& what) {
+  auto check = [flag](const std::string& v) {
+    if (v.empty()) throw CLI::ConversionError(input::Error(flag, "''", "required, a file path").what());
+  };
+  return sim->add_option_function<std::string>(
+                std::string("--") + flag,
+                [&target, check](const std::string& v) {
+                  check(v);
+                  target = v;
+                },
+                what)
+      ->each(check)
+      ->type_name("FILE")
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
+}
+
+// A scenario object's numbers through the same table as the flags.
+template <class Target, class Set>
+void apply_scenario_numbers(const std::string& where, const nlohmann::json& q,
+                            const std::vector<NumberParam<Target>>& params, Set set) {
+  for (size_t i = 0; i < params.size(); ++i) {
+    const NumberParam<Target>& prm = params[i];
+    if (!q.contains(prm.key)) continue;
+    const std::string at = where + "." + prm.key;
+    set(i, prm.integer ? double(input::json_int(at, q[prm.key], int64_t(prm.lo), int64_t(prm.hi)))
+                       : input::json_real(at, q[prm.key], prm.lo, prm.hi));
   }
 }
 
@@ -72,73 +193,52 @@ double checked_flag(const char* flag, const std::string& text, double lo, double
 
 void add_closed_loop_flags(CLI::App* sim, ClosedLoopCli& f) {
   const std::string g = "Closed loop";
-  sim->add_flag("--closed-loop", f.enabled, "run sc_servo_axis in closed loop with the plant model")->group(g);
+  sim->add_flag("--closed-loop", f.enabled, "run sc_servo_axis in closed loop with the plant model")
+      ->disable_flag_override()
+      ->group(g);
   sim->add_flag("--compare", f.compare,
                 "comparison: adaptive vs fixed-gain PI, with/without feed-forward, S-curve vs trapezoid")
+      ->disable_flag_override()
       ->group(g);
-  sim->add_option("--weights-csv", f.weights_csv, "write the neuron weight trajectories (CSV; -<name> per run)")->group(g);
-  sim->add_option("--scenario", f.scenario, "JSON file: {\"plant\": {...}, \"controller\": {...}}")->group(g);
-  sim->add_option_function<std::string>(
-         "--tail", [&f](const std::string& v) { f.tail_s = checked_flag("tail", v, 0, 10, false); },
-         "quiet time after done for the residual vibration, s (0..10)")
+  add_path_flag(sim, "weights-csv", f.weights_csv, "write the neuron weight trajectories (CSV; -<name> per run)")
       ->group(g);
-  // plant: every number through the one table (flags and scenario keys alike)
+  add_path_flag(sim, "scenario", f.scenario, "JSON file: {\"plant\": {...}, \"controller\": {...}}")->group(g);
+  add_number_flag(sim, "tail", 0, 10, false, [&f](double v) { f.tail_s = v; },
+                  "quiet time after done for the residual vibration, s (0..10)")
+      ->group(g);
+  // plant and controller: every number through its table (flags and
+  // scenario keys alike)
   const std::string pg = "Plant";
   sim->add_option("--plant", f.plant_kind, "stepper | first-order")
       ->check(CLI::IsMember({"stepper", "first-order"}))->group(pg);
-  for (const PlantParam& prm : plant_params()) {
-    sim->add_option_function<std::string>(
-           std::string("--") + prm.flag,
-           [&f, &prm](const std::string& v) { prm.set(f.plant, checked_flag(prm.flag, v, prm.lo, prm.hi, prm.integer)); },
-           fmt::format("{} ({}..{})", prm.what, prm.lo, prm.hi))
-        ->group(pg);
-  }
-  sim->add_flag("--missed-steps", f.plant.missed_steps, "sinusoidal torque-angle curve: the rotor can slip")->group(pg);
-  // controller
+  add_number_flags(sim, plant_params(), [&f](size_t i, double v) { plant_params()[i].set(f.plant, v); }, pg);
+  sim->add_flag("--missed-steps", f.plant.missed_steps, "sinusoidal torque-angle curve: the rotor can slip")
+      ->disable_flag_override()
+      ->group(pg);
   const std::string cg = "Controller";
-  ControllerParams& c = f.ctl;
-  sim->add_option("--ctl-rate", c.rate_hz, "control rate, Hz")->group(cg);
-  sim->add_flag("!--no-ff", c.ff, "no velocity feed-forward")->group(cg);
-  sim->add_flag("!--fixed-gain", c.adaptive, "learning rates 0: fixed-gain PI cascade")->group(cg);
-  sim->add_flag("!--open-loop", c.closed_loop, "same top, open-loop step path (baseline)")->group(cg);
-  sim->add_option("--k-p", c.k_p, "position neuron gain K_p")->group(cg);
-  sim->add_option("--k-v", c.k_v, "speed neuron gain K_v")->group(cg);
-  sim->add_option("--kb", c.kb, "back-calculation anti-windup gain Kb")->group(cg);
-  sim->add_option("--eta-p1", c.eta_p1, "learning rate, position loop, integral weight")->group(cg);
-  sim->add_option("--eta-p2", c.eta_p2, "learning rate, position loop, proportional weight")->group(cg);
-  sim->add_option("--eta-v1", c.eta_v1, "learning rate, speed loop, integral weight")->group(cg);
-  sim->add_option("--eta-v2", c.eta_v2, "learning rate, speed loop, proportional weight")->group(cg);
-  sim->add_option("--learn-shift", c.learn_shift, "Hebb scale 2^-n")->group(cg);
-  sim->add_option("--learn-dz-p", c.learn_dz_p, "no position learning while |e_p| <= this, pulses")->group(cg);
-  sim->add_option("--learn-dz-v", c.learn_dz_v, "no speed learning while |e_v| <= this, pulses/period")->group(cg);
-  sim->add_option("--w-p1", c.w_p1, "initial weight, position integral")->group(cg);
-  sim->add_option("--fixed-w-p1", c.fixed_w_p1, "position integral weight of the fixed-gain PI")->group(cg);
-  sim->add_option("--w-p2", c.w_p2, "initial weight, position proportional")->group(cg);
-  sim->add_option("--w-v1", c.w_v1, "initial weight, speed integral")->group(cg);
-  sim->add_option("--w-v2", c.w_v2, "initial weight, speed proportional")->group(cg);
-  sim->add_option("--w-min", c.w_min, "lower weight bound")->group(cg);
-  sim->add_option("--w-p1-max", c.w_p1_max, "upper bound, position integral weight")->group(cg);
-  sim->add_option("--w-p2-max", c.w_p2_max, "upper bound, position proportional weight")->group(cg);
-  sim->add_option("--w-v1-max", c.w_v1_max, "upper bound, speed integral weight")->group(cg);
-  sim->add_option("--w-v2-max", c.w_v2_max, "upper bound, speed proportional weight")->group(cg);
-  sim->add_option("--v-lim", c.v_lim, "position-loop output limit, pulses/s")->group(cg);
-  sim->add_option("--u-lim", c.u_lim, "speed-loop output limit, pulses/s (0: 90 % of the step-rate limit)")->group(cg);
-  sim->add_option("--ferr-lim", c.ferr_lim, "following-error fault limit, pulses")->group(cg);
-  sim->add_option("--inpos-win", c.inpos_win, "in-position window, pulses")->group(cg);
-  sim->add_option("--inpos-hold", c.inpos_hold_s, "in-position hold time, s")->group(cg);
-  sim->add_option("--settle-rate", c.settle_rate, "corrective step rate after the reference, pulses/s")->group(cg);
-  sim->add_option("--enc-filter", c.enc_filt, "encoder glitch filter, clocks (0..15)")->group(cg);
+  add_number_flags(sim, controller_params(), [&f](size_t i, double v) { f.ctl.set(i, v); }, cg);
+  ControllerParams& c = f.ctl.values;
+  // Switches take no value ("--no-ff=false" would read as a double negation).
+  sim->add_flag_callback("--no-ff", [&c] { c.ff = false; }, "no velocity feed-forward")
+      ->disable_flag_override()
+      ->group(cg);
+  sim->add_flag_callback("--fixed-gain", [&c] { c.adaptive = false; }, "learning rates 0: fixed-gain PI cascade")
+      ->disable_flag_override()
+      ->group(cg);
+  sim->add_flag_callback("--open-loop", [&c] { c.closed_loop = false; }, "same top, open-loop step path (baseline)")
+      ->disable_flag_override()
+      ->group(cg);
 }
 
-std::string apply_scenario_json(const std::string& text, ControllerParams& c, PlantConfig& p) {
+std::string apply_scenario_json(const std::string& text, ControllerInput& c, PlantConfig& p) {
   nlohmann::json j;
   try {
     j = nlohmann::json::parse(text);
   } catch (const std::exception& e) {
     return std::string("scenario: not JSON: ") + e.what();
   }
-  // Every key known and typed, the plant's numbers in the flags' ranges (one
-  // table), so a typo is an error instead of the default plant.
+  // Every key known and typed, the numbers in the flags' ranges (the same
+  // tables), so a typo is an error instead of the default.
   try {
     using namespace input;
     json_known_keys("scenario", j, {"_comment", "description", "plant", "controller"});
@@ -155,39 +255,17 @@ std::string apply_scenario_json(const std::string& text, ControllerParams& c, Pl
         p.kind = kind == "first-order" ? PlantConfig::Kind::FirstOrder : PlantConfig::Kind::Stepper;
       }
       if (q.contains("missed_steps")) p.missed_steps = json_bool("scenario.plant.missed_steps", q["missed_steps"]);
-      for (const PlantParam& prm : plant_params()) {
-        if (!q.contains(prm.key)) continue;
-        const std::string at = std::string("scenario.plant.") + prm.key;
-        prm.set(p, prm.integer ? double(json_int(at, q[prm.key], int64_t(prm.lo), int64_t(prm.hi)))
-                               : json_real(at, q[prm.key], prm.lo, prm.hi));
-      }
+      apply_scenario_numbers("scenario.plant", q, plant_params(),
+                             [&p](size_t i, double v) { plant_params()[i].set(p, v); });
     }
     if (j.contains("controller")) {
       const auto& q = json_object("scenario.controller", j["controller"]);
-      json_known_keys("scenario.controller", q,
-                      {"rate_hz", "k_p", "k_v", "kb", "eta_p1", "eta_p2", "eta_v1", "eta_v2", "learn_dz_p",
-                       "learn_dz_v", "w_p1", "fixed_w_p1", "w_p2", "w_v1", "w_v2", "w_min", "w_p1_max", "w_p2_max",
-                       "w_v1_max", "w_v2_max", "v_lim", "u_lim", "ferr_lim", "inpos_win", "inpos_hold_s",
-                       "settle_rate", "ff", "adaptive", "learn_shift", "enc_filt"});
-      // Ranges of the controller settings are checked where they become
-      // register values (to_servo_config), for flags and scenarios alike.
-      auto num = [&](const char* k, double& v) {
-        if (q.contains(k)) v = json_real(std::string("scenario.controller.") + k, q[k], -1e12, 1e12);
-      };
-      for (const auto& [k, v] : std::initializer_list<std::pair<const char*, double*>>{
-               {"rate_hz", &c.rate_hz}, {"k_p", &c.k_p}, {"k_v", &c.k_v}, {"kb", &c.kb}, {"eta_p1", &c.eta_p1},
-               {"eta_p2", &c.eta_p2}, {"eta_v1", &c.eta_v1}, {"eta_v2", &c.eta_v2}, {"learn_dz_p", &c.learn_dz_p},
-               {"learn_dz_v", &c.learn_dz_v}, {"w_p1", &c.w_p1}, {"fixed_w_p1", &c.fixed_w_p1}, {"w_p2", &c.w_p2},
-               {"w_v1", &c.w_v1}, {"w_v2", &c.w_v2}, {"w_min", &c.w_min}, {"w_p1_max", &c.w_p1_max},
-               {"w_p2_max", &c.w_p2_max}, {"w_v1_max", &c.w_v1_max}, {"w_v2_max", &c.w_v2_max}, {"v_lim", &c.v_lim},
-               {"u_lim", &c.u_lim}, {"ferr_lim", &c.ferr_lim}, {"inpos_win", &c.inpos_win},
-               {"inpos_hold_s", &c.inpos_hold_s}, {"settle_rate", &c.settle_rate}}) {
-        num(k, *v);
-      }
-      if (q.contains("ff")) c.ff = json_bool("scenario.controller.ff", q["ff"]);
-      if (q.contains("adaptive")) c.adaptive = json_bool("scenario.controller.adaptive", q["adaptive"]);
-      if (q.contains("learn_shift")) c.learn_shift = int(json_int("scenario.controller.learn_shift", q["learn_shift"], 0, 31));
-      if (q.contains("enc_filt")) c.enc_filt = int(json_int("scenario.controller.enc_filt", q["enc_filt"], 0, 15));
+      std::vector<std::string_view> keys = {"ff", "adaptive"};
+      for (const ControllerParam& prm : controller_params()) keys.push_back(prm.key);
+      json_known_keys("scenario.controller", q, keys);
+      if (q.contains("ff")) c.values.ff = json_bool("scenario.controller.ff", q["ff"]);
+      if (q.contains("adaptive")) c.values.adaptive = json_bool("scenario.controller.adaptive", q["adaptive"]);
+      apply_scenario_numbers("scenario.controller", q, controller_params(), [&c](size_t i, double v) { c.set(i, v); });
     }
   } catch (const std::exception& e) {
     return e.what();
@@ -242,6 +320,39 @@ nlohmann::json result_json(const ClosedLoopResult& r) {
   }
   j["failures"] = r.failures;
   j["pass"] = r.pass();
+  return j;
+}
+
+// Where an output file flag's file can go, checked before the (long) runs:
+// its directory exists, and the path is not a directory or a device (the
+// file is renamed into place). Empty, or the one-line reason.
+std::string check_output_path(const char* flag, const std::string& given, const std::string& path) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::path p(path);
+  const fs::file_status st = fs::status(p, ec);
+  if (fs::is_directory(st)) return input::Error(flag, given, path + " is a directory").what();
+  if (fs::exists(st) && !fs::is_regular_file(st)) {
+    return input::Error(flag, given, path + " exists and is not a regular file").what();
+  }
+  const fs::path dir = p.parent_path().empty() ? fs::path(".") : p.parent_path();
+  if (!fs::is_directory(dir, ec)) return input::Error(flag, given, "no directory " + dir.string()).what();
+  return {};
+}
+
+// Every setting of the table as used (the defaults for the rate included).
+nlohmann::json controller_json(const ControllerParams& c) {
+  nlohmann::json j;
+  for (const ControllerParam& prm : controller_params()) {
+    if (prm.integer) {
+      j[prm.key] = int64_t(prm.get(c));
+    } else {
+      j[prm.key] = prm.get(c);
+    }
+  }
+  j["ff"] = c.ff;
+  j["adaptive"] = c.adaptive;
+  j["closed_loop"] = c.closed_loop;
   return j;
 }
 
@@ -321,12 +432,13 @@ int run_closed_loop_cli(ClosedLoopCli f, const std::vector<std::pair<std::string
     }
   }
   if (f.plant_kind == "first-order") f.plant.kind = PlantConfig::Kind::FirstOrder;
+  const ControllerParams ctl = f.ctl.resolve();
   ClEngine eng = engine == "rtl" ? ClEngine::RtlOnly
                  : (engine == "model" || engine == "model-fast") ? ClEngine::ModelOnly
                                                                  : ClEngine::Lockstep;
   {
     ServoConfig probe;
-    if (std::string e = to_servo_config(f.ctl, f.plant, timing, probe); !e.empty()) {
+    if (std::string e = to_servo_config(ctl, f.plant, timing, probe); !e.empty()) {
       std::fprintf(stderr, "error: %s\n", e.c_str());
       return 2;
     }
@@ -355,7 +467,7 @@ int run_closed_loop_cli(ClosedLoopCli f, const std::vector<std::pair<std::string
           {"open-loop trapezoid", false, false, true, ProfileKind::Trapezoid},
       };
       for (const V& v : vs) {
-        Job j{name + "/" + v.tag, req0, f.ctl};
+        Job j{name + "/" + v.tag, req0, ctl};
         j.req.kind = v.kind;
         j.ctl.closed_loop = v.closed;
         j.ctl.adaptive = v.adaptive;
@@ -364,7 +476,20 @@ int run_closed_loop_cli(ClosedLoopCli f, const std::vector<std::pair<std::string
       }
     }
   } else {
-    for (const auto& [name, req] : jobs) list.push_back({name, req, f.ctl});
+    for (const auto& [name, req] : jobs) list.push_back({name, req, ctl});
+  }
+  // The weights' files can be written: refused now, not after the runs
+  // (the path as given too: "dir/" is no file name for several runs either).
+  if (!f.weights_csv.empty()) {
+    std::vector<std::string> paths = {f.weights_csv};
+    for (const Job& j : list) paths.push_back(csv_path(f.weights_csv, j.name, list.size() > 1));
+    for (const std::string& path : paths) {
+      const std::string e = check_output_path("weights-csv", f.weights_csv, path);
+      if (!e.empty()) {
+        std::fprintf(stderr, "error: %s\n", e.c_str());
+        return 2;
+      }
+    }
   }
   std::vector<Plan> plans;
   for (const Job& j : list) {
@@ -402,12 +527,13 @@ int run_closed_loop_cli(ClosedLoopCli f, const std::vector<std::pair<std::string
   bool pass = true;
   for (const ClosedLoopResult& r : results) pass = pass && r.pass();
   if (!f.weights_csv.empty()) {
+    std::vector<WeightsCsv> files;
     for (const ClosedLoopResult& r : results) {
-      const std::string p = csv_path(f.weights_csv, r.name, results.size() > 1);
-      if (!write_weights_csv(p, r.weights)) {
-        std::fprintf(stderr, "error: --weights-csv %s: cannot write\n", p.c_str());
-        return 2;
-      }
+      files.push_back({csv_path(f.weights_csv, r.name, results.size() > 1), &r.weights});
+    }
+    if (const std::string e = write_weights_csvs(files); !e.empty()) {
+      std::fprintf(stderr, "error: %s\n", input::Error("weights-csv", f.weights_csv, "cannot write " + e).what());
+      return 2;
     }
   }
   // Paper-table verdict: below Table 3 and final error 0 for each paper group.
@@ -415,7 +541,7 @@ int run_closed_loop_cli(ClosedLoopCli f, const std::vector<std::pair<std::string
   if (!f.compare) {
     for (const ClosedLoopResult& r : results) {
       const int g = group_of(r.name);
-      if (g == 0 || !f.ctl.closed_loop) continue;
+      if (g == 0 || !ctl.closed_loop) continue;
       const PaperRow& p = kPaperTable3[g - 1];
       if (!(r.max_error < p.max_error)) table_fail.push_back(fmt::format("{}: max error {:.3f} >= paper {}", r.name, r.max_error, p.max_error));
       if (!(r.rmse < p.rmse)) table_fail.push_back(fmt::format("{}: RMSE {:.4f} >= paper {}", r.name, r.rmse, p.rmse));
@@ -426,6 +552,7 @@ int run_closed_loop_cli(ClosedLoopCli f, const std::vector<std::pair<std::string
   out["runs"] = nlohmann::json::array();
   for (const ClosedLoopResult& r : results) out["runs"].push_back(result_json(r));
   out["plant"] = f.plant.describe();
+  out["controller"] = controller_json(ctl);
   out["table3_failures"] = table_fail;
   out["pass"] = pass;
   if (!scurve::cli::write_json_file(json_out, out)) {
@@ -436,13 +563,15 @@ int run_closed_loop_cli(ClosedLoopCli f, const std::vector<std::pair<std::string
     std::cout << out.dump(2) << "\n";
   } else {
     std::cout << "plant: " << f.plant.describe() << "\n";
+    std::cout << fmt::format("controller: {} Hz, K_p {}, K_v {}, w_p1 <= {}{}\n", ctl.rate_hz, ctl.k_p, ctl.k_v,
+                             ctl.w_p1_max, ctl.adaptive ? "" : fmt::format(" (fixed {})", ctl.fixed_w_p1));
     if (f.compare) {
       std::cout << comparison_table(results);
     } else {
       std::cout << closed_loop_table(results);
       bool any_group = false;
       for (const ClosedLoopResult& r : results) any_group = any_group || group_of(r.name) != 0;
-      if (any_group && f.ctl.closed_loop) std::cout << "\n" << table3_layout(results);
+      if (any_group && ctl.closed_loop) std::cout << "\n" << table3_layout(results);
     }
     for (const std::string& t : table_fail) std::cout << "FAIL: " << t << "\n";
   }

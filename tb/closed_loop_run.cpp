@@ -4,8 +4,10 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <deque>
 #include <memory>
 
@@ -71,15 +73,55 @@ SignalValues render_servo(const ServoOutputs& o) {
   return v;
 }
 
-bool write_weights_csv(const std::string& path, const std::vector<WeightSample>& w) {
-  std::FILE* f = std::fopen(path.c_str(), "w");
-  if (!f) return false;
-  std::fputs("t_s,w_p1,w_p2,w_v1,w_v2,wn_p1,wn_p2,wn_v1,wn_v2,e_p\n", f);
+namespace {
+
+// The CSV text into `f`; false on the first failed write (errno says why).
+bool put_weights_csv(std::FILE* f, const std::vector<WeightSample>& w) {
+  if (std::fputs("t_s,w_p1,w_p2,w_v1,w_v2,wn_p1,wn_p2,wn_v1,wn_v2,e_p\n", f) < 0) return false;
   for (const WeightSample& s : w) {
-    std::fprintf(f, "%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.4f\n", s.t, s.w[0], s.w[1], s.w[2], s.w[3],
-                 s.wn[0], s.wn[1], s.wn[2], s.wn[3], s.e_p);
+    if (std::fprintf(f, "%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.4f\n", s.t, s.w[0], s.w[1], s.w[2], s.w[3],
+                     s.wn[0], s.wn[1], s.wn[2], s.wn[3], s.e_p) < 0) {
+      return false;
+    }
   }
-  return std::fclose(f) == 0;
+  return std::fflush(f) == 0;
+}
+
+}  // namespace
+
+std::string write_weights_csvs(const std::vector<WeightsCsv>& files) {
+  std::vector<std::string> parts;
+  auto remove_parts = [&parts] {
+    for (const std::string& p : parts) std::remove(p.c_str());
+  };
+  for (const WeightsCsv& c : files) {
+    const std::string part = c.path + ".part";
+    errno = 0;
+    std::FILE* f = std::fopen(part.c_str(), "w");
+    if (!f) {
+      const std::string why = std::strerror(errno);
+      remove_parts();
+      return part + ": " + why;
+    }
+    parts.push_back(part);
+    const bool written = put_weights_csv(f, *c.samples);
+    const int write_errno = errno;
+    const bool closed = std::fclose(f) == 0;
+    if (!written || !closed) {
+      const std::string why = std::strerror(written ? errno : write_errno);
+      remove_parts();
+      return part + ": " + why;
+    }
+  }
+  for (size_t i = 0; i < files.size(); ++i) {
+    if (std::rename(parts[i].c_str(), files[i].path.c_str()) != 0) {
+      const std::string why = std::strerror(errno);
+      parts.erase(parts.begin(), parts.begin() + std::ptrdiff_t(i));  // the ones before are in place
+      remove_parts();
+      return files[i].path + ": " + why;
+    }
+  }
+  return {};
 }
 
 namespace {

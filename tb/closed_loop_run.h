@@ -83,6 +83,15 @@ ClosedLoopResult run_closed_loop(const Plan& plan, const ClosedLoopOptions& opt)
 // Field-by-field rendering of the outputs (mismatch reports).
 SignalValues render_servo(const ServoOutputs& o);
 
-bool write_weights_csv(const std::string& path, const std::vector<WeightSample>& w);
+// One weights CSV per run, all whole or none: each is written to
+// "<path>.part", and the files are renamed into place only once every one
+// of them is complete, so a full disk or a file-size limit leaves no file
+// (neither a truncated one nor some runs' files). Empty on success, else
+// "<file>: <reason>".
+struct WeightsCsv {
+  std::string path;
+  const std::vector<WeightSample>* samples;
+};
+std::string write_weights_csvs(const std::vector<WeightsCsv>& files);
 
 }  // namespace sc

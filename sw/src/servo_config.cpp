@@ -29,6 +29,19 @@ int32_t wgt(double v) { return int32_t(std::llround(v * double(1 << WgtFrac))); 
 
 }  // namespace
 
+ControllerParams controller_defaults(double rate_hz) {
+  ControllerParams p;
+  p.rate_hz = rate_hz;
+  if (!(rate_hz > 0) || !std::isfinite(rate_hz)) return p;  // to_servo_config names the bad rate
+  const double s = kTunedControlRate / rate_hz;
+  p.k_v *= s;
+  p.k_p *= std::max(1.0, s);
+  p.w_p1 *= s;
+  p.fixed_w_p1 *= s;
+  p.w_p1_max *= s;
+  return p;
+}
+
 ServoConfigResult to_servo_config(const ControllerParams& p, double counts_per_step, const PulseTiming& t,
                                   Clock clock) {
   if (std::string e = check_clock(clock); !e.empty()) return Error{"clock_hz", e};
@@ -37,15 +50,15 @@ ServoConfigResult to_servo_config(const ControllerParams& p, double counts_per_s
   c.enable = true;
   c.closed_loop = p.closed_loop;
   c.timing = t;
-  if (p.enc_filt < 0 || p.enc_filt >= (1 << EncFiltW)) {
-    return Error{"enc_filt", fmt::format("enc-filter={} outside 0..{}", p.enc_filt, (1 << EncFiltW) - 1)};
+  if (p.enc_filt < 0 || p.enc_filt > kMaxEncFilter) {
+    return Error{"enc_filt", fmt::format("enc-filter={} outside 0..{}", p.enc_filt, kMaxEncFilter)};
   }
   NeuronConfig& n = c.ctl;
   n.enc_filt = uint8_t(p.enc_filt);
   const double div = std::round(f / p.rate_hz);
-  if (!(div >= kMinControlDiv && div < 65536)) {
-    return Error{"rate_hz", fmt::format("ctl-rate={} Hz: needs {}..{} Hz ({}..65535 clocks)", p.rate_hz, f / 65535.0,
-                                        f / kMinControlDiv, kMinControlDiv)};
+  if (!(div >= kMinControlDiv && div <= kMaxControlDiv)) {
+    return Error{"rate_hz", fmt::format("ctl-rate={} Hz: needs {}..{} Hz ({}..{} clocks)", p.rate_hz,
+                                        f / kMaxControlDiv, f / kMinControlDiv, kMinControlDiv, kMaxControlDiv)};
   }
   n.div = uint16_t(div);
   const double cps = counts_per_step;
@@ -57,34 +70,32 @@ ServoConfigResult to_servo_config(const ControllerParams& p, double counts_per_s
   n.shift = uint8_t(shift);
   // Physical settings: ranges the register words can hold with this encoder
   // ratio, so no value is silently clamped.
-  const double q16 = std::floor(2147483647.0 / (double(1 << CtlFrac) * cps));  // pulses below 2^31 LSB
+  const double q16 = max_pulses(cps);
   for (const auto& [name, v, lo, hi, unit] : {
            std::tuple{"ctl-rate", p.rate_hz, 1.0, f, "Hz"},
-           std::tuple{"v-lim", p.v_lim, 0.0, 1e7, "pulses/s"},
-           std::tuple{"u-lim", p.u_lim, 0.0, 1e7, "pulses/s"},
+           std::tuple{"v-lim", p.v_lim, 0.0, kMaxSpeed, "pulses/s"},
+           std::tuple{"u-lim", p.u_lim, 0.0, kMaxSpeed, "pulses/s"},
            std::tuple{"ferr-lim", p.ferr_lim, 1.0, q16, "pulses"},
            std::tuple{"inpos-win", p.inpos_win, 0.0, q16, "pulses"},
-           std::tuple{"inpos-hold", p.inpos_hold_s, 0.0, 6.5535, "s"},
-           std::tuple{"settle-rate", p.settle_rate, 0.0, 1e7, "pulses/s"},
+           std::tuple{"inpos-hold", p.inpos_hold_s, 0.0, kMaxInposHold, "s"},
+           std::tuple{"settle-rate", p.settle_rate, 0.0, kMaxSpeed, "pulses/s"},
            std::tuple{"learn-dz-p", p.learn_dz_p, 0.0, q16, "pulses"},
            std::tuple{"learn-dz-v", p.learn_dz_v, 0.0, q16, "pulses/period"},
        }) {
     if (auto e = in_range(name, v, lo, hi, unit)) return *e;
   }
   n.ff_en = p.ff;
-  if (p.learn_shift < 0 || p.learn_shift >= (1 << LearnShW)) {
-    return Error{"learn_shift", fmt::format("learn-shift={} outside 0..31", p.learn_shift)};
+  if (p.learn_shift < 0 || p.learn_shift > kMaxLearnShift) {
+    return Error{"learn_shift", fmt::format("learn-shift={} outside 0..{}", p.learn_shift, kMaxLearnShift)};
   }
   n.learn_shift = uint8_t(p.learn_shift);
   const double q8 = double(1 << CtlFrac);
   n.learn_dz_p = uint32_t(std::llround(p.learn_dz_p * cps * q8));
   n.learn_dz_v = uint32_t(std::llround(p.learn_dz_v * cps * q8));
-  const double cmax = double(1u << (CoefW - CoefFrac));
-  const double cmax_lsb = cmax - 1.0 / double(1u << CoefFrac);
   for (const auto& [name, v] : {std::pair{"k-p", p.k_p}, std::pair{"k-v", p.k_v}, std::pair{"kb", p.kb},
                                 std::pair{"eta-p1", p.eta_p1}, std::pair{"eta-p2", p.eta_p2},
                                 std::pair{"eta-v1", p.eta_v1}, std::pair{"eta-v2", p.eta_v2}}) {
-    if (auto e = in_range(name, v, 0.0, cmax_lsb, "")) return *e;
+    if (auto e = in_range(name, v, 0.0, kMaxCoef, "")) return *e;
   }
   n.k_p = coef(p.k_p);
   n.k_v = coef(p.k_v);
@@ -94,14 +105,12 @@ ServoConfigResult to_servo_config(const ControllerParams& p, double counts_per_s
   n.eta_p2 = coef(p.eta_p2 * k);
   n.eta_v1 = coef(p.eta_v1 * k);
   n.eta_v2 = coef(p.eta_v2 * k);
-  const double wmax = double(1 << (WgtW - 1 - WgtFrac));
-  const double wmax_lsb = wmax - 1.0 / double(1 << WgtFrac);
   for (const auto& [name, v] : {std::pair{"w-p1", p.w_p1}, std::pair{"fixed-w-p1", p.fixed_w_p1},
                                 std::pair{"w-p2", p.w_p2}, std::pair{"w-v1", p.w_v1}, std::pair{"w-v2", p.w_v2},
                                 std::pair{"w-min", p.w_min}, std::pair{"w-p1-max", p.w_p1_max},
                                 std::pair{"w-p2-max", p.w_p2_max}, std::pair{"w-v1-max", p.w_v1_max},
                                 std::pair{"w-v2-max", p.w_v2_max}}) {
-    if (auto e = in_range(name, v, -wmax_lsb, wmax_lsb, "")) return *e;
+    if (auto e = in_range(name, v, -kMaxWeight, kMaxWeight, "")) return *e;
   }
   // Each weight's bounds must be ordered (the controller clamps into
   // [w_min, w_max]; an empty interval has no meaning).

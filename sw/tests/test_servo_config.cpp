@@ -27,6 +27,33 @@ TEST(ServoConfig, ControlRateOutOfRangeNamesTheBoundAtThisClock) {
   EXPECT_TRUE(std::holds_alternative<ServoConfig>(to_servo_config(p, 1.0, PulseTiming{}, Clock{50e6})));
 }
 
+// The defaults for a control rate keep the tuned loop's gains per second:
+// the speed loop's K_v rate, the position integral weight's bound times the
+// rate; K_p rate at and below 10 kHz, K_p per period above.
+TEST(ServoConfig, DefaultsForARateKeepTheGainsPerSecond) {
+  const ControllerParams tuned;
+  const ControllerParams at10k = controller_defaults(kTunedControlRate);
+  EXPECT_EQ(at10k.k_p, tuned.k_p);
+  EXPECT_EQ(at10k.k_v, tuned.k_v);
+  EXPECT_EQ(at10k.w_p1_max, tuned.w_p1_max);
+  EXPECT_EQ(at10k.fixed_w_p1, tuned.fixed_w_p1);
+  for (double rate : {305.2, 1000.0, 5000.0, 20000.0, 40000.0, 78125.0}) {
+    const ControllerParams p = controller_defaults(rate);
+    EXPECT_EQ(p.rate_hz, rate);
+    EXPECT_DOUBLE_EQ(p.k_v * rate, tuned.k_v * kTunedControlRate) << rate;
+    EXPECT_DOUBLE_EQ(p.w_p1_max * rate, tuned.w_p1_max * kTunedControlRate) << rate;
+    EXPECT_DOUBLE_EQ(p.fixed_w_p1 * rate, tuned.fixed_w_p1 * kTunedControlRate) << rate;
+    if (rate < kTunedControlRate) {
+      EXPECT_DOUBLE_EQ(p.k_p * rate, tuned.k_p * kTunedControlRate) << rate;
+    } else {
+      EXPECT_EQ(p.k_p, tuned.k_p) << rate;
+    }
+    EXPECT_EQ(p.eta_p1, tuned.eta_p1);
+    EXPECT_EQ(p.v_lim, tuned.v_lim);  // pulses/s: converted per period by to_servo_config
+    EXPECT_TRUE(std::holds_alternative<ServoConfig>(to_servo_config(p, 1.0, PulseTiming{}))) << rate;
+  }
+}
+
 TEST(ServoConfig, EncodedWordsCoverTheControllerWindow) {
   const ServoConfig c = std::get<ServoConfig>(to_servo_config(ControllerParams{}, 4.0, PulseTiming{}));
   const std::vector<RegWrite> w = encode_servo_config(c);

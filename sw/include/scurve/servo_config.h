@@ -2,6 +2,7 @@
 // the neuron-PI servo axis out (the words encode_servo_config() writes).
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <string>
 #include <variant>
@@ -14,6 +15,26 @@ namespace scurve {
 
 // Shortest control period the time-multiplexed controller accepts, clocks.
 inline constexpr int kMinControlDiv = 256;
+// Longest control period, clocks (the width of cfg_div).
+inline constexpr int kMaxControlDiv = (1 << hw::CtlCfgDivW) - 1;
+
+// The ranges the register words can hold, for every user of the settings
+// (to_servo_config, the command-line and scenario tables): gains and
+// learning rates (unsigned Q.CoefFrac), weights (signed Q.WgtFrac), shifts.
+inline constexpr double kMaxCoef = double(1u << (hw::CoefW - hw::CoefFrac)) - 1.0 / double(1u << hw::CoefFrac);
+inline constexpr double kMaxWeight = double(1 << (hw::WgtW - 1 - hw::WgtFrac)) - 1.0 / double(1 << hw::WgtFrac);
+inline constexpr int kMaxLearnShift = (1 << hw::LearnShW) - 1;
+inline constexpr int kMaxEncFilter = (1 << hw::EncFiltW) - 1;
+// Speeds (v_lim, u_lim, settle_rate), pulses/s; their per-period words are
+// checked against the register at the configured rate as well.
+inline constexpr double kMaxSpeed = 1e7;
+// In-position hold time, s (the per-period count is checked at the rate).
+inline constexpr double kMaxInposHold = 6.5535;
+// Largest distance-like setting (ferr_lim, inpos_win, learning dead zones)
+// in pulses: a Q.CtlFrac word below 2^31 counts.
+inline double max_pulses(double counts_per_step) {
+  return std::floor(2147483647.0 / (double(1 << hw::CtlFrac) * counts_per_step));
+}
 
 // Controller register values (fixed point, see docs/closed_loop.md): the
 // struct generated from rtl/sc_pkg.sv (field widths, Q formats and units in
@@ -53,6 +74,24 @@ struct ControllerParams {
   double settle_rate = 500;     // pulses/s: corrective steps after the reference is done
   int enc_filt = 3;             // glitch filter, clocks
 };
+
+// The control rate the defaults of ControllerParams are tuned at.
+inline constexpr double kTunedControlRate = 10000;
+
+// The defaults for a control rate: ControllerParams{} at kTunedControlRate;
+// at another rate the per-period settings that keep the tuned loop's gains
+// per second (docs/closed_loop.md, "Control rate"), with s = 10 kHz / rate:
+//  * k_v x s: the speed loop's integral gain per second, K_v w_v1' rate
+//    (160/s), must stay below what the rotor's lightly damped resonance
+//    allows (about 2 zeta w_n = 205/s for the default plant);
+//  * k_p x max(1, s): the position loop's gain per second, K_p w_p2' rate,
+//    is kept at 40/s below 10 kHz; above, K_p stays 0.004 per period, since
+//    a smaller per-period gain leaves each increment of the incremental PI
+//    a few LSB of the Q16 velocity word and its rounding dominates;
+//  * w_p1, fixed_w_p1, w_p1_max x s: the position integral weight keeps
+//    the ratio of the loop's integral to proportional gain per second.
+// Everything else is per second or per pulse already, or not rate-bound.
+ControllerParams controller_defaults(double rate_hz);
 
 using ServoConfigResult = std::variant<ServoConfig, Error>;
 
