@@ -500,7 +500,17 @@ int run_closed_loop_cli(ClosedLoopCli f, const std::vector<std::pair<std::string
     }
     plans.push_back(std::get<Plan>(r));
   }
+  if (!f.fst_path.empty() && list.size() != 1) {
+    std::fprintf(stderr, "error: --fst: trace one run at a time (one --group, no --compare)\n");
+    return 2;
+  }
+  if (!f.fst_path.empty() && eng == ClEngine::ModelOnly) {
+    std::fprintf(stderr, "error: fst=%s: --engine %s runs no RTL to trace (use lockstep or rtl)\n", f.fst_path.c_str(),
+                 engine.c_str());
+    return 2;
+  }
   std::vector<ClosedLoopResult> results(list.size());
+  std::vector<std::string> output_errors(list.size());  // an output file that could not be written
   std::atomic<size_t> next{0};
   auto worker = [&]() {
     for (size_t i = next++; i < list.size(); i = next++) {
@@ -510,8 +520,13 @@ int run_closed_loop_cli(ClosedLoopCli f, const std::vector<std::pair<std::string
       o.plant = f.plant;
       o.timing = timing;
       o.tail_s = f.tail_s;
+      o.fst_path = f.fst_path;
+      o.fst_from = f.fst_from;
+      o.fst_to = f.fst_to;
       try {
         results[i] = run_closed_loop(plans[i], o);
+      } catch (const input::Error& e) {
+        output_errors[i] = e.what();
       } catch (const std::exception& e) {
         results[i].failures.push_back(e.what());
       }
@@ -523,6 +538,12 @@ int run_closed_loop_cli(ClosedLoopCli f, const std::vector<std::pair<std::string
     pool.emplace_back(worker);
   }
   for (auto& t : pool) t.join();
+  for (const std::string& e : output_errors) {
+    if (!e.empty()) {
+      std::fprintf(stderr, "error: %s\n", e.c_str());
+      return 2;
+    }
+  }
 
   bool pass = true;
   for (const ClosedLoopResult& r : results) pass = pass && r.pass();

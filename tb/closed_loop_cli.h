@@ -35,6 +35,8 @@ struct ClosedLoopCli {
   std::string weights_csv;
   std::string scenario;  // JSON file with plant/controller keys
   double tail_s = 0.1;
+  std::string fst_path;  // FST waveform of the RTL (one run, engines lockstep and rtl)
+  uint64_t fst_from = 0, fst_to = 0;
 };
 
 void add_closed_loop_flags(CLI::App* sim, ClosedLoopCli& f);

@@ -14,6 +14,7 @@
 #include "pin_monitor.h"
 #include "reg_encode.h"
 #include "rtl_servo.h"
+#include "scurve/cli/user_input.h"
 
 namespace sc {
 
@@ -194,6 +195,7 @@ ClosedLoopResult run_closed_loop(const Plan& plan, const ClosedLoopOptions& opt)
   const bool use_model = opt.engine != ClEngine::RtlOnly;
   const bool lockstep = opt.engine == ClEngine::Lockstep;
   std::unique_ptr<RtlServo> rtl;
+  if (!opt.fst_path.empty() && !use_rtl) throw input::Error("fst", opt.fst_path, "the model engine runs no RTL to trace");
   if (use_rtl) {
     rtl = std::make_unique<RtlServo>();
     if (!opt.fst_path.empty()) rtl->trace_open(opt.fst_path, opt.fst_from, opt.fst_to);
@@ -318,6 +320,7 @@ ClosedLoopResult run_closed_loop(const Plan& plan, const ClosedLoopOptions& opt)
     enc_dev = std::max(enc_dev, std::fabs(double(out.enc_pos) - L * cps));
   }
   pins.finish(clock);
+  if (rtl) rtl->trace_close();
   res.total_clocks = clock;
   res.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   res.clocks_per_s = res.wall_s > 0 ? double(clock) / res.wall_s : 0;

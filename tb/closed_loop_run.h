@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "fst_output.h"
 #include "lockstep.h"
 #include "plant.h"
 #include "planner.h"
@@ -37,7 +38,7 @@ struct ClosedLoopOptions {
   uint32_t weight_every = 10;        // weight samples every N control periods
   size_t max_mismatches = 1;
   std::string fst_path;
-  uint64_t fst_from = 0, fst_to = UINT64_MAX;
+  uint64_t fst_from = 0, fst_to = kDefaultFstWindow;  // input::Error when the FST cannot be written
   std::function<void(double)> progress;
   // Test hook: called with the model before every clock (fault injection).
   std::function<void(uint64_t, ServoAxis&)> inject;

@@ -155,12 +155,12 @@ int main(int argc, char** argv) {
   if (clock != model_clock() && (closed_loop.enabled || closed_loop.compare)) {
     return bad_input(fmt::format("--clock-hz={}: the closed-loop bench runs at the model's {} Hz", sf.clock_hz, ClkHz));
   }
-  if ((closed_loop.enabled || closed_loop.compare) && !fst.path.empty()) {
-    return bad_input("--fst: the closed-loop bench writes no waveform");
-  }
   if (closed_loop.enabled || closed_loop.compare) {
     std::vector<std::pair<std::string, MoveRequest>> cl_jobs;
     for (const Job& j : jobs_list) cl_jobs.emplace_back(j.name, j.req);
+    closed_loop.fst_path = fst.path;
+    closed_loop.fst_from = fst.from;
+    closed_loop.fst_to = fst.to;
     return run_closed_loop_cli(closed_loop, cl_jobs, timing, engine, jobs, sf.json, sf.json_out);
   }
   std::vector<Plan> plans;

@@ -48,6 +48,10 @@ for tool in "$scurve sim" "$bench"; do
 done
 expect2 - "fst=out/w.fst: --engine model-fast runs no RTL" "$scurve" sim $move --engine model-fast --fst out/w.fst
 expect2 - "fst=out/w.fst: --engine model runs no RTL" "$scurve" sim $move --engine model --fst out/w.fst
+cl="--closed-loop --tail 0.01"
+expect2 - "--fst: trace one run at a time" "$scurve" sim $cl --compare --group 1 --fst out/w.fst
+expect2 - "fst=out/w.fst: --engine model runs no RTL" "$scurve" sim $cl $move --engine model --fst out/w.fst
+expect2 1 "fst=out/w.fst: writing the waveform failed" "$scurve" sim $cl $move --fst out/w.fst
 expect2 - "fst-model=out: is a directory" "$bench" $move --fst-model out
 expect2 1 "fst-model=out/m.fst: writing the waveform failed" "$bench" $move --fst-model out/m.fst
 for tool in "$bench" "$pin_bench"; do
@@ -63,6 +67,8 @@ expect2 - "quantum=-1" "$bench" $move --quantum -1
 # back (the RTL's and the model's waveform compare equal port by port).
 "$scurve" sim --help | grep -q "default: --fst-from + 200000" || fail "sim --help does not give the default window"
 "$scurve" sim $move --fst rtl.fst --fst-from 1000 > /dev/null || fail "sim --fst run failed"
+"$scurve" sim $cl $move --fst cl.fst --fst-to 5000 > /dev/null || fail "closed-loop sim --fst run failed"
+"$scurve" diff cl.fst cl.fst > /dev/null || fail "closed-loop waveform does not read back"
 "$bench" $move --fst b_rtl.fst --fst-model b_model.fst --trace-rtl r.csv --trace-model m.csv > /dev/null \
   || fail "sc_bench run with outputs failed"
 "$scurve" diff b_rtl.fst b_model.fst > /dev/null || fail "sc_bench RTL and model waveforms differ"
