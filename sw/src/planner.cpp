@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include "solver.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -11,49 +13,44 @@ namespace scurve {
 using hw::MaxSegs;
 using hw::SegClkW;
 
+namespace detail {
+
 namespace {
 
-// The clock rate and the LSB scales derived from it.
-struct Units {
-  double f;     // clock, Hz
-  double vel;   // LSB per pulse/s
-  double acc;   // LSB per pulse/s^2
-  double jerk;  // LSB per pulse/s^3
-  explicit Units(Clock c)
-      : f(c.hz), vel(vel_lsb_per_unit(c)), acc(acc_lsb_per_unit(c)), jerk(jerk_lsb_per_unit(c)) {}
-};
 constexpr uint64_t kMaxRowClocks = (uint64_t(1) << SegClkW) - 1;
 // Transitions whose estimated length exceeds this are treated as infeasible
 // before any exact arithmetic, which keeps every closed form far from the
 // 128-bit range (1e12 pulses * 2^80 < 2^127).
 constexpr double kFarPulses = 1e12;
 
-// A row before splitting to the hardware's 32-bit clock field.
-struct Row {
-  Phase phase;
-  uint64_t clocks;
-  int64_t jerk;
-  int64_t acc0;
-  i128 vel0;
-};
-
-struct Transition {
-  std::vector<Row> rows;
-  i128 v_end = 0;
-  i128 gain = 0;       // position LSBs covered
-  i128 shortfall_bound = 0;  // the realised change falls short of dv by <= this
-  bool too_far = false;
-};
-
 i128 row_gain(const Row& r) { return pos_gain(r.vel0, r.acc0, r.jerk, r.clocks); }
+
+// Removes the last `rest` LSBs of a velocity change exactly, with acceleration
+// 0 at both ends: pulses of k clocks at jerk x then k clocks at -x change the
+// velocity by x*k^2 (x <= j_lim, peak x*k <= a_max). Each pulse leaves less
+// than (2k+1)*j_lim, so a few pulses finish any rest below one clock at a_max.
+void append_exact_tail(std::vector<Row>& rows, i128 rest, int s, int64_t j_lim, int64_t a_max, Phase ph_up,
+                       Phase ph_down) {
+  for (int iter = 0; iter < 64 && rest > 0; ++iter) {
+    int64_t k = std::max<int64_t>(1, int64_t(std::sqrt(double(rest) / double(j_lim))));
+    i128 x = std::min<i128>({i128(j_lim), rest / (i128(k) * k), i128(a_max / k)});
+    if (x <= 0) {
+      k = 1;
+      x = std::min<i128>({rest, i128(j_lim), i128(a_max)});
+    }
+    rows.push_back({ph_up, uint64_t(k), int64_t(s * x), 0, 0});
+    rows.push_back({ph_down, uint64_t(k), int64_t(-s * x), 0, 0});
+    rest -= x * k * k;
+  }
+}
 
 // Fastest change of velocity from v_a by at most dv (>= 0, magnitude) in
 // direction s, starting and ending at zero acceleration. Jerk j_in while
 // |a| rises, j_out while it falls; trapezoid: constant acceleration only.
 // The realised change never exceeds dv and falls short by less than one
-// clock at the peak acceleration.
+// clock at the peak acceleration; with `exact` it is exactly dv.
 Transition make_transition(i128 v_a, i128 dv, int s, int64_t j_in, int64_t j_out,
-                           int64_t a_max, bool trapezoid, const Units& u) {
+                           int64_t a_max, bool trapezoid, bool exact, const Units& u) {
   Transition t;
   t.v_end = v_a;
   if (dv <= 0) return t;
@@ -73,8 +70,15 @@ Transition make_transition(i128 v_a, i128 dv, int s, int64_t j_in, int64_t j_out
     // takes one clock (at a lower acceleration), it is never dropped.
     const i128 n = (dv + a_max - 1) / a_max;
     const int64_t a = int64_t(dv / n);
-    t.rows.push_back({ph_const, uint64_t(n), 0, int64_t(s) * a, v_a});
-    t.shortfall_bound = n;  // dv - n*floor(dv/n) < n
+    if (exact) {
+      // The first dv mod n clocks one LSB higher: exactly dv, still <= a_max.
+      const i128 n_high = dv - n * a;
+      if (n_high > 0) t.rows.push_back({ph_const, uint64_t(n_high), 0, int64_t(s) * (a + 1), v_a});
+      t.rows.push_back({ph_const, uint64_t(n - n_high), 0, int64_t(s) * a, v_a});
+    } else {
+      t.rows.push_back({ph_const, uint64_t(n), 0, int64_t(s) * a, v_a});
+      t.shortfall_bound = n;  // dv - n*floor(dv/n) < n
+    }
   } else {
     const double a_full = double(a_max);
     const double thresh = a_full * a_full * (0.5 / double(j_in) + 0.5 / double(j_out));
@@ -90,6 +94,7 @@ Transition make_transition(i128 v_a, i128 dv, int s, int64_t j_in, int64_t j_out
     // jerk floor(a / clocks) <= j, so a ramp shorter than one clock still
     // takes one clock. If the jerk phases alone overshoot dv, shrink a.
     int64_t a = std::clamp<int64_t>(int64_t(a_peak), 1, a_max);
+    i128 dv_done = 0;  // velocity change of the rows kept
     for (int iter = 0; iter < 400; ++iter) {
       // Ramp clocks: floor(a/j) keeps the jerk at exactly j (long ramps),
       // ceil(a/j) at a slightly lower jerk reaches nearer to a (ramps of a
@@ -104,15 +109,17 @@ Transition make_transition(i128 v_a, i128 dv, int s, int64_t j_in, int64_t j_out
       const int64_t n3 = (a1 + j_out - 1) / j_out;
       const int64_t j3 = a1 / n3;
       const int64_t r = a1 - n3 * j3;  // first r clocks at j3+1: a ends at exactly 0
-      std::vector<Row> rows;
-      rows.push_back({ph_up, uint64_t(n1), s * j1, 0, 0});
-      rows.push_back({ph_const, 0, 0, s * a1, 0});
-      if (r > 0) rows.push_back({ph_down, uint64_t(r), -s * (j3 + 1), 0, 0});
-      rows.push_back({ph_down, uint64_t(n3 - r), -s * j3, 0, 0});
+      Row rows[4];
+      int n_rows = 0;
+      rows[n_rows++] = {ph_up, uint64_t(n1), s * j1, 0, 0};
+      rows[n_rows++] = {ph_const, 0, 0, s * a1, 0};
+      if (r > 0) rows[n_rows++] = {ph_down, uint64_t(r), -s * (j3 + 1), 0, 0};
+      rows[n_rows++] = {ph_down, uint64_t(n3 - r), -s * j3, 0, 0};
       // Velocity gained by the jerk rows alone (the constant row adds n2*a1).
       i128 dv_jerk = 0;
       int64_t acc = 0;
-      for (const Row& row : rows) {
+      for (int i = 0; i < n_rows; ++i) {
+        const Row& row = rows[i];
         if (row.jerk == 0) continue;
         dv_jerk += vel_after(0, acc, row.jerk, row.clocks);
         acc = int64_t(acc_after(acc, row.jerk, row.clocks));
@@ -126,10 +133,15 @@ Transition make_transition(i128 v_a, i128 dv, int s, int64_t j_in, int64_t j_out
       }
       rows[1].clocks = uint64_t((dv - dv_jerk) / a1);
       t.shortfall_bound = a1;  // less than one more clock at the peak
-      for (const Row& row : rows) {
-        if (row.clocks > 0) t.rows.push_back(row);
+      dv_done = dv_jerk + i128(rows[1].clocks) * a1;
+      for (int i = 0; i < n_rows; ++i) {
+        if (rows[i].clocks > 0) t.rows.push_back(rows[i]);
       }
       break;
+    }
+    if (exact && dv_done < dv) {
+      append_exact_tail(t.rows, dv - dv_done, s, std::min(j_in, j_out), a_max, ph_up, ph_down);
+      t.shortfall_bound = 0;
     }
   }
   // Chain exact starting values through the rows.
@@ -146,47 +158,170 @@ Transition make_transition(i128 v_a, i128 dv, int s, int64_t j_in, int64_t j_out
   return t;
 }
 
-struct Limits {
-  i128 v_rate;  // step-rate limit in LSB (exact: 2^F / (high + low))
-  int64_t a_max;
-  int64_t j_acc_in, j_acc_out, j_dec_in, j_dec_out;
-  bool trapezoid;
-  Units units;
-};
-
-Transition transition_to(i128 v_from, i128 v_to, const Limits& lim) {
-  if (v_to >= v_from) {
-    return make_transition(v_from, v_to - v_from, +1, lim.j_acc_in, lim.j_acc_out, lim.a_max,
-                           lim.trapezoid, lim.units);
-  }
-  return make_transition(v_from, v_from - v_to, -1, lim.j_dec_in, lim.j_dec_out, lim.a_max,
-                         lim.trapezoid, lim.units);
-}
-
 struct Candidate {
   Transition t1, t2;
-  i128 remainder = 0;  // target - transition gain
+  i128 gain = 0;  // travel of the two transitions
   bool feasible = false;
   bool too_far = false;
 };
 
-Candidate evaluate(i128 vs, double v1, i128 ve, i128 target, const Limits& lim) {
+// Plateau v1 (LSB) between the transitions vs -> v1 -> ve. Feasible when a
+// cruise of n >= 0 clocks at the plateau puts the travel in the window:
+// gain < hi, and with no plateau speed the gain itself must be >= lo.
+Candidate evaluate(i128 vs, i128 v1_lsb, i128 ve, const TravelWindow& w, const Limits& lim) {
   Candidate c;
-  const i128 v1_lsb = std::min(i128(std::floor(v1 * lim.units.vel)), lim.v_rate);
   c.t1 = transition_to(vs, v1_lsb, lim);
   c.t2 = transition_to(c.t1.v_end, ve, lim);
   c.too_far = c.t1.too_far || c.t2.too_far;
   if (c.too_far) return c;
-  c.remainder = target - c.t1.gain - c.t2.gain;
+  c.gain = c.t1.gain + c.t2.gain;
   const i128 plateau = c.t1.v_end;
-  // The plateau row must absorb remainder - p0 with p0 in [1, plateau]:
-  // possible for any remainder >= 1 if plateau > 0, else only a tiny one.
-  c.feasible = c.remainder >= 1 && (plateau > 0 || c.remainder < i128(kOne));
+  c.feasible = c.gain < w.hi && (plateau > 0 || c.gain >= w.lo);
   return c;
+}
+
+}  // namespace
+
+Transition transition_to(i128 v_from, i128 v_to, const Limits& lim) {
+  if (v_to >= v_from) {
+    return make_transition(v_from, v_to - v_from, +1, lim.j_acc_in, lim.j_acc_out, lim.a_max,
+                           lim.trapezoid, lim.exact_transitions, lim.units);
+  }
+  return make_transition(v_from, v_from - v_to, -1, lim.j_dec_in, lim.j_dec_out, lim.a_max,
+                         lim.trapezoid, lim.exact_transitions, lim.units);
+}
+
+Limits make_limits(const MoveRequest& req, const PulseTiming& timing, Clock clock) {
+  const Units u(clock);
+  Limits lim{0, 0, 0, 0, 0, 0, false, u};
+  lim.v_rate = i128(kOne) / (i128(timing.high) + timing.low);
+  lim.a_max = int64_t(std::floor(req.a_max * u.acc));
+  lim.trapezoid = req.kind == ProfileKind::Trapezoid;
+  if (!lim.trapezoid) {
+    std::array<double, 4> j = req.jerks.value_or(std::array<double, 4>{req.j_max, req.j_max,
+                                                                       req.j_max, req.j_max});
+    lim.j_acc_in = int64_t(std::floor(j[0] * u.jerk));
+    lim.j_acc_out = int64_t(std::floor(j[1] * u.jerk));
+    lim.j_dec_in = int64_t(std::floor(j[2] * u.jerk));
+    lim.j_dec_out = int64_t(std::floor(j[3] * u.jerk));
+  }
+  return lim;
+}
+
+std::variant<Solved, Unsolvable> solve_profile(i128 vs, double v_start, double v_cruise, i128 ve, double v_end,
+                                               const TravelWindow& w, const Limits& lim) {
+  const auto to_lsb = [&](double v) { return std::min(i128(std::floor(v * lim.units.vel)), lim.v_rate); };
+  // ---- choose the plateau velocity ---------------------------------------
+  // The plateau is the cruise speed if the distance allows it; otherwise the
+  // feasible plateau closest to v_cruise, searched toward max(v_start, v_end)
+  // (the plateau that needs the least distance).
+  Candidate c = evaluate(vs, to_lsb(v_cruise), ve, w, lim);
+  if (!c.feasible) {
+    const double v_far = std::max(v_start, v_end);
+    const i128 v_far_lsb = std::max(vs, ve);
+    const Candidate far = evaluate(vs, v_far_lsb, ve, w, lim);
+    const bool far_is_stop = v_far_lsb == 0;  // vs = ve = 0: a tiny plateau always fits
+    if (!far_is_stop && !far.feasible) {
+      Unsolvable why;
+      why.end_unreachable = true;
+      why.too_far = far.too_far;
+      why.least_gain = far.gain;
+      return why;
+    }
+    // Walking up, a plateau never goes below max(vs, ve): the double speeds
+    // of an exact start state may round a few LSB under it.
+    const auto plateau_lsb = [&](double v) {
+      return v_cruise >= v_far ? std::max(to_lsb(v), v_far_lsb) : to_lsb(v);
+    };
+    // Walk geometrically from v_cruise toward v_far, then bisect.
+    double bad = v_cruise, good = -1;
+    Candidate good_c;
+    for (int k = 1; k <= 2000; ++k) {
+      const double v = v_far + (v_cruise - v_far) * std::pow(0.97, k);
+      Candidate t = evaluate(vs, plateau_lsb(v), ve, w, lim);
+      if (t.feasible) {
+        good = v;
+        good_c = t;
+        break;
+      }
+      bad = v;
+    }
+    if (good < 0 && !far_is_stop) {
+      good = v_far;
+      good_c = far;
+    }
+    if (good < 0) return Unsolvable{};
+    for (int it = 0; it < 80; ++it) {
+      const double mid = 0.5 * (bad + good);
+      if (mid == bad || mid == good) break;
+      Candidate t = evaluate(vs, plateau_lsb(mid), ve, w, lim);
+      if (t.feasible) {
+        good = mid;
+        good_c = t;
+      } else {
+        bad = mid;
+      }
+    }
+    c = std::move(good_c);
+  }
+
+  // ---- fill: the cruise clocks place the travel in the window ------------
+  Solved out;
+  out.plateau = c.t1.v_end;
+  uint64_t n_cruise = 0;
+  if (out.plateau > 0 && w.aim > c.gain) {
+    i128 n = (w.aim - c.gain) / out.plateau;  // largest travel <= aim
+    if (c.gain + n * out.plateau < w.lo) ++n;  // (plateau < 1 pulse: still < hi)
+    n_cruise = uint64_t(n);
+  } else if (out.plateau > 0 && c.gain < w.lo) {
+    n_cruise = uint64_t((w.lo - c.gain + out.plateau - 1) / out.plateau);
+  }
+  out.travel = c.gain + i128(n_cruise) * out.plateau;
+  out.rows = std::move(c.t1.rows);
+  if (n_cruise > 0) out.rows.push_back({Phase::PhCruise, n_cruise, 0, 0, out.plateau});
+  out.rows.insert(out.rows.end(), c.t2.rows.begin(), c.t2.rows.end());
+  out.v_end = c.t2.rows.empty() ? out.plateau : c.t2.v_end;
+  out.end_shortfall_bound = c.t2.shortfall_bound;
+  if (out.rows.empty()) return Unsolvable{};
+  return out;
+}
+
+std::vector<Segment> to_segments(const std::vector<Row>& rows, int dir) {
+  std::vector<Segment> segs;
+  segs.reserve(rows.size() + 2);
+  for (const Row& r0 : rows) {
+    Row r = r0;
+    while (r.clocks > 0) {
+      const uint64_t n = std::min(r.clocks, kMaxRowClocks);
+      Segment s;
+      s.phase = r.phase;
+      s.clocks = uint32_t(n);
+      s.jerk = dir * r.jerk;
+      s.acc0 = dir * r.acc0;
+      s.vel0 = dir * r.vel0;
+      segs.push_back(s);
+      r.vel0 = vel_after(r.vel0, r.acc0, r.jerk, n);
+      r.acc0 = int64_t(acc_after(r.acc0, r.jerk, n));
+      r.clocks -= n;
+    }
+  }
+  return segs;
 }
 
 // Shortest text that reads back as the same double: the value as the user gave it.
 std::string num(double v) { return fmt::format("{}", v); }
+
+uint64_t rows_needed(const std::vector<Row>& rows) {
+  uint64_t n = 0;
+  for (const Row& r : rows) n += (r.clocks + kMaxRowClocks - 1) / kMaxRowClocks;
+  return n;
+}
+
+}  // namespace detail
+
+namespace {
+
+using namespace detail;
 
 std::optional<PlanError> check_range(const char* name, double v, double lo, double hi,
                                      const char* unit, bool lo_open = false) {
@@ -203,10 +338,9 @@ std::optional<PlanError> check_range(const char* name, double v, double lo, doub
 
 i128 pulses_to_lsb(int64_t p) { return i128(p) * i128(kOne); }
 
-// Smallest distance (pulses) that leaves the candidate's transitions a
+// Smallest distance (pulses) that leaves transitions covering `gain` a
 // remainder >= 1 LSB: distance * 2^F + 2^(F-1) - gain >= 1.
-int64_t needed_distance(const Candidate& c, i128 target) {
-  const i128 gain = target - c.remainder;  // position covered by the transitions
+int64_t needed_distance(i128 gain) {
   const i128 num = gain + 1 - (i128(kOne) >> 1);
   return int64_t(num <= 0 ? 0 : (num + i128(kOne) - 1) / i128(kOne));
 }
@@ -266,9 +400,10 @@ const char* phase_name(Phase p) {
   return "?";
 }
 
-PlanResult Planner::plan(const MoveRequest& req, const PulseTiming& timing) const {
-  const Clock clock = clock_;
-  // ---- limits checked before solving ------------------------------------
+namespace {
+
+// Limits checked before solving (clock, timing, distance, speeds, a_max, jerks).
+std::optional<PlanError> check_request(const MoveRequest& req, const PulseTiming& timing, Clock clock) {
   if (std::string e = check_clock(clock); !e.empty()) return PlanError{"clock_hz", e};
   if (timing.high < 1) return PlanError{"pulse_high", "pulse_high=0: must be >= 1 clock"};
   if (timing.low < 1) return PlanError{"pulse_low", "pulse_low=0: must be >= 1 clock"};
@@ -306,6 +441,14 @@ PlanResult Planner::plan(const MoveRequest& req, const PulseTiming& timing) cons
     }
   }
 
+  return std::nullopt;
+}
+
+}  // namespace
+
+PlanResult Planner::plan(const MoveRequest& req, const PulseTiming& timing) const {
+  const Clock clock = clock_;
+  if (auto e = check_request(req, timing, clock)) return *e;
   // The minimum-distance search runs only for an error the user will see.
   PlanResult r = plan_magnitude(req, timing, req.v_end, clock, !req.adjust_end_speed);
   if (std::holds_alternative<PlanError>(r) && req.adjust_end_speed &&
@@ -338,178 +481,212 @@ PlanResult Planner::plan(const MoveRequest& req, const PulseTiming& timing) cons
 
 namespace {
 
-PlanResult plan_magnitude(const MoveRequest& req, const PulseTiming& timing, double v_end, Clock clock,
-                          bool refine_minimum) {
-  const Units u(clock);
-  const int dir = req.distance < 0 ? -1 : 1;
-  const int64_t dist = req.distance * dir;
-  const bool trap = req.kind == ProfileKind::Trapezoid;
-  Limits lim{0, 0, 0, 0, 0, 0, false, u};
-  lim.v_rate = i128(kOne) / (i128(timing.high) + timing.low);
-  lim.a_max = int64_t(std::floor(req.a_max * u.acc));
-  lim.trapezoid = trap;
-  if (!trap) {
-    std::array<double, 4> j = req.jerks.value_or(std::array<double, 4>{req.j_max, req.j_max,
-                                                                       req.j_max, req.j_max});
-    lim.j_acc_in = int64_t(std::floor(j[0] * u.jerk));
-    lim.j_acc_out = int64_t(std::floor(j[1] * u.jerk));
-    lim.j_dec_in = int64_t(std::floor(j[2] * u.jerk));
-    lim.j_dec_out = int64_t(std::floor(j[3] * u.jerk));
-  }
-  const i128 vs = std::min(i128(std::floor(req.v_start * u.vel)), lim.v_rate);
-  const i128 ve = std::min(i128(std::floor(v_end * u.vel)), lim.v_rate);
-  const i128 target = pulses_to_lsb(dist) + (i128(kOne) >> 1);  // end mid-pulse
-
-  // ---- choose the plateau velocity ---------------------------------------
-  // The plateau is the cruise speed if the distance allows it; otherwise the
-  // feasible plateau closest to v_cruise, searched toward max(v_start, v_end)
-  // (the plateau that needs the least distance).
-  Candidate c = evaluate(vs, req.v_cruise, ve, target, lim);
-  if (!c.feasible) {
-    const double v_far = std::max(req.v_start, v_end);
-    const Candidate far = evaluate(vs, v_far, ve, target, lim);
-    const bool far_is_stop = v_far == 0.0;  // vs = ve = 0: a tiny plateau always fits
-    if (!far_is_stop && !far.feasible) {
-      const char* hint = req.adjust_end_speed ? "" : " (or allow --adjust-end-speed)";
-      std::string need = "more than 1e12";
-      if (!far.too_far) {
-        int64_t min_dist = needed_distance(far, target);
-        if (refine_minimum) {
-          const auto accepts = [&](int64_t d) {
-            MoveRequest r = req;
-            r.distance = d * dir;
-            return d <= PlannerLimits::kMaxDistance &&
-                   std::holds_alternative<Plan>(plan_magnitude(r, timing, v_end, clock, false));
-          };
-          // Local search from the estimate: the result is accepted and one
-          // pulse less is not.
-          for (int k = 0; k < 64 && min_dist > 1 && accepts(min_dist - 1); ++k) --min_dist;
-          for (int k = 0; k < 64 && !accepts(min_dist); ++k) ++min_dist;
-        }
-        need = fmt::format("{}", min_dist);
-      }
-      if (v_end > req.v_start) {
-        return PlanError{"v_end", fmt::format("v_end={} unreachable from v_start={}: needs distance >= {} "
-                                              "pulses, got {}{}",
-                                              num(v_end), num(req.v_start), need, dist, hint)};
-      }
-      return PlanError{"v_end", fmt::format("v_end={} unreachable: slowing from v_start={} needs distance "
-                                            ">= {} pulses, got {}{}",
-                                            num(v_end), num(req.v_start), need, dist, hint)};
-    }
-    // Walk geometrically from v_cruise toward v_far, then bisect.
-    double bad = req.v_cruise, good = -1;
-    Candidate good_c;
-    for (int k = 1; k <= 2000; ++k) {
-      const double v = v_far + (req.v_cruise - v_far) * std::pow(0.97, k);
-      Candidate t = evaluate(vs, v, ve, target, lim);
-      if (t.feasible) {
-        good = v;
-        good_c = t;
-        break;
-      }
-      bad = v;
-    }
-    if (good < 0 && !far_is_stop) {
-      good = v_far;
-      good_c = far;
-    }
-    if (good < 0) {
-      return PlanError{"distance", fmt::format("distance={}: too short for any motion with these limits", dist)};
-    }
-    for (int it = 0; it < 80; ++it) {
-      const double mid = 0.5 * (bad + good);
-      if (mid == bad || mid == good) break;
-      Candidate t = evaluate(vs, mid, ve, target, lim);
-      if (t.feasible) {
-        good = mid;
-        good_c = t;
-      } else {
-        bad = mid;
-      }
-    }
-    c = good_c;
-  }
-
-  // ---- fill: plateau clocks and the initial fraction ---------------------
-  const i128 plateau = c.t1.v_end;
-  uint64_t n_cruise = 0;
-  i128 p0 = c.remainder;
-  if (plateau > 0) {
-    const i128 n = (c.remainder - 1) / plateau;  // p0 = remainder - n*plateau in [1, plateau]
-    n_cruise = uint64_t(n);
-    p0 = c.remainder - n * plateau;
-  }
-  std::vector<Row> rows = c.t1.rows;
-  if (n_cruise > 0) rows.push_back({Phase::PhCruise, n_cruise, 0, 0, plateau});
-  rows.insert(rows.end(), c.t2.rows.begin(), c.t2.rows.end());
-  if (rows.empty()) {
-    return PlanError{"distance", fmt::format("distance={}: too short for any motion with these limits", dist)};
-  }
-
-  // ---- split rows to the 32-bit clock field, mirror for direction ---------
-  uint64_t rows_needed = 0;
-  for (const Row& r : rows) rows_needed += (r.clocks + kMaxRowClocks - 1) / kMaxRowClocks;
-  if (rows_needed > uint64_t(MaxSegs)) {
-    return PlanError{"distance", fmt::format("distance={}: the move needs {} table rows, the executor holds {} "
-                                             "(a row lasts at most {:.1f} s); raise v_cruise or split the move",
-                                             dist, rows_needed, MaxSegs, kMaxRowClocks / u.f)};
-  }
-  Plan plan;
-  plan.clock = clock;
-  for (const Row& r0 : rows) {
-    Row r = r0;
-    while (r.clocks > 0) {
-      const uint64_t n = std::min(r.clocks, kMaxRowClocks);
-      Segment s;
-      s.phase = r.phase;
-      s.clocks = uint32_t(n);
-      s.jerk = dir * r.jerk;
-      s.acc0 = dir * r.acc0;
-      s.vel0 = dir * r.vel0;
-      plan.segments.push_back(s);
-      r.vel0 = vel_after(r.vel0, r.acc0, r.jerk, n);
-      r.acc0 = int64_t(acc_after(r.acc0, r.jerk, n));
-      r.clocks -= n;
-    }
-  }
-  plan.pos_frac0 = dir > 0 ? u128(p0) : kOne - u128(p0);
-  plan.distance = req.distance;
-  plan.v_plateau = vel_to_phys(plateau, clock);
-  plan.v_end_used = v_end;
-  plan.v_end_actual = vel_to_phys(c.t2.rows.empty() ? plateau : c.t2.v_end, clock);
-
-  // ---- re-check the result by executing it (Ruckig style) ----------------
+// Re-checks a table by executing it (Ruckig style) and fills the figures
+// measured from it. `v_cap`: the largest speed the request allows (LSB).
+std::optional<PlanError> check_table(Plan& plan, const Limits& lim, i128 v_cap, int dir, const Solved& sol,
+                                     i128 ve) {
   const TableReport rep = run_table(plan.segments, plan.pos_frac0, dir);
   // Transitions fall short of their target by less than one clock at the
   // peak acceleration; anything more is a planner bug (a dropped transition).
-  const i128 v_end_real = c.t2.v_end;
-  const i128 end_miss = v_end_real > ve ? v_end_real - ve : ve - v_end_real;
-  const i128 v_cap = std::min(i128(std::floor(std::max({req.v_cruise, req.v_start, v_end}) * u.vel)),
-                              lim.v_rate);
-  const i128 v_rate = lim.v_rate;
-  const int64_t j_cap = trap ? 0
-                             : std::max({lim.j_acc_in, lim.j_acc_out, lim.j_dec_in, lim.j_dec_out});
+  const i128 end_miss = sol.v_end > ve ? sol.v_end - ve : ve - sol.v_end;
+  const int64_t j_cap =
+      lim.trapezoid ? 0 : std::max({lim.j_acc_in, lim.j_acc_out, lim.j_dec_in, lim.j_dec_out});
+  // The executor's step rule: a step each time floor(position / 2^F)
+  // changes, so the end must lie in [distance, distance + 1) pulses
+  // relative to the integer part of the start position.
+  const i128 window_lo = i128(plan.distance) * i128(kOne);
   std::string why;
   if (!rep.ok) why = rep.error;
-  else if (rep.steps != req.distance) why = fmt::format("steps {} != distance", rep.steps);
+  else if (rep.steps != plan.distance) why = fmt::format("steps {} != distance", rep.steps);
+  else if (rep.end_pos < window_lo || rep.end_pos >= window_lo + i128(kOne)) why = "end outside the window";
   else if (rep.min_signed_vel < 0) why = "velocity reverses";
-  else if (rep.peak_vel > v_cap || rep.peak_vel > v_rate) why = "velocity limit exceeded";
+  else if (rep.peak_vel > v_cap || rep.peak_vel > lim.v_rate) why = "velocity limit exceeded";
   else if (rep.peak_acc > lim.a_max) why = "acceleration limit exceeded";
-  else if (!trap && rep.peak_jerk > j_cap) why = "jerk limit exceeded";
-  else if (end_miss > c.t2.shortfall_bound) why = "end speed missed";
+  else if (!lim.trapezoid && rep.peak_jerk > j_cap) why = "jerk limit exceeded";
+  else if (end_miss > sol.end_shortfall_bound) why = "end speed missed";
   if (!why.empty()) {
     return PlanError{"internal", fmt::format("internal planner error ({}); please report the request", why)};
   }
+  const double f = lim.units.f;
   plan.total_clocks = rep.clocks;
-  plan.duration_s = double(rep.clocks) / u.f;
-  plan.peak_velocity = vel_to_phys(rep.peak_vel, clock);
-  plan.peak_acceleration = acc_to_phys(rep.peak_acc, clock);
-  plan.peak_jerk = jerk_to_phys(rep.peak_jerk, clock);
+  plan.duration_s = double(rep.clocks) / f;
+  plan.peak_velocity = vel_to_phys(rep.peak_vel, plan.clock);
+  plan.peak_acceleration = acc_to_phys(rep.peak_acc, plan.clock);
+  plan.peak_jerk = jerk_to_phys(rep.peak_jerk, plan.clock);
+  plan.end_state.velocity = dir * sol.v_end;
+  plan.end_state.frac = u128(rep.end_pos - window_lo);
+  return std::nullopt;
+}
+
+PlanResult plan_magnitude(const MoveRequest& req, const PulseTiming& timing, double v_end, Clock clock,
+                          bool refine_minimum) {
+  const int dir = req.distance < 0 ? -1 : 1;
+  const int64_t dist = req.distance * dir;
+  const Limits lim = make_limits(req, timing, clock);
+  const Units& u = lim.units;
+  const i128 vs = std::min(i128(std::floor(req.v_start * u.vel)), lim.v_rate);
+  const i128 ve = std::min(i128(std::floor(v_end * u.vel)), lim.v_rate);
+  const i128 target = pulses_to_lsb(dist) + (i128(kOne) >> 1);  // end mid-pulse
+  // From rest the start fraction p0 in [1, 2^F) is free: travel = target - p0,
+  // placed so p0 is smallest (the first step comes after almost one pulse).
+  const TravelWindow window{target - i128(kOne) + 1, target, target - 1};
+
+  auto solved = solve_profile(vs, req.v_start, req.v_cruise, ve, v_end, window, lim);
+  if (const auto* why = std::get_if<Unsolvable>(&solved)) {
+    if (!why->end_unreachable) {
+      return PlanError{"distance", fmt::format("distance={}: too short for any motion with these limits", dist)};
+    }
+    const char* hint = req.adjust_end_speed ? "" : " (or allow --adjust-end-speed)";
+    std::string need = "more than 1e12";
+    if (!why->too_far) {
+      int64_t min_dist = needed_distance(why->least_gain);
+      if (refine_minimum) {
+        const auto accepts = [&](int64_t d) {
+          MoveRequest r = req;
+          r.distance = d * dir;
+          return d <= PlannerLimits::kMaxDistance &&
+                 std::holds_alternative<Plan>(plan_magnitude(r, timing, v_end, clock, false));
+        };
+        // Local search from the estimate: the result is accepted and one
+        // pulse less is not.
+        for (int k = 0; k < 64 && min_dist > 1 && accepts(min_dist - 1); ++k) --min_dist;
+        for (int k = 0; k < 64 && !accepts(min_dist); ++k) ++min_dist;
+      }
+      need = fmt::format("{}", min_dist);
+    }
+    if (v_end > req.v_start) {
+      return PlanError{"v_end", fmt::format("v_end={} unreachable from v_start={}: needs distance >= {} "
+                                            "pulses, got {}{}",
+                                            num(v_end), num(req.v_start), need, dist, hint)};
+    }
+    return PlanError{"v_end", fmt::format("v_end={} unreachable: slowing from v_start={} needs distance "
+                                          ">= {} pulses, got {}{}",
+                                          num(v_end), num(req.v_start), need, dist, hint)};
+  }
+  const Solved& sol = std::get<Solved>(solved);
+  const i128 p0 = target - sol.travel;
+
+  // ---- split rows to the 32-bit clock field, mirror for direction ---------
+  if (const uint64_t n = rows_needed(sol.rows); n > uint64_t(MaxSegs)) {
+    return PlanError{"distance", fmt::format("distance={}: the move needs {} table rows, the executor holds {} "
+                                             "(a row lasts at most {:.1f} s); raise v_cruise or split the move",
+                                             dist, n, MaxSegs, double((uint64_t(1) << SegClkW) - 1) / u.f)};
+  }
+  Plan plan;
+  plan.clock = clock;
+  plan.segments = to_segments(sol.rows, dir);
+  plan.pos_frac0 = dir > 0 ? u128(p0) : kOne - u128(p0);
+  plan.distance = req.distance;
+  plan.v_plateau = vel_to_phys(sol.plateau, clock);
+  plan.v_end_used = v_end;
+  plan.v_end_actual = vel_to_phys(sol.v_end, clock);
+
+  const i128 v_cap = std::min(i128(std::floor(std::max({req.v_cruise, req.v_start, v_end}) * u.vel)),
+                              lim.v_rate);
+  if (auto e = check_table(plan, lim, v_cap, dir, sol, ve)) return *e;
   return plan;
 }
 
 }  // namespace
+
+namespace detail {
+
+PlanResult plan_continuation(const JunctionState& start, int64_t distance, double v_cruise, i128 ve,
+                             const Limits& lim, Clock clock) {
+  const int dir = distance < 0 ? -1 : 1;
+  const int64_t dist = distance * dir;
+  const i128 vs = dir * start.velocity;
+  const i128 f = i128(start.frac);
+  const i128 one = i128(kOne);
+  // Travel (magnitude) that ends the move in [distance, distance + 1) pulses
+  // from the start's integer part; aimed mid-pulse, as a move from rest ends,
+  // so a following reversal has half a pulse before its first step.
+  TravelWindow window;
+  if (dir > 0) {
+    window = {dist * one - f, (dist + 1) * one - f, dist * one + one / 2 - f};
+  } else {  // end in (f - (dist+1), f - dist] below ... mirrored, integers
+    window = {(dist - 1) * one + f + 1, dist * one + f + 1, dist * one - one / 2 + f};
+  }
+  const double v_start = vel_to_phys(vs, clock);
+  const double v_end = vel_to_phys(ve, clock);
+  auto solved = solve_profile(vs, v_start, v_cruise, ve, v_end, window, lim);
+  if (const auto* why = std::get_if<Unsolvable>(&solved)) {
+    if (!why->end_unreachable) {
+      return PlanError{"distance", fmt::format("distance={}: too short for any motion with these limits", distance)};
+    }
+    return PlanError{"v_end", fmt::format("v_end={} unreachable from the start speed {} pulses/s within "
+                                          "distance={}",
+                                          num(v_end), num(v_start), distance)};
+  }
+  const Solved& sol = std::get<Solved>(solved);
+  Plan plan;
+  plan.clock = clock;
+  plan.segments = to_segments(sol.rows, dir);
+  plan.pos_frac0 = start.frac;
+  plan.distance = distance;
+  plan.v_plateau = vel_to_phys(sol.plateau, clock);
+  plan.v_end_used = v_end;
+  plan.v_end_actual = vel_to_phys(sol.v_end, clock);
+  const i128 v_cap = std::max({std::min(i128(std::floor(v_cruise * lim.units.vel)), lim.v_rate), vs, ve});
+  if (auto e = check_table(plan, lim, v_cap, dir, sol, ve)) return *e;
+  return plan;
+}
+
+}  // namespace detail
+
+PlanResult Planner::plan_from(const JunctionState& start, const MoveRequest& req, const PulseTiming& timing) const {
+  // The start speed is the exact state; validate the rest as plan() does.
+  MoveRequest checked = req;
+  checked.v_start = 0;
+  if (auto e = check_request(checked, timing, clock_)) return *e;
+  const Limits lim = [&] {
+    Limits l = make_limits(req, timing, clock_);
+    l.exact_transitions = true;
+    return l;
+  }();
+  const int dir = req.distance < 0 ? -1 : 1;
+  if (start.frac >= kOne) {
+    return PlanError{"start_frac", fmt::format("start_frac={}: must be < 2^{} (one pulse)",
+                                               to_hex_u128(start.frac, 128), hw::FracBits)};
+  }
+  const i128 speed = start.velocity < 0 ? -start.velocity : start.velocity;
+  if (speed > lim.v_rate) {
+    return PlanError{"start_velocity", fmt::format("start_velocity={} LSB: exceeds the step-rate limit {} LSB",
+                                                   to_string_i128(start.velocity), to_string_i128(lim.v_rate))};
+  }
+  if (start.velocity != 0 && (start.velocity < 0) != (dir < 0)) {
+    return PlanError{"start_velocity",
+                     fmt::format("start_velocity={} LSB: a direction change needs junction speed 0",
+                                 to_string_i128(start.velocity))};
+  }
+  const i128 ve = std::min(i128(std::floor(req.v_end * lim.units.vel)), lim.v_rate);
+  PlanResult r = plan_continuation(start, req.distance, req.v_cruise, ve, lim, clock_);
+  if (std::holds_alternative<PlanError>(r) && req.adjust_end_speed && std::get<PlanError>(r).parameter == "v_end") {
+    // Bisect the end speed (LSB) between the start speed (always reachable
+    // by a cruise) and the requested one.
+    i128 ok = speed, bad = ve;
+    std::optional<Plan> best;
+    while (ok - bad > 1 || bad - ok > 1) {
+      const i128 mid = ok + (bad - ok) / 2;
+      PlanResult m = plan_continuation(start, req.distance, req.v_cruise, mid, lim, clock_);
+      if (auto* p = std::get_if<Plan>(&m)) {
+        ok = mid;
+        best = std::move(*p);
+      } else {
+        bad = mid;
+      }
+    }
+    if (!best) {
+      PlanResult m = plan_continuation(start, req.distance, req.v_cruise, speed, lim, clock_);
+      if (auto* p = std::get_if<Plan>(&m)) best = std::move(*p);
+    }
+    if (best) {
+      best->end_speed_adjusted = true;
+      return *best;
+    }
+  }
+  return r;
+}
 
 TableReport run_table(const std::vector<Segment>& rows, u128 pos_frac0, int direction) {
   TableReport rep;

@@ -47,6 +47,14 @@ struct PlannerLimits {
   static constexpr double kMinCruise = 1e-3;
 };
 
+// The executor's exact state where one move hands over to the next (the
+// acceleration is 0 there). Streamed moves start from the previous move's
+// end state, so the position fraction carries over from move to move.
+struct JunctionState {
+  i128 velocity = 0;  // LSB per clock, signed: the sign is the direction
+  u128 frac = 0;      // position fraction in [0, 2^FracBits): position - floor(position)
+};
+
 struct Plan {
   Clock clock{};                 // the clock the table is counted in
   std::vector<Segment> segments;
@@ -61,6 +69,9 @@ struct Plan {
   double v_end_actual = 0;       // realised end velocity (pulses/s)
   bool end_speed_adjusted = false;
   double v_end_used = 0;         // end speed the plan aimed at
+  // Exact state after the last row. plan(): frac is always 1/2 pulse (the
+  // move ends mid-pulse). plan_from(): the next move's start state.
+  JunctionState end_state;
 };
 
 // The one error type of the host library (planner, unit conversion).
@@ -81,6 +92,20 @@ class Planner {
   // Limits are checked before solving (clock, timing, distance, speeds,
   // a_max, jerks); the table is re-executed and checked after solving.
   PlanResult plan(const MoveRequest& req, const PulseTiming& timing) const;
+
+  // Plans a move that continues an exact executor state (a row stream):
+  // the start speed is start.velocity (req.v_start is not used), the
+  // acceleration 0, and the position starts at start.frac (pos_frac0).
+  // Step rule: a step each time floor(position / 2^FracBits) changes, so a
+  // move of `distance` pulses ends in the half-open one-pulse window
+  //   [distance, distance + 1) pulses from the start's integer part,
+  // i.e. exactly |distance| steps; the cruise length places the end as near
+  // mid-pulse as its speed allows. Every transition ends at exactly its
+  // target speed, so end_state.velocity is the requested end speed (in LSB,
+  // floored). A start velocity against the move's direction is an error
+  // (a reversal needs junction speed 0). No table-size limit is applied
+  // (the stream has no 16-row table).
+  PlanResult plan_from(const JunctionState& start, const MoveRequest& req, const PulseTiming& timing) const;
   Clock clock() const { return clock_; }
 
  private:

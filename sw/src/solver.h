@@ -1,0 +1,107 @@
+// Internal pieces of the planner shared by Planner (planner.cpp) and
+// StreamPlanner (stream_planner.cpp): the transition builder, the plateau
+// search and the row finishing. Not installed; not part of the API.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "scurve/planner.h"
+
+namespace scurve::detail {
+
+// The clock rate and the LSB scales derived from it.
+struct Units {
+  double f;     // clock, Hz
+  double vel;   // LSB per pulse/s
+  double acc;   // LSB per pulse/s^2
+  double jerk;  // LSB per pulse/s^3
+  explicit Units(Clock c)
+      : f(c.hz), vel(vel_lsb_per_unit(c)), acc(acc_lsb_per_unit(c)), jerk(jerk_lsb_per_unit(c)) {}
+};
+
+// A row before splitting to the hardware's 32-bit clock field.
+struct Row {
+  Phase phase;
+  uint64_t clocks;
+  int64_t jerk;
+  int64_t acc0;
+  i128 vel0;
+};
+
+struct Transition {
+  std::vector<Row> rows;
+  i128 v_end = 0;
+  i128 gain = 0;             // position LSBs covered
+  i128 shortfall_bound = 0;  // the realised change falls short of dv by <= this
+  bool too_far = false;
+};
+
+struct Limits {
+  i128 v_rate;  // step-rate limit in LSB (exact: 2^F / (high + low))
+  int64_t a_max;
+  int64_t j_acc_in, j_acc_out, j_dec_in, j_dec_out;
+  bool trapezoid;
+  Units units;
+  // Streamed moves: every transition ends at exactly its target velocity
+  // (a short jerk-limited tail absorbs the sub-clock shortfall), so the next
+  // move starts from the speed the look-ahead planned.
+  bool exact_transitions = false;
+};
+
+// The request's limits in LSBs (a_max, jerks, the step-rate limit).
+Limits make_limits(const MoveRequest& req, const PulseTiming& timing, Clock clock);
+
+// Fastest change of velocity from v_from to v_to starting and ending at zero
+// acceleration (see make_transition in planner.cpp).
+Transition transition_to(i128 v_from, i128 v_to, const Limits& lim);
+
+// Position LSBs a move must cover: any travel in [lo, hi) is accepted; the
+// cruise length places the travel at the largest value <= aim (or the
+// smallest one >= lo if that is below lo).
+struct TravelWindow {
+  i128 lo = 0, hi = 0, aim = 0;
+};
+
+// The solved profile of one move in magnitude (direction +1) form.
+struct Solved {
+  std::vector<Row> rows;
+  i128 travel = 0;   // position LSBs covered, inside the window
+  i128 plateau = 0;  // velocity between the two transitions
+  i128 v_end = 0;    // realised end velocity
+  i128 end_shortfall_bound = 0;
+};
+
+// Why no profile fits: the end speed cannot be reached within the window
+// (far: the candidate that needs the least travel), or no motion fits at all.
+struct Unsolvable {
+  bool end_unreachable = false;
+  bool too_far = false;  // even the least-travel candidate exceeds 1e12 pulses
+  i128 least_gain = 0;   // travel of the least-travel candidate
+};
+
+// Chooses the plateau (v_cruise if the window allows it, else the feasible
+// plateau closest to v_cruise, searched toward max(vs, ve)) and the cruise
+// length that places the travel in the window.
+std::variant<Solved, Unsolvable> solve_profile(i128 vs, double v_start, double v_cruise, i128 ve, double v_end,
+                                               const TravelWindow& w, const Limits& lim);
+
+// Splits rows to the hardware's clock field and mirrors them for direction.
+std::vector<Segment> to_segments(const std::vector<Row>& rows, int dir);
+
+std::string num(double v);
+
+}  // namespace scurve::detail
+
+namespace scurve::detail {
+
+uint64_t rows_needed(const std::vector<Row>& rows);
+
+// A move from an exact start state to end speed ve (LSB, magnitude): the
+// core of Planner::plan_from (no request validation).
+PlanResult plan_continuation(const JunctionState& start, int64_t distance, double v_cruise, i128 ve,
+                             const Limits& lim, Clock clock);
+
+}  // namespace scurve::detail
