@@ -1,0 +1,124 @@
+// Streamed moves with look-ahead: consecutive moves run back to back from
+// one row stream, at nonzero junction speeds where the path allows.
+//
+//   scurve::StreamPlanner sp{scurve::Clock{}, scurve::PulseTiming{}, {500, 2500, 3000}};
+//   if (auto e = sp.append({1000, 3000, 3000})) ...   // e->message names the bound
+//   for (scurve::StreamedMove& m : sp.take_ready()) send(m.segments);
+//   sp.flush();                                        // the tail to rest
+//
+// Each move is planned from the previous move's exact end state (velocity in
+// LSB, acceleration 0, the position fraction carried over), so the rows form
+// one continuous execution and the position after every move is exactly the
+// running sum of the distances (see Planner::plan_from for the end window).
+//
+// Look-ahead: the junction speed into a move is the highest speed
+//   <= min(v_junction_max, the cruise speeds of both neighbours)
+// from which every queued move after it can still stop within the queued
+// distance (backward pass, using the planner's own transitions), and which
+// the previous move can reach from its own entry speed (forward pass). It is
+// 0 at a direction change and at the end of the queue. A junction is final
+// once the backward pass no longer limits it (appending only raises that
+// bound); moves between final junctions are planned and handed out by
+// take_ready() and never change.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <deque>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "scurve/planner.h"
+
+namespace scurve {
+
+// Limits of the whole stream (S-curve, symmetric jerk).
+struct StreamLimits {
+  double a_max = 0;  // pulses/s^2
+  double j_max = 0;  // pulses/s^3
+  double v_max = 0;  // pulses/s, <= the step-rate limit
+};
+
+struct StreamMove {
+  int64_t distance = 0;         // pulses, the sign is the direction
+  double v_cruise = 0;          // pulses/s, (0, v_max]
+  double v_junction_max = 0;    // pulses/s, [0, v_max]: limit at the junction into this move
+};
+
+struct StreamedMove {
+  uint64_t index = 0;              // 0, 1, ... in append order
+  int64_t distance = 0;
+  std::vector<Segment> segments;   // continue the previous move's rows exactly
+  double v_in = 0, v_out = 0;      // junction speeds, pulses/s
+  JunctionState start, end;        // exact executor states
+  uint64_t start_clock = 0, end_clock = 0;  // offsets from the stream's start
+  int64_t end_position = 0;        // pulses: the running sum of the distances
+};
+
+class StreamPlanner {
+ public:
+  // Default lookahead: queued moves beyond it are planned with their current
+  // (always stoppable) junction speeds, which bounds the work per append.
+  static constexpr size_t kDefaultLookahead = 64;
+
+  // start_frac: the position fraction the stream starts at (default mid-pulse,
+  // as a move from rest starts).
+  StreamPlanner(Clock clock, PulseTiming timing, StreamLimits limits, u128 start_frac = kOne / 2,
+                size_t lookahead = kDefaultLookahead);
+
+  // Queues a move and re-plans the junctions it changes. An error (invalid
+  // move or stream limits) leaves the stream unchanged.
+  std::optional<Error> append(const StreamMove& move);
+  // Planned moves whose rows can no longer change, in order (moved out).
+  std::vector<StreamedMove> take_ready();
+  // Ends the stream: plans every queued move, the last one to rest.
+  std::optional<Error> flush();
+
+  // Look-ahead junction speeds (pulses/s) into each queued move, then the
+  // exit of the last one (0).
+  std::vector<double> queued_junctions() const;
+  size_t queued() const { return queue_.size(); }
+  const JunctionState& state() const { return state_; }  // end of the last planned move
+  int64_t position() const { return position_; }
+  uint64_t clock_offset() const { return clock_offset_; }
+
+ private:
+  struct Queued {
+    StreamMove move;
+    int dir = 1;
+    i128 cruise = 0;          // LSB
+    i128 cap_in = 0;          // junction cap: v_junction_max, both cruises; 0 at a reversal
+    i128 back_in = 0;         // min(cap_in, highest stoppable entry speed)
+    bool cap_reached = false; // back_in == cap_in: appends cannot raise it
+    i128 v_in = 0;            // planned junction speed
+    bool final_in = false;
+  };
+
+  std::optional<Error> check_move(const StreamMove& move) const;
+  i128 travel(i128 v_from, i128 v_to) const;
+  i128 grid() const;
+  i128 max_entry(int64_t distance, i128 v_exit) const;
+  i128 max_exit(i128 v_entry, int64_t distance) const;
+  bool backward_pass();
+  bool forward_pass(size_t from);
+  std::optional<Error> plan_front(i128 v_out);
+  std::optional<Error> release_ready();
+
+  Clock clock_;
+  PulseTiming timing_;
+  StreamLimits limits_;
+  size_t lookahead_;
+  std::optional<Error> config_error_;
+  struct Solver;  // the planner's limits in LSB
+  std::shared_ptr<const Solver> solver_;
+  std::deque<Queued> queue_;
+  std::vector<StreamedMove> ready_;
+  JunctionState state_;
+  int last_dir_ = 0;
+  int64_t position_ = 0;
+  uint64_t clock_offset_ = 0;
+  uint64_t next_index_ = 0;
+};
+
+}  // namespace scurve
