@@ -26,21 +26,34 @@ constexpr double kFarPulses = 1e12;
 i128 row_gain(const Row& r) { return pos_gain(r.vel0, r.acc0, r.jerk, r.clocks); }
 
 // Removes the last `rest` LSBs of a velocity change exactly, with acceleration
-// 0 at both ends: pulses of k clocks at jerk x then k clocks at -x change the
-// velocity by x*k^2 (x <= j_lim, peak x*k <= a_max). Each pulse leaves less
-// than (2k+1)*j_lim, so a few pulses finish any rest below one clock at a_max.
+// 0 at both ends, in at most three pulses (jerk <= j_lim, |a| <= a_max):
+//   k clocks at jerk x, k at -x          : x*k^2   (the bulk, k ~ sqrt(rest/j))
+//   1 clock at y, m-1 holding y, 1 at -y : y*m     (what is left, < (2k+1)*j)
+//   1 clock at z, 1 at -z                : z       (what is left, < m)
 void append_exact_tail(std::vector<Row>& rows, i128 rest, int s, int64_t j_lim, int64_t a_max, Phase ph_up,
                        Phase ph_down) {
+  const i128 x_max = std::min<i128>(j_lim, a_max);
   for (int iter = 0; iter < 64 && rest > 0; ++iter) {
-    int64_t k = std::max<int64_t>(1, int64_t(std::sqrt(double(rest) / double(j_lim))));
-    i128 x = std::min<i128>({i128(j_lim), rest / (i128(k) * k), i128(a_max / k)});
-    if (x <= 0) {
-      k = 1;
-      x = std::min<i128>({rest, i128(j_lim), i128(a_max)});
+    if (rest <= x_max) {
+      rows.push_back({ph_up, 1, int64_t(s * rest), 0, 0});
+      rows.push_back({ph_down, 1, int64_t(-s * rest), 0, 0});
+      return;
     }
-    rows.push_back({ph_up, uint64_t(k), int64_t(s * x), 0, 0});
-    rows.push_back({ph_down, uint64_t(k), int64_t(-s * x), 0, 0});
-    rest -= x * k * k;
+    const int64_t k = std::max<int64_t>(1, int64_t(std::sqrt(double(rest) / double(x_max))));
+    if (k >= 3 && i128(k) * x_max <= a_max) {
+      const i128 x = std::min<i128>(x_max, rest / (i128(k) * k));
+      rows.push_back({ph_up, uint64_t(k), int64_t(s * x), 0, 0});
+      rows.push_back({ph_down, uint64_t(k), int64_t(-s * x), 0, 0});
+      rest -= x * k * k;
+      continue;
+    }
+    const i128 m = (rest + x_max - 1) / x_max;
+    const i128 y = rest / m;
+    rows.push_back({ph_up, 1, int64_t(s * y), 0, 0});
+    if (m > 1) rows.push_back({ph_up == Phase::PhAccJerkUp ? Phase::PhAccConst : Phase::PhDecConst,
+                               uint64_t(m - 1), 0, int64_t(s * y), 0});
+    rows.push_back({ph_down, 1, int64_t(-s * y), 0, 0});
+    rest -= y * m;
   }
 }
 
@@ -140,6 +153,7 @@ Transition make_transition(i128 v_a, i128 dv, int s, int64_t j_in, int64_t j_out
       break;
     }
     if (exact && dv_done < dv) {
+      t.rows.reserve(t.rows.size() + 8);
       append_exact_tail(t.rows, dv - dv_done, s, std::min(j_in, j_out), a_max, ph_up, ph_down);
       t.shortfall_bound = 0;
     }
@@ -236,7 +250,22 @@ std::variant<Solved, Unsolvable> solve_profile(i128 vs, double v_start, double v
     // Walk geometrically from v_cruise toward v_far, then bisect.
     double bad = v_cruise, good = -1;
     Candidate good_c;
-    for (int k = 1; k <= 2000; ++k) {
+    if (lim.bisect_plateau && !far_is_stop) {
+      good = v_far;
+      good_c = far;
+      for (int it = 0; it < 40 && bad - good > std::ldexp(std::abs(bad), -12); ++it) {
+        const double mid = 0.5 * (bad + good);
+        Candidate t = evaluate(vs, plateau_lsb(mid), ve, w, lim);
+        if (t.feasible) {
+          good = mid;
+          good_c = std::move(t);
+        } else {
+          bad = mid;
+        }
+      }
+      bad = good;  // done: skip the walk and the fine bisection below
+    }
+    for (int k = 1; k <= 2000 && good < 0; ++k) {
       const double v = v_far + (v_cruise - v_far) * std::pow(0.97, k);
       Candidate t = evaluate(vs, plateau_lsb(v), ve, w, lim);
       if (t.feasible) {
@@ -251,7 +280,7 @@ std::variant<Solved, Unsolvable> solve_profile(i128 vs, double v_start, double v
       good_c = far;
     }
     if (good < 0) return Unsolvable{};
-    for (int it = 0; it < 80; ++it) {
+    for (int it = 0; it < 80 && bad != good; ++it) {
       const double mid = 0.5 * (bad + good);
       if (mid == bad || mid == good) break;
       Candidate t = evaluate(vs, plateau_lsb(mid), ve, w, lim);
@@ -642,6 +671,7 @@ PlanResult Planner::plan_from(const JunctionState& start, const MoveRequest& req
   const Limits lim = [&] {
     Limits l = make_limits(req, timing, clock_);
     l.exact_transitions = true;
+    l.bisect_plateau = true;
     return l;
   }();
   const int dir = req.distance < 0 ? -1 : 1;

@@ -128,6 +128,7 @@ StreamPlanner::StreamPlanner(Clock clock, PulseTiming timing, StreamLimits limit
   req.j_max = limits.j_max;
   auto solver = std::make_shared<Solver>(Solver{detail::make_limits(req, timing, clock)});
   solver->lim.exact_transitions = true;  // junction speeds are met exactly
+  solver->lim.bisect_plateau = true;
   solver_ = std::move(solver);
 }
 
@@ -142,9 +143,13 @@ std::optional<Error> StreamPlanner::check_move(const StreamMove& m) const {
   return check_speed("v_junction_max", m.v_junction_max, 0, limits_.v_max, "v_max");
 }
 
-// Junction speeds found by search are multiples of this (2^-24 of the
-// step-rate limit, e.g. 0.01 pulses/s at 200 kpulses/s).
-i128 StreamPlanner::grid() const { return std::max<i128>(1, solver_->lim.v_rate >> 24); }
+// Junction speeds found by search below `top` are multiples of this: the
+// power of two at or below top / 2^12 (about 0.01% to 0.02% of top).
+i128 StreamPlanner::grid(i128 top) {
+  i128 g = 1;
+  while ((g << 13) <= top) g <<= 1;
+  return g;
+}
 
 // Position LSBs covered while changing speed (the planner's own transition).
 i128 StreamPlanner::travel(i128 v_from, i128 v_to) const {
@@ -156,22 +161,22 @@ i128 StreamPlanner::travel(i128 v_from, i128 v_to) const {
 // distance * 2^F is the least travel window any start fraction allows (the
 // window's upper end is at least distance * 2^F + 1), so the move is
 // plannable whatever fraction it starts from.
-i128 StreamPlanner::max_entry(int64_t distance, i128 v_exit) const {
+i128 StreamPlanner::max_entry(int64_t distance, i128 v_exit, i128 top) const {
   const Limits& lim = solver_->lim;
   const i128 budget = i128(distance) * i128(kOne);
-  const double dv = closed_form_dv(double(v_exit), double(budget), double(lim.v_rate - v_exit), double(lim.a_max),
+  const double dv = closed_form_dv(double(v_exit), double(budget), double(top - v_exit), double(lim.a_max),
                                    double(lim.j_dec_in));
-  return largest_accepted(v_exit, lim.v_rate, grid(), v_exit + i128(dv),
+  return largest_accepted(v_exit, top, grid(top), v_exit + i128(dv),
                           [&](i128 v) { return travel(v, v_exit) <= budget; });
 }
 
 // Highest exit speed reachable from v_entry within `distance` pulses.
-i128 StreamPlanner::max_exit(i128 v_entry, int64_t distance) const {
+i128 StreamPlanner::max_exit(i128 v_entry, int64_t distance, i128 top) const {
   const Limits& lim = solver_->lim;
   const i128 budget = i128(distance) * i128(kOne);
-  const double dv = closed_form_dv(double(v_entry), double(budget), double(lim.v_rate - v_entry),
-                                   double(lim.a_max), double(lim.j_acc_in));
-  return largest_accepted(v_entry, lim.v_rate, grid(), v_entry + i128(dv),
+  const double dv = closed_form_dv(double(v_entry), double(budget), double(top - v_entry), double(lim.a_max),
+                                   double(lim.j_acc_in));
+  return largest_accepted(v_entry, top, grid(top), v_entry + i128(dv),
                           [&](i128 v) { return travel(v_entry, v) <= budget; });
 }
 
@@ -190,7 +195,7 @@ bool StreamPlanner::backward_pass() {
       back = q.cap_in;
       reached = true;
     } else {
-      back = std::min(q.cap_in, max_entry(dist, v_exit));
+      back = q.cap_in > v_exit ? max_entry(dist, v_exit, q.cap_in) : q.cap_in;
       reached = false;
     }
     const bool same = back == q.back_in && reached == q.cap_reached;
@@ -218,7 +223,7 @@ bool StreamPlanner::forward_pass(size_t from) {
     bool forward_limited = false, lowered_to_brake = false;
     q.v_in = q.back_in;
     if (q.back_in > prev.v_in && travel(prev.v_in, q.back_in) > budget) {
-      q.v_in = std::min(q.back_in, max_exit(prev.v_in, dist));
+      q.v_in = max_exit(prev.v_in, dist, q.back_in);
       forward_limited = true;
     } else if (q.back_in < prev.v_in && travel(prev.v_in, q.back_in) > budget) {
       // A short jerk-limited braking covers less distance to rest than to a
@@ -226,7 +231,7 @@ bool StreamPlanner::forward_pass(size_t from) {
       // the backward pass (computed for a lower one) gave. Brake further:
       // any lower exit keeps the rest of the queue stoppable.
       if (travel(prev.v_in, 0) > budget) return false;
-      q.v_in = largest_accepted(0, q.back_in, grid(), 0,
+      q.v_in = largest_accepted(0, q.back_in, grid(q.back_in), 0,
                                 [&](i128 e) { return travel(prev.v_in, e) <= budget; });
       lowered_to_brake = true;
     }

@@ -97,9 +97,9 @@ class StreamPlanner {
 
   std::optional<Error> check_move(const StreamMove& move) const;
   i128 travel(i128 v_from, i128 v_to) const;
-  i128 grid() const;
-  i128 max_entry(int64_t distance, i128 v_exit) const;
-  i128 max_exit(i128 v_entry, int64_t distance) const;
+  static i128 grid(i128 top);
+  i128 max_entry(int64_t distance, i128 v_exit, i128 top) const;
+  i128 max_exit(i128 v_entry, int64_t distance, i128 top) const;
   bool backward_pass();
   bool forward_pass(size_t from);
   std::optional<Error> plan_front(i128 v_out);

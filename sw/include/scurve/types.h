@@ -75,10 +75,11 @@ constexpr u128 choose2(uint64_t k) {
 }
 constexpr u128 choose3(uint64_t k) {
   if (k < 3) return 0;
-  u128 a = k, b = k - 1, c = k - 2;
+  // The divisions in 64 bits (128-bit ones are library calls); same value.
+  uint64_t a = k, b = k - 1, c = k - 2;
   if (a % 3 == 0) a /= 3; else if (b % 3 == 0) b /= 3; else c /= 3;
   if (a % 2 == 0) a /= 2; else b /= 2;
-  return a * b * c;
+  return u128(a) * b * c;
 }
 constexpr i128 acc_after(int64_t a0, int64_t j, uint64_t k) { return i128(a0) + i128(u128(k) * u128(i128(j))); }
 constexpr i128 vel_after(i128 v0, int64_t a0, int64_t j, uint64_t k) {
