@@ -1,0 +1,110 @@
+// Host planner throughput:
+//   * single-move planning: the median time per plan() over a fixed random
+//     set of accepted requests (counter median_us; the framework's time is
+//     the mean over the set),
+//   * stream planning with look-ahead: moves planned per second (counter
+//     moves_per_s), appending, handing out and finally flushing the stream.
+// Run: bin/bench_planner --benchmark_out=bench.json --benchmark_out_format=json
+// Times are the thread's CPU time, robust to other processes on the machine.
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <ctime>
+#include <random>
+#include <vector>
+
+#include "../tests/random_moves.h"
+#include "scurve/planner.h"
+#include "scurve/stream_planner.h"
+
+namespace {
+
+using namespace scurve;
+
+double thread_cpu_seconds() {
+  timespec ts{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+  return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
+}
+
+// 1000 random requests the planner accepts (the generator of the unit tests).
+const std::vector<test::RandomRequest>& accepted_requests() {
+  static const std::vector<test::RandomRequest> set = [] {
+    std::mt19937_64 g(11);
+    std::vector<test::RandomRequest> out;
+    const Planner planner;
+    while (out.size() < 1000) {
+      test::RandomRequest rr = test::random_request(g, Clock{});
+      if (std::holds_alternative<Plan>(planner.plan(rr.req, rr.timing))) out.push_back(rr);
+    }
+    return out;
+  }();
+  return set;
+}
+
+void BM_PlanSingleMove(benchmark::State& state) {
+  const auto& set = accepted_requests();
+  const Planner planner;
+  std::vector<double> per_plan;
+  per_plan.reserve(1 << 16);
+  size_t i = 0;
+  for (auto _ : state) {
+    const auto& rr = set[i++ % set.size()];
+    const double t0 = thread_cpu_seconds();
+    PlanResult r = planner.plan(rr.req, rr.timing);
+    const double t1 = thread_cpu_seconds();
+    benchmark::DoNotOptimize(r);
+    if (per_plan.size() < per_plan.capacity()) per_plan.push_back(t1 - t0);
+  }
+  std::nth_element(per_plan.begin(), per_plan.begin() + per_plan.size() / 2, per_plan.end());
+  state.counters["median_us"] = per_plan.empty() ? 0.0 : per_plan[per_plan.size() / 2] * 1e6;
+}
+BENCHMARK(BM_PlanSingleMove)->MinTime(2.0);
+
+// Streams of the unit tests' mix: 20 % direction changes, 60 % short moves
+// (1..2000 pulses) limited by the look-ahead, the rest up to 100000 pulses.
+std::vector<StreamMove> random_stream(size_t n, double v_max, bool short_only) {
+  std::mt19937_64 g(12);
+  std::uniform_int_distribution<int64_t> dist(1, 100000);
+  std::uniform_int_distribution<int> coin(0, 99);
+  std::uniform_real_distribution<double> frac(0.0, 1.0);
+  std::vector<StreamMove> moves(n);
+  int dir = 1;
+  for (StreamMove& m : moves) {
+    if (coin(g) < 20) dir = -dir;
+    const int64_t d = short_only || coin(g) < 60 ? 1 + int64_t(std::pow(frac(g), 3) * 2000) : dist(g);
+    m.distance = dir * d;
+    m.v_cruise = std::max(1.0, v_max * std::pow(frac(g), 2));
+    m.v_junction_max = coin(g) < 10 ? 0.0 : v_max * frac(g);
+  }
+  return moves;
+}
+
+void stream_moves(benchmark::State& state, bool short_only) {
+  const StreamLimits limits{2000, 20000, 20000};
+  const auto moves = random_stream(10000, limits.v_max, short_only);
+  uint64_t planned = 0;
+  const double t0 = thread_cpu_seconds();
+  for (auto _ : state) {
+    StreamPlanner sp(Clock{}, PulseTiming{}, limits);
+    for (const StreamMove& m : moves) {
+      if (sp.append(m)) state.SkipWithError("append failed");
+      planned += sp.take_ready().size();
+    }
+    if (sp.flush()) state.SkipWithError("flush failed");
+    planned += sp.take_ready().size();
+  }
+  state.counters["moves_per_s"] = benchmark::Counter(double(planned), benchmark::Counter::kIsRate);
+  state.counters["us_per_move"] = planned ? (thread_cpu_seconds() - t0) / double(planned) * 1e6 : 0.0;
+}
+
+void BM_StreamMixedMoves(benchmark::State& state) { stream_moves(state, false); }
+void BM_StreamShortMoves(benchmark::State& state) { stream_moves(state, true); }
+BENCHMARK(BM_StreamMixedMoves)->Unit(benchmark::kMillisecond)->MinTime(2.0);
+BENCHMARK(BM_StreamShortMoves)->Unit(benchmark::kMillisecond)->MinTime(2.0);
+
+}  // namespace
+
+BENCHMARK_MAIN();
