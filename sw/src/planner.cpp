@@ -15,6 +15,14 @@ using hw::SegClkW;
 
 namespace detail {
 
+// Closed-form S-curve (or trapezoid) travel while the speed changes between
+// x and y (LSB, clocks): the mean speed times the duration. Estimates only.
+double closed_form_travel(double x, double y, double a, double j) {
+  const double dv = std::abs(y - x);
+  const double t = j <= 0 ? dv / a : dv >= a * a / j ? dv / a + a / j : 2.0 * std::sqrt(dv / j);
+  return 0.5 * (x + y) * t;
+}
+
 namespace {
 
 constexpr uint64_t kMaxRowClocks = (uint64_t(1) << SegClkW) - 1;
@@ -194,6 +202,25 @@ Candidate evaluate(i128 vs, i128 v1_lsb, i128 ve, const TravelWindow& w, const L
   return c;
 }
 
+// The plateau (pulses/s) whose closed-form travel vs -> p -> ve is `aim`.
+double closed_form_plateau(i128 vs, i128 ve, i128 aim, double v_lo, double v_hi, const Limits& lim) {
+  const double a = double(lim.a_max);
+  const double j_up = lim.trapezoid ? 0.0 : double(std::min(lim.j_acc_in, lim.j_acc_out));
+  const double j_down = lim.trapezoid ? 0.0 : double(std::min(lim.j_dec_in, lim.j_dec_out));
+  const double x = double(vs), y = double(ve), target = double(aim), scale = lim.units.vel;
+  const auto travel = [&](double p) {
+    const double pl = p * scale;
+    return closed_form_travel(x, pl, a, pl >= x ? j_up : j_down) +
+           closed_form_travel(pl, y, a, y >= pl ? j_up : j_down);
+  };
+  double lo = v_lo, hi = v_hi;
+  for (int i = 0; i < 60 && hi - lo > 1e-9 * hi; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (travel(mid) <= target ? lo : hi) = mid;
+  }
+  return lo;
+}
+
 }  // namespace
 
 Transition transition_to(i128 v_from, i128 v_to, const Limits& lim) {
@@ -253,6 +280,19 @@ std::variant<Solved, Unsolvable> solve_profile(i128 vs, double v_start, double v
     if (lim.bisect_plateau && !far_is_stop) {
       good = v_far;
       good_c = far;
+      // Narrow the bracket around the closed-form plateau first.
+      const double guess = closed_form_plateau(vs, ve, w.aim, v_far, v_cruise, lim);
+      for (const double f : {1.0 - 1.0 / 256, 1.0 + 1.0 / 256}) {
+        const double v = guess * f;
+        if (!(v > good && v < bad)) continue;
+        Candidate t = evaluate(vs, plateau_lsb(v), ve, w, lim);
+        if (!t.feasible) {
+          bad = v;
+          break;
+        }
+        good = v;
+        good_c = std::move(t);
+      }
       for (int it = 0; it < 40 && bad - good > std::ldexp(std::abs(bad), -12); ++it) {
         const double mid = 0.5 * (bad + good);
         Candidate t = evaluate(vs, plateau_lsb(mid), ve, w, lim);

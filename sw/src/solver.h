@@ -104,6 +104,11 @@ namespace scurve::detail {
 
 uint64_t rows_needed(const std::vector<Row>& rows);
 
+// Closed-form travel (LSB) while the speed changes between x and y (LSB per
+// clock) at peak acceleration a and jerk j (j <= 0: trapezoid): the mean
+// speed times the duration. A starting point for exact searches only.
+double closed_form_travel(double x, double y, double a, double j);
+
 // A move from an exact start state to end speed ve (LSB, magnitude): the
 // core of Planner::plan_from (no request validation).
 PlanResult plan_continuation(const JunctionState& start, int64_t distance, double v_cruise, i128 ve,

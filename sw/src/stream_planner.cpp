@@ -50,21 +50,13 @@ std::optional<Error> check_stream_config(Clock clock, const PulseTiming& timing,
                      "step-rate limit");
 }
 
-// Closed-form S-curve (symmetric jerk j, peak a) travel while the speed
-// changes between v and v + dv: the mean speed times the duration. Only a
-// starting point for the exact search below (units: LSB and clocks).
-double closed_form_travel(double v, double dv, double a, double j) {
-  const double t = dv >= a * a / j ? dv / a + a / j : 2.0 * std::sqrt(dv / j);
-  return (v + 0.5 * dv) * t;
-}
-
 // Largest dv in [0, dv_max] whose closed-form travel from speed v is <= budget.
 double closed_form_dv(double v, double budget, double dv_max, double a, double j) {
   double lo = 0, hi = dv_max;
-  if (closed_form_travel(v, hi, a, j) <= budget) return hi;
+  if (detail::closed_form_travel(v, v + hi, a, j) <= budget) return hi;
   for (int i = 0; i < 100 && hi - lo > 1e-9 * hi; ++i) {
     const double mid = 0.5 * (lo + hi);
-    (closed_form_travel(v, mid, a, j) <= budget ? lo : hi) = mid;
+    (detail::closed_form_travel(v, v + mid, a, j) <= budget ? lo : hi) = mid;
   }
   return lo;
 }
