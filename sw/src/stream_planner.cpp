@@ -282,7 +282,6 @@ std::optional<Error> StreamPlanner::plan_front(i128 v_out) {
   m.end_position = position_;
   state_ = p.end_state;
   clock_offset_ = m.end_clock;
-  last_dir_ = q.dir;
   ready_.push_back(std::move(m));
   queue_.pop_front();
   if (!queue_.empty()) {  // the new front starts from the exact state just planned

@@ -115,7 +115,6 @@ class StreamPlanner {
   std::deque<Queued> queue_;
   std::vector<StreamedMove> ready_;
   JunctionState state_;
-  int last_dir_ = 0;
   int64_t position_ = 0;
   uint64_t clock_offset_ = 0;
   uint64_t next_index_ = 0;
