@@ -260,40 +260,58 @@ std::variant<Solved, Unsolvable> solve_profile(i128 vs, double v_start, double v
   if (!c.feasible) {
     const double v_far = std::max(v_start, v_end);
     const i128 v_far_lsb = std::max(vs, ve);
-    const Candidate far = evaluate(vs, v_far_lsb, ve, w, lim);
-    const bool far_is_stop = v_far_lsb == 0;  // vs = ve = 0: a tiny plateau always fits
-    if (!far_is_stop && !far.feasible) {
-      Unsolvable why;
-      why.end_unreachable = true;
-      why.too_far = far.too_far;
-      why.least_gain = far.gain;
-      return why;
-    }
     // Walking up, a plateau never goes below max(vs, ve): the double speeds
     // of an exact start state may round a few LSB under it.
     const auto plateau_lsb = [&](double v) {
       return v_cruise >= v_far ? std::max(to_lsb(v), v_far_lsb) : to_lsb(v);
     };
-    // Walk geometrically from v_cruise toward v_far, then bisect.
     double bad = v_cruise, good = -1;
     Candidate good_c;
-    if (lim.bisect_plateau && !far_is_stop) {
-      good = v_far;
-      good_c = far;
-      // Narrow the bracket around the closed-form plateau first.
-      const double guess = closed_form_plateau(vs, ve, w.aim, v_far, v_cruise, lim);
-      for (const double f : {1.0 - 1.0 / 256, 1.0 + 1.0 / 256}) {
-        const double v = guess * f;
-        if (!(v > good && v < bad)) continue;
+    // Streamed moves: first just below the closed-form plateau (usually
+    // feasible, and then the least-travel candidate is not needed).
+    double guess = 0;
+    if (lim.bisect_plateau && v_far_lsb > 0) {
+      guess = closed_form_plateau(vs, ve, w.aim, v_far, v_cruise, lim);
+      const double v = guess * (1.0 - 1.0 / 2048);
+      if (v > v_far && v < bad) {
         Candidate t = evaluate(vs, plateau_lsb(v), ve, w, lim);
-        if (!t.feasible) {
+        if (t.feasible) {
+          good = v;
+          good_c = std::move(t);
+        } else {
           bad = v;
-          break;
         }
-        good = v;
-        good_c = std::move(t);
       }
-      for (int it = 0; it < 40 && bad - good > std::ldexp(std::abs(bad), -12); ++it) {
+    }
+    const bool far_is_stop = v_far_lsb == 0;  // vs = ve = 0: a tiny plateau always fits
+    if (good < 0) {
+      Candidate far = evaluate(vs, v_far_lsb, ve, w, lim);
+      if (!far_is_stop && !far.feasible) {
+        Unsolvable why;
+        why.end_unreachable = true;
+        why.too_far = far.too_far;
+        why.least_gain = far.gain;
+        return why;
+      }
+      if (lim.bisect_plateau && !far_is_stop) {
+        good = v_far;
+        good_c = std::move(far);
+      } else if (!far_is_stop) {
+        good_c = std::move(far);  // the walk's fallback (good stays < 0 until then)
+      }
+    }
+    if (lim.bisect_plateau && !far_is_stop) {
+      if (const double v = guess * (1.0 + 1.0 / 2048); v > good && v < bad) {
+        Candidate t = evaluate(vs, plateau_lsb(v), ve, w, lim);
+        if (t.feasible) {
+          good = v;
+          good_c = std::move(t);
+        } else {
+          bad = v;
+        }
+      }
+      // Bisect to 2^-10 of the plateau speed.
+      for (int it = 0; it < 40 && bad - good > std::ldexp(std::abs(bad), -10); ++it) {
         const double mid = 0.5 * (bad + good);
         Candidate t = evaluate(vs, plateau_lsb(mid), ve, w, lim);
         if (t.feasible) {
@@ -315,10 +333,7 @@ std::variant<Solved, Unsolvable> solve_profile(i128 vs, double v_start, double v
       }
       bad = v;
     }
-    if (good < 0 && !far_is_stop) {
-      good = v_far;
-      good_c = far;
-    }
+    if (good < 0 && !far_is_stop) good = v_far;  // good_c holds the least-travel candidate
     if (good < 0) return Unsolvable{};
     for (int it = 0; it < 80 && bad != good; ++it) {
       const double mid = 0.5 * (bad + good);

@@ -50,7 +50,7 @@ struct Limits {
   // move starts from the speed the look-ahead planned.
   bool exact_transitions = false;
   // Streamed moves: when the cruise speed does not fit, bisect the plateau
-  // between the least-travel one and v_cruise (to 2^-12) instead of walking
+  // between the least-travel one and v_cruise (to 2^-10) instead of walking
   // down from v_cruise: a junction speed chosen at the edge of what the
   // distance allows leaves the walk thousands of steps.
   bool bisect_plateau = false;
