@@ -78,6 +78,7 @@ Transition make_transition(i128 v_a, i128 dv, int s, int64_t j_in, int64_t j_out
   const Phase ph_up = s > 0 ? Phase::PhAccJerkUp : Phase::PhDecJerkUp;
   const Phase ph_const = s > 0 ? Phase::PhAccConst : Phase::PhDecConst;
   const Phase ph_down = s > 0 ? Phase::PhAccJerkDown : Phase::PhDecJerkDown;
+  t.rows.reserve(exact ? 12 : 4);  // one allocation: up to 4 rows, an exact tail adds a few
   const double dvd = double(dv);
   const double v_hi = std::max(double(v_a), double(v_a) + s * dvd) / u.vel;
 
@@ -161,7 +162,6 @@ Transition make_transition(i128 v_a, i128 dv, int s, int64_t j_in, int64_t j_out
       break;
     }
     if (exact && dv_done < dv) {
-      t.rows.reserve(t.rows.size() + 8);
       append_exact_tail(t.rows, dv - dv_done, s, std::min(j_in, j_out), a_max, ph_up, ph_down);
       t.shortfall_bound = 0;
     }
@@ -256,10 +256,19 @@ std::variant<Solved, Unsolvable> solve_profile(i128 vs, double v_start, double v
   // The plateau is the cruise speed if the distance allows it; otherwise the
   // feasible plateau closest to v_cruise, searched toward max(v_start, v_end)
   // (the plateau that needs the least distance).
-  Candidate c = evaluate(vs, to_lsb(v_cruise), ve, w, lim);
+  const double v_far = std::max(v_start, v_end);
+  const i128 v_far_lsb = std::max(vs, ve);
+  // Streamed moves: the closed-form plateau first; the exact cruise candidate
+  // only when the closed form says it (nearly) fits.
+  double guess = 0;
+  bool try_cruise = true;
+  if (lim.bisect_plateau && v_far_lsb > 0 && v_cruise > v_far) {
+    guess = closed_form_plateau(vs, ve, w.aim, v_far, v_cruise, lim);
+    try_cruise = guess >= v_cruise * (1.0 - 1.0 / 64);
+  }
+  Candidate c;
+  if (try_cruise) c = evaluate(vs, to_lsb(v_cruise), ve, w, lim);
   if (!c.feasible) {
-    const double v_far = std::max(v_start, v_end);
-    const i128 v_far_lsb = std::max(vs, ve);
     // Walking up, a plateau never goes below max(vs, ve): the double speeds
     // of an exact start state may round a few LSB under it.
     const auto plateau_lsb = [&](double v) {
@@ -269,9 +278,8 @@ std::variant<Solved, Unsolvable> solve_profile(i128 vs, double v_start, double v
     Candidate good_c;
     // Streamed moves: first just below the closed-form plateau (usually
     // feasible, and then the least-travel candidate is not needed).
-    double guess = 0;
     if (lim.bisect_plateau && v_far_lsb > 0) {
-      guess = closed_form_plateau(vs, ve, w.aim, v_far, v_cruise, lim);
+      if (guess == 0) guess = closed_form_plateau(vs, ve, w.aim, v_far, v_cruise, lim);
       const double v = guess * (1.0 - 1.0 / 2048);
       if (v > v_far && v < bad) {
         Candidate t = evaluate(vs, plateau_lsb(v), ve, w, lim);

@@ -250,12 +250,12 @@ std::optional<Error> StreamPlanner::append(const StreamMove& move) {
     forward_pass(0);
     return std::nullopt;
   }
-  std::deque<Queued> before = queue_;
+  saved_.assign(queue_.begin(), queue_.end());  // reuses its capacity
   queue_.push_back(q);
   if (!backward_pass()) {
     // The new junctions do not fit the frozen entry speed: keep the queue as
     // it was (valid, ending at rest) and enter the new move from rest.
-    queue_ = std::move(before);
+    queue_.assign(saved_.begin(), saved_.end());
     q.v_in = q.back_in = 0;
     q.cap_reached = q.final_in = false;
     queue_.push_back(q);

@@ -113,6 +113,7 @@ class StreamPlanner {
   struct Solver;  // the planner's limits in LSB
   std::shared_ptr<const Solver> solver_;
   std::deque<Queued> queue_;
+  std::vector<Queued> saved_;  // the queue before an append, to restore
   std::vector<StreamedMove> ready_;
   JunctionState state_;
   int64_t position_ = 0;
