@@ -1,7 +1,7 @@
 // Host planner throughput:
 //   * single-move planning: the median time per plan() over a fixed random
 //     set of accepted requests (counter median_us; the framework's time is
-//     the mean over the set),
+//     the mean over the set), and per plan_from() from an exact start state,
 //   * stream planning with look-ahead: moves planned per second (counter
 //     moves_per_s), appending, handing out and finally flushing the stream.
 // Run: bin/bench_planner --benchmark_out=bench.json --benchmark_out_format=json
@@ -62,6 +62,38 @@ void BM_PlanSingleMove(benchmark::State& state) {
   state.counters["median_us"] = per_plan.empty() ? 0.0 : per_plan[per_plan.size() / 2] * 1e6;
 }
 BENCHMARK(BM_PlanSingleMove)->MinTime(2.0);
+
+// The same requests planned from an exact start state (plan_from, as the
+// stream plans each move): start speed v_start in LSB, a random fraction.
+void BM_PlanFromExactState(benchmark::State& state) {
+  const auto& set = accepted_requests();
+  const Planner planner;
+  std::mt19937_64 g(13);
+  std::vector<JunctionState> starts;
+  for (const auto& rr : set) {
+    const int dir = rr.req.distance < 0 ? -1 : 1;
+    JunctionState st;
+    st.velocity = dir * i128(std::floor(rr.req.v_start * vel_lsb_per_unit(Clock{})));
+    st.frac = (u128(g()) << 16) & (kOne - 1);
+    starts.push_back(st);
+  }
+  std::vector<double> per_plan;
+  per_plan.reserve(1 << 16);
+  size_t i = 0, accepted = 0;
+  for (auto _ : state) {
+    const size_t k = i++ % set.size();
+    const double t0 = thread_cpu_seconds();
+    PlanResult r = planner.plan_from(starts[k], set[k].req, set[k].timing);
+    const double t1 = thread_cpu_seconds();
+    accepted += std::holds_alternative<Plan>(r);
+    benchmark::DoNotOptimize(r);
+    if (per_plan.size() < per_plan.capacity()) per_plan.push_back(t1 - t0);
+  }
+  std::nth_element(per_plan.begin(), per_plan.begin() + per_plan.size() / 2, per_plan.end());
+  state.counters["median_us"] = per_plan.empty() ? 0.0 : per_plan[per_plan.size() / 2] * 1e6;
+  state.counters["accepted"] = i ? double(accepted) / double(i) : 0.0;
+}
+BENCHMARK(BM_PlanFromExactState)->MinTime(2.0);
 
 // Streams of the unit tests' mix: 20 % direction changes, 60 % short moves
 // (1..2000 pulses) limited by the look-ahead, the rest up to 100000 pulses.
