@@ -65,7 +65,9 @@ expect2 - "quantum=-1" "$bench" $move --quantum -1
 
 # Good runs: the default window is bounded and said in --help; the files read
 # back (the RTL's and the model's waveform compare equal port by port).
-"$scurve" sim --help | grep -q "default: --fst-from + 200000" || fail "sim --help does not give the default window"
+# (help captured first: grep -q closing the pipe early would fail the pipeline)
+help=$("$scurve" sim --help)
+grep -q "default: --fst-from + 200000" <<< "$help" || fail "sim --help does not give the default window"
 "$scurve" sim $move --fst rtl.fst --fst-from 1000 > /dev/null || fail "sim --fst run failed"
 "$scurve" sim $cl $move --fst cl.fst --fst-to 5000 > /dev/null || fail "closed-loop sim --fst run failed"
 "$scurve" diff cl.fst cl.fst > /dev/null || fail "closed-loop waveform does not read back"

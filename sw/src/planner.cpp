@@ -276,19 +276,25 @@ std::variant<Solved, Unsolvable> solve_profile(i128 vs, double v_start, double v
     };
     double bad = v_cruise, good = -1;
     Candidate good_c;
+    // Evaluates plateau v: a feasible one becomes `good`, else `bad`.
+    const auto try_plateau = [&](double v) {
+      Candidate t = evaluate(vs, plateau_lsb(v), ve, w, lim);
+      const bool ok = t.feasible;
+      if (ok) {
+        good = v;
+        good_c = std::move(t);
+      } else {
+        bad = v;
+      }
+      return ok;
+    };
     // Streamed moves: first just below the closed-form plateau (usually
     // feasible, and then the least-travel candidate is not needed).
     if (lim.bisect_plateau && v_far_lsb > 0) {
       if (guess == 0) guess = closed_form_plateau(vs, ve, w.aim, v_far, v_cruise, lim);
       const double v = guess * (1.0 - 1.0 / 2048);
       if (v > v_far && v < bad) {
-        Candidate t = evaluate(vs, plateau_lsb(v), ve, w, lim);
-        if (t.feasible) {
-          good = v;
-          good_c = std::move(t);
-        } else {
-          bad = v;
-        }
+        try_plateau(v);
       }
     }
     const bool far_is_stop = v_far_lsb == 0;  // vs = ve = 0: a tiny plateau always fits
@@ -310,49 +316,25 @@ std::variant<Solved, Unsolvable> solve_profile(i128 vs, double v_start, double v
     }
     if (lim.bisect_plateau && !far_is_stop) {
       if (const double v = guess * (1.0 + 1.0 / 2048); v > good && v < bad) {
-        Candidate t = evaluate(vs, plateau_lsb(v), ve, w, lim);
-        if (t.feasible) {
-          good = v;
-          good_c = std::move(t);
-        } else {
-          bad = v;
-        }
+        try_plateau(v);
       }
       // Bisect to 2^-10 of the plateau speed.
       for (int it = 0; it < 40 && bad - good > std::ldexp(std::abs(bad), -10); ++it) {
         const double mid = 0.5 * (bad + good);
-        Candidate t = evaluate(vs, plateau_lsb(mid), ve, w, lim);
-        if (t.feasible) {
-          good = mid;
-          good_c = std::move(t);
-        } else {
-          bad = mid;
-        }
+        try_plateau(mid);
       }
       bad = good;  // done: skip the walk and the fine bisection below
     }
     for (int k = 1; k <= 2000 && good < 0; ++k) {
       const double v = v_far + (v_cruise - v_far) * std::pow(0.97, k);
-      Candidate t = evaluate(vs, plateau_lsb(v), ve, w, lim);
-      if (t.feasible) {
-        good = v;
-        good_c = t;
-        break;
-      }
-      bad = v;
+      if (try_plateau(v)) break;
     }
     if (good < 0 && !far_is_stop) good = v_far;  // good_c holds the least-travel candidate
     if (good < 0) return Unsolvable{};
     for (int it = 0; it < 80 && bad != good; ++it) {
       const double mid = 0.5 * (bad + good);
       if (mid == bad || mid == good) break;
-      Candidate t = evaluate(vs, plateau_lsb(mid), ve, w, lim);
-      if (t.feasible) {
-        good = mid;
-        good_c = t;
-      } else {
-        bad = mid;
-      }
+      try_plateau(mid);
     }
     c = std::move(good_c);
   }
