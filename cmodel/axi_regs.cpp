@@ -21,11 +21,8 @@ u128 put_word(u128 v, int lsb, uint32_t w, int width) {
 uint32_t get_word(u128 v, int lsb) { return uint32_t(v >> lsb); }
 bool locked_addr(uint8_t a) {
   switch (a) {
-    case RegSegCount: case RegPulseTime: case RegDirTime:
+    case RegPulseTime: case RegDirTime:
     case RegPosFrac0: case RegPosFrac0 + 4: case RegPosFrac0 + 8:
-    case RegSegPhase: case RegSegClocks: case RegSegJerk: case RegSegJerk + 4:
-    case RegSegAcc0: case RegSegAcc0 + 4: case RegSegVel0: case RegSegVel0 + 4: case RegSegVel0 + 8:
-    case RegSegCommit:
       return true;
     default:
       return false;
@@ -41,6 +38,7 @@ uint32_t AxiRegs::cl_reset(int i) { return kClCfgReset[i]; }
 void AxiRegs::reset() {
   q_ = State{};
   q_.cfg = PulseTiming{uint16_t(RstPulseHigh), uint16_t(RstPulseLow), uint16_t(RstDirSetup), uint16_t(RstDirHold)};
+  q_.low_water = uint8_t(RstFifoLow);
   for (int i = 0; i < ClCfgWords; ++i) q_.cl[size_t(i)] = cl_reset(i);
 }
 
@@ -75,16 +73,26 @@ uint32_t AxiRegs::read_word(uint8_t a, const RegsSide& side, const CoreOutputs& 
       if (st.in_pos) s |= bit(StatusInPosBit);
       s |= uint32_t(side.enc_ab & 3) << StatusEncALsb;
       s |= uint32_t(core.seg_idx & ((1u << SegIdxW) - 1)) << StatusSegIdxLsb;
+      if (core.underrun) s |= bit(StatusUnderrunBit);
+      if (core.discont) s |= bit(StatusDiscontBit);
       return s;
     }
     case RegErr:
       return (q_.err_reject ? bit(ErrRejectBit) : 0) | (q_.err_bad ? bit(ErrBadAddrBit) : 0) |
-             (q_.err_estop ? bit(ErrEstopBit) : 0);
+             (q_.err_estop ? bit(ErrEstopBit) : 0) | (q_.err_full ? bit(ErrFifoFullBit) : 0) |
+             (q_.err_disc ? bit(ErrDiscontBit) : 0) | (q_.err_under ? bit(ErrUnderrunBit) : 0);
     case RegPulseCount: return uint32_t(core.pulse_count);
     case RegRefPos: return uint32_t(core.ref_pos_int);
     case RegEncPos: return uint32_t(side.enc_pos);
     case RegFollowErr: return uint32_t(core.ref_pos_int) - uint32_t(side.enc_pos);
-    case RegSegCount: return uint32_t(q_.seg_count) << SegCountLsb;
+    case RegFifoStatus:
+      return (uint32_t(core.fifo_level) << FifoLevelLsb) | (core.fifo_full ? bit(FifoFullBit) : 0) |
+             (core.fifo_level < q_.low_water ? bit(FifoLowBit) : 0);
+    case RegFifoLow: return uint32_t(q_.low_water) << FifoLowLsb;
+    case RegMoveIndex: return core.move_idx;
+    case RegBoundaryPos: return uint32_t(core.boundary_pos);
+    case RegIrqStatus: return q_.irq_st;
+    case RegIrqEnable: return uint32_t(q_.irq_en) << IrqEnableLsb;
     case RegPulseTime: return (uint32_t(q_.cfg.high) << PulseHighLsb) | (uint32_t(q_.cfg.low) << PulseLowLsb);
     case RegDirTime: return (uint32_t(q_.cfg.setup) << DirSetupLsb) | (uint32_t(q_.cfg.hold) << DirHoldLsb);
     case RegPosFrac0: return get_word(q_.frac0, 0);
@@ -99,7 +107,7 @@ uint32_t AxiRegs::read_word(uint8_t a, const RegsSide& side, const CoreOutputs& 
     case RegSegVel0: return get_word(q_.st_vel0, 0);
     case RegSegVel0 + 4: return get_word(q_.st_vel0, 32);
     case RegSegVel0 + 8: return get_word(q_.st_vel0, 64);
-    case RegSegCommit: return 0;
+    case RegRowPush: return 0;
     default:
       if (const int i = cfg_index(a); i >= 0) return q_.cl[size_t(i)];
       if (const int i = stat_index(a); i >= 0) return st.words[size_t(i)];
@@ -111,7 +119,8 @@ uint32_t AxiRegs::read_word(uint8_t a, const RegsSide& side, const CoreOutputs& 
 void AxiRegs::step(const AxiIn& in, const RegsSide& side, const CoreOutputs& core, const ServoStatus& st) {
   const State q = q_;
   State d = q;
-  d.seg_we = false;
+  d.push = false;
+  d.flush = false;
   d.start = false;
   d.abort = false;
   bool set_reject = false, set_bad = false;
@@ -146,6 +155,7 @@ void AxiRegs::step(const AxiIn& in, const RegsSide& side, const CoreOutputs& cor
     } else {
       switch (a) {
         case RegId: case RegStatus: case RegPulseCount: case RegRefPos: case RegEncPos: case RegFollowErr:
+        case RegFifoStatus: case RegMoveIndex: case RegBoundaryPos:
           d.bresp = kSlvErr;
           set_bad = true;
           break;
@@ -170,6 +180,13 @@ void AxiRegs::step(const AxiIn& in, const RegsSide& side, const CoreOutputs& cor
               } else {
                 d.start = true;
               }
+            } else if (wd & bit(CmdFlushBit)) {
+              if (busy_eff) {
+                d.bresp = kSlvErr;
+                set_reject = true;
+              } else {
+                d.flush = true;
+              }
             }
           }
           break;
@@ -178,10 +195,19 @@ void AxiRegs::step(const AxiIn& in, const RegsSide& side, const CoreOutputs& cor
             if (wd & bit(ErrRejectBit)) d.err_reject = false;
             if (wd & bit(ErrBadAddrBit)) d.err_bad = false;
             if (wd & bit(ErrEstopBit)) d.err_estop = false;
+            if (wd & bit(ErrFifoFullBit)) d.err_full = false;
+            if (wd & bit(ErrDiscontBit)) d.err_disc = false;
+            if (wd & bit(ErrUnderrunBit)) d.err_under = false;
           }
           break;
-        case RegSegCount:
-          d.seg_count = uint8_t(field(wmerge(uint32_t(q.seg_count) << SegCountLsb, wd, wmask), SegCountLsb, SegCntW));
+        case RegIrqStatus:
+          if (q.wstrb & 1) d.irq_st = uint8_t(q.irq_st & ~wd & ((1u << IrqW) - 1));
+          break;
+        case RegIrqEnable:
+          d.irq_en = uint8_t(field(wmerge(uint32_t(q.irq_en) << IrqEnableLsb, wd, wmask), IrqEnableLsb, IrqW));
+          break;
+        case RegFifoLow:
+          d.low_water = uint8_t(field(wmerge(uint32_t(q.low_water) << FifoLowLsb, wd, wmask), FifoLowLsb, RowLevelW));
           break;
         case RegPulseTime:
           d.cfg.high = uint16_t(field(wmerge(uint32_t(q.cfg.high) << PulseHighLsb, wd, wmask), PulseHighLsb, PulseTimeW));
@@ -213,10 +239,17 @@ void AxiRegs::step(const AxiIn& in, const RegsSide& side, const CoreOutputs& cor
         case RegSegVel0: d.st_vel0 = put_word(q.st_vel0, 0, wmerge(get_word(q.st_vel0, 0), wd, wmask), VelW); break;
         case RegSegVel0 + 4: d.st_vel0 = put_word(q.st_vel0, 32, wmerge(get_word(q.st_vel0, 32), wd, wmask), VelW); break;
         case RegSegVel0 + 8: d.st_vel0 = put_word(q.st_vel0, 64, wmerge(get_word(q.st_vel0, 64), wd, wmask), VelW); break;
-        case RegSegCommit:
+        case RegRowPush:
           if (q.wstrb & 1) {
-            d.seg_we = true;
-            d.seg_waddr = uint8_t(field(wd, SegCommitLsb, SegIdxW));
+            if (core.fifo_full) {
+              d.bresp = kSlvErr;
+              d.err_full = true;
+            } else {
+              d.push = true;
+              d.push_flags = uint8_t(((wd >> RowPushMoveEndBit) & 1) << RowFlagMoveEnd |
+                                     ((wd >> RowPushStreamEndBit) & 1) << RowFlagStreamEnd |
+                                     ((wd >> RowPushAccStepBit) & 1) << RowFlagAccStep);
+            }
           }
           break;
         default:
@@ -250,6 +283,22 @@ void AxiRegs::step(const AxiIn& in, const RegsSide& side, const CoreOutputs& cor
   }
   if (set_reject) d.err_reject = true;
   if (set_bad) d.err_bad = true;
+  // interrupt causes: events of the core's status
+  const bool below = core.fifo_level < q.low_water;
+  const bool fault_any = core.fault_table || core.fault_overrun || st.fault_ferr || q.err_estop;
+  if (core.discont && !q.discont_prev) d.err_disc = true;
+  if (core.underrun && !q.underrun_prev) d.err_under = true;
+  if (below && !q.below) d.irq_st |= uint8_t(bit(IrqLowWaterBit));
+  if (core.move_done) d.irq_st |= uint8_t(bit(IrqMoveDoneBit));
+  if (q.busy_prev && !busy_eff) d.irq_st |= uint8_t(bit(IrqIdleBit));
+  if (core.underrun && !q.underrun_prev) d.irq_st |= uint8_t(bit(IrqUnderrunBit));
+  if ((fault_any && !q.fault_prev) || (core.discont && !q.discont_prev)) d.irq_st |= uint8_t(bit(IrqFaultBit));
+  d.irq = (d.irq_st & d.irq_en) != 0;
+  d.below = below;
+  d.busy_prev = busy_eff;
+  d.underrun_prev = core.underrun;
+  d.fault_prev = fault_any;
+  d.discont_prev = core.discont;
   d.start_d1 = q.start;
   q_ = d;
 }
@@ -271,14 +320,14 @@ CoreInputs AxiRegs::core_inputs() const {
   CoreInputs c;
   c.enable = q_.en;
   c.cfg = q_.cfg;
-  c.seg_we = q_.seg_we;
-  c.seg_waddr = q_.seg_waddr;
-  c.seg_wdata.phase = Phase(q_.st_phase);
-  c.seg_wdata.clocks = q_.st_clocks;
-  c.seg_wdata.jerk = wrap_signed64(int64_t(q_.st_jerk), JerkW);
-  c.seg_wdata.acc0 = wrap_signed64(int64_t(q_.st_acc0), AccW);
-  c.seg_wdata.vel0 = wrap_signed(i128(q_.st_vel0), VelW);
-  c.seg_count = q_.seg_count;
+  c.row_push = q_.push;
+  c.row.flags = q_.push_flags;
+  c.row.seg.phase = Phase(q_.st_phase);
+  c.row.seg.clocks = q_.st_clocks;
+  c.row.seg.jerk = wrap_signed64(int64_t(q_.st_jerk), JerkW);
+  c.row.seg.acc0 = wrap_signed64(int64_t(q_.st_acc0), AccW);
+  c.row.seg.vel0 = wrap_signed(i128(q_.st_vel0), VelW);
+  c.fifo_flush = q_.flush;
   c.pos_frac0 = q_.frac0;
   c.start = q_.start;
   c.abort = q_.abort;
@@ -298,6 +347,7 @@ AxiAxisOutputs AxiAxis::outputs() const {
   o.phase = c.phase;
   o.pulse_count = c.pulse_count;
   o.ref_pos = c.ref_pos_int;
+  o.irq = regs_.state().irq;
   return o;
 }
 
@@ -318,10 +368,9 @@ ServoInputs AxiServo::servo_inputs() const {
   const AxiRegs::State& q = regs_.state();
   ServoInputs si;
   si.cfg = decode_config(ci.enable, q.closed, ci.cfg, q.cl);
-  si.seg_we = ci.seg_we;
-  si.seg_waddr = ci.seg_waddr;
-  si.seg_wdata = ci.seg_wdata;
-  si.seg_count = ci.seg_count;
+  si.row_push = ci.row_push;
+  si.row = ci.row;
+  si.fifo_flush = ci.fifo_flush;
   si.pos_frac0 = ci.pos_frac0;
   si.start = ci.start;
   si.abort = ci.abort;
@@ -340,6 +389,13 @@ void AxiServo::step(const AxiIn& in, const RegsSide& side) {
   co.pulse_count = so.pulse_count;
   co.ref_pos_int = so.ref_pos_int;
   co.seg_idx = 0;
+  co.underrun = so.underrun;
+  co.discont = so.discont;
+  co.move_done = so.move_done;
+  co.move_idx = so.move_idx;
+  co.boundary_pos = so.boundary_pos;
+  co.fifo_level = so.fifo_level;
+  co.fifo_full = so.fifo_full;
   ServoStatus st;
   st.in_pos = so.in_pos;
   st.fault_ferr = so.fault_ferr;
@@ -383,6 +439,7 @@ AxiServoOutputs AxiServo::outputs() const {
   o.enc_pos = s.enc_pos;
   o.in_pos = s.in_pos;
   o.fault_ferr = s.fault_ferr;
+  o.irq = regs_.state().irq;
   return o;
 }
 

@@ -70,7 +70,11 @@ class AxiRegs {
     bool en = false;
     bool closed = false;                    // CTRL.CLOSED_LOOP
     std::array<uint32_t, ClCfgWords> cl{};  // controller settings (servo)
-    uint8_t seg_count = 0;
+    uint8_t low_water = 0;
+    uint8_t irq_en = 0;
+    uint8_t irq_st = 0;
+    bool irq = false;
+    bool below = false, busy_prev = false, underrun_prev = false, fault_prev = false, discont_prev = false;
     PulseTiming cfg{};
     u128 frac0 = 0;
     uint8_t st_phase = 0;
@@ -78,14 +82,18 @@ class AxiRegs {
     uint64_t st_jerk = 0;  // JerkW bits, unsigned view
     uint64_t st_acc0 = 0;
     u128 st_vel0 = 0;      // VelW bits, unsigned view
-    bool seg_we = false;
-    uint8_t seg_waddr = 0;
+    bool push = false;
+    uint8_t push_flags = 0;
+    bool flush = false;
     bool start = false;
     bool start_d1 = false;
     bool abort = false;
     bool err_reject = false;
     bool err_bad = false;
     bool err_estop = false;
+    bool err_full = false;
+    bool err_disc = false;
+    bool err_under = false;
     bool operator==(const State&) const = default;
   };
 
@@ -121,6 +129,7 @@ struct AxiAxisOutputs {
   uint8_t phase = 0;
   int32_t pulse_count = 0;
   int32_t ref_pos = 0;
+  bool irq = false;
   bool operator==(const AxiAxisOutputs&) const = default;
 };
 
@@ -155,6 +164,7 @@ struct AxiServoOutputs {
   int32_t ref_pos = 0;
   int32_t enc_pos = 0;
   bool in_pos = false, fault_ferr = false;
+  bool irq = false;
   bool operator==(const AxiServoOutputs&) const = default;
 };
 

@@ -8,7 +8,6 @@ void AxisCore::reset() {
   exec_.reset();
   sg_.reset();
   in_q_ = InputRegs{};
-  first_fwd_ = true;
   arm_ = false;
   arm_fwd_ = true;
   arm_cnt_ = 0;
@@ -20,45 +19,30 @@ bool AxisCore::busy() const {
 }
 
 namespace {
-// Direction of a table row: its velocity's sign, else its acceleration's,
-// else its jerk's (a move from rest starts with v = a = 0).
-bool row_forward(const Segment& s) {
-  const i128 v = wrap_signed(s.vel0, VelW);
-  const int64_t a = wrap_signed64(s.acc0, AccW);
-  const int64_t j = wrap_signed64(s.jerk, JerkW);
-  return v != 0 ? v > 0 : a != 0 ? a > 0 : j >= 0;
-}
-}  // namespace
-
-namespace {
 const CoreExtInputs kNoExt{};
 }  // namespace
 
 void AxisCore::step(const CoreInputs& in) {
-  const bool capture_row0 = in.seg_we && (in.seg_waddr & (MaxSegs - 1)) == 0 && !exec_.state().run;
   latch_write(in);
   clock_edge<false>(kNoExt);
-  exec_in_.seg_we = false;
-  if (capture_row0) first_fwd_ = row_forward(in.seg_wdata);
+  exec_in_.row_push = false;
+  exec_in_.fifo_flush = false;
   latch_inputs(in);
 }
 
 void AxisCore::step(const CoreInputs& in, const CoreExtInputs& x) {
-  const bool capture_row0 = in.seg_we && (in.seg_waddr & (MaxSegs - 1)) == 0 && !exec_.state().run;
   latch_write(in);
   clock_edge<true>(x);
-  exec_in_.seg_we = false;
-  if (capture_row0) first_fwd_ = row_forward(in.seg_wdata);
+  exec_in_.row_push = false;
+  exec_in_.fifo_flush = false;
   latch_inputs(in);
 }
 
 void AxisCore::latch_write(const CoreInputs& in) {
   ProfileExec::Inputs& ei = exec_in_;
-  ei.seg_we = in.seg_we;
-  if (in.seg_we) {
-    ei.seg_waddr = in.seg_waddr;
-    ei.seg_wdata = in.seg_wdata;
-  }
+  ei.row_push = in.row_push;
+  ei.fifo_flush = in.fifo_flush;
+  if (in.row_push) ei.row = in.row;
 }
 
 void AxisCore::latch_inputs(const CoreInputs& in) {
@@ -66,7 +50,6 @@ void AxisCore::latch_inputs(const CoreInputs& in) {
   in_q_.start = in.start;
   in_q_.abort = in.abort;
   in_q_.cfg = in.cfg;
-  in_q_.seg_count = uint8_t(in.seg_count & ((1u << SegCntW) - 1));
   in_q_.pos_frac0 = mask_bits(in.pos_frac0, FracBits);
 }
 
@@ -81,7 +64,7 @@ void AxisCore::clock_edge(const CoreExtInputs& x) {
   uint16_t arm_cnt_d = arm_cnt_;
   if (start_ok) {
     arm_d = true;
-    arm_fwd_d = first_fwd_;
+    arm_fwd_d = exec_.head_forward();
     arm_cnt_d = 0;
   } else if (arm_) {
     if (in_q_.abort) {
@@ -105,7 +88,6 @@ void AxisCore::clock_edge(const CoreExtInputs& x) {
   si.dir_hint_valid = arm_ || ref_moving || (use_ext && x.hint_valid);
   si.dir_hint = arm_ ? arm_fwd_ : (!kExt || ref_moving) ? e.vel >= 0 : x.hint;
   ProfileExec::Inputs& ei = exec_in_;
-  ei.seg_count = in_q_.seg_count;
   ei.pos_frac0 = in_q_.pos_frac0;
   ei.start = exec_start;
   ei.abort = in_q_.abort || (kExt && x.abort);
@@ -118,9 +100,8 @@ void AxisCore::clock_edge(const CoreExtInputs& x) {
 }
 
 bool AxisCore::inputs_settled(const CoreInputs& in) const {
-  return !in.start && !in.abort && !in.seg_we && !in_q_.start && !in_q_.abort &&
+  return !in.start && !in.abort && !in.row_push && !in.fifo_flush && !in_q_.start && !in_q_.abort &&
          in_q_.enable == in.enable && in_q_.cfg == in.cfg &&
-         in_q_.seg_count == (in.seg_count & ((1u << SegCntW) - 1)) &&
          in_q_.pos_frac0 == mask_bits(in.pos_frac0, FracBits);
 }
 CoreOutputs AxisCore::outputs() const {
@@ -135,6 +116,13 @@ CoreOutputs AxisCore::outputs() const {
   o.phase = o.done ? uint8_t(Phase::PhDone) : uint8_t(e.phase);
   o.fault_table = e.fault;
   o.fault_overrun = s.overrun;
+  o.underrun = e.underrun;
+  o.discont = e.discont;
+  o.move_done = e.move_done;
+  o.move_idx = e.move_idx;
+  o.boundary_pos = e.bpos;
+  o.fifo_level = uint8_t(exec_.fifo_level());
+  o.fifo_full = exec_.fifo_full();
   o.pulse_count = s.count;
   o.ref_pos_int = e.pint;
   o.ref_pos_frac = e.frac;
@@ -156,7 +144,10 @@ bool AxisCore::outputs_equal(const CoreOutputs& o) const {
          o.ref_pos_frac == e.frac && o.ref_vel == e.vel && o.ref_acc == e.acc && o.ref_jerk == e.jerk &&
          o.done == is_done && o.busy == busy() && o.en == in_q_.enable &&
          o.phase == (is_done ? uint8_t(Phase::PhDone) : uint8_t(e.phase)) && o.fault_table == e.fault &&
-         o.fault_overrun == s.overrun && o.seg_idx == e.idx && o.step_pending == s.pend;
+         o.fault_overrun == s.overrun && o.seg_idx == e.idx && o.step_pending == s.pend &&
+         o.underrun == e.underrun && o.discont == e.discont && o.move_done == e.move_done &&
+         o.move_idx == e.move_idx && o.boundary_pos == e.bpos && o.fifo_level == exec_.fifo_level() &&
+         o.fifo_full == exec_.fifo_full();
 }
 
 void AxisCore::fast_forward(const CoreInputs& in, uint64_t n) {
@@ -168,7 +159,11 @@ void AxisCore::fast_forward(const CoreInputs& in, uint64_t n) {
       if (ev == 0 && !exec_.state().run) ev = UINT64_MAX;  // idle: only counters move
       if (ev > 1) {
         const uint64_t k = std::min<uint64_t>(ev - 1, n);
-        if (exec_.state().run) exec_.advance(k);
+        if (exec_.state().run) {
+          exec_.advance(k);
+        } else {
+          exec_.idle_clocks();
+        }
         sg_.jump_idle(k);
         n -= k;
         if (n == 0) break;

@@ -12,10 +12,9 @@ namespace sc {
 struct CoreInputs {
   bool enable = false;
   PulseTiming cfg{};
-  bool seg_we = false;
-  uint8_t seg_waddr = 0;
-  Segment seg_wdata{};
-  uint8_t seg_count = 0;
+  bool row_push = false;  // append `row` (ignored while the FIFO is full)
+  Row row{};
+  bool fifo_flush = false;
   u128 pos_frac0 = 0;
   bool start = false;
   bool abort = false;
@@ -44,6 +43,13 @@ struct CoreOutputs {
   uint8_t phase = 0;
   bool fault_table = false;
   bool fault_overrun = false;
+  bool underrun = false;
+  bool discont = false;
+  bool move_done = false;
+  uint32_t move_idx = 0;
+  int32_t boundary_pos = 0;
+  uint8_t fifo_level = 0;
+  bool fifo_full = false;
   int32_t pulse_count = 0;
   int32_t ref_pos_int = 0;
   u128 ref_pos_frac = 0;
@@ -67,7 +73,7 @@ class AxisCore {
   // outputs() == o, without building the struct (the lockstep hot path).
   bool outputs_equal(const CoreOutputs& o) const;
   // One clock holding the inputs of the previous step(), which must not have
-  // written the table: the same as step(previous inputs), cheaper.
+  // pushed a row: the same as step(previous inputs), cheaper.
   void tick();
 
   bool busy() const;
@@ -100,20 +106,18 @@ class AxisCore {
 
  private:
   // The core's input register stage (mirrors en_q, start_q, abort_q, cfg_*_q,
-  // seg_count_q, pos_frac0_q): the table write port is not registered.
+  // pos_frac0_q): the row port and the flush are not registered.
   struct InputRegs {
     bool enable = false;
     bool start = false;
     bool abort = false;
     PulseTiming cfg{0, 0, 0, 0};
-    uint8_t seg_count = 0;
     u128 pos_frac0 = 0;
   };
   ProfileExec exec_;
   StepGen sg_;
   InputRegs in_q_;
-  // Start arming (mirrors first_fwd_q, arm_q, arm_fwd_q, arm_cnt_q).
-  bool first_fwd_ = true;
+  // Start arming (mirrors arm_q, arm_fwd_q, arm_cnt_q).
   bool arm_ = false;
   bool arm_fwd_ = true;
   uint16_t arm_cnt_ = 0;

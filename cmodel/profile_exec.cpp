@@ -4,39 +4,39 @@
 
 namespace sc {
 
-void ProfileExec::reset() { q_ = State{}; }
+void ProfileExec::reset() {
+  q_ = State{};
+  fifo_.reset();
+}
+
+bool ProfileExec::head_forward() const {
+  const Segment& h = fifo_.head().seg;
+  return h.vel0 != 0 ? h.vel0 > 0 : h.acc0 != 0 ? h.acc0 > 0 : h.jerk >= 0;
+}
 
 void ProfileExec::step(const Inputs& in) {
-  // Row loaded this clock (mirrors the first always_comb of the RTL).
+  // Mirrors the RTL's always_comb blocks; the FIFO's head is read before
+  // its clock edge (asynchronous read).
+  const bool fifo_empty = fifo_.empty();
+  const Row& hd = fifo_.head();
+  const bool boundary = q_.run && !in.abort && q_.left == 1;
+  const i128 vel_end = wrap_signed(q_.vel + q_.acc, VelW);
+  const int64_t acc_end = wrap_signed64(add_wrap64(q_.acc, q_.jerk), AccW);
+  const bool continues = hd.seg.vel0 == vel_end && (hd.seg.acc0 == acc_end || (hd.flags & kRowAccStep));
+  const bool at_rest = vel_end == 0 && acc_end == 0;
+  const bool move_done = boundary && (q_.flags & kRowMoveEnd);
   bool load = false;
-  unsigned load_idx = 0;
-  if (q_.run) {
-    if (!in.abort && q_.left == 1 && unsigned(q_.idx) + 1 < q_.count) {
-      load = true;
-      load_idx = (q_.idx + 1) & (MaxSegs - 1);
-    }
-  } else if (in.start && in.seg_count != 0 && in.seg_count <= MaxSegs) {
-    load = true;
+  if (boundary) {
+    load = !(q_.flags & kRowStreamEnd) && !fifo_empty && continues;
+  } else if (!q_.run) {
+    load = in.start && !fifo_empty;
   }
-  // Read before the write below: the RTL's table RAM is read-before-write.
-  const Segment* row = load ? &mem_[load_idx] : nullptr;
-  Segment row_copy;
-  if (row && in.seg_we && !q_.run) {
-    row_copy = *row;
-    row = &row_copy;
-  }
-  if (in.seg_we && !q_.run) {
-    Segment w = in.seg_wdata;
-    w.jerk = wrap_signed64(w.jerk, JerkW);
-    w.acc0 = wrap_signed64(w.acc0, AccW);
-    w.vel0 = wrap_signed(w.vel0, VelW);
-    w.phase = Phase(uint8_t(w.phase) & ((1u << PhaseW) - 1));
-    mem_[in.seg_waddr & (MaxSegs - 1)] = w;
-  }
+  bool flush = false;
 
   // State is updated in place: each statement reads only fields that are
   // still at their current-clock value (no per-clock copy of the State).
   const bool was_running = q_.run;
+  const uint8_t flags_now = q_.flags;
   q_.step_req = false;
   if (was_running) {
     if (in.abort) {
@@ -45,6 +45,7 @@ void ProfileExec::step(const Inputs& in) {
       q_.acc = 0;
       q_.jerk = 0;
       q_.phase = Phase::PhAbort;
+      flush = true;
     } else {
       const i128 sum = i128(q_.frac) + q_.vel;
       if (sum < 0) {
@@ -61,12 +62,23 @@ void ProfileExec::step(const Inputs& in) {
         q_.frac = u128(sum);
       }
       if (q_.left == 1) {
+        if (move_done) {
+          ++q_.move_idx;
+          q_.bpos = q_.pint;
+        }
         if (!load) {
           q_.run = false;
-          q_.finished = true;
           q_.vel = 0;
           q_.acc = 0;
           q_.jerk = 0;
+          if ((flags_now & kRowStreamEnd) || (fifo_empty && at_rest)) {
+            q_.finished = true;
+          } else {
+            q_.underrun = fifo_empty;
+            q_.discont = !fifo_empty;
+            q_.phase = Phase::PhAbort;
+            flush = true;
+          }
         }
       } else {
         q_.left = q_.left - 1;
@@ -77,8 +89,11 @@ void ProfileExec::step(const Inputs& in) {
   } else if (in.start) {
     q_.finished = false;
     q_.fault = false;
-    q_.count = in.seg_count & ((1u << SegCntW) - 1);
+    q_.underrun = false;
+    q_.discont = false;
     q_.frac = mask_bits(in.pos_frac0, FracBits);
+    q_.move_idx = 0;
+    q_.bpos = q_.pint;
     if (!load) {
       q_.fault = true;
       q_.phase = Phase::PhFault;
@@ -86,23 +101,37 @@ void ProfileExec::step(const Inputs& in) {
   }
 
   if (load) {
-    if (row->clocks == 0) {
+    if (hd.seg.clocks == 0) {
       q_.run = false;
       q_.fault = true;
       q_.phase = Phase::PhFault;
       q_.vel = 0;
       q_.acc = 0;
       q_.jerk = 0;
+      flush = true;
     } else {
       q_.run = true;
-      q_.idx = uint8_t(load_idx);
-      q_.left = row->clocks;
-      q_.jerk = row->jerk;
-      q_.acc = row->acc0;
-      q_.vel = row->vel0;
-      q_.phase = row->phase;
+      q_.idx = (!was_running || (flags_now & kRowMoveEnd)) ? 0 : uint8_t((q_.idx + 1) & ((1u << SegIdxW) - 1));
+      q_.flags = hd.flags;
+      q_.left = hd.seg.clocks;
+      q_.jerk = hd.seg.jerk;
+      q_.acc = hd.seg.acc0;
+      q_.vel = hd.seg.vel0;
+      q_.phase = hd.seg.phase;
     }
   }
+  q_.move_done = move_done;
+
+  Row w;
+  if (in.row_push) {
+    w.seg.phase = Phase(uint8_t(in.row.seg.phase) & ((1u << PhaseW) - 1));
+    w.seg.clocks = in.row.seg.clocks;
+    w.seg.jerk = wrap_signed64(in.row.seg.jerk, JerkW);
+    w.seg.acc0 = wrap_signed64(in.row.seg.acc0, AccW);
+    w.seg.vel0 = wrap_signed(in.row.seg.vel0, VelW);
+    w.flags = uint8_t(in.row.flags & ((1u << RowFlagW) - 1));
+  }
+  fifo_.step(flush || in.fifo_flush, in.row_push, w, load);
 }
 
 // A jump is exact when, over the rest of the segment, velocity keeps one
@@ -169,9 +198,11 @@ void ProfileExec::advance(uint64_t k) {
   q_.vel = vel_after(q_.vel, q_.acc, q_.jerk, k);
   q_.acc = int64_t(acc_after(q_.acc, q_.jerk, k));
   q_.left -= uint32_t(k);
+  q_.move_done = false;
 }
 
 int64_t ProfileExec::fast_forward(uint64_t n) {
+  // advance() never covers a reload clock, so the FIFO only moves in step().
   const Inputs quiet{};
   const int32_t p0 = q_.pint;
   while (n > 0) {
@@ -181,7 +212,10 @@ int64_t ProfileExec::fast_forward(uint64_t n) {
       n -= span;
       if (n == 0) break;
     }
-    if (!q_.run && !q_.step_req) break;  // idle: nothing changes any more
+    if (!q_.run && !q_.step_req) {  // idle: nothing changes any more
+      idle_clocks();
+      break;
+    }
     step(quiet);
     --n;
   }

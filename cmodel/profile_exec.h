@@ -1,5 +1,5 @@
-// Bit-exact model of rtl/sc_profile_exec.sv: same state, same update order,
-// same wrap. step() is one clock; fast_forward() jumps many clocks in closed
+// Bit-exact model of rtl/sc_profile_exec.sv (with its sc_row_fifo): same
+// state, same update order, same wrap. step() is one clock; fast_forward() jumps many clocks in closed
 // form and is tested equal to step().
 #pragma once
 
@@ -7,6 +7,7 @@
 #include <cstdint>
 
 #include "fixed_point.h"
+#include "row_fifo.h"
 
 namespace sc {
 
@@ -19,13 +20,23 @@ struct Segment {
   bool operator==(const Segment&) const = default;
 };
 
+// One word of the row FIFO: a segment and its RowFlag* bits.
+struct Row {
+  Segment seg{};
+  uint8_t flags = 0;
+  bool operator==(const Row&) const = default;
+};
+
+inline constexpr uint8_t kRowMoveEnd = uint8_t(1u << RowFlagMoveEnd);
+inline constexpr uint8_t kRowStreamEnd = uint8_t(1u << RowFlagStreamEnd);
+inline constexpr uint8_t kRowAccStep = uint8_t(1u << RowFlagAccStep);
+
 class ProfileExec {
  public:
   struct Inputs {
-    bool seg_we = false;
-    uint8_t seg_waddr = 0;
-    Segment seg_wdata{};
-    uint8_t seg_count = 0;
+    bool row_push = false;
+    Row row{};
+    bool fifo_flush = false;
     u128 pos_frac0 = 0;
     bool start = false;
     bool abort = false;
@@ -34,8 +45,10 @@ class ProfileExec {
     bool run = false;
     bool finished = false;
     bool fault = false;
+    bool underrun = false;
+    bool discont = false;
     uint8_t idx = 0;
-    uint8_t count = 0;
+    uint8_t flags = 0;
     uint32_t left = 0;
     int64_t jerk = 0;
     int64_t acc = 0;
@@ -45,6 +58,9 @@ class ProfileExec {
     Phase phase = Phase::PhIdle;
     bool step_req = false;
     bool step_fwd = true;
+    uint32_t move_idx = 0;
+    int32_t bpos = 0;
+    bool move_done = false;
     bool operator==(const State&) const = default;
   };
 
@@ -62,19 +78,26 @@ class ProfileExec {
   // Advance k quiet clocks (k <= closed_form_span()) in closed form,
   // including the steps they emit; bit-exact with k calls of step().
   void advance(uint64_t k);
-  // Advance up to n quiet clocks (no start/abort/writes): a whole segment
+  // Quiet clocks while idle (not running, no step request): only the
+  // one-clock move_done pulse ends. Equal to that many calls of step().
+  void idle_clocks() { q_.move_done = false; }
+  // Advance up to n quiet clocks (no start/abort/push/flush): a whole segment
   // per advance(), step() for the reload clocks. Returns net steps emitted.
   // Equal to n calls of step() (stops early once idle).
   int64_t fast_forward(uint64_t n);
 
   const State& state() const { return q_; }
   State& mutable_state() { return q_; }  // for fault-injection tests only
-  const Segment& segment(unsigned i) const { return mem_[i % MaxSegs]; }
+  size_t fifo_level() const { return fifo_.level(); }
+  bool fifo_full() const { return fifo_.full(); }
+  // head_fwd_o: direction of the head row (velocity's sign, else the
+  // acceleration's, else the jerk's).
+  bool head_forward() const;
 
  private:
   bool jump_safe() const;
   State q_;
-  std::array<Segment, MaxSegs> mem_{};
+  RowFifo<Row, RowFifoDepth> fifo_;
 };
 
 }  // namespace sc

@@ -55,12 +55,9 @@ void ServoAxis::step(const ServoInputs& in) {
   CoreInputs& ki = core_in_;
   ki.enable = in.cfg.enable;
   ki.cfg = in.cfg.timing;
-  ki.seg_we = in.seg_we;
-  if (in.seg_we) {
-    ki.seg_waddr = in.seg_waddr;
-    ki.seg_wdata = in.seg_wdata;
-  }
-  ki.seg_count = in.seg_count;
+  ki.row_push = in.row_push;
+  if (in.row_push) ki.row = in.row;
+  ki.fifo_flush = in.fifo_flush;
   ki.pos_frac0 = in.pos_frac0;
   ki.start = in.start;
   ki.abort = in.abort;
@@ -116,6 +113,13 @@ ServoOutputs ServoAxis::outputs() const {
   o.fault_overrun = s.overrun;
   o.fault_ferr = c.ferr;
   o.in_pos = c.in_pos;
+  o.underrun = e.underrun;
+  o.discont = e.discont;
+  o.move_done = e.move_done;
+  o.move_idx = e.move_idx;
+  o.boundary_pos = e.bpos;
+  o.fifo_level = uint8_t(core_.exec().fifo_level());
+  o.fifo_full = core_.exec().fifo_full();
   o.pulse_count = s.count;
   o.enc_pos = dec_.state().count;
   o.enc_illegal = dec_.state().illegal;

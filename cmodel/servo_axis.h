@@ -27,10 +27,9 @@ struct ServoConfig {
 // Inputs of sc_servo_axis for one clock.
 struct ServoInputs {
   ServoConfig cfg{};
-  bool seg_we = false;
-  uint8_t seg_waddr = 0;
-  Segment seg_wdata{};
-  uint8_t seg_count = 0;
+  bool row_push = false;
+  Row row{};
+  bool fifo_flush = false;
   u128 pos_frac0 = 0;
   bool start = false;
   bool abort = false;
@@ -44,6 +43,10 @@ struct ServoOutputs {
   bool busy = false, done = false;
   uint8_t phase = 0;
   bool fault_table = false, fault_overrun = false, fault_ferr = false, in_pos = false;
+  bool underrun = false, discont = false, move_done = false, fifo_full = false;
+  uint32_t move_idx = 0;
+  int32_t boundary_pos = 0;
+  uint8_t fifo_level = 0;
   int32_t pulse_count = 0;
   int32_t enc_pos = 0;
   uint16_t enc_illegal = 0;
@@ -95,7 +98,7 @@ class ServoAxis {
   }
   // The servo's own input registers (closed_q and the controller's cfg
   // registers; enable and the pulse timing are the core's). The core's
-  // registers hold start, abort, seg_count and pos_frac0.
+  // registers hold start, abort and pos_frac0.
   struct InputRegs {
     ServoConfig cfg = zero_config();
   };

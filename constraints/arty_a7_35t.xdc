@@ -22,10 +22,11 @@ set_property -dict { PACKAGE_PIN D9  IOSTANDARD LVCMOS33 } [get_ports estop_i]
 set_property -dict { PACKAGE_PIN A9  IOSTANDARD LVCMOS33 } [get_ports uart_rx_i]
 set_property -dict { PACKAGE_PIN D10 IOSTANDARD LVCMOS33 } [get_ports uart_tx_o]
 
-## ---- stepper driver on Pmod JA (JA1 STEP, JA2 DIR, JA3 EN) -----------------------
+## ---- stepper driver on Pmod JA (JA1 STEP, JA2 DIR, JA3 EN; JA4 interrupt out) -----
 set_property -dict { PACKAGE_PIN G13 IOSTANDARD LVCMOS33 DRIVE 8 SLEW SLOW } [get_ports step_o]
 set_property -dict { PACKAGE_PIN B11 IOSTANDARD LVCMOS33 DRIVE 8 SLEW SLOW } [get_ports dir_o]
 set_property -dict { PACKAGE_PIN A11 IOSTANDARD LVCMOS33 DRIVE 8 SLEW SLOW } [get_ports en_o]
+set_property -dict { PACKAGE_PIN D12 IOSTANDARD LVCMOS33 DRIVE 8 SLEW SLOW } [get_ports irq_o]
 
 ## ---- quadrature encoder on Pmod JB (JB1 A, JB2 B) ---------------------------------
 set_property -dict { PACKAGE_PIN E15 IOSTANDARD LVCMOS33 PULLUP TRUE } [get_ports enc_a_i]
@@ -36,6 +37,8 @@ set_property -dict { PACKAGE_PIN H5  IOSTANDARD LVCMOS33 } [get_ports {led_o[0]}
 set_property -dict { PACKAGE_PIN J5  IOSTANDARD LVCMOS33 } [get_ports {led_o[1]}]
 set_property -dict { PACKAGE_PIN T9  IOSTANDARD LVCMOS33 } [get_ports {led_o[2]}]
 set_property -dict { PACKAGE_PIN T10 IOSTANDARD LVCMOS33 } [get_ports {led_o[3]}]
+## RGB LED LD0, red: interrupt pending
+set_property -dict { PACKAGE_PIN G6  IOSTANDARD LVCMOS33 } [get_ports led_irq_o]
 
 ## ---- IO timing ---------------------------------------------------------------------
 ## Asynchronous inputs (encoder, buttons, UART RX): no phase relation to any
@@ -54,8 +57,9 @@ set_false_path -from [get_ports {enc_a_i enc_b_i estop_i ck_rst_ni uart_rx_i}]
 set_output_delay -clock [get_clocks clk_sys] -max 20.000 [get_ports {step_o dir_o en_o}]
 set_output_delay -clock [get_clocks clk_sys] -min 0.000  [get_ports {step_o dir_o en_o}]
 
-## UART TX (8.7 us bits) and LEDs: human / bit-time scale, not timed.
-set_false_path -to [get_ports {uart_tx_o led_o[*]}]
+## UART TX (8.7 us bits), LEDs and the interrupt line (a level read by a host
+## or a microcontroller): human / bit-time scale, not timed.
+set_false_path -to [get_ports {uart_tx_o led_o[*] led_irq_o irq_o}]
 
 ## ---- configuration ---------------------------------------------------------------------
 set_property CFGBVS VCCO [current_design]

@@ -1,25 +1,27 @@
 // sc_axi_regs: AXI4-Lite slave register file of one axis (map: sc_pkg
 // "host register map", docs/regmap.md).
 //
-// Loads the segment table through a staging row (SEG_PHASE .. SEG_VEL0,
-// committed to a table row by SEG_COMMIT), the pulse timing, SEG_COUNT and
-// POS_FRAC0; CMD starts, stops and e-stops; STATUS/PULSE_COUNT/REF_POS/...
-// read the core. Every output to the core is a flop.
+// Streams rows through a staging row (SEG_PHASE .. SEG_VEL0, appended to
+// the core's row FIFO by ROW_PUSH, also while the axis runs), the pulse
+// timing and POS_FRAC0; CMD starts, stops, e-stops and flushes the FIFO;
+// STATUS/FIFO_STATUS/PULSE_COUNT/REF_POS/... read the core; IRQ_STATUS
+// collects interrupt causes, irq_o = |(IRQ_STATUS & IRQ_ENABLE) (a flop).
+// Every output to the core is a flop.
 //
 // AXI4-Lite: one write and one read in flight. AW and W are accepted in
 // any order (each held until the write is done); the write takes effect
 // the clock after both are held, together with BVALID. A read answers
 // RVALID the clock after the AR handshake. Responses: OKAY; SLVERR for a
-// write to a read-only register or a refused write (table/config/START
-// while busy, START while e-stopped or disabled); DECERR for an address
+// write to a read-only register or a refused write (config/START/FLUSH
+// while busy, START while e-stopped or disabled, ROW_PUSH to a full FIFO); DECERR for an address
 // with no register (including unaligned ones). Refused and bad accesses
 // change nothing but the sticky ERR flags. Reserved bits read 0. WSTRB
-// selects bytes; CMD, ERR and SEG_COMMIT act on byte 0 only. AWPROT/ARPROT
+// selects bytes; CMD, ERR, IRQ_STATUS and ROW_PUSH act on byte 0 only. AWPROT/ARPROT
 // are not used and not present.
 //
 // Servo = 1 (sc_axi_servo) adds the closed-loop words: ClCfgWords
 // controller settings from RegClFirst on (each masked to its fields,
-// locked while busy like the table, packed on cl_cfg_o, word i at bits
+// locked while busy like the pulse timing, packed on cl_cfg_o, word i at bits
 // 32i+31:32i) and ClStatWords read-only status words from RegClStat on
 // (cl_stat_i). With Servo = 0 those addresses answer DECERR.
 // CTRL.CLOSED_LOOP is a plain flop in both (closed_loop_o); a CTRL write
@@ -60,14 +62,14 @@ module sc_axi_regs #(
   output logic [sc_pkg::PulseTimeW-1:0]       cfg_low_o,
   output logic [sc_pkg::PulseTimeW-1:0]       cfg_setup_o,
   output logic [sc_pkg::PulseTimeW-1:0]       cfg_hold_o,
-  output logic                                seg_we_o,
-  output logic [sc_pkg::SegIdxW-1:0]          seg_waddr_o,
-  output logic [sc_pkg::PhaseW-1:0]           seg_phase_o,
-  output logic [sc_pkg::SegClkW-1:0]          seg_clocks_o,
-  output logic signed [sc_pkg::JerkW-1:0]     seg_jerk_o,
-  output logic signed [sc_pkg::AccW-1:0]      seg_acc0_o,
-  output logic signed [sc_pkg::VelW-1:0]      seg_vel0_o,
-  output logic [sc_pkg::SegCntW-1:0]          seg_count_o,
+  output logic                                row_push_o,
+  output logic [sc_pkg::RowFlagW-1:0]         row_flags_o,
+  output logic [sc_pkg::PhaseW-1:0]           row_phase_o,
+  output logic [sc_pkg::SegClkW-1:0]          row_clocks_o,
+  output logic signed [sc_pkg::JerkW-1:0]     row_jerk_o,
+  output logic signed [sc_pkg::AccW-1:0]      row_acc0_o,
+  output logic signed [sc_pkg::VelW-1:0]      row_vel0_o,
+  output logic                                fifo_flush_o,
   output logic [sc_pkg::FracBits-1:0]         pos_frac0_o,
   output logic                                start_o,
   output logic                                abort_o,
@@ -84,18 +86,27 @@ module sc_axi_regs #(
   input  logic signed [sc_pkg::PosIntW-1:0]   pulse_count_i,
   input  logic signed [sc_pkg::PosIntW-1:0]   ref_pos_i,
   input  logic [sc_pkg::SegIdxW-1:0]          seg_idx_i,
+  input  logic                                underrun_i,
+  input  logic                                discont_i,
+  input  logic                                move_done_i,
+  input  logic [sc_pkg::MoveIdxW-1:0]         move_idx_i,
+  input  logic signed [sc_pkg::PosIntW-1:0]   boundary_pos_i,
+  input  logic [sc_pkg::RowLevelW-1:0]        fifo_level_i,
+  input  logic                                fifo_full_i,
   input  logic                                in_pos_i,
   input  logic                                fault_ferr_i,
   input  logic [sc_pkg::ClStatWords*32-1:0]   cl_stat_i,
 
-  output logic                                busy_o       // STATUS.BUSY
+  output logic                                busy_o,      // STATUS.BUSY
+  output logic                                irq_o
 );
 
   localparam int AW         = sc_pkg::RegAddrW;
   localparam int PulseTimeW = sc_pkg::PulseTimeW;
   localparam int PhaseW     = sc_pkg::PhaseW;
   localparam int SegIdxW    = sc_pkg::SegIdxW;
-  localparam int SegCntW    = sc_pkg::SegCntW;
+  localparam int RowLevelW  = sc_pkg::RowLevelW;
+  localparam int IrqW       = sc_pkg::IrqW;
   localparam int SegClkW    = sc_pkg::SegClkW;
   localparam int FracBits   = sc_pkg::FracBits;
   localparam int JerkW      = sc_pkg::JerkW;
@@ -117,7 +128,12 @@ module sc_axi_regs #(
   localparam logic [AW-1:0] ARefPos    = AW'(sc_pkg::RegRefPos);
   localparam logic [AW-1:0] AEncPos    = AW'(sc_pkg::RegEncPos);
   localparam logic [AW-1:0] AFollowErr = AW'(sc_pkg::RegFollowErr);
-  localparam logic [AW-1:0] ASegCount  = AW'(sc_pkg::RegSegCount);
+  localparam logic [AW-1:0] AFifoStat  = AW'(sc_pkg::RegFifoStatus);
+  localparam logic [AW-1:0] AFifoLow   = AW'(sc_pkg::RegFifoLow);
+  localparam logic [AW-1:0] AMoveIdx   = AW'(sc_pkg::RegMoveIndex);
+  localparam logic [AW-1:0] ABoundPos  = AW'(sc_pkg::RegBoundaryPos);
+  localparam logic [AW-1:0] AIrqStat   = AW'(sc_pkg::RegIrqStatus);
+  localparam logic [AW-1:0] AIrqEn     = AW'(sc_pkg::RegIrqEnable);
   localparam logic [AW-1:0] APulseTime = AW'(sc_pkg::RegPulseTime);
   localparam logic [AW-1:0] ADirTime   = AW'(sc_pkg::RegDirTime);
   localparam logic [AW-1:0] AFrac0     = AW'(sc_pkg::RegPosFrac0);
@@ -132,16 +148,20 @@ module sc_axi_regs #(
   localparam logic [AW-1:0] AVel0      = AW'(sc_pkg::RegSegVel0);
   localparam logic [AW-1:0] AVel1      = AW'(sc_pkg::RegSegVel0 + 4);
   localparam logic [AW-1:0] AVel2      = AW'(sc_pkg::RegSegVel0 + 8);
-  localparam logic [AW-1:0] ASegCommit = AW'(sc_pkg::RegSegCommit);
+  localparam logic [AW-1:0] ARowPush   = AW'(sc_pkg::RegRowPush);
 
   localparam int CtrlEnableBit = sc_pkg::CtrlEnableBit;
   localparam int CtrlClosedBit = sc_pkg::CtrlClosedBit;
   localparam int CmdStartBit   = sc_pkg::CmdStartBit;
   localparam int CmdStopBit    = sc_pkg::CmdStopBit;
   localparam int CmdEstopBit   = sc_pkg::CmdEstopBit;
+  localparam int CmdFlushBit   = sc_pkg::CmdFlushBit;
   localparam int ErrRejectBit  = sc_pkg::ErrRejectBit;
   localparam int ErrBadAddrBit = sc_pkg::ErrBadAddrBit;
   localparam int ErrEstopBit   = sc_pkg::ErrEstopBit;
+  localparam int ErrFifoFullBit = sc_pkg::ErrFifoFullBit;
+  localparam int ErrDiscontBit = sc_pkg::ErrDiscontBit;
+  localparam int ErrUnderrunBit = sc_pkg::ErrUnderrunBit;
 
   // Closed-loop words: implemented bits and reset values (generated from the
   // register tags, word 0 lowest).
@@ -169,7 +189,11 @@ module sc_axi_regs #(
   logic                      en_q, en_d;
   logic                      closed_q, closed_d;
   logic [NCfg*32-1:0]        cl_q, cl_d;
-  logic [SegCntW-1:0]        seg_count_q, seg_count_d;
+  logic [RowLevelW-1:0]      low_water_q, low_water_d;
+  logic [IrqW-1:0]           irq_st_q, irq_st_d, irq_en_q, irq_en_d;
+  logic                      irq_q;
+  logic                      below_q, busy_prev_q, underrun_prev_q, fault_prev_q, discont_prev_q;
+  logic                      below, fault_any;
   logic [PulseTimeW-1:0]     high_q, high_d, low_q, low_d, setup_q, setup_d, hold_q, hold_d;
   logic [FracBits-1:0]       frac0_q, frac0_d;
   logic [PhaseW-1:0]         st_phase_q, st_phase_d;
@@ -177,14 +201,18 @@ module sc_axi_regs #(
   logic [JerkW-1:0]          st_jerk_q, st_jerk_d;
   logic [AccW-1:0]           st_acc0_q, st_acc0_d;
   logic [VelW-1:0]           st_vel0_q, st_vel0_d;
-  logic                      seg_we_q, seg_we_d;
-  logic [SegIdxW-1:0]        seg_waddr_q, seg_waddr_d;
+  logic                      push_q, push_d;
+  logic [sc_pkg::RowFlagW-1:0] push_flags_q, push_flags_d;
+  logic                      flush_q, flush_d;
   logic                      start_q, start_d;
   logic                      start_d1_q;           // START accepted, core not busy yet
   logic                      abort_q, abort_d;
   logic                      err_reject_q, err_reject_d;
   logic                      err_bad_q, err_bad_d;
   logic                      err_estop_q, err_estop_d;
+  logic                      err_full_q, err_full_d;
+  logic                      err_disc_q, err_disc_d;
+  logic                      err_under_q, err_under_d;
 
   // ---- decode --------------------------------------------------------------
   logic        busy_eff;
@@ -231,9 +259,8 @@ module sc_axi_regs #(
 
   always_comb begin
     unique case (awaddr_q)
-      ASegCount, APulseTime, ADirTime, AFrac0, AFrac1, AFrac2, ASegPhase, ASegClocks,
-      AJerk0, AJerk1, AAcc0, AAcc1, AVel0, AVel1, AVel2, ASegCommit: w_locked = 1'b1;
-      default:                                                        w_locked = w_cfg_hit;
+      APulseTime, ADirTime, AFrac0, AFrac1, AFrac2: w_locked = 1'b1;
+      default:                                      w_locked = w_cfg_hit;
     endcase
   end
 
@@ -251,7 +278,13 @@ module sc_axi_regs #(
     status_word[sc_pkg::StatusInPosBit]             = in_pos_i;
     status_word[sc_pkg::StatusEncALsb +: 2]         = enc_ab_i;
     status_word[sc_pkg::StatusSegIdxLsb +: SegIdxW] = seg_idx_i;
+    status_word[sc_pkg::StatusUnderrunBit]          = underrun_i;
+    status_word[sc_pkg::StatusDiscontBit]           = discont_i;
   end
+
+  // interrupt causes: events of the core's status (edges of its levels)
+  assign below     = fifo_level_i < low_water_q;
+  assign fault_any = fault_table_i || fault_overrun_i || fault_ferr_i || err_estop_q;
 
   // read mux
   always_comb begin
@@ -269,12 +302,24 @@ module sc_axi_regs #(
         rd_word[ErrRejectBit]  = err_reject_q;
         rd_word[ErrBadAddrBit] = err_bad_q;
         rd_word[ErrEstopBit]   = err_estop_q;
+        rd_word[ErrFifoFullBit] = err_full_q;
+        rd_word[ErrDiscontBit]  = err_disc_q;
+        rd_word[ErrUnderrunBit] = err_under_q;
       end
       APulseCnt:  rd_word = 32'(pulse_count_i);
       ARefPos:    rd_word = 32'(ref_pos_i);
       AEncPos:    rd_word = 32'(enc_pos_i);
       AFollowErr: rd_word = 32'(ref_pos_i - enc_pos_i);
-      ASegCount:  rd_word[sc_pkg::SegCountLsb +: SegCntW] = seg_count_q;
+      AFifoStat: begin
+        rd_word[sc_pkg::FifoLevelLsb +: RowLevelW] = fifo_level_i;
+        rd_word[sc_pkg::FifoFullBit]               = fifo_full_i;
+        rd_word[sc_pkg::FifoLowBit]                = below;
+      end
+      AFifoLow:   rd_word[sc_pkg::FifoLowLsb +: RowLevelW] = low_water_q;
+      AMoveIdx:   rd_word = 32'(move_idx_i);
+      ABoundPos:  rd_word = 32'(boundary_pos_i);
+      AIrqStat:   rd_word[IrqW-1:0] = irq_st_q;
+      AIrqEn:     rd_word[sc_pkg::IrqEnableLsb +: IrqW] = irq_en_q;
       APulseTime: begin
         rd_word[sc_pkg::PulseHighLsb +: PulseTimeW] = high_q;
         rd_word[sc_pkg::PulseLowLsb +: PulseTimeW]  = low_q;
@@ -295,7 +340,7 @@ module sc_axi_regs #(
       AVel0:      rd_word = st_vel0_q[31:0];
       AVel1:      rd_word = st_vel0_q[63:32];
       AVel2:      rd_word = 32'(st_vel0_q[VelW-1:64]);
-      ASegCommit: rd_word = '0;
+      ARowPush:   rd_word = '0;
       default: begin
         if (r_cfg_hit || r_st_hit) begin
           rd_word = cl_rd_word;
@@ -321,7 +366,9 @@ module sc_axi_regs #(
     en_d         = en_q;
     closed_d     = closed_q;
     cl_d         = cl_q;
-    seg_count_d  = seg_count_q;
+    low_water_d  = low_water_q;
+    irq_en_d     = irq_en_q;
+    irq_st_d     = irq_st_q;
     high_d       = high_q;
     low_d        = low_q;
     setup_d      = setup_q;
@@ -332,13 +379,17 @@ module sc_axi_regs #(
     st_jerk_d    = st_jerk_q;
     st_acc0_d    = st_acc0_q;
     st_vel0_d    = st_vel0_q;
-    seg_we_d     = 1'b0;
-    seg_waddr_d  = seg_waddr_q;
+    push_d       = 1'b0;
+    push_flags_d = push_flags_q;
+    flush_d      = 1'b0;
     start_d      = 1'b0;
     abort_d      = 1'b0;
     err_reject_d = err_reject_q;
     err_bad_d    = err_bad_q;
     err_estop_d  = err_estop_q;
+    err_full_d   = err_full_q;
+    err_disc_d   = err_disc_q;
+    err_under_d  = err_under_q;
     set_reject   = 1'b0;
     set_bad      = 1'b0;
 
@@ -371,7 +422,7 @@ module sc_axi_regs #(
         set_reject = 1'b1;
       end else begin
         unique case (awaddr_q)
-          AId, AStatus, APulseCnt, ARefPos, AEncPos, AFollowErr: begin
+          AId, AStatus, APulseCnt, ARefPos, AEncPos, AFollowErr, AFifoStat, AMoveIdx, ABoundPos: begin
             bresp_d = RespSlvErr;
             set_bad = 1'b1;
           end
@@ -396,6 +447,13 @@ module sc_axi_regs #(
                 end else begin
                   start_d = 1'b1;
                 end
+              end else if (wd[CmdFlushBit]) begin
+                if (busy_eff) begin
+                  bresp_d    = RespSlvErr;
+                  set_reject = 1'b1;
+                end else begin
+                  flush_d = 1'b1;
+                end
               end
             end
           end
@@ -404,10 +462,18 @@ module sc_axi_regs #(
               if (wd[ErrRejectBit])  err_reject_d = 1'b0;
               if (wd[ErrBadAddrBit]) err_bad_d    = 1'b0;
               if (wd[ErrEstopBit])   err_estop_d  = 1'b0;
+              if (wd[ErrFifoFullBit]) err_full_d  = 1'b0;
+              if (wd[ErrDiscontBit])  err_disc_d  = 1'b0;
+              if (wd[ErrUnderrunBit]) err_under_d = 1'b0;
             end
           end
-          ASegCount: seg_count_d = SegCntW'(wmerge(32'(seg_count_q) << sc_pkg::SegCountLsb, wd, wmask)
-                                             >> sc_pkg::SegCountLsb);
+          AIrqStat: begin
+            if (wstrb_q[0]) irq_st_d = irq_st_q & ~wd[IrqW-1:0];
+          end
+          AIrqEn:   irq_en_d = IrqW'(wmerge(32'(irq_en_q) << sc_pkg::IrqEnableLsb, wd, wmask)
+                                     >> sc_pkg::IrqEnableLsb);
+          AFifoLow: low_water_d = RowLevelW'(wmerge(32'(low_water_q) << sc_pkg::FifoLowLsb, wd, wmask)
+                                             >> sc_pkg::FifoLowLsb);
           APulseTime: begin
             high_d = PulseTimeW'(wmerge(32'(high_q) << sc_pkg::PulseHighLsb, wd, wmask)
                                  >> sc_pkg::PulseHighLsb);
@@ -434,10 +500,16 @@ module sc_axi_regs #(
           AVel0:      st_vel0_d[31:0]  = wmerge(st_vel0_q[31:0], wd, wmask);
           AVel1:      st_vel0_d[63:32] = wmerge(st_vel0_q[63:32], wd, wmask);
           AVel2:      st_vel0_d[VelW-1:64] = (VelW-64)'(wmerge(32'(st_vel0_q[VelW-1:64]), wd, wmask));
-          ASegCommit: begin
+          ARowPush: begin
             if (wstrb_q[0]) begin
-              seg_we_d    = 1'b1;
-              seg_waddr_d = wd[sc_pkg::SegCommitLsb +: SegIdxW];
+              if (fifo_full_i) begin
+                bresp_d    = RespSlvErr;
+                err_full_d = 1'b1;
+              end else begin
+                push_d       = 1'b1;
+                push_flags_d = {wd[sc_pkg::RowPushAccStepBit], wd[sc_pkg::RowPushStreamEndBit],
+                                wd[sc_pkg::RowPushMoveEndBit]};
+              end
             end
           end
           default: begin
@@ -478,6 +550,14 @@ module sc_axi_regs #(
     // sticky flags: setting wins over a clear in the same clock
     if (set_reject) err_reject_d = 1'b1;
     if (set_bad)    err_bad_d    = 1'b1;
+    if (discont_i && !discont_prev_q)   err_disc_d  = 1'b1;
+    if (underrun_i && !underrun_prev_q) err_under_d = 1'b1;
+    if (below && !below_q)              irq_st_d[sc_pkg::IrqLowWaterBit] = 1'b1;
+    if (move_done_i)                    irq_st_d[sc_pkg::IrqMoveDoneBit] = 1'b1;
+    if (busy_prev_q && !busy_eff)       irq_st_d[sc_pkg::IrqIdleBit]     = 1'b1;
+    if (underrun_i && !underrun_prev_q) irq_st_d[sc_pkg::IrqUnderrunBit] = 1'b1;
+    if ((fault_any && !fault_prev_q) || (discont_i && !discont_prev_q))
+                                        irq_st_d[sc_pkg::IrqFaultBit]    = 1'b1;
   end
 
   always_ff @(posedge clk_i) begin
@@ -495,7 +575,15 @@ module sc_axi_regs #(
       en_q         <= 1'b0;
       closed_q     <= 1'b0;
       cl_q         <= ClReset;
-      seg_count_q  <= '0;
+      low_water_q  <= RowLevelW'(sc_pkg::RstFifoLow);
+      irq_en_q     <= '0;
+      irq_st_q     <= '0;
+      irq_q        <= 1'b0;
+      below_q      <= 1'b0;
+      busy_prev_q  <= 1'b0;
+      underrun_prev_q <= 1'b0;
+      fault_prev_q <= 1'b0;
+      discont_prev_q <= 1'b0;
       high_q       <= PulseTimeW'(sc_pkg::RstPulseHigh);
       low_q        <= PulseTimeW'(sc_pkg::RstPulseLow);
       setup_q      <= PulseTimeW'(sc_pkg::RstDirSetup);
@@ -506,14 +594,18 @@ module sc_axi_regs #(
       st_jerk_q    <= '0;
       st_acc0_q    <= '0;
       st_vel0_q    <= '0;
-      seg_we_q     <= 1'b0;
-      seg_waddr_q  <= '0;
+      push_q       <= 1'b0;
+      push_flags_q <= '0;
+      flush_q      <= 1'b0;
       start_q      <= 1'b0;
       start_d1_q   <= 1'b0;
       abort_q      <= 1'b0;
       err_reject_q <= 1'b0;
       err_bad_q    <= 1'b0;
       err_estop_q  <= 1'b0;
+      err_full_q   <= 1'b0;
+      err_disc_q   <= 1'b0;
+      err_under_q  <= 1'b0;
     end else begin
       aw_full_q    <= aw_full_d;
       awaddr_q     <= awaddr_d;
@@ -528,7 +620,15 @@ module sc_axi_regs #(
       en_q         <= en_d;
       closed_q     <= closed_d;
       cl_q         <= cl_d;
-      seg_count_q  <= seg_count_d;
+      low_water_q  <= low_water_d;
+      irq_en_q     <= irq_en_d;
+      irq_st_q     <= irq_st_d;
+      irq_q        <= |(irq_st_d & irq_en_d);
+      below_q      <= below;
+      busy_prev_q  <= busy_eff;
+      underrun_prev_q <= underrun_i;
+      fault_prev_q <= fault_any;
+      discont_prev_q <= discont_i;
       high_q       <= high_d;
       low_q        <= low_d;
       setup_q      <= setup_d;
@@ -539,14 +639,18 @@ module sc_axi_regs #(
       st_jerk_q    <= st_jerk_d;
       st_acc0_q    <= st_acc0_d;
       st_vel0_q    <= st_vel0_d;
-      seg_we_q     <= seg_we_d;
-      seg_waddr_q  <= seg_waddr_d;
+      push_q       <= push_d;
+      push_flags_q <= push_flags_d;
+      flush_q      <= flush_d;
       start_q      <= start_d;
       start_d1_q   <= start_q;
       abort_q      <= abort_d;
       err_reject_q <= err_reject_d;
       err_bad_q    <= err_bad_d;
       err_estop_q  <= err_estop_d;
+      err_full_q   <= err_full_d;
+      err_disc_q   <= err_disc_d;
+      err_under_q  <= err_under_d;
     end
   end
 
@@ -564,19 +668,20 @@ module sc_axi_regs #(
   assign cfg_low_o   = low_q;
   assign cfg_setup_o = setup_q;
   assign cfg_hold_o  = hold_q;
-  assign seg_we_o    = seg_we_q;
-  assign seg_waddr_o = seg_waddr_q;
-  assign seg_phase_o = st_phase_q;
-  assign seg_clocks_o = st_clocks_q;
-  assign seg_jerk_o  = st_jerk_q;
-  assign seg_acc0_o  = st_acc0_q;
-  assign seg_vel0_o  = st_vel0_q;
-  assign seg_count_o = seg_count_q;
+  assign row_push_o  = push_q;
+  assign row_flags_o = push_flags_q;
+  assign row_phase_o = st_phase_q;
+  assign row_clocks_o = st_clocks_q;
+  assign row_jerk_o  = st_jerk_q;
+  assign row_acc0_o  = st_acc0_q;
+  assign row_vel0_o  = st_vel0_q;
+  assign fifo_flush_o = flush_q;
   assign pos_frac0_o = frac0_q;
   assign start_o     = start_q;
   assign abort_o     = abort_q;
   assign closed_loop_o = closed_q;
   assign ctl_cfg_o   = sc_pkg::ctl_cfg_from_words(cl_q);
   assign busy_o      = busy_eff;
+  assign irq_o       = irq_q;
 
 endmodule

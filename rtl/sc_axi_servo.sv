@@ -47,7 +47,8 @@ module sc_axi_servo (
   output logic signed [sc_pkg::PosIntW-1:0]   ref_pos_o,
   output logic signed [sc_pkg::EncCntW-1:0]   enc_pos_o,
   output logic                                in_pos_o,
-  output logic                                fault_ferr_o
+  output logic                                fault_ferr_o,
+  output logic                                irq_o        // IRQ_STATUS & IRQ_ENABLE
 );
 
   localparam int PulseTimeW = sc_pkg::PulseTimeW;
@@ -57,7 +58,7 @@ module sc_axi_servo (
   localparam int JerkW      = sc_pkg::JerkW;
   localparam int AccW       = sc_pkg::AccW;
   localparam int VelW       = sc_pkg::VelW;
-  localparam int SegCntW    = sc_pkg::SegCntW;
+  localparam int RowLevelW  = sc_pkg::RowLevelW;
   localparam int FracBits   = sc_pkg::FracBits;
   localparam int PendW      = sc_pkg::PendW;
   localparam int CtlW       = sc_pkg::CtlW;
@@ -66,15 +67,18 @@ module sc_axi_servo (
   localparam int MulAW      = sc_pkg::MulAW;
   localparam int NStat      = sc_pkg::ClStatWords;
 
-  logic                        enable, closed_loop, seg_we, start, abort;
+  logic                        enable, closed_loop, row_push, fifo_flush, start, abort;
   logic [PulseTimeW-1:0]       cfg_high, cfg_low, cfg_setup, cfg_hold;
-  logic [SegIdxW-1:0]          seg_waddr;
   logic [PhaseW-1:0]           seg_phase;
   logic [SegClkW-1:0]          seg_clocks;
   logic signed [JerkW-1:0]     seg_jerk;
   logic signed [AccW-1:0]      seg_acc0;
   logic signed [VelW-1:0]      seg_vel0;
-  logic [SegCntW-1:0]          seg_count;
+  logic [sc_pkg::RowFlagW-1:0] row_flags;
+  logic                        underrun, discont, move_done, fifo_full;
+  logic [sc_pkg::MoveIdxW-1:0] move_idx;
+  logic signed [sc_pkg::PosIntW-1:0] boundary_pos;
+  logic [RowLevelW-1:0]        fifo_level;
   logic [FracBits-1:0]         pos_frac0;
   logic                        core_busy, core_done, fault_table, fault_overrun;
   logic [sc_pkg::CtlCfgW-1:0]  ctl_cfg;
@@ -151,14 +155,14 @@ module sc_axi_servo (
     .cfg_low_o       (cfg_low),
     .cfg_setup_o     (cfg_setup),
     .cfg_hold_o      (cfg_hold),
-    .seg_we_o        (seg_we),
-    .seg_waddr_o     (seg_waddr),
-    .seg_phase_o     (seg_phase),
-    .seg_clocks_o    (seg_clocks),
-    .seg_jerk_o      (seg_jerk),
-    .seg_acc0_o      (seg_acc0),
-    .seg_vel0_o      (seg_vel0),
-    .seg_count_o     (seg_count),
+    .row_push_o      (row_push),
+    .row_flags_o     (row_flags),
+    .row_phase_o     (seg_phase),
+    .row_clocks_o    (seg_clocks),
+    .row_jerk_o      (seg_jerk),
+    .row_acc0_o      (seg_acc0),
+    .row_vel0_o      (seg_vel0),
+    .fifo_flush_o    (fifo_flush),
     .pos_frac0_o     (pos_frac0),
     .start_o         (start),
     .abort_o         (abort),
@@ -176,7 +180,15 @@ module sc_axi_servo (
     .in_pos_i        (in_pos_o),
     .fault_ferr_i    (fault_ferr_o),
     .cl_stat_i       (cl_stat),
-    .busy_o
+    .underrun_i      (underrun),
+    .discont_i       (discont),
+    .move_done_i     (move_done),
+    .move_idx_i      (move_idx),
+    .boundary_pos_i  (boundary_pos),
+    .fifo_level_i    (fifo_level),
+    .fifo_full_i     (fifo_full),
+    .busy_o,
+    .irq_o
   );
 
   sc_servo_axis u_servo (
@@ -188,14 +200,14 @@ module sc_axi_servo (
     .cfg_low_i         (cfg_low),
     .cfg_setup_i       (cfg_setup),
     .cfg_hold_i        (cfg_hold),
-    .seg_we_i          (seg_we),
-    .seg_waddr_i       (seg_waddr),
-    .seg_phase_i       (seg_phase),
-    .seg_clocks_i      (seg_clocks),
-    .seg_jerk_i        (seg_jerk),
-    .seg_acc0_i        (seg_acc0),
-    .seg_vel0_i        (seg_vel0),
-    .seg_count_i       (seg_count),
+    .row_push_i        (row_push),
+    .row_flags_i       (row_flags),
+    .row_phase_i       (seg_phase),
+    .row_clocks_i      (seg_clocks),
+    .row_jerk_i        (seg_jerk),
+    .row_acc0_i        (seg_acc0),
+    .row_vel0_i        (seg_vel0),
+    .fifo_flush_i      (fifo_flush),
     .pos_frac0_i       (pos_frac0),
     .start_i           (start),
     .abort_i           (abort),
@@ -210,6 +222,13 @@ module sc_axi_servo (
     .phase_o,
     .fault_table_o     (fault_table),
     .fault_overrun_o   (fault_overrun),
+    .underrun_o        (underrun),
+    .discont_o         (discont),
+    .move_done_o       (move_done),
+    .move_idx_o        (move_idx),
+    .boundary_pos_o    (boundary_pos),
+    .fifo_level_o      (fifo_level),
+    .fifo_full_o       (fifo_full),
     .fault_ferr_o,
     .in_pos_o,
     .pulse_count_o,

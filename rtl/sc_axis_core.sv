@@ -1,6 +1,6 @@
 // sc_axis_core: one open-loop axis = profile executor + step pulse generator.
 //
-// done_o rises once the executor has finished the table AND the last
+// done_o rises once the executor has finished the stream AND the last
 // requested step has left the STEP pin, so no pulse can follow done_o.
 // phase_o reports the executor's segment phase, PhDone once done_o is set.
 // Control and configuration inputs are registered here first (one clock of
@@ -9,8 +9,8 @@
 // once per rising edge instead of on every input change.
 //
 // An accepted start first arms: DIR is turned to the move's direction (the
-// sign of table row 0, captured when row 0 is written) and held for the
-// setup time, and only then does the executor start (exec_start_o pulses).
+// sign of the head row of the row FIFO, taken when START is accepted) and
+// held for the setup time, and only then does the executor start (exec_start_o pulses).
 // Steps therefore never pile up in the step generator's queue behind a DIR
 // change.
 //
@@ -36,14 +36,14 @@ module sc_axis_core #(
   input  logic [sc_pkg::PulseTimeW-1:0]       cfg_setup_i,
   input  logic [sc_pkg::PulseTimeW-1:0]       cfg_hold_i,
 
-  input  logic                        seg_we_i,
-  input  logic [sc_pkg::SegIdxW-1:0]          seg_waddr_i,
-  input  logic [sc_pkg::PhaseW-1:0]           seg_phase_i,
-  input  logic [sc_pkg::SegClkW-1:0]          seg_clocks_i,
-  input  logic signed [sc_pkg::JerkW-1:0]     seg_jerk_i,
-  input  logic signed [sc_pkg::AccW-1:0]      seg_acc0_i,
-  input  logic signed [sc_pkg::VelW-1:0]      seg_vel0_i,
-  input  logic [sc_pkg::SegCntW-1:0]          seg_count_i,
+  input  logic                        row_push_i,   // append a row (ignored while fifo_full_o)
+  input  logic [sc_pkg::RowFlagW-1:0]         row_flags_i,
+  input  logic [sc_pkg::PhaseW-1:0]           row_phase_i,
+  input  logic [sc_pkg::SegClkW-1:0]          row_clocks_i,
+  input  logic signed [sc_pkg::JerkW-1:0]     row_jerk_i,
+  input  logic signed [sc_pkg::AccW-1:0]      row_acc0_i,
+  input  logic signed [sc_pkg::VelW-1:0]      row_vel0_i,
+  input  logic                        fifo_flush_i,
   input  logic [sc_pkg::FracBits-1:0]         pos_frac0_i,
   input  logic                        start_i,      // ignored while busy_o or !enable_i (seen a clock later)
   input  logic                        abort_i,
@@ -59,7 +59,7 @@ module sc_axis_core #(
   input  logic                        ext_done_i,
   output logic                        exec_start_o,      // the executor starts this clock
   output logic                        abort_o,           // abort_i as registered here
-  output logic                        ref_done_o,        // the executor has finished the table
+  output logic                        ref_done_o,        // the executor has finished the stream
   output logic                        step_busy_o,       // a step is owed or STEP is high
 
   output logic                        step_o,
@@ -71,6 +71,13 @@ module sc_axis_core #(
   output logic [sc_pkg::PhaseW-1:0]           phase_o,
   output logic                        fault_table_o,
   output logic                        fault_overrun_o,
+  output logic                        underrun_o,
+  output logic                        discont_o,
+  output logic                        move_done_o,
+  output logic [sc_pkg::MoveIdxW-1:0]         move_idx_o,
+  output logic signed [sc_pkg::PosIntW-1:0]   boundary_pos_o,
+  output logic [sc_pkg::RowLevelW-1:0]        fifo_level_o,
+  output logic                        fifo_full_o,
   output logic signed [sc_pkg::PosIntW-1:0]   pulse_count_o,  // net steps since start
 
   // reference kinematics (P*, V*, A*, J*) for the closed loop and for checks
@@ -84,7 +91,6 @@ module sc_axis_core #(
 );
 
   localparam int PulseTimeW = sc_pkg::PulseTimeW;
-  localparam int SegCntW    = sc_pkg::SegCntW;
   localparam int FracBits   = sc_pkg::FracBits;
   localparam int PhaseW     = sc_pkg::PhaseW;
 
@@ -96,13 +102,11 @@ module sc_axis_core #(
   logic   use_ext, exec_abort, finished, ref_moving;
   logic   start_ok, exec_start;
   logic   en_q, start_q, abort_q;
-  logic   first_fwd_q;                   // direction of table row 0
+  logic   head_fwd;                      // direction of the FIFO's head row
   logic   arm_q, arm_d;                  // start accepted, waiting for DIR
   logic   arm_fwd_q, arm_fwd_d;
   logic [PulseTimeW-1:0] arm_cnt_q, arm_cnt_d;  // clocks DIR has pointed the right way
-  logic   row0_fwd;
   logic [PulseTimeW-1:0] cfg_high_q, cfg_low_q, cfg_setup_q, cfg_hold_q;
-  logic [SegCntW-1:0]    seg_count_q;
   logic [FracBits-1:0]   pos_frac0_q;
 
   assign use_ext    = ExtStep && ext_sel_i;
@@ -123,12 +127,6 @@ module sc_axis_core #(
   assign sg_hint       = arm_q ? arm_fwd_q :
                          (!ExtStep || ref_moving) ? !ref_vel_o[sc_pkg::VelW-1] : ext_hint_i;
 
-  // Direction of a row: its velocity's sign, else its acceleration's, else
-  // its jerk's (a move from rest starts with v = a = 0).
-  assign row0_fwd = (seg_vel0_i != '0) ? !seg_vel0_i[sc_pkg::VelW-1] :
-                    (seg_acc0_i != '0) ? !seg_acc0_i[sc_pkg::AccW-1] :
-                                         !seg_jerk_i[sc_pkg::JerkW-1];
-
   always_comb begin
     arm_d      = arm_q;
     arm_fwd_d  = arm_fwd_q;
@@ -136,7 +134,7 @@ module sc_axis_core #(
     exec_start = 1'b0;
     if (start_ok) begin
       arm_d     = 1'b1;
-      arm_fwd_d = first_fwd_q;
+      arm_fwd_d = head_fwd;
       arm_cnt_d = '0;
     end else if (arm_q) begin
       if (abort_q) begin
@@ -155,20 +153,28 @@ module sc_axis_core #(
   sc_profile_exec u_exec (
     .clk_i,
     .rst_ni,
-    .seg_we_i,
-    .seg_waddr_i,
-    .seg_phase_i,
-    .seg_clocks_i,
-    .seg_jerk_i,
-    .seg_acc0_i,
-    .seg_vel0_i,
-    .seg_count_i (seg_count_q),
+    .row_push_i,
+    .row_flags_i,
+    .row_phase_i,
+    .row_clocks_i,
+    .row_jerk_i,
+    .row_acc0_i,
+    .row_vel0_i,
+    .fifo_flush_i,
     .pos_frac0_i (pos_frac0_q),
     .start_i     (exec_start),
     .abort_i     (exec_abort),
     .running_o   (exec_running),
     .finished_o  (exec_finished),
     .fault_o     (exec_fault),
+    .underrun_o,
+    .discont_o,
+    .move_done_o,
+    .move_idx_o,
+    .boundary_pos_o,
+    .fifo_level_o,
+    .fifo_full_o,
+    .head_fwd_o  (head_fwd),
     .step_req_o  (exec_step_req),
     .step_fwd_o  (exec_step_fwd),
     .pos_int_o   (ref_pos_int_o),
@@ -203,7 +209,6 @@ module sc_axis_core #(
   always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
       en_q        <= 1'b0;
-      first_fwd_q <= 1'b1;
       arm_q       <= 1'b0;
       arm_fwd_q   <= 1'b1;
       arm_cnt_q   <= '0;
@@ -213,11 +218,9 @@ module sc_axis_core #(
       cfg_low_q   <= '0;
       cfg_setup_q <= '0;
       cfg_hold_q  <= '0;
-      seg_count_q <= '0;
       pos_frac0_q <= '0;
     end else begin
       en_q        <= enable_i;
-      if (seg_we_i && seg_waddr_i == '0 && !exec_running) first_fwd_q <= row0_fwd;
       arm_q       <= arm_d;
       arm_fwd_q   <= arm_fwd_d;
       arm_cnt_q   <= arm_cnt_d;
@@ -227,7 +230,6 @@ module sc_axis_core #(
       cfg_low_q   <= cfg_low_i;
       cfg_setup_q <= cfg_setup_i;
       cfg_hold_q  <= cfg_hold_i;
-      seg_count_q <= seg_count_i;
       pos_frac0_q <= pos_frac0_i;
     end
   end

@@ -11,6 +11,7 @@
 //   BTN0 --[sc_sync]--> e-stop (abort, EN off, ERR.ESTOP latched)
 //   LD4 heartbeat, LD5 busy, LD6 done (closed loop: in position),
 //   LD7 fault (table, overrun, following error) / e-stop
+//   irq (IRQ_STATUS & IRQ_ENABLE) on Pmod JA4 and the red of RGB LED LD0
 // Every input pin is asynchronous and goes through a two-flop synchroniser;
 // every output pin comes from a flop of the system clock domain.
 module sc_board_top #(
@@ -24,6 +25,8 @@ module sc_board_top #(
   output logic       step_o,      // G13, Pmod JA1
   output logic       dir_o,       // B11, Pmod JA2
   output logic       en_o,        // A11, Pmod JA3 (high = enabled)
+  output logic       irq_o,       // D12, Pmod JA4 (high = interrupt pending)
+  output logic       led_irq_o,   // G6, LD0 red: interrupt pending
   input  logic       enc_a_i,     // E15, Pmod JB1
   input  logic       enc_b_i,     // E16, Pmod JB2
   output logic [3:0] led_o        // H5 J5 T9 T10 (LD4..LD7)
@@ -118,7 +121,7 @@ module sc_board_top #(
   );
 
   // ---- the axis ------------------------------------------------------------------
-  logic                      busy, done, fault;
+  logic                      busy, done, fault, irq;
   logic [PhaseW-1:0]         unused_phase;
   logic signed [PosIntW-1:0] unused_pulse_count, unused_ref_pos;
   logic signed [EncCntW-1:0] unused_enc_pos;
@@ -158,7 +161,8 @@ module sc_board_top #(
     .ref_pos_o       (unused_ref_pos),
     .enc_pos_o       (unused_enc_pos),
     .in_pos_o        (unused_in_pos),
-    .fault_ferr_o    (unused_fault_ferr)
+    .fault_ferr_o    (unused_fault_ferr),
+    .irq_o           (irq)
   );
 
   // ---- LEDs ------------------------------------------------------------------------
@@ -183,6 +187,9 @@ module sc_board_top #(
     end
   end
 
-  assign led_o = led_q;
+  assign led_o     = led_q;
+  // irq is a flop of sc_axi_regs: straight to the pins
+  assign irq_o     = irq;
+  assign led_irq_o = irq;
 
 endmodule

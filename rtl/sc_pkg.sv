@@ -27,9 +27,21 @@ package sc_pkg;
   localparam int AccW     = 64;  // signed
   localparam int JerkW    = 48;  // signed
   localparam int SegClkW  = 32;  // segment duration in clocks
-  localparam int MaxSegs  = 16;  // segment table depth
+  localparam int MaxSegs  = 16;  // rows of one planned move (the planner's budget)
   localparam int SegIdxW  = 4;   // $clog2(MaxSegs)
   localparam int SegCntW  = 5;   // 0..MaxSegs
+  // Row FIFO: the executor runs a stream of rows that the host appends to
+  // while the axis moves (distributed RAM; the depth is a power of two).
+  localparam int RowFifoDepth = 32;
+  localparam int RowLevelW    = 6;   // 0..RowFifoDepth
+  localparam int MoveIdxW     = 32;  // moves completed since START (wraps)
+  // Row flags, pushed with each row.
+  localparam int RowFlagW         = 3;
+  localparam int RowFlagMoveEnd   = 0;  // last row of a move: a move boundary follows
+  localparam int RowFlagStreamEnd = 1;  // last row of the stream: the plan ends here, at rest
+                                        // or at its end speed (a stepper's stop speed)
+  localparam int RowFlagAccStep   = 2;  // the row starts with a planned acceleration step
+                                        // (trapezoid profiles): only its velocity must continue
 
   // ---- step pulse generator ----------------------------------------------
   localparam int PulseTimeW = 16;  // high/low/setup/hold in clocks
@@ -158,60 +170,73 @@ package sc_pkg;
   // //@field REG NAME WIDTH [reset=N] "text" (LSB = the localparam's value).
   // Any address not listed answers DECERR.
   localparam int RegAddrW      = 8;       // byte address bits of the window
-  localparam int RegMapVersion = 256;     // 0x0100 = 1.0
+  localparam int RegMapVersion = 512;     // 0x0200 = 2.0 (row FIFO)
   localparam int RegIdMagic    = 21315;   // 0x5343, ASCII "SC"
   localparam int RstPulseHigh  = 50;      // reset values of the pulse timing
   localparam int RstPulseLow   = 50;
   localparam int RstDirSetup   = 100;
   localparam int RstDirHold    = 100;
   localparam int RegId         = 32'h0000_0000;  //@reg ID RO "identification"
-  localparam int IdVersionLsb  = 0;      //@field ID VERSION 16 reset=256 "register map version, 0x0100 = 1.0"
+  localparam int IdVersionLsb  = 0;      //@field ID VERSION 16 reset=512 "register map version, 0x0200 = 2.0"
   localparam int IdMagicLsb    = 16;     //@field ID MAGIC 16 reset=21315 "0x5343, ASCII 'SC'"
   localparam int RegCtrl       = 32'h0000_0004;  //@reg CTRL RW "control"
   localparam int CtrlEnableBit = 0;      //@field CTRL ENABLE 1 "drives the EN pin; START is refused while 0; ESTOP clears it"
   localparam int CtrlClosedBit = 1;      //@field CTRL CLOSED_LOOP 1 "sc_axi_servo: 1 = closed loop (encoder feedback), 0 = open loop; a write changing it while busy is refused (ignored by sc_axi_axis)"
   localparam int RegCmd        = 32'h0000_0008;  //@reg CMD WO "commands: write 1 to act; reads 0"
-  localparam int CmdStartBit   = 0;      //@field CMD START 1 "start the loaded table (refused with SLVERR + ERR.REJECT while busy, e-stopped or disabled)"
-  localparam int CmdStopBit    = 1;      //@field CMD STOP 1 "abort the move: the profile stops at once, a STEP pulse in flight completes"
+  localparam int CmdStartBit   = 0;      //@field CMD START 1 "start the rows in the FIFO (refused with SLVERR + ERR.REJECT while busy, e-stopped or disabled)"
+  localparam int CmdStopBit    = 1;      //@field CMD STOP 1 "abort the stream: the profile stops at once, the FIFO is emptied, a STEP pulse in flight completes"
   localparam int CmdEstopBit   = 2;      //@field CMD ESTOP 1 "STOP, clear CTRL.ENABLE and latch ERR.ESTOP"
+  localparam int CmdFlushBit   = 3;      //@field CMD FLUSH 1 "empty the row FIFO (refused with SLVERR + ERR.REJECT while busy)"
   localparam int RegStatus     = 32'h0000_000C;  //@reg STATUS RO "axis status"
   localparam int StatusPhaseLsb        = 0;   //@field STATUS PHASE PhaseW "phase code (0 idle .. 8 done, 9 abort, 10 fault)"
   localparam int StatusBusyBit         = 4;   //@field STATUS BUSY 1 "a move is running or STEP pulses are owed (from the accepted START on)"
-  localparam int StatusDoneBit         = 5;   //@field STATUS DONE 1 "the table has finished and the last pulse has left the pin"
+  localparam int StatusDoneBit         = 5;   //@field STATUS DONE 1 "the stream has ended and the last pulse has left the pin"
   localparam int StatusEnBit           = 6;   //@field STATUS EN 1 "level of the EN pin"
-  localparam int StatusFaultTableBit   = 7;   //@field STATUS FAULT_TABLE 1 "the last START met a malformed table (count 0 or > 16, a zero-length row)"
+  localparam int StatusFaultTableBit   = 7;   //@field STATUS FAULT_TABLE 1 "the last START met an empty FIFO, or a zero-length row was loaded"
   localparam int StatusFaultOverrunBit = 8;   //@field STATUS FAULT_OVERRUN 1 "step requests overflowed the pulse queue"
   localparam int StatusEstopBit        = 9;   //@field STATUS ESTOP 1 "ERR.ESTOP is set (START refused)"
   localparam int StatusErrBit          = 10;  //@field STATUS ERR 1 "some ERR flag is set"
   localparam int StatusFaultFerrBit    = 11;  //@field STATUS FAULT_FERR 1 "closed loop: following-error fault latched (|P* - P| > FERR_LIM); 0 in sc_axi_axis"
   localparam int StatusEncALsb         = 12;  //@field STATUS ENC_AB 2 "synchronised encoder inputs: bit 12 = A, bit 13 = B"
   localparam int StatusInPosBit        = 14;  //@field STATUS IN_POS 1 "closed loop: in position (|P - L| <= INPOS_WIN for INPOS_HOLD periods); 0 in sc_axi_axis"
-  localparam int StatusSegIdxLsb       = 16;  //@field STATUS SEG_IDX SegIdxW "table row being executed"
+  localparam int StatusUnderrunBit     = 15;  //@field STATUS UNDERRUN 1 "the FIFO ran dry while moving: the axis stopped (until the next START)"
+  localparam int StatusSegIdxLsb       = 16;  //@field STATUS SEG_IDX SegIdxW "row of the current move being executed (modulo 16)"
+  localparam int StatusDiscontBit      = 20;  //@field STATUS DISCONTINUITY 1 "a row did not continue the motion exactly: the axis stopped (until the next START)"
   localparam int RegErr        = 32'h0000_0010;  //@reg ERR W1C "sticky error flags: write 1 to clear"
   localparam int ErrRejectBit  = 0;      //@field ERR REJECT 1 "a table/config/START write was refused (busy, e-stopped or disabled): SLVERR, nothing changed"
   localparam int ErrBadAddrBit = 1;      //@field ERR BAD_ACCESS 1 "an access answered DECERR (no register) or SLVERR (write to a read-only register)"
   localparam int ErrEstopBit   = 2;      //@field ERR ESTOP 1 "e-stop latched (CMD.ESTOP or the e-stop input); blocks START until cleared"
+  localparam int ErrFifoFullBit = 3;     //@field ERR FIFO_FULL 1 "a ROW_PUSH met a full FIFO: SLVERR, the row was not appended (the staged row is kept)"
+  localparam int ErrDiscontBit = 4;      //@field ERR DISCONTINUITY 1 "a row did not continue the previous row's end state exactly: not executed, the axis stopped"
+  localparam int ErrUnderrunBit = 5;     //@field ERR UNDERRUN 1 "the FIFO ran dry while the axis was moving: the axis stopped"
   localparam int RegPulseCount = 32'h0000_0014;  //@reg PULSE_COUNT RO "net STEP pulses since the last START (signed)"
   localparam int RegRefPos     = 32'h0000_0018;  //@reg REF_POS RO "reference position P*, integer pulses (signed)"
   localparam int RegEncPos     = 32'h0000_001C;  //@reg ENC_POS RO "encoder position P, counts (signed)"
   localparam int RegFollowErr  = 32'h0000_0020;  //@reg FOLLOW_ERR RO "following error P* - P (signed, wraps)"
-  localparam int RegSegCount   = 32'h0000_0024;  //@reg SEG_COUNT RW "rows of the table to run"
-  localparam int SegCountLsb   = 0;      //@field SEG_COUNT COUNT SegCntW "1..16"
+  localparam int RegFifoStatus = 32'h0000_0024;  //@reg FIFO_STATUS RO "row FIFO"
+  localparam int FifoLevelLsb  = 0;      //@field FIFO_STATUS LEVEL RowLevelW "rows queued (0..32)"
+  localparam int FifoFullBit   = 8;      //@field FIFO_STATUS FULL 1 "no room: ROW_PUSH is refused"
+  localparam int FifoLowBit    = 9;      //@field FIFO_STATUS LOW 1 "LEVEL is below FIFO_LOW_WATER"
   localparam int RegPulseTime  = 32'h0000_0028;  //@reg PULSE_TIME RW "STEP pulse timing, clocks"
   localparam int PulseHighLsb  = 0;      //@field PULSE_TIME HIGH PulseTimeW reset=50 "STEP high time (>= 1)"
   localparam int PulseLowLsb   = 16;     //@field PULSE_TIME LOW PulseTimeW reset=50 "minimum STEP low time (>= 1)"
   localparam int RegDirTime    = 32'h0000_002C;  //@reg DIR_TIME RW "DIR timing, clocks"
   localparam int DirSetupLsb   = 0;      //@field DIR_TIME SETUP PulseTimeW reset=100 "DIR change to STEP rising edge"
   localparam int DirHoldLsb    = 16;     //@field DIR_TIME HOLD PulseTimeW reset=100 "STEP rising edge to DIR change"
+  localparam int RegFifoLow    = 32'h0000_003C;  //@reg FIFO_LOW_WATER RW "low-water mark of the row FIFO"
+  localparam int FifoLowLsb    = 0;      //@field FIFO_LOW_WATER LEVEL RowLevelW reset=8 "IRQ_STATUS.LOW_WATER when LEVEL falls below this"
+  localparam int RstFifoLow    = 8;
   localparam int RegPosFrac0   = 32'h0000_0030;  //@reg POS_FRAC0 RW wide=FracBits "initial position fraction, UQ0.80, 3 words low first"
-  localparam int RegSegPhase   = 32'h0000_0040;  //@reg SEG_PHASE RW "row staging: phase code"
+  localparam int RegSegPhase   = 32'h0000_0040;  //@reg SEG_PHASE RW "row staging (writable while busy): phase code"
   localparam int SegPhaseLsb   = 0;      //@field SEG_PHASE PHASE PhaseW "phase reported while the row runs"
   localparam int RegSegClocks  = 32'h0000_0044;  //@reg SEG_CLOCKS RW "row staging: duration in clocks (>= 1)"
   localparam int RegSegJerk    = 32'h0000_0048;  //@reg SEG_JERK RW wide=JerkW "row staging: jerk, signed, 2 words low first"
   localparam int RegSegAcc0    = 32'h0000_0050;  //@reg SEG_ACC0 RW wide=AccW "row staging: start acceleration, signed, 2 words"
   localparam int RegSegVel0    = 32'h0000_0058;  //@reg SEG_VEL0 RW wide=VelW "row staging: start velocity, signed SQ1.80, 3 words"
-  localparam int RegSegCommit  = 32'h0000_0064;  //@reg SEG_COMMIT WO "write the staged row into the table; reads 0"
-  localparam int SegCommitLsb  = 0;      //@field SEG_COMMIT ROW SegIdxW "table row (0..15) to write"
+  localparam int RegRowPush    = 32'h0000_0064;  //@reg ROW_PUSH WO "append the staged row to the FIFO with these flags (refused with SLVERR + ERR.FIFO_FULL when full); reads 0"
+  localparam int RowPushMoveEndBit   = 0;  //@field ROW_PUSH MOVE_END 1 "last row of a move: MOVE_INDEX and BOUNDARY_POS update when it ends"
+  localparam int RowPushStreamEndBit = 1;  //@field ROW_PUSH STREAM_END 1 "last row of the stream: the plan ends here (at rest or at its stop speed)"
+  localparam int RowPushAccStepBit   = 2;  //@field ROW_PUSH ACC_STEP 1 "the row starts with a planned acceleration step (trapezoid): the continuity guard checks its velocity only"
   // Closed-loop controller settings (sc_axi_servo only; DECERR in
   // sc_axi_axis): words RegClFirst .. RegClFirst + 4 * (ClCfgWords - 1), the
   // registers tagged `servo` whose fields carry cfg=MEMBER. Those fields are
@@ -324,9 +349,22 @@ package sc_pkg;
   localparam int RegClWp2Now   = 32'h0000_00E8;  //@reg CTL_W_P2 RO servo "learned weight w_p2, signed Q.16 (sign-extended)"
   localparam int RegClWv1Now   = 32'h0000_00EC;  //@reg CTL_W_V1 RO servo "learned weight w_v1, signed Q.16 (sign-extended)"
   localparam int RegClWv2Now   = 32'h0000_00F0;  //@reg CTL_W_V2 RO servo "learned weight w_v2, signed Q.16 (sign-extended)"
-  // Writes to SEG_COUNT, PULSE_TIME, DIR_TIME, POS_FRAC0, SEG_* and
-  // CMD.START while STATUS.BUSY is set are refused (SLVERR, ERR.REJECT);
-  // so are writes to the controller settings (CL_CFG .. SETTLE_RATE).
+  // Stream status and interrupts (the free words of the map).
+  localparam int RegMoveIndex  = 32'h0000_00CC;  //@reg MOVE_INDEX RO "moves completed since START (MOVE_END rows ended, wraps)"
+  localparam int RegBoundaryPos = 32'h0000_00F4;  //@reg BOUNDARY_POS RO "reference position at the last move boundary, integer pulses (signed; the start position until one ends)"
+  localparam int RegIrqStatus  = 32'h0000_00F8;  //@reg IRQ_STATUS W1C "interrupt causes, sticky: write 1 to clear; irq_o = |(IRQ_STATUS & IRQ_ENABLE)"
+  localparam int IrqLowWaterBit = 0;     //@field IRQ_STATUS LOW_WATER 1 "the FIFO level fell below FIFO_LOW_WATER"
+  localparam int IrqMoveDoneBit = 1;     //@field IRQ_STATUS MOVE_DONE 1 "a move ended (MOVE_INDEX advanced)"
+  localparam int IrqIdleBit     = 2;     //@field IRQ_STATUS IDLE 1 "the axis became idle (BUSY fell)"
+  localparam int IrqUnderrunBit = 3;     //@field IRQ_STATUS UNDERRUN 1 "the FIFO ran dry while moving"
+  localparam int IrqFaultBit    = 4;     //@field IRQ_STATUS FAULT 1 "a fault: FAULT_TABLE, FAULT_OVERRUN, DISCONTINUITY, FAULT_FERR or e-stop"
+  localparam int IrqW           = 5;
+  localparam int RegIrqEnable  = 32'h0000_00FC;  //@reg IRQ_ENABLE RW "interrupt enables, one per IRQ_STATUS bit"
+  localparam int IrqEnableLsb  = 0;      //@field IRQ_ENABLE MASK IrqW "bit i enables IRQ_STATUS bit i"
+  // Writes to PULSE_TIME, DIR_TIME, POS_FRAC0, CMD.START and CMD.FLUSH
+  // while STATUS.BUSY is set are refused (SLVERR, ERR.REJECT); so are writes
+  // to the controller settings (CL_CFG .. SETTLE_RATE). The row staging
+  // registers and ROW_PUSH stay open: the host streams while the axis runs.
 
   // ---- UART bridge (115200 8N1 at ClkHz; protocol in docs/regmap.md) -----
   localparam int UartClksPerBit = 174;    // 20 MHz / 115200 = 173.6 (0.2 % fast)

@@ -1,25 +1,42 @@
-// sc_profile_exec: executes the planner's segment table.
+// sc_profile_exec: executes the planner's rows from a row stream.
 //
 // Every clock while running:   pos += vel;  vel += acc;  acc += jerk
 // in exact integer arithmetic (LSB = 2^-FracBits pulses / clock^k, see sc_pkg).
-// A segment runs for seg.clocks clocks; on its last clock the position is
+// A row runs for row.clocks clocks; on its last clock the position is
 // still advanced, but vel/acc/jerk are reloaded from the next row instead of
-// integrated, so each segment starts from the exact values the planner chose
-// and nothing accumulates across segments. A carry (borrow) out of the
-// position fraction is one step forward (backward): step_req_o, one clock.
+// integrated. A carry (borrow) out of the position fraction is one step
+// forward (backward): step_req_o, one clock.
+//
+// Rows come from a FIFO (sc_row_fifo, RowFifoDepth deep) that the host
+// appends to while the axis runs. START loads the head row as it is (a move
+// may start at a stepper's start speed); every later row must continue the
+// running row's end state exactly (vel0 = v + a and acc0 = a + j of the
+// last clock, i.e. the state one more integration would give; a row flagged
+// ACC_STEP, a trapezoid's planned acceleration step, only in velocity),
+// else it is not executed: the continuity guard stops the axis and flags it. At the end
+// of a row:
+//   * row flagged STREAM_END: the stream ends (v, a, j to 0: the plan's end);
+//   * else the head row is loaded if it continues exactly;
+//   * else, with the FIFO empty and the end state at rest (v = a = 0), the
+//     stream ends; moving, it is an underrun: the axis stops.
+// A row flagged MOVE_END closes a move: move_idx_o counts the moves done
+// since START and boundary_pos_o holds the integer position at that
+// boundary (after the step of its last clock). A stop (abort, underrun,
+// discontinuity) flushes the FIFO: rows planned from a state the axis never
+// reached must not run after it.
 module sc_profile_exec (
   input  logic                       clk_i,
   input  logic                       rst_ni,
 
-  // segment table, writable while not running
-  input  logic                                seg_we_i,
-  input  logic [sc_pkg::SegIdxW-1:0]          seg_waddr_i,
-  input  logic [sc_pkg::PhaseW-1:0]           seg_phase_i,
-  input  logic [sc_pkg::SegClkW-1:0]          seg_clocks_i,
-  input  logic signed [sc_pkg::JerkW-1:0]     seg_jerk_i,
-  input  logic signed [sc_pkg::AccW-1:0]      seg_acc0_i,
-  input  logic signed [sc_pkg::VelW-1:0]      seg_vel0_i,
-  input  logic [sc_pkg::SegCntW-1:0]          seg_count_i,
+  // row stream (a push while the FIFO is full is ignored)
+  input  logic                                row_push_i,
+  input  logic [sc_pkg::RowFlagW-1:0]         row_flags_i,
+  input  logic [sc_pkg::PhaseW-1:0]           row_phase_i,
+  input  logic [sc_pkg::SegClkW-1:0]          row_clocks_i,
+  input  logic signed [sc_pkg::JerkW-1:0]     row_jerk_i,
+  input  logic signed [sc_pkg::AccW-1:0]      row_acc0_i,
+  input  logic signed [sc_pkg::VelW-1:0]      row_vel0_i,
+  input  logic                                fifo_flush_i,
   input  logic [sc_pkg::FracBits-1:0]         pos_frac0_i,
 
   input  logic                       start_i,
@@ -27,7 +44,15 @@ module sc_profile_exec (
 
   output logic                       running_o,
   output logic                       finished_o,
-  output logic                       fault_o,
+  output logic                       fault_o,       // START met an empty FIFO, or a zero-length row
+  output logic                       underrun_o,    // the FIFO ran dry while moving (until START)
+  output logic                       discont_o,     // a row did not continue the motion (until START)
+  output logic                       move_done_o,   // a MOVE_END row ended (one clock, with its move_idx_o)
+  output logic [sc_pkg::MoveIdxW-1:0]         move_idx_o,
+  output logic signed [sc_pkg::PosIntW-1:0]   boundary_pos_o,
+  output logic [sc_pkg::RowLevelW-1:0]        fifo_level_o,
+  output logic                       fifo_full_o,
+  output logic                       head_fwd_o,    // direction of the head row
   output logic                       step_req_o,
   output logic                       step_fwd_o,
 
@@ -37,32 +62,30 @@ module sc_profile_exec (
   output logic signed [sc_pkg::AccW-1:0]      acc_o,
   output logic signed [sc_pkg::JerkW-1:0]     jerk_o,
   output logic [sc_pkg::PhaseW-1:0]           phase_o,
-  output logic [sc_pkg::SegIdxW-1:0]          seg_idx_o
+  output logic [sc_pkg::SegIdxW-1:0]          seg_idx_o      // row of the current move (wraps)
 );
 
-  localparam int FracBits = sc_pkg::FracBits;
-  localparam int PosIntW  = sc_pkg::PosIntW;
-  localparam int VelW     = sc_pkg::VelW;
-  localparam int AccW     = sc_pkg::AccW;
-  localparam int JerkW    = sc_pkg::JerkW;
-  localparam int SegClkW  = sc_pkg::SegClkW;
-  localparam int SegIdxW  = sc_pkg::SegIdxW;
-  localparam int SegCntW  = sc_pkg::SegCntW;
-  localparam int PhaseW   = sc_pkg::PhaseW;
-  localparam int MaxSegs  = sc_pkg::MaxSegs;
-
-  // The segment table: one small RAM per field (LUTRAM on 7-series).
-  logic [PhaseW-1:0]        mem_phase_q  [MaxSegs];
-  logic [SegClkW-1:0]       mem_clocks_q [MaxSegs];
-  logic signed [JerkW-1:0]  mem_jerk_q   [MaxSegs];
-  logic signed [AccW-1:0]   mem_acc0_q   [MaxSegs];
-  logic signed [VelW-1:0]   mem_vel0_q   [MaxSegs];
+  localparam int FracBits  = sc_pkg::FracBits;
+  localparam int PosIntW   = sc_pkg::PosIntW;
+  localparam int VelW      = sc_pkg::VelW;
+  localparam int AccW      = sc_pkg::AccW;
+  localparam int JerkW     = sc_pkg::JerkW;
+  localparam int SegClkW   = sc_pkg::SegClkW;
+  localparam int SegIdxW   = sc_pkg::SegIdxW;
+  localparam int PhaseW    = sc_pkg::PhaseW;
+  localparam int RowFlagW  = sc_pkg::RowFlagW;
+  localparam int RowLevelW = sc_pkg::RowLevelW;
+  localparam int MoveIdxW  = sc_pkg::MoveIdxW;
+  // one FIFO word: {flags, phase, clocks, jerk, acc0, vel0}
+  localparam int RowW      = RowFlagW + PhaseW + SegClkW + JerkW + AccW + VelW;
 
   logic                      run_q, run_d;
   logic                      finished_q, finished_d;
   logic                      fault_q, fault_d;
+  logic                      underrun_q, underrun_d;
+  logic                      discont_q, discont_d;
   logic [SegIdxW-1:0]        idx_q, idx_d;
-  logic [SegCntW-1:0]        count_q, count_d;
+  logic [RowFlagW-1:0]       flags_q, flags_d;
   logic [SegClkW-1:0]        left_q, left_d;
   logic signed [JerkW-1:0]   jerk_q, jerk_d;
   logic signed [AccW-1:0]    acc_q, acc_d;
@@ -72,48 +95,75 @@ module sc_profile_exec (
   logic [PhaseW-1:0]         phase_q, phase_d;
   logic                      step_req_q, step_req_d;
   logic                      step_fwd_q, step_fwd_d;
+  logic [MoveIdxW-1:0]       move_idx_q, move_idx_d;
+  logic signed [PosIntW-1:0] bpos_q, bpos_d;
+  logic                      move_done, move_done_q;
 
   // frac (unsigned) + vel (signed, |vel| < 1.0) needs two bits above the
   // fraction: bit FracBits+1 = result negative (borrow), bit FracBits = carry.
   logic signed [FracBits+1:0] pos_sum;
-  logic                       load;
-  logic [SegIdxW-1:0]         load_idx;
-  logic [PhaseW-1:0]          ld_phase;
-  logic [SegClkW-1:0]         ld_clocks;
-  logic signed [JerkW-1:0]    ld_jerk;
-  logic signed [AccW-1:0]     ld_acc0;
-  logic signed [VelW-1:0]     ld_vel0;
-  logic [SegCntW-1:0]         next_idx_ext;
+  logic                       boundary, load, pop, flush;
+  logic signed [VelW-1:0]     vel_end;
+  logic signed [AccW-1:0]     acc_end;
+  logic                       continues, at_rest;
 
-  assign pos_sum      = $signed({2'b00, frac_q}) + (FracBits+2)'(vel_q);
-  assign next_idx_ext = SegCntW'(idx_q) + SegCntW'(1);
-  assign ld_phase     = mem_phase_q[load_idx];
-  assign ld_clocks    = mem_clocks_q[load_idx];
-  assign ld_jerk      = mem_jerk_q[load_idx];
-  assign ld_acc0      = mem_acc0_q[load_idx];
-  assign ld_vel0      = mem_vel0_q[load_idx];
+  logic [RowW-1:0]            head;
+  logic                       fifo_empty;
+  logic [RowFlagW-1:0]        hd_flags;
+  logic [PhaseW-1:0]          hd_phase;
+  logic [SegClkW-1:0]         hd_clocks;
+  logic signed [JerkW-1:0]    hd_jerk;
+  logic signed [AccW-1:0]     hd_acc0;
+  logic signed [VelW-1:0]     hd_vel0;
 
-  // Which table row (if any) is loaded this clock: the next row on the last
-  // clock of a segment, row 0 on an accepted start.
+  sc_row_fifo #(
+    .Width  (RowW),
+    .Depth  (sc_pkg::RowFifoDepth),
+    .LevelW (RowLevelW)
+  ) u_fifo (
+    .clk_i,
+    .rst_ni,
+    .flush_i (flush),
+    .push_i  (row_push_i),
+    .wdata_i ({row_flags_i, row_phase_i, row_clocks_i, row_jerk_i, row_acc0_i, row_vel0_i}),
+    .pop_i   (pop),
+    .head_o  (head),
+    .empty_o (fifo_empty),
+    .full_o  (fifo_full_o),
+    .level_o (fifo_level_o)
+  );
+
+  assign {hd_flags, hd_phase, hd_clocks, hd_jerk, hd_acc0, hd_vel0} = head;
+
+  assign pos_sum  = $signed({2'b00, frac_q}) + (FracBits+2)'(vel_q);
+  // The state one more integration would give: where the next row must start.
+  assign vel_end  = vel_q + VelW'(acc_q);
+  assign acc_end  = acc_q + AccW'(jerk_q);
+  assign continues = hd_vel0 == vel_end && (hd_acc0 == acc_end || hd_flags[sc_pkg::RowFlagAccStep]);
+  assign at_rest   = vel_end == '0 && acc_end == '0;
+  assign boundary  = run_q && !abort_i && left_q == SegClkW'(1);
+  assign move_done = boundary && flags_q[sc_pkg::RowFlagMoveEnd];
+
+  // The head row is loaded at the end of a row that does not end the
+  // stream, when it continues exactly, and on an accepted START.
   always_comb begin
-    load     = 1'b0;
-    load_idx = '0;
-    if (run_q) begin
-      if (!abort_i && left_q == SegClkW'(1) && next_idx_ext < count_q) begin
-        load     = 1'b1;
-        load_idx = idx_q + SegIdxW'(1);
-      end
-    end else if (start_i && seg_count_i != '0 && seg_count_i <= SegCntW'(MaxSegs)) begin
-      load = 1'b1;
+    load = 1'b0;
+    if (boundary) begin
+      load = !flags_q[sc_pkg::RowFlagStreamEnd] && !fifo_empty && continues;
+    end else if (!run_q) begin
+      load = start_i && !fifo_empty;
     end
   end
+  assign pop = load;
 
   always_comb begin
     run_d      = run_q;
     finished_d = finished_q;
     fault_d    = fault_q;
+    underrun_d = underrun_q;
+    discont_d  = discont_q;
     idx_d      = idx_q;
-    count_d    = count_q;
+    flags_d    = flags_q;
     left_d     = left_q;
     jerk_d     = jerk_q;
     acc_d      = acc_q;
@@ -123,6 +173,9 @@ module sc_profile_exec (
     phase_d    = phase_q;
     step_req_d = 1'b0;
     step_fwd_d = step_fwd_q;
+    move_idx_d = move_idx_q;
+    bpos_d     = bpos_q;
+    flush      = 1'b0;
 
     if (run_q) begin
       if (abort_i) begin
@@ -131,6 +184,7 @@ module sc_profile_exec (
         acc_d   = '0;
         jerk_d  = '0;
         phase_d = sc_pkg::PhAbort;
+        flush   = 1'b1;
       end else begin
         frac_d = pos_sum[FracBits-1:0];
         if (pos_sum[FracBits+1]) begin
@@ -143,24 +197,40 @@ module sc_profile_exec (
           pint_d     = pint_q + PosIntW'(1);
         end
         if (left_q == SegClkW'(1)) begin
+          if (move_done) begin
+            move_idx_d = move_idx_q + MoveIdxW'(1);
+            bpos_d     = pint_d;
+          end
           if (!load) begin
-            run_d      = 1'b0;
-            finished_d = 1'b1;
-            vel_d      = '0;
-            acc_d      = '0;
-            jerk_d     = '0;
+            run_d  = 1'b0;
+            vel_d  = '0;
+            acc_d  = '0;
+            jerk_d = '0;
+            if (flags_q[sc_pkg::RowFlagStreamEnd] || (fifo_empty && at_rest)) begin
+              finished_d = 1'b1;
+            end else begin
+              // A row that does not continue the motion, or none at all:
+              // the rest of the stream is not run.
+              underrun_d = fifo_empty;
+              discont_d  = !fifo_empty;
+              phase_d    = sc_pkg::PhAbort;
+              flush      = 1'b1;
+            end
           end
         end else begin
           left_d = left_q - SegClkW'(1);
-          vel_d  = vel_q + VelW'(acc_q);
-          acc_d  = acc_q + AccW'(jerk_q);
+          vel_d  = vel_end;  // the same adders feed the continuity guard
+          acc_d  = acc_end;
         end
       end
     end else if (start_i) begin
       finished_d = 1'b0;
       fault_d    = 1'b0;
-      count_d    = seg_count_i;
+      underrun_d = 1'b0;
+      discont_d  = 1'b0;
       frac_d     = pos_frac0_i;
+      move_idx_d = '0;
+      bpos_d     = pint_q;
       if (!load) begin
         fault_d = 1'b1;
         phase_d = sc_pkg::PhFault;
@@ -168,34 +238,28 @@ module sc_profile_exec (
     end
 
     if (load) begin
-      if (ld_clocks == '0) begin
-        // A zero-length row is a malformed table: stop rather than guess.
+      if (hd_clocks == '0) begin
+        // A zero-length row is malformed: stop rather than guess.
         run_d   = 1'b0;
         fault_d = 1'b1;
         phase_d = sc_pkg::PhFault;
         vel_d   = '0;
         acc_d   = '0;
         jerk_d  = '0;
+        flush   = 1'b1;
       end else begin
         run_d   = 1'b1;
-        idx_d   = load_idx;
-        left_d  = ld_clocks;
-        jerk_d  = ld_jerk;
-        acc_d   = ld_acc0;
-        vel_d   = ld_vel0;
-        phase_d = ld_phase;
+        idx_d   = (!run_q || flags_q[sc_pkg::RowFlagMoveEnd]) ? '0 : idx_q + SegIdxW'(1);
+        flags_d = hd_flags;
+        left_d  = hd_clocks;
+        jerk_d  = hd_jerk;
+        acc_d   = hd_acc0;
+        vel_d   = hd_vel0;
+        phase_d = hd_phase;
       end
     end
-  end
 
-  always_ff @(posedge clk_i) begin
-    if (seg_we_i && !run_q) begin
-      mem_phase_q[seg_waddr_i]  <= seg_phase_i;
-      mem_clocks_q[seg_waddr_i] <= seg_clocks_i;
-      mem_jerk_q[seg_waddr_i]   <= seg_jerk_i;
-      mem_acc0_q[seg_waddr_i]   <= seg_acc0_i;
-      mem_vel0_q[seg_waddr_i]   <= seg_vel0_i;
-    end
+    if (fifo_flush_i) flush = 1'b1;
   end
 
   always_ff @(posedge clk_i) begin
@@ -203,8 +267,10 @@ module sc_profile_exec (
       run_q      <= 1'b0;
       finished_q <= 1'b0;
       fault_q    <= 1'b0;
+      underrun_q <= 1'b0;
+      discont_q  <= 1'b0;
       idx_q      <= '0;
-      count_q    <= '0;
+      flags_q    <= '0;
       left_q     <= '0;
       jerk_q     <= '0;
       acc_q      <= '0;
@@ -214,12 +280,17 @@ module sc_profile_exec (
       phase_q    <= sc_pkg::PhIdle;
       step_req_q <= 1'b0;
       step_fwd_q <= 1'b1;
+      move_idx_q <= '0;
+      bpos_q     <= '0;
+      move_done_q <= 1'b0;
     end else begin
       run_q      <= run_d;
       finished_q <= finished_d;
       fault_q    <= fault_d;
+      underrun_q <= underrun_d;
+      discont_q  <= discont_d;
       idx_q      <= idx_d;
-      count_q    <= count_d;
+      flags_q    <= flags_d;
       left_q     <= left_d;
       jerk_q     <= jerk_d;
       acc_q      <= acc_d;
@@ -229,20 +300,33 @@ module sc_profile_exec (
       phase_q    <= phase_d;
       step_req_q <= step_req_d;
       step_fwd_q <= step_fwd_d;
+      move_idx_q <= move_idx_d;
+      bpos_q     <= bpos_d;
+      move_done_q <= move_done;
     end
   end
 
-  assign running_o  = run_q;
-  assign finished_o = finished_q;
-  assign fault_o    = fault_q;
-  assign step_req_o = step_req_q;
-  assign step_fwd_o = step_fwd_q;
-  assign pos_int_o  = pint_q;
-  assign pos_frac_o = frac_q;
-  assign vel_o      = vel_q;
-  assign acc_o      = acc_q;
-  assign jerk_o     = jerk_q;
-  assign phase_o    = phase_q;
-  assign seg_idx_o  = idx_q;
+  // Direction of the head row: its velocity's sign, else its acceleration's,
+  // else its jerk's (a move from rest starts with v = a = 0).
+  assign head_fwd_o = (hd_vel0 != '0) ? !hd_vel0[VelW-1] :
+                      (hd_acc0 != '0) ? !hd_acc0[AccW-1] : !hd_jerk[JerkW-1];
+
+  assign running_o      = run_q;
+  assign finished_o     = finished_q;
+  assign fault_o        = fault_q;
+  assign underrun_o     = underrun_q;
+  assign discont_o      = discont_q;
+  assign move_done_o    = move_done_q;
+  assign move_idx_o     = move_idx_q;
+  assign boundary_pos_o = bpos_q;
+  assign step_req_o     = step_req_q;
+  assign step_fwd_o     = step_fwd_q;
+  assign pos_int_o      = pint_q;
+  assign pos_frac_o     = frac_q;
+  assign vel_o          = vel_q;
+  assign acc_o          = acc_q;
+  assign jerk_o         = jerk_q;
+  assign phase_o        = phase_q;
+  assign seg_idx_o      = idx_q;
 
 endmodule

@@ -321,13 +321,16 @@ def doc(params, words, enums=None):
            f"AXI4-Lite slave `sc_axi_regs` (in `sc_axi_axis` and `sc_axi_servo`), {p['RegAddrW']}-bit byte addresses, "
            "32-bit registers. Any other address answers DECERR; a write to a read-only register "
            "answers SLVERR. Both set ERR.BAD_ACCESS and change nothing else. Reserved bits read 0 "
-           "and ignore writes. WSTRB selects bytes (CMD, ERR and SEG_COMMIT act on byte 0).", "",
-           "Writes to SEG_COUNT, PULSE_TIME, DIR_TIME, POS_FRAC0_*, SEG_* and CMD.START while "
+           "and ignore writes. WSTRB selects bytes (CMD, ERR, IRQ_STATUS and ROW_PUSH act on byte 0).", "",
+           "Writes to PULSE_TIME, DIR_TIME, POS_FRAC0_*, CMD.START and CMD.FLUSH while "
            "STATUS.BUSY is set are refused: SLVERR, ERR.REJECT set, the running move is not touched. "
-           "CMD.START is also refused while ERR.ESTOP is set or CTRL.ENABLE is 0.", "",
+           "CMD.START is also refused while ERR.ESTOP is set or CTRL.ENABLE is 0. The row staging "
+           "registers (SEG_*) and ROW_PUSH stay open while busy: the host appends rows to the "
+           f"{p['RowFifoDepth']}-row FIFO while the axis runs; a ROW_PUSH to a full FIFO answers "
+           "SLVERR, sets ERR.FIFO_FULL and keeps the staged row for a retry.", "",
            "Registers marked (servo) exist in `sc_axi_servo` (closed-loop axis, the board top's) only; "
            "`sc_axi_axis` (open loop) answers DECERR there. The controller settings (CL_CFG .. "
-           "SETTLE_RATE) are locked while STATUS.BUSY is set like the table, and so is CTRL.CLOSED_LOOP "
+           "SETTLE_RATE) are locked while STATUS.BUSY is set like the pulse timing, and so is CTRL.CLOSED_LOOP "
            "(a CTRL write changing it while busy is refused). Their units: docs/closed_loop.md; reset "
            "values = the closed-loop runner's defaults (`scurve sim --closed-loop`).", ""]
     out += SOURCE_DOC
@@ -351,12 +354,22 @@ def doc(params, words, enums=None):
     out += config_doc(params, words, enums or [])
     out += ["## Loading and running a move", "",
             "1. CTRL = 1 (enable); optionally PULSE_TIME / DIR_TIME.",
-            "2. For each table row i: SEG_PHASE, SEG_CLOCKS, SEG_JERK_0/1, SEG_ACC0_0/1, "
-            "SEG_VEL0_0/1/2 (two's complement, low word first), then SEG_COMMIT = i.",
-            "3. SEG_COUNT = rows, POS_FRAC0_0/1/2 = the plan's initial fraction.",
-            "4. CMD = START; poll STATUS until DONE (or read PULSE_COUNT).",
+            "2. For each row of the move: SEG_PHASE, SEG_CLOCKS, SEG_JERK_0/1, SEG_ACC0_0/1, "
+            "SEG_VEL0_0/1/2 (two's complement, low word first), then ROW_PUSH (0 for every row "
+            "but the last; MOVE_END | STREAM_END = 3 for the last).",
+            "3. POS_FRAC0_0/1/2 = the plan's initial fraction.",
+            "4. CMD = START; poll STATUS until DONE (or read PULSE_COUNT), or enable IRQ_STATUS.IDLE.",
             "",
             "`scurve regs` prints this sequence for a planned move (`--uart` as frames).", "",
+            "## Streaming moves", "",
+            "START runs the FIFO's rows; the host keeps appending while the axis runs (FIFO_STATUS."
+            "LEVEL, IRQ_STATUS.LOW_WATER). Each row after the first must start from the exact state "
+            "the previous row ends in (SEG_VEL0 = v + a and SEG_ACC0 = a + j of its last clock; "
+            "`scurve::StreamPlanner` emits such rows), else the axis stops and sets "
+            "ERR.DISCONTINUITY. Mark the last row of each move MOVE_END (MOVE_INDEX and "
+            "BOUNDARY_POS follow the moves) and the last row of the stream STREAM_END. A stream "
+            "that ends at rest without STREAM_END simply ends; a FIFO that runs dry while the axis "
+            "moves stops it and sets ERR.UNDERRUN. A stop empties the FIFO.", "",
             "## UART bridge protocol", "",
             f"115200 baud 8N1 at 20 MHz ({p['UartClksPerBit']} clocks per bit), on the board's "
             "USB-UART. One request at a time; the board answers every complete frame.", "",

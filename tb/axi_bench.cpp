@@ -32,6 +32,7 @@ void add_axis(SignalValues& v, const O& o) {
   v.emplace_back("phase_o", hex_bits(uint64_t(o.phase), PhaseW));
   v.emplace_back("pulse_count_o", hex_bits(int64_t(o.pulse_count), 32));
   v.emplace_back("ref_pos_o", hex_bits(int64_t(o.ref_pos), 32));
+  v.emplace_back("irq_o", hex_bits(uint64_t(o.irq), 1));
 }
 
 }  // namespace

@@ -48,6 +48,13 @@ SignalValues render_servo(const ServoOutputs& o) {
   add("fault_overrun_o", o.fault_overrun, 1);
   add("fault_ferr_o", o.fault_ferr, 1);
   add("in_pos_o", o.in_pos, 1);
+  add("underrun_o", o.underrun, 1);
+  add("discont_o", o.discont, 1);
+  add("move_done_o", o.move_done, 1);
+  add("move_idx_o", o.move_idx, MoveIdxW);
+  add("boundary_pos_o", o.boundary_pos, 32);
+  add("fifo_level_o", o.fifo_level, RowLevelW);
+  add("fifo_full_o", o.fifo_full, 1);
   add("pulse_count_o", o.pulse_count, 32);
   add("enc_pos_o", o.enc_pos, 32);
   add("enc_illegal_o", o.enc_illegal, 16);
@@ -237,14 +244,13 @@ ClosedLoopResult run_closed_loop(const Plan& plan, const ClosedLoopOptions& opt)
   };
 
   const auto t0 = std::chrono::steady_clock::now();
-  for (size_t i = 0; i < plan.segments.size() && !stopped; ++i) {
+  for (const Row& r : move_rows(plan.segments)) {
+    if (stopped) break;
     ServoInputs w = in;
-    w.seg_we = true;
-    w.seg_waddr = uint8_t(i);
-    w.seg_wdata = plan.segments[i];
+    w.row_push = true;
+    w.row = r;
     tick(w);
   }
-  in.seg_count = uint8_t(plan.segments.size());
   in.pos_frac0 = plan.pos_frac0;
   {
     ServoInputs st = in;

@@ -29,6 +29,13 @@ SignalValues render_outputs(const CoreOutputs& o) {
       {"ref_jerk_o", to_hex_u128(u128(i128(o.ref_jerk)), JerkW)},
       {"seg_idx_o", hex_bits(uint64_t(o.seg_idx), 8)},
       {"step_pending_o", hex_bits(int64_t(o.step_pending), PendW)},
+      {"underrun_o", hex_bits(uint64_t(o.underrun), 1)},
+      {"discont_o", hex_bits(uint64_t(o.discont), 1)},
+      {"move_done_o", hex_bits(uint64_t(o.move_done), 1)},
+      {"move_idx_o", hex_bits(uint64_t(o.move_idx), MoveIdxW)},
+      {"boundary_pos_o", hex_bits(int64_t(o.boundary_pos), 32)},
+      {"fifo_level_o", hex_bits(uint64_t(o.fifo_level), RowLevelW)},
+      {"fifo_full_o", hex_bits(uint64_t(o.fifo_full), 1)},
   };
 }
 

@@ -11,6 +11,7 @@
 #include "fixed_point.h"
 #include "profile_exec.h"
 #include "scurve/planner.h"
+#include "scurve/reg_encode.h"
 #include "step_gen.h"
 
 namespace sc {
@@ -139,19 +140,43 @@ inline TableReport run_table(const std::vector<Segment>& rows, u128 pos_frac0, i
   return scurve::run_table(h, pos_frac0, direction);
 }
 
-// Write the rows into the executor model's table and start it (one clock
-// per row, one for the start).
+// The FIFO words of one planned move (flags: scurve::move_row_flags).
+inline std::vector<Row> move_rows(const std::vector<Segment>& segments, bool stream_end = true) {
+  std::vector<scurve::Segment> h;
+  h.reserve(segments.size());
+  for (const Segment& s : segments) h.push_back(to_host(s));
+  const std::vector<scurve::RowFlags> f = scurve::move_row_flags(h, stream_end);
+  std::vector<Row> rows;
+  rows.reserve(segments.size());
+  for (size_t i = 0; i < segments.size(); ++i) {
+    const uint8_t flags = uint8_t((f[i].move_end ? kRowMoveEnd : 0) | (f[i].stream_end ? kRowStreamEnd : 0) |
+                                  (f[i].acc_step ? kRowAccStep : 0));
+    rows.push_back(Row{segments[i], flags});
+  }
+  return rows;
+}
+
+// Raw rows (tests) made into a valid stream: each row's start velocity
+// continues the previous row's end exactly, as the continuity guard
+// requires; start accelerations may step (move_rows flags them ACC_STEP).
+inline void continue_velocities(std::vector<Segment>& rows) {
+  for (size_t i = 1; i < rows.size(); ++i) {
+    const Segment& p = rows[i - 1];
+    rows[i].vel0 = wrap_signed(vel_after(p.vel0, p.acc0, p.jerk, p.clocks), VelW);
+  }
+}
+
+// Push the rows of one move into the executor model's FIFO and start it
+// (one clock per row, one for the start).
 inline void load_and_start(ProfileExec& ex, const std::vector<Segment>& rows, u128 pos_frac0) {
-  for (size_t i = 0; i < rows.size(); ++i) {
+  for (const Row& r : move_rows(rows)) {
     ProfileExec::Inputs w;
-    w.seg_we = true;
-    w.seg_waddr = uint8_t(i);
-    w.seg_wdata = rows[i];
+    w.row_push = true;
+    w.row = r;
     ex.step(w);
   }
   ProfileExec::Inputs st;
   st.start = true;
-  st.seg_count = uint8_t(rows.size());
   st.pos_frac0 = pos_frac0;
   ex.step(st);
 }

@@ -67,6 +67,8 @@ inline std::vector<RegWrite> encode_move(const Plan& plan, const PulseTiming& ti
 inline std::vector<RegWrite> encode_servo_config(const ServoConfig& c) {
   return scurve::encode_servo_config(to_host(c));
 }
-inline std::vector<RegWrite> encode_row(const Segment& s, unsigned row) { return scurve::encode_row(to_host(s), row); }
+inline std::vector<RegWrite> encode_row(const Segment& s, scurve::RowFlags flags = {}) {
+  return scurve::encode_row(to_host(s), flags);
+}
 
 }  // namespace sc

@@ -43,6 +43,7 @@ void read_axis(const V& m, O& o) {
   read_step_outputs(m, o);
   o.fault = m.fault_o;
   o.ref_pos = int32_t(m.ref_pos_o);
+  o.irq = m.irq_o;
 }
 
 }  // namespace

@@ -13,8 +13,8 @@ RtlCore::RtlCore() : top_(std::make_unique<VerilatedTop<Vsc_axis_core>>("sc_axis
   m.cfg_low_i = last_.cfg.low;
   m.cfg_setup_i = last_.cfg.setup;
   m.cfg_hold_i = last_.cfg.hold;
-  m.seg_we_i = 0;
-  m.seg_count_i = 0;
+  m.row_push_i = 0;
+  m.fifo_flush_i = 0;
   put_bits(m.pos_frac0_i, 0, FracBits, 0);
   m.start_i = 0;
   m.abort_i = 0;
@@ -47,18 +47,16 @@ void RtlCore::step(const CoreInputs& in) {
     m.cfg_setup_i = in.cfg.setup;
     m.cfg_hold_i = in.cfg.hold;
   }
-  if (in.seg_we != last_.seg_we) m.seg_we_i = in.seg_we;
-  if (in.seg_we) {
-    drive_row_write(m, in.seg_waddr, in.seg_wdata);
-  }
-  if (in.seg_count != last_.seg_count) m.seg_count_i = in.seg_count;
+  if (in.row_push != last_.row_push) m.row_push_i = in.row_push;
+  if (in.row_push) drive_row(m, in.row);
+  if (in.fifo_flush != last_.fifo_flush) m.fifo_flush_i = in.fifo_flush;
   if (in.pos_frac0 != last_.pos_frac0) put_bits(m.pos_frac0_i, 0, FracBits, in.pos_frac0);
   if (in.start != last_.start) m.start_i = in.start;
   if (in.abort != last_.abort) m.abort_i = in.abort;
   last_.enable = in.enable;
   last_.cfg = in.cfg;
-  last_.seg_we = in.seg_we;
-  last_.seg_count = in.seg_count;
+  last_.row_push = in.row_push;
+  last_.fifo_flush = in.fifo_flush;
   last_.pos_frac0 = in.pos_frac0;
   last_.start = in.start;
   last_.abort = in.abort;

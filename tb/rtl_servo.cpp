@@ -30,11 +30,9 @@ void RtlServo::step(const ServoInputs& in) {
     cfg_set_ = true;
     apply_cfg(cfg_);
   }
-  m.seg_we_i = in.seg_we;
-  if (in.seg_we) {
-    drive_row_write(m, in.seg_waddr, in.seg_wdata);
-  }
-  m.seg_count_i = in.seg_count;
+  m.row_push_i = in.row_push;
+  if (in.row_push) drive_row(m, in.row);
+  m.fifo_flush_i = in.fifo_flush;
   if (in.pos_frac0 != pos_frac0_) {
     pos_frac0_ = in.pos_frac0;
     put_bits(m.pos_frac0_i, 0, FracBits, in.pos_frac0);

@@ -23,15 +23,13 @@ const char* engine_name(SimEngine e) {
 
 std::vector<CoreInputs> load_sequence(const std::vector<Segment>& rows, u128 pos_frac0, const CoreInputs& base) {
   std::vector<CoreInputs> seq;
-  for (size_t i = 0; i < rows.size(); ++i) {
+  for (const Row& r : move_rows(rows)) {
     CoreInputs w = base;
-    w.seg_we = true;
-    w.seg_waddr = uint8_t(i);
-    w.seg_wdata = rows[i];
+    w.row_push = true;
+    w.row = r;
     seq.push_back(w);
   }
   CoreInputs st = base;
-  st.seg_count = uint8_t(rows.size());
   st.pos_frac0 = pos_frac0;
   st.start = true;
   seq.push_back(st);

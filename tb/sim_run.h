@@ -69,8 +69,8 @@ struct Limits4Check {
 SimResult run_move(const Plan& plan, const PulseTiming& timing, const Limits4Check& limits,
                    const SimOptions& opt);
 
-// The clock-by-clock inputs that load a table and start it: one row per
-// clock (seg_we), then one clock with start; `base` supplies enable, timing.
+// The clock-by-clock inputs that load a move and start it: one row pushed
+// per clock, then one clock with start; `base` supplies enable, timing.
 // The last element's inputs, with start dropped, are what a run then holds.
 std::vector<CoreInputs> load_sequence(const std::vector<Segment>& rows, u128 pos_frac0, const CoreInputs& base);
 

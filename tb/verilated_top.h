@@ -153,16 +153,17 @@ inline uint32_t port_bits(int64_t v, int width) { return uint32_t(uint64_t(v) & 
 // A `width`-bit port value sign-extended.
 inline int32_t sign_extend(uint32_t v, int width) { return int32_t(wrap_signed64(int64_t(v), width)); }
 
-// The row-write ports (seg_*_i but seg_we_i) of the axis tops
+// The row data ports (row_*_i but row_push_i) of the axis tops
 // (sc_axis_core, sc_servo_axis).
 template <class V>
-void drive_row_write(V& m, uint8_t addr, const Segment& s) {
-  m.seg_waddr_i = addr;
-  m.seg_phase_i = uint8_t(s.phase);
-  m.seg_clocks_i = s.clocks;
-  m.seg_jerk_i = uint64_t(s.jerk) & ((uint64_t(1) << JerkW) - 1);
-  m.seg_acc0_i = uint64_t(s.acc0);
-  put_bits(m.seg_vel0_i, 0, VelW, u128(s.vel0));
+void drive_row(V& m, const Row& r) {
+  const Segment& s = r.seg;
+  m.row_flags_i = r.flags;
+  m.row_phase_i = uint8_t(s.phase);
+  m.row_clocks_i = s.clocks;
+  m.row_jerk_i = uint64_t(s.jerk) & ((uint64_t(1) << JerkW) - 1);
+  m.row_acc0_i = uint64_t(s.acc0);
+  put_bits(m.row_vel0_i, 0, VelW, u128(s.vel0));
 }
 
 // The STEP/DIR and status outputs every top with an axis has under the same
@@ -186,6 +187,13 @@ void read_axis_outputs(const V& m, O& o) {
   o.fault_table = m.fault_table_o;
   o.fault_overrun = m.fault_overrun_o;
   o.ref_pos_int = int32_t(m.ref_pos_int_o);
+  o.underrun = m.underrun_o;
+  o.discont = m.discont_o;
+  o.move_done = m.move_done_o;
+  o.move_idx = m.move_idx_o;
+  o.boundary_pos = int32_t(m.boundary_pos_o);
+  o.fifo_level = m.fifo_level_o;
+  o.fifo_full = m.fifo_full_o;
 }
 
 }  // namespace sc

@@ -256,14 +256,12 @@ void expect_pins_match_distance(bool closed_loop) {
     in.enc_a = plant.enc_a();
     in.enc_b = plant.enc_b();
   };
-  for (size_t i = 0; i < plan.segments.size(); ++i) {
+  for (const Row& r : move_rows(plan.segments)) {
     ServoInputs w = in;
-    w.seg_we = true;
-    w.seg_waddr = uint8_t(i);
-    w.seg_wdata = plan.segments[i];
+    w.row_push = true;
+    w.row = r;
     clock(w);
   }
-  in.seg_count = uint8_t(plan.segments.size());
   in.pos_frac0 = plan.pos_frac0;
   ServoInputs st = in;
   st.start = true;

@@ -29,6 +29,7 @@ std::vector<Segment> random_table(std::mt19937_64& g, int rows) {
     s.jerk = (g() & 1) ? j : -j;
     t.push_back(s);
   }
+  continue_velocities(t);
   return t;
 }
 

@@ -14,7 +14,25 @@ std::string reg_name(uint32_t addr) {
   return "?";
 }
 
-std::vector<RegWrite> encode_row(const Segment& s, unsigned row) {
+uint32_t RowFlags::word() const {
+  return (move_end ? 1u << RowPushMoveEndBit : 0u) | (stream_end ? 1u << RowPushStreamEndBit : 0u) |
+         (acc_step ? 1u << RowPushAccStepBit : 0u);
+}
+
+std::vector<RowFlags> move_row_flags(const std::vector<Segment>& rows, bool stream_end) {
+  std::vector<RowFlags> f(rows.size());
+  for (size_t i = 1; i < rows.size(); ++i) {
+    const Segment& p = rows[i - 1];
+    f[i].acc_step = i128(rows[i].acc0) != acc_after(p.acc0, p.jerk, p.clocks);
+  }
+  if (!f.empty()) {
+    f.back().move_end = true;
+    f.back().stream_end = stream_end;
+  }
+  return f;
+}
+
+std::vector<RegWrite> encode_row(const Segment& s, RowFlags flags) {
   const uint64_t jerk = uint64_t(s.jerk) & ((uint64_t(1) << JerkW) - 1);
   const uint64_t acc = uint64_t(s.acc0);
   const u128 vel = mask_bits(u128(s.vel0), VelW);
@@ -28,7 +46,7 @@ std::vector<RegWrite> encode_row(const Segment& s, unsigned row) {
       {uint32_t(RegSegVel0), uint32_t(vel)},
       {uint32_t(RegSegVel0 + 4), uint32_t(vel >> 32)},
       {uint32_t(RegSegVel0 + 8), uint32_t(vel >> 64)},
-      {uint32_t(RegSegCommit), uint32_t(row) << SegCommitLsb},
+      {uint32_t(RegRowPush), flags.word()},
   };
 }
 
@@ -44,11 +62,11 @@ std::vector<RegWrite> encode_move(const Plan& plan, const PulseTiming& t, bool s
   w.push_back({uint32_t(RegCtrl), 1u << CtrlEnableBit});
   w.push_back({uint32_t(RegPulseTime), (uint32_t(t.high) << PulseHighLsb) | (uint32_t(t.low) << PulseLowLsb)});
   w.push_back({uint32_t(RegDirTime), (uint32_t(t.setup) << DirSetupLsb) | (uint32_t(t.hold) << DirHoldLsb)});
+  const std::vector<RowFlags> flags = move_row_flags(plan.segments);
   for (size_t i = 0; i < plan.segments.size(); ++i) {
-    const auto row = encode_row(plan.segments[i], unsigned(i));
+    const auto row = encode_row(plan.segments[i], flags[i]);
     w.insert(w.end(), row.begin(), row.end());
   }
-  w.push_back({uint32_t(RegSegCount), uint32_t(plan.segments.size()) << SegCountLsb});
   const u128 f = mask_bits(plan.pos_frac0, FracBits);
   w.push_back({uint32_t(RegPosFrac0), uint32_t(f)});
   w.push_back({uint32_t(RegPosFrac0 + 4), uint32_t(f >> 32)});

@@ -196,14 +196,12 @@ class MoveStimulus : public Stimulus {
     CoreInputs in;
     in.cfg = timing;
     in.enable = true;
-    for (size_t i = 0; i < plan.segments.size(); ++i) {
+    for (const Row& r : move_rows(plan.segments)) {
       CoreInputs w = in;
-      w.seg_we = true;
-      w.seg_waddr = uint8_t(i);
-      w.seg_wdata = plan.segments[i];
+      w.row_push = true;
+      w.row = r;
       rows_.push_back(w);
     }
-    in.seg_count = uint8_t(plan.segments.size());
     in.pos_frac0 = plan.pos_frac0;
     run_ = in;
     start_ = in;
@@ -405,6 +403,13 @@ class PinCoreImpl : public PinCore {
     o.phase = uint8_t(p.phase);
     o.fault_table = p.fault_table;
     o.fault_overrun = p.fault_overrun;
+    o.underrun = p.underrun;
+    o.discont = p.discont;
+    o.move_done = p.move_done;
+    o.fifo_full = p.fifo_full;
+    o.move_idx = p.move_idx;
+    o.boundary_pos = int32_t(p.boundary_pos);
+    o.fifo_level = uint8_t(p.fifo_level);
     o.pulse_count = int32_t(p.pulse_count);
     o.ref_pos_int = int32_t(p.ref_pos_int);
     o.ref_pos_frac = get_words(p.ref_pos_frac, FracBits);
@@ -423,20 +428,20 @@ class PinCoreImpl : public PinCore {
 
 void PinCore::encode(const CoreInputs& in, PinInputs* p) {
   p->enable = in.enable;
-  p->seg_we = in.seg_we;
+  p->row_push = in.row_push;
+  p->fifo_flush = in.fifo_flush;
   p->start = in.start;
   p->abort = in.abort;
   p->cfg_high = in.cfg.high;
   p->cfg_low = in.cfg.low;
   p->cfg_setup = in.cfg.setup;
   p->cfg_hold = in.cfg.hold;
-  p->seg_waddr = in.seg_waddr;
-  p->seg_phase = uint32_t(in.seg_wdata.phase);
-  p->seg_clocks = in.seg_wdata.clocks;
-  p->seg_count = in.seg_count;
-  p->seg_jerk = uint64_t(in.seg_wdata.jerk) & ((uint64_t(1) << JerkW) - 1);
-  p->seg_acc0 = uint64_t(in.seg_wdata.acc0);
-  put_words(p->seg_vel0, u128(in.seg_wdata.vel0), VelW);
+  p->row_flags = in.row.flags;
+  p->seg_phase = uint32_t(in.row.seg.phase);
+  p->seg_clocks = in.row.seg.clocks;
+  p->seg_jerk = uint64_t(in.row.seg.jerk) & ((uint64_t(1) << JerkW) - 1);
+  p->seg_acc0 = uint64_t(in.row.seg.acc0);
+  put_words(p->seg_vel0, u128(in.row.seg.vel0), VelW);
   put_words(p->pos_frac0, in.pos_frac0, FracBits);
 }
 

@@ -48,15 +48,17 @@ class PinSequencer : public sc_core::sc_module {
   sc_core::sc_port<PlantIf> plant;
   sc_core::sc_port<TraceIf, 1, sc_core::SC_ZERO_OR_MORE_BOUND> trace;
 
-  sc_out<bool> rst_no, enable_o, seg_we_o, start_o, abort_o;
+  sc_out<bool> rst_no, enable_o, row_push_o, fifo_flush_o, start_o, abort_o;
   sc_out<uint32_t> cfg_high_o, cfg_low_o, cfg_setup_o, cfg_hold_o;
-  sc_out<uint32_t> seg_waddr_o, seg_phase_o, seg_clocks_o, seg_count_o;
+  sc_out<uint32_t> row_flags_o, seg_phase_o, seg_clocks_o;
   sc_out<uint64_t> seg_jerk_o, seg_acc0_o;
   sc_out<VelBv> seg_vel0_o;
   sc_out<FracBv> pos_frac0_o;
 
   sc_in<bool> step_i, dir_i, en_i, busy_i, done_i, fault_table_i, fault_overrun_i;
+  sc_in<bool> underrun_i, discont_i, move_done_i, fifo_full_i;
   sc_in<uint32_t> phase_i, pulse_count_i, ref_pos_int_i, seg_idx_i, step_pending_i;
+  sc_in<uint32_t> move_idx_i, boundary_pos_i, fifo_level_i;
   sc_in<uint64_t> ref_acc_i, ref_jerk_i;
   sc_in<FracBv> ref_pos_frac_i;
   sc_in<VelBv> ref_vel_i;
@@ -79,14 +81,14 @@ class PinSequencer : public sc_core::sc_module {
     cfg_low_o.write(p.cfg_low);
     cfg_setup_o.write(p.cfg_setup);
     cfg_hold_o.write(p.cfg_hold);
-    seg_we_o.write(p.seg_we);
-    seg_waddr_o.write(p.seg_waddr);
+    row_push_o.write(p.row_push);
+    fifo_flush_o.write(p.fifo_flush);
+    row_flags_o.write(p.row_flags);
     seg_phase_o.write(p.seg_phase);
     seg_clocks_o.write(p.seg_clocks);
     seg_jerk_o.write(p.seg_jerk);
     seg_acc0_o.write(p.seg_acc0);
     seg_vel0_o.write(to_bv<kVelW>(p.seg_vel0));
-    seg_count_o.write(p.seg_count);
     pos_frac0_o.write(to_bv<kFracW>(p.pos_frac0));
     start_o.write(p.start);
     abort_o.write(p.abort);
@@ -100,6 +102,13 @@ class PinSequencer : public sc_core::sc_module {
     p.done = done_i.read();
     p.fault_table = fault_table_i.read();
     p.fault_overrun = fault_overrun_i.read();
+    p.underrun = underrun_i.read();
+    p.discont = discont_i.read();
+    p.move_done = move_done_i.read();
+    p.fifo_full = fifo_full_i.read();
+    p.move_idx = move_idx_i.read();
+    p.boundary_pos = boundary_pos_i.read();
+    p.fifo_level = fifo_level_i.read();
     p.phase = phase_i.read();
     p.pulse_count = pulse_count_i.read();
     p.ref_pos_int = ref_pos_int_i.read();
@@ -169,17 +178,18 @@ int sc_main(int argc, char** argv) {
   std::unique_ptr<PinCore> pins = make_pin_core();
 
   sc_core::sc_clock clk("clk", sc_core::sc_time(50, sc_core::SC_NS));
-  sc_signal<bool> rst_n("rst_n"), enable("enable"), seg_we("seg_we"), start("start"), abort_sig("abort");
+  sc_signal<bool> rst_n("rst_n"), enable("enable"), row_push("row_push"), fifo_flush("fifo_flush"), start("start"),
+      abort_sig("abort");
   sc_signal<uint32_t> cfg_high("cfg_high"), cfg_low("cfg_low"), cfg_setup("cfg_setup"), cfg_hold("cfg_hold");
-  sc_signal<uint32_t> seg_waddr("seg_waddr"), seg_phase("seg_phase"), seg_clocks("seg_clocks"),
-      seg_count("seg_count");
+  sc_signal<uint32_t> row_flags("row_flags"), seg_phase("seg_phase"), seg_clocks("seg_clocks");
   sc_signal<uint64_t> seg_jerk("seg_jerk"), seg_acc0("seg_acc0");
   sc_signal<VelBv> seg_vel0("seg_vel0");
   sc_signal<FracBv> pos_frac0("pos_frac0");
   sc_signal<bool> step("step"), dir("dir"), en("en"), busy("busy"), done("done"), fault_table("fault_table"),
-      fault_overrun("fault_overrun");
+      fault_overrun("fault_overrun"), underrun("underrun"), discont("discont"), move_done("move_done"),
+      fifo_full("fifo_full");
   sc_signal<uint32_t> phase("phase"), pulse_count("pulse_count"), ref_pos_int("ref_pos_int"), seg_idx("seg_idx"),
-      step_pending("step_pending");
+      step_pending("step_pending"), move_idx("move_idx"), boundary_pos("boundary_pos"), fifo_level("fifo_level");
   sc_signal<uint64_t> ref_acc("ref_acc"), ref_jerk("ref_jerk");
   sc_signal<FracBv> ref_pos_frac("ref_pos_frac");
   sc_signal<VelBv> ref_vel("ref_vel");
@@ -198,14 +208,14 @@ int sc_main(int argc, char** argv) {
   dut.cfg_low_i(cfg_low);
   dut.cfg_setup_i(cfg_setup);
   dut.cfg_hold_i(cfg_hold);
-  dut.seg_we_i(seg_we);
-  dut.seg_waddr_i(seg_waddr);
-  dut.seg_phase_i(seg_phase);
-  dut.seg_clocks_i(seg_clocks);
-  dut.seg_jerk_i(seg_jerk);
-  dut.seg_acc0_i(seg_acc0);
-  dut.seg_vel0_i(seg_vel0);
-  dut.seg_count_i(seg_count);
+  dut.row_push_i(row_push);
+  dut.row_flags_i(row_flags);
+  dut.row_phase_i(seg_phase);
+  dut.row_clocks_i(seg_clocks);
+  dut.row_jerk_i(seg_jerk);
+  dut.row_acc0_i(seg_acc0);
+  dut.row_vel0_i(seg_vel0);
+  dut.fifo_flush_i(fifo_flush);
   dut.pos_frac0_i(pos_frac0);
   dut.start_i(start);
   dut.abort_i(abort_sig);
@@ -233,6 +243,13 @@ int sc_main(int argc, char** argv) {
   dut.phase_o(phase);
   dut.fault_table_o(fault_table);
   dut.fault_overrun_o(fault_overrun);
+  dut.underrun_o(underrun);
+  dut.discont_o(discont);
+  dut.move_done_o(move_done);
+  dut.move_idx_o(move_idx);
+  dut.boundary_pos_o(boundary_pos);
+  dut.fifo_level_o(fifo_level);
+  dut.fifo_full_o(fifo_full);
   dut.pulse_count_o(pulse_count);
   dut.ref_pos_int_o(ref_pos_int);
   dut.ref_pos_frac_o(ref_pos_frac);
@@ -257,17 +274,17 @@ int sc_main(int argc, char** argv) {
   seq.plant(plant.plant_export);
   seq.rst_no(rst_n);
   seq.enable_o(enable);
-  seq.seg_we_o(seg_we);
+  seq.row_push_o(row_push);
+  seq.fifo_flush_o(fifo_flush);
   seq.start_o(start);
   seq.abort_o(abort_sig);
   seq.cfg_high_o(cfg_high);
   seq.cfg_low_o(cfg_low);
   seq.cfg_setup_o(cfg_setup);
   seq.cfg_hold_o(cfg_hold);
-  seq.seg_waddr_o(seg_waddr);
+  seq.row_flags_o(row_flags);
   seq.seg_phase_o(seg_phase);
   seq.seg_clocks_o(seg_clocks);
-  seq.seg_count_o(seg_count);
   seq.seg_jerk_o(seg_jerk);
   seq.seg_acc0_o(seg_acc0);
   seq.seg_vel0_o(seg_vel0);
@@ -279,6 +296,13 @@ int sc_main(int argc, char** argv) {
   seq.done_i(done);
   seq.fault_table_i(fault_table);
   seq.fault_overrun_i(fault_overrun);
+  seq.underrun_i(underrun);
+  seq.discont_i(discont);
+  seq.move_done_i(move_done);
+  seq.fifo_full_i(fifo_full);
+  seq.move_idx_i(move_idx);
+  seq.boundary_pos_i(boundary_pos);
+  seq.fifo_level_i(fifo_level);
   seq.phase_i(phase);
   seq.pulse_count_i(pulse_count);
   seq.ref_pos_int_i(ref_pos_int);

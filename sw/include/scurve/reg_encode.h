@@ -20,15 +20,28 @@ struct RegWrite {
 // Register name for an address ("SEG_VEL0_2"), or "?" if none.
 std::string reg_name(uint32_t addr);
 
-// CTRL enable, pulse timing, every table row (staging + SEG_COMMIT),
-// SEG_COUNT, POS_FRAC0 and, if `start`, CMD.START.
+// CTRL enable, pulse timing, every row of the move (staging + ROW_PUSH with
+// move_row_flags()), POS_FRAC0 and, if `start`,
+// CMD.START. The FIFO must be empty (after reset, CMD.FLUSH or a finished
+// stream) and hold the rows: a planned move has at most MaxSegs rows.
 std::vector<RegWrite> encode_move(const Plan& plan, const PulseTiming& timing, bool start = true);
 // The controller settings of sc_axi_servo (CL_CFG .. SETTLE_RATE, in
 // address order) for a closed-loop configuration (the register file decodes
 // them back; enable/closed_loop/timing are not in them).
 std::vector<RegWrite> encode_servo_config(const ServoConfig& c);
-// One row's staging writes and its commit.
-std::vector<RegWrite> encode_row(const Segment& s, unsigned row);
+// The ROW_PUSH flags of a row.
+struct RowFlags {
+  bool move_end = false;    // last row of a move
+  bool stream_end = false;  // last row of the stream
+  bool acc_step = false;    // starts with a planned acceleration step (trapezoid)
+  uint32_t word() const;    // the ROW_PUSH value
+};
+// The flags of a move's rows: the last MOVE_END (and STREAM_END when the
+// move ends the stream: a single move's end speed is its stop speed); a row
+// whose start acceleration differs from the previous row's end ACC_STEP.
+std::vector<RowFlags> move_row_flags(const std::vector<Segment>& rows, bool stream_end = true);
+// One row's staging writes and its ROW_PUSH.
+std::vector<RegWrite> encode_row(const Segment& s, RowFlags flags = {});
 
 // CRC-8, polynomial 0x07, initial 0x00, no reflection, no final XOR.
 uint8_t crc8(const uint8_t* data, size_t n, uint8_t crc = 0);

@@ -1,0 +1,70 @@
+// sc_row_fifo: first-in first-out queue in distributed (LUT) RAM with an
+// asynchronous read of the head, for the executor's row stream.
+//
+// A push while full and a pop while empty are ignored (the caller reports
+// them); push and pop in the same clock both act. flush_i empties the queue
+// and wins over a push in the same clock. Depth is a power of two.
+module sc_row_fifo #(
+  parameter int Width  = 8,
+  parameter int Depth  = 32,
+  parameter int LevelW = 6   // $clog2(Depth + 1)
+) (
+  input  logic              clk_i,
+  input  logic              rst_ni,
+  input  logic              flush_i,
+  input  logic              push_i,
+  input  logic [Width-1:0]  wdata_i,
+  input  logic              pop_i,
+  output logic [Width-1:0]  head_o,   // valid while !empty_o
+  output logic              empty_o,
+  output logic              full_o,
+  output logic [LevelW-1:0] level_o
+);
+
+  localparam int PtrW = $clog2(Depth);
+
+  logic [Width-1:0]  mem_q [Depth];
+  logic [PtrW-1:0]   wr_q, wr_d, rd_q, rd_d;
+  logic [LevelW-1:0] level_q, level_d;
+  logic              do_push, do_pop;
+
+  assign empty_o = level_q == '0;
+  assign full_o  = level_q == LevelW'(Depth);
+  assign do_push = push_i && !full_o && !flush_i;
+  assign do_pop  = pop_i && !empty_o && !flush_i;
+  assign head_o  = mem_q[rd_q];
+
+  always_comb begin
+    wr_d    = wr_q;
+    rd_d    = rd_q;
+    level_d = level_q;
+    if (flush_i) begin
+      rd_d    = wr_q;
+      level_d = '0;
+    end else begin
+      if (do_push) wr_d = wr_q + PtrW'(1);
+      if (do_pop)  rd_d = rd_q + PtrW'(1);
+      if (do_push && !do_pop) level_d = level_q + LevelW'(1);
+      if (do_pop && !do_push) level_d = level_q - LevelW'(1);
+    end
+  end
+
+  always_ff @(posedge clk_i) begin
+    if (do_push) mem_q[wr_q] <= wdata_i;
+  end
+
+  always_ff @(posedge clk_i) begin
+    if (!rst_ni) begin
+      wr_q    <= '0;
+      rd_q    <= '0;
+      level_q <= '0;
+    end else begin
+      wr_q    <= wr_d;
+      rd_q    <= rd_d;
+      level_q <= level_d;
+    end
+  end
+
+  assign level_o = level_q;
+
+endmodule

@@ -1,0 +1,308 @@
+// Streamed moves through the row FIFO: the executor model over very long
+// streams (fast-forward), RTL and model in lockstep over random streams with
+// random host append timing (late appends underrun), and the continuity
+// guard. Expected positions come from the host stream planner (closed form),
+// not from the executor: after move k the boundary position is the sum of
+// the first k distances.
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include <deque>
+#include <random>
+
+#include "lockstep.h"
+#include "pin_monitor.h"
+#include "planner.h"
+#include "rtl_core.h"
+#include "scurve/stream_planner.h"
+
+using namespace sc;
+
+namespace {
+
+// Random moves: both directions, short and long, random cruise and
+// junction limits (a junction limit of 0 forces a stop).
+std::vector<scurve::StreamMove> random_moves(std::mt19937_64& g, size_t n, double v_max, int64_t max_distance) {
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<scurve::StreamMove> moves(n);
+  int dir = 1;
+  for (scurve::StreamMove& m : moves) {
+    if (u(g) < 0.2) dir = -dir;
+    const int64_t d = 1 + int64_t(std::pow(u(g), 3) * double(max_distance - 1));
+    m.distance = dir * d;
+    m.v_cruise = std::max(1.0, v_max * (0.05 + 0.95 * u(g)));
+    m.v_junction_max = u(g) < 0.1 ? 0.0 : v_max * u(g);
+  }
+  return moves;
+}
+
+// The rows of planned moves as FIFO words, and each move's end position
+// (the running sum of distances, from the planner).
+struct RowQueue {
+  std::deque<Row> rows;
+  std::deque<int64_t> move_ends;  // expected BOUNDARY_POS after each move, in order
+  void add(const scurve::StreamedMove& m, bool last_of_stream) {
+    std::vector<Segment> segs;
+    for (const scurve::Segment& s : m.segments) segs.push_back(to_model(s));
+    for (const Row& r : move_rows(segs, last_of_stream)) rows.push_back(r);
+    move_ends.push_back(m.end_position);
+  }
+};
+
+// Plans `moves` and queues their rows; the last move ends the stream.
+RowQueue plan_stream(const std::vector<scurve::StreamMove>& moves, const scurve::StreamLimits& limits) {
+  scurve::StreamPlanner sp(scurve::Clock{}, scurve::PulseTiming{}, limits);
+  std::vector<scurve::StreamedMove> planned;
+  for (const scurve::StreamMove& m : moves) {
+    auto e = sp.append(m);
+    EXPECT_FALSE(e) << e->message;
+    for (scurve::StreamedMove& r : sp.take_ready()) planned.push_back(std::move(r));
+  }
+  auto e = sp.flush();
+  EXPECT_FALSE(e) << e->message;
+  for (scurve::StreamedMove& r : sp.take_ready()) planned.push_back(std::move(r));
+  EXPECT_EQ(planned.size(), moves.size());
+  RowQueue q;
+  for (size_t i = 0; i < planned.size(); ++i) q.add(planned[i], i + 1 == planned.size());
+  return q;
+}
+
+// Streams a planner's output through the executor model, keeping the FIFO
+// topped up and jumping each row in closed form; checks every move boundary.
+void stream_through_model(size_t n_moves, uint64_t seed) {
+  std::mt19937_64 g(seed);
+  const scurve::StreamLimits limits{2000, 20000, 20000};
+  const auto moves = random_moves(g, n_moves, limits.v_max, 100000);
+  scurve::StreamPlanner sp(scurve::Clock{}, scurve::PulseTiming{}, limits);
+  ProfileExec ex;
+  std::deque<Row> pending;
+  std::deque<int64_t> ends;
+  uint64_t moves_done = 0, clocks = 0;
+  bool started = false;
+  auto check_boundary = [&] {
+    const ProfileExec::State& s = ex.state();
+    if (!s.move_done) return;
+    ASSERT_FALSE(ends.empty());
+    ASSERT_EQ(int64_t(s.bpos), ends.front()) << "move " << moves_done;
+    ASSERT_EQ(s.move_idx, uint32_t(moves_done + 1));
+    ends.pop_front();
+    ++moves_done;
+  };
+  auto clock = [&](const ProfileExec::Inputs& in) {
+    ex.step(in);
+    ++clocks;
+    check_boundary();
+  };
+  // Runs the executor until it needs more rows (FIFO near empty) or is idle.
+  auto run = [&](bool draining) {
+    while (!::testing::Test::HasFatalFailure()) {
+      while (!pending.empty() && !ex.fifo_full()) {
+        ProfileExec::Inputs in;
+        in.row_push = true;
+        in.row = pending.front();
+        pending.pop_front();
+        clock(in);
+      }
+      if (!started) {
+        ProfileExec::Inputs in;
+        in.start = true;
+        in.pos_frac0 = kOne / 2;
+        clock(in);
+        started = true;
+      }
+      if (!ex.state().run) return;
+      if (!draining && ex.fifo_level() < 2) return;
+      const uint64_t left = ex.state().left;
+      ex.fast_forward(left);  // to and including this row's last clock
+      clocks += left;
+      check_boundary();
+      ASSERT_FALSE(ex.state().underrun) << "underrun after move " << moves_done;
+      ASSERT_FALSE(ex.state().discont) << "discontinuity after move " << moves_done;
+    }
+  };
+  for (const scurve::StreamMove& m : moves) {
+    auto e = sp.append(m);
+    ASSERT_FALSE(e) << e->message;
+    for (const scurve::StreamedMove& r : sp.take_ready()) {
+      std::vector<Segment> segs;
+      for (const scurve::Segment& s : r.segments) segs.push_back(to_model(s));
+      for (const Row& w : move_rows(segs, false)) pending.push_back(w);
+      ends.push_back(r.end_position);
+    }
+    if (pending.size() > 64) run(false);
+    if (::testing::Test::HasFatalFailure()) return;
+  }
+  auto e = sp.flush();
+  ASSERT_FALSE(e) << e->message;
+  for (const scurve::StreamedMove& r : sp.take_ready()) {
+    std::vector<Segment> segs;
+    for (const scurve::Segment& s : r.segments) segs.push_back(to_model(s));
+    for (const Row& w : move_rows(segs, false)) pending.push_back(w);
+    ends.push_back(r.end_position);
+  }
+  run(true);
+  if (::testing::Test::HasFatalFailure()) return;
+  EXPECT_EQ(moves_done, n_moves);
+  EXPECT_TRUE(ends.empty());
+  EXPECT_FALSE(ex.state().run);
+  EXPECT_TRUE(ex.state().finished) << "the stream ends at rest: no STREAM_END row needed";
+  EXPECT_EQ(int64_t(ex.state().pint), sp.position());
+  ::testing::Test::RecordProperty("moves", std::to_string(moves_done));
+  ::testing::Test::RecordProperty("clocks", std::to_string(clocks));
+}
+
+}  // namespace
+
+TEST(StreamModel, HundredThousandStreamedMovesEndExactlyOnTheRunningSum) { stream_through_model(100000, 11); }
+
+#ifdef SC_LONG_TESTS
+TEST(StreamModelLong, MillionStreamedMovesEndExactlyOnTheRunningSum) { stream_through_model(1000000, 12); }
+#endif
+
+namespace {
+
+struct StreamRunStats {
+  uint64_t clocks = 0, moves_done = 0, underruns = 0, rows = 0;
+};
+
+// RTL and model in lockstep over one stream of random moves; the host
+// appends rows at random times (a push every `push_gap` clocks on average)
+// and now and then stalls for `stall` clocks: a stall while moving
+// underruns, the axis stops, and the host starts the rest of the moves as a
+// new stream from rest.
+StreamRunStats lockstep_stream(std::mt19937_64& g, size_t n_moves, double push_rate, uint64_t stall) {
+  const scurve::StreamLimits limits{2e6, 5e9, 150000};
+  PulseTiming t;
+  t.high = uint16_t(2 + g() % 20);
+  t.low = uint16_t(2 + g() % 20);
+  t.setup = uint16_t(g() % 60);
+  t.hold = uint16_t(g() % 60);
+  RtlCore rtl;
+  rtl.reset();
+  AxisCore model;
+  LockstepChecker chk;
+  PinRules rules{t};
+  rules.profile_phases = false;  // several moves: no single-move duty contract
+  rules.accounting = StepAccounting::ReferencePosition;
+  PinMonitor pins(rules);
+  StreamRunStats st;
+  CoreInputs in;
+  in.enable = true;
+  in.cfg = t;
+  in.pos_frac0 = kOne / 2;  // read when the executor starts, after the arming
+  auto tick = [&](const CoreInputs& ci) {
+    rtl.step(ci);
+    model.step(ci);
+    const CoreOutputs& o = rtl.outputs();
+    chk.compare(st.clocks, o, model.outputs());
+    pins.on_clock(st.clocks, o);
+    ++st.clocks;
+  };
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<scurve::StreamMove> moves = random_moves(g, n_moves, limits.v_max, 400);
+  size_t next_move = 0;
+  int64_t origin = 0;  // integer position at the current stream's START
+  while (next_move < moves.size() && !chk.should_stop()) {
+    // A new stream from rest: the remaining moves.
+    std::vector<scurve::StreamMove> rest(moves.begin() + long(next_move), moves.end());
+    RowQueue q = plan_stream(rest, limits);
+    if (::testing::Test::HasFatalFailure()) return st;
+    origin = model.outputs().ref_pos_int;
+    // Preload a few rows, then START.
+    const size_t preload = std::min<size_t>(q.rows.size(), 1 + g() % RowFifoDepth);
+    for (size_t i = 0; i < preload; ++i) {
+      CoreInputs w = in;
+      w.row_push = true;
+      w.row = q.rows.front();
+      q.rows.pop_front();
+      tick(w);
+      ++st.rows;
+    }
+    CoreInputs s = in;
+    s.start = true;
+    tick(s);
+    uint64_t moves_in_stream = 0;
+    uint64_t stall_left = 0;
+    uint64_t guard = 0;
+    while (!chk.should_stop() && ++guard < 50'000'000) {
+      CoreInputs ci = in;
+      if (stall_left > 0) {
+        --stall_left;
+      } else if (!q.rows.empty() && !model.outputs().fifo_full && u(g) < push_rate) {
+        ci.row_push = true;
+        ci.row = q.rows.front();
+        q.rows.pop_front();
+        ++st.rows;
+        if (stall > 0 && u(g) < 0.02) stall_left = stall;
+      }
+      tick(ci);
+      const CoreOutputs& o = model.outputs();
+      if (o.move_done) {
+        EXPECT_EQ(int64_t(o.boundary_pos), origin + q.move_ends.front()) << "move " << next_move + moves_in_stream;
+        EXPECT_EQ(o.move_idx, uint32_t(moves_in_stream + 1));
+        q.move_ends.pop_front();
+        ++moves_in_stream;
+        ++st.moves_done;
+      }
+      if (!o.busy && !o.move_done) break;
+    }
+    const CoreOutputs& o = model.outputs();
+    EXPECT_FALSE(o.discont) << "the planner's rows continue exactly";
+    if (o.underrun) {
+      ++st.underruns;
+      EXPECT_TRUE(q.move_ends.size() > 0 || !q.rows.empty()) << "an underrun needs rows still owed";
+      EXPECT_EQ(o.fifo_level, 0);
+    } else {
+      EXPECT_TRUE(o.done);
+      EXPECT_TRUE(q.rows.empty() && q.move_ends.empty());
+    }
+    next_move += moves_in_stream;
+    if (!o.underrun) break;
+    // The interrupted move is planned again, whole, from where the stop left
+    // the axis (the next stream's origin).
+    CoreInputs flush = in;
+    flush.fifo_flush = true;
+    tick(flush);
+    for (int i = 0; i < 200; ++i) tick(in);
+  }
+  for (int i = 0; i < 2000; ++i) tick(in);
+  pins.finish(st.clocks);
+  EXPECT_TRUE(chk.errors().empty()) << chk.finish();
+  for (const std::string& e : pins.errors()) ADD_FAILURE() << e;
+  EXPECT_EQ(pins.net_steps(), int64_t(model.outputs().ref_pos_int)) << "every reference step on the pins";
+  return st;
+}
+
+void lockstep_streams(int streams, size_t max_moves, uint64_t seed) {
+  std::mt19937_64 g(seed);
+  StreamRunStats total;
+  for (int i = 0; i < streams; ++i) {
+    const double rate = i % 3 == 0 ? 1.0 : std::pow(10.0, -3.0 * double(g() % 1000) / 1000.0);
+    const uint64_t stall = i % 2 == 0 ? 0 : 20000 + g() % 200000;
+    const size_t n = 20 + g() % (max_moves - 19);
+    const StreamRunStats s = lockstep_stream(g, n, rate, stall);
+    if (::testing::Test::HasFailure()) {
+      ADD_FAILURE() << "stream " << i << " (" << n << " moves, push rate " << rate << ", stall " << stall << ")";
+      return;
+    }
+    total.clocks += s.clocks;
+    total.moves_done += s.moves_done;
+    total.underruns += s.underruns;
+    total.rows += s.rows;
+  }
+  EXPECT_GT(total.underruns, 0u) << "the campaign must underrun at least once";
+  ::testing::Test::RecordProperty("clocks", std::to_string(total.clocks));
+  ::testing::Test::RecordProperty("moves", std::to_string(total.moves_done));
+  ::testing::Test::RecordProperty("underruns", std::to_string(total.underruns));
+  std::printf("[stream] %d streams, %llu moves, %llu rows, %llu underruns, %llu clocks in lockstep\n", streams,
+              (unsigned long long)total.moves_done, (unsigned long long)total.rows,
+              (unsigned long long)total.underruns, (unsigned long long)total.clocks);
+}
+
+}  // namespace
+
+TEST(StreamLockstep, RandomStreamsWithRandomAppendTimingMatchEveryClock) { lockstep_streams(6, 80, 77); }
+
+#ifdef SC_LONG_TESTS
+TEST(StreamLockstepLong, TwoHundredStreamsOf20To200MovesMatchEveryClock) { lockstep_streams(200, 200, 78); }
+#endif
