@@ -103,48 +103,55 @@ module sc_stop_gen (
   assign inf_exp = {1'b0, eb, 1'b0} - (KW+1)'(ej);
 
   // ---- one clock of the stop (mirrored): pick the next level ---------------
-  logic signed [CW-1:0] v1, b, j, dl, u, bsum, bu, uu, b1;
+  // Levels (b, J, D) in LW bits, velocities and bounds in CW bits.
+  localparam int LW = BW + 2;
+  logic signed [CW-1:0] v1, u, uu;
+  logic signed [LW-1:0] b, j, dl, bsum, bu, bdn, b1;
+  logic signed [LW-1:0] v1_lo;     // v1 when 0 <= v1 < 2^JW (landing range)
   logic signed [UW-1:0] u1;
-  logic                 clamp_up, up_ok, land_ok, hold_ok;
+  logic                 clamp_up, up_ok, land_ok, hold_ok, v1_small;
   logic                 take;
   logic [DW:0]          dec;
 
   always_comb begin
-    v1   = CW'(v_q) - CW'(b_q);
-    b    = CW'(b_q);
-    j    = CW'({1'b0, j_q});
-    dl   = CW'({1'b0, dlim_q});
-    u    = CW'(u_q);
-    bsum = b + j;
+    v1       = CW'(v_q) - CW'(b_q);
+    u        = CW'(u_q);
+    b        = LW'(b_q);
+    j        = LW'({1'b0, j_q});
+    dl       = LW'({1'b0, dlim_q});
+    v1_small = v1[CW-1:JW] == '0;
+    v1_lo    = LW'({1'b0, v1[JW-1:0]});
+    bsum     = b + j;
     clamp_up = bsum > dl;
-    bu   = clamp_up ? dl : bsum;
+    bu       = clamp_up ? dl : bsum;
     if (b <= 0) begin
-      uu = bu > 0 ? bu : '0;
+      uu = bu > 0 ? CW'(bu) : '0;
     end else begin
-      uu = u + bu;
+      uu = u + CW'(bu);
     end
     up_ok   = b < dl && !uinf_q && v1 >= uu;
-    land_ok = v1 >= 0 && v1 <= j && v1 <= dl && v1 <= b + j && v1 >= b - j;
+    land_ok = v1_small && v1_lo <= j && v1_lo <= dl && v1_lo <= bsum && v1_lo >= b - j;
     hold_ok = b <= dl && !uinf_q && v1 >= u;
+    if (b > j) begin
+      bdn = clamp_q ? LW'(g_q) : b - j;
+    end else begin
+      bdn = b > 0 ? '0 : b;
+    end
     if (up_ok) begin
       b1 = bu;
       u1 = UW'(uu);
     end else if (land_ok) begin
-      b1 = v1;
-      u1 = UW'(v1);
+      b1 = v1_lo;
+      u1 = UW'(v1_lo);
     end else if (hold_ok) begin
       b1 = b;
       u1 = u_q;
     end else begin
-      if (b > j) begin
-        b1 = clamp_q ? CW'(g_q) : b - j;
+      b1 = bdn;
+      if (bdn <= j) begin
+        u1 = bdn > 0 ? UW'(bdn) : '0;
       end else begin
-        b1 = b > 0 ? '0 : b;
-      end
-      if (b1 <= j) begin
-        u1 = b1 > 0 ? UW'(b1) : '0;
-      end else begin
-        u1 = UW'(u - b);
+        u1 = UW'(u - CW'(b));
       end
     end
   end
@@ -295,9 +302,11 @@ module sc_stop_gen (
   end
 
   // jerk applied this clock: a' - a with a = neg ? b : -b
-  logic signed [CW-1:0] dlev;
-  assign dlev        = b1 - b;
-  assign jerk_o      = !active_q ? '0 : neg_q ? JerkW'(dlev) : JerkW'(-dlev);
+  // (only the low JerkW bits of the difference matter: |b1 - b| <= J)
+  logic [JerkW-1:0] lev_new, lev_old;
+  assign lev_new     = neg_q ? JerkW'(b1) : JerkW'(b_q);
+  assign lev_old     = neg_q ? JerkW'(b_q) : JerkW'(b1);
+  assign jerk_o      = !active_q ? '0 : $signed(lev_new - lev_old);
   assign active_o    = active_q;
   assign done_o      = done_q;
   assign overshoot_o = over_q;
