@@ -96,11 +96,11 @@ void StopGen::step(const Inputs& in) {
         if (2 * eb - ej >= kInfExp) {
           s.uinf = true;
         } else {
+          // One shifter: b0 << k0 now, J << k0 and J << 2k0 in the next two clocks.
           s.div = true;
+          s.prep = 1;
           s.k = uint8_t(eb - ej);
           s.rem = u128(s.b);
-          s.jk = (u128(s.j) << s.k) & kDMask;
-          s.j2k = (u128(s.j) << (2 * s.k)) & kDMask;
           s.remk = (u128(s.b) << s.k) & kDMask;
           s.u = i128(s.remk << 1);
         }
@@ -122,6 +122,12 @@ void StopGen::step(const Inputs& in) {
     // At or below one jerk step the bound is exact (R(b) = b): resync.
     s.div = false;
     s.uinf = false;
+  } else if (q_.div && q_.prep == 1) {
+    s.jk = (u128(q_.j) << q_.k) & kDMask;
+    s.prep = 2;
+  } else if (q_.div && q_.prep == 2) {
+    s.j2k = (q_.jk << q_.k) & kDMask;
+    s.prep = 0;
   } else if (q_.div) {
     // One bit of floor(b0 / J); the bound tightens by d (see docs/stop.md).
     const bool take = q_.rem >= q_.jk;

@@ -41,6 +41,7 @@ class StopGen {
     uint64_t j = 1;          // latched stop jerk, 1 .. 2^(JerkW-1)-1
     uint64_t d = 1;          // latched stop deceleration, 1 .. 2^(AccW-1)-1
     uint8_t k = 0;           // division bit
+    uint8_t prep = 0;        // division set-up: 1 = J << k next, 2 = J << 2k next
     u128 rem = 0;            // division: remainder (level units)
     u128 jk = 0;             // J << k
     u128 j2k = 0;            // J << 2k

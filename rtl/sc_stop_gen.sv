@@ -62,6 +62,7 @@ module sc_stop_gen (
   logic [JW-1:0]         j_q, j_d;
   logic [AW-1:0]         dlim_q, dlim_d;
   logic [KW-1:0]         k_q, k_d;
+  logic [1:0]            prep_q, prep_d;  // division set-up: 1 = J << k next, 2 = J << 2k next
   logic [BW-1:0]         rem_q, rem_d;
   logic [DW-1:0]         jk_q, jk_d;
   logic [DW-1:0]         j2k_q, j2k_d;
@@ -100,6 +101,14 @@ module sc_stop_gen (
     end
   end
   assign k_ld    = KW'(eb) - KW'(ej);
+
+  // One shifter sets the division up over three clocks: b0 << k0 in the start
+  // clock (the first bound), then J << k0, then (J << k0) << k0 = J << 2k0.
+  logic [DW-1:0] sh_in, sh_out;
+  logic [KW-1:0] sh_amt;
+  assign sh_in  = start_i ? DW'(b_ld) : prep_q == 2'd1 ? DW'({1'b0, j_q}) : jk_q;
+  assign sh_amt = start_i ? k_ld : k_q;
+  assign sh_out = sh_in << sh_amt;
   assign inf_exp = {1'b0, eb, 1'b0} - (KW+1)'(ej);
 
   // ---- one clock of the stop (mirrored): pick the next level ---------------
@@ -113,14 +122,15 @@ module sc_stop_gen (
   logic                 take;
   logic [DW:0]          dec;
 
+  assign v1       = CW'(v_q) - CW'(b_q);
+  assign v1_small = v1[CW-1:JW] == '0;
+  assign v1_lo    = LW'({1'b0, v1[JW-1:0]});
+
   always_comb begin
-    v1       = CW'(v_q) - CW'(b_q);
     u        = CW'(u_q);
     b        = LW'(b_q);
     j        = LW'({1'b0, j_q});
     dl       = LW'({1'b0, dlim_q});
-    v1_small = v1[CW-1:JW] == '0;
-    v1_lo    = LW'({1'b0, v1[JW-1:0]});
     bsum     = b + j;
     clamp_up = bsum > dl;
     bu       = clamp_up ? dl : bsum;
@@ -172,6 +182,7 @@ module sc_stop_gen (
     j_d      = j_q;
     dlim_d   = dlim_q;
     k_d      = k_q;
+    prep_d   = prep_q;
     rem_d    = rem_q;
     jk_d     = jk_q;
     j2k_d    = j2k_q;
@@ -194,6 +205,7 @@ module sc_stop_gen (
       j_d      = j_ld;
       dlim_d   = d_ld;
       k_d      = '0;
+      prep_d   = '0;
       rem_d    = '0;
       jk_d     = '0;
       j2k_d    = '0;
@@ -208,12 +220,11 @@ module sc_stop_gen (
           uinf_d = 1'b1;
         end else begin
           div_d  = 1'b1;
+          prep_d = 2'd1;
           k_d    = k_ld;
           rem_d  = b_ld;
-          jk_d   = DW'({1'b0, j_ld}) << k_ld;
-          j2k_d  = DW'({1'b0, j_ld}) << {k_ld, 1'b0};
-          remk_d = DW'(b_ld) << k_ld;
-          u_d    = UW'({(DW'(b_ld) << k_ld), 1'b0});
+          remk_d = sh_out;
+          u_d    = UW'({sh_out, 1'b0});
         end
       end
     end else if (active_q) begin
@@ -228,6 +239,12 @@ module sc_stop_gen (
         // at or below one jerk step the bound is exact (R(b) = b)
         div_d  = 1'b0;
         uinf_d = 1'b0;
+      end else if (div_q && prep_q == 2'd1) begin
+        jk_d   = sh_out;
+        prep_d = 2'd2;
+      end else if (div_q && prep_q == 2'd2) begin
+        j2k_d  = sh_out;
+        prep_d = 2'd0;
       end else if (div_q) begin
         u_d = u1 - UW'(dec);
         if (take) begin
@@ -275,6 +292,7 @@ module sc_stop_gen (
       j_q      <= JW'(1);
       dlim_q   <= AW'(1);
       k_q      <= '0;
+      prep_q   <= '0;
       rem_q    <= '0;
       jk_q     <= '0;
       j2k_q    <= '0;
@@ -294,6 +312,7 @@ module sc_stop_gen (
       j_q      <= j_d;
       dlim_q   <= dlim_d;
       k_q      <= k_d;
+      prep_q   <= prep_d;
       rem_q    <= rem_d;
       jk_q     <= jk_d;
       j2k_q    <= j2k_d;

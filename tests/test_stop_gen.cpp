@@ -91,7 +91,7 @@ TEST(StopGenLockstep, ComparisonCatchesAnInjectedDifference) {
 TEST(StopGenProperties, RandomStatesStopWithinOnePulseOfClosedForm) {
   CaseGen gen(23);
   Campaign k;
-  for (int i = 0; i < 2000; ++i) {
+  for (int i = 0; i < 1000; ++i) {
     const StopCase c = gen.next(200000);
     check_case(c, run(c), k);
     if (HasFailure()) break;
