@@ -12,8 +12,8 @@
 // the velocity the ramp-down path from b' consumes (exact sum of its levels,
 // tracked with adders as b' moves by J). A braking start level b0 > J needs
 // R(b0) = sum of b0, b0 - J, ..., b0 mod J: a restoring division of b0 by J,
-// one quotient bit per clock, tightens u from a safe bound to the exact sum
-// while the stop already runs. Algorithm, proofs, latency: docs/stop.md.
+// one quotient bit per clock (set up by one shifter over the first clocks),
+// tightens u from a safe bound to the exact sum while the stop already runs. Algorithm, proofs, latency: docs/stop.md.
 //
 // Timing: in the clock with start_i = 1, vel_i/acc_i are the values the
 // executor's v and a registers take at that clock edge; from the next clock
@@ -104,11 +104,13 @@ module sc_stop_gen (
 
   // One shifter sets the division up over three clocks: b0 << k0 in the start
   // clock (the first bound), then J << k0, then (J << k0) << k0 = J << 2k0.
-  logic [DW-1:0] sh_in, sh_out;
-  logic [KW-1:0] sh_amt;
-  assign sh_in  = start_i ? DW'(b_ld) : prep_q == 2'd1 ? DW'({1'b0, j_q}) : jk_q;
-  assign sh_amt = start_i ? k_ld : k_q;
-  assign sh_out = sh_in << sh_amt;
+  // (inputs below 2^(BW-1): b0 <= 2^63, J << k0 < 2^(msb(b0)+1); k0 <= 63)
+  logic [BW-1:0] sh_in;
+  logic [5:0]    sh_amt;
+  logic [DW-1:0] sh_out;
+  assign sh_in  = start_i ? b_ld : prep_q == 2'd1 ? BW'({1'b0, j_q}) : jk_q[BW-1:0];
+  assign sh_amt = start_i ? k_ld[5:0] : k_q[5:0];
+  assign sh_out = DW'(sh_in) << sh_amt;
   assign inf_exp = {1'b0, eb, 1'b0} - (KW+1)'(ej);
 
   // ---- one clock of the stop (mirrored): pick the next level ---------------
