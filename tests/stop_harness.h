@@ -111,7 +111,10 @@ class CaseGen {
       const ClosedForm cf = closed_form(ld(c.v), ld(c.a), ld(c.j), ld(c.d));
       const ld ramp = std::fabs(ld(c.a)) / ld(c.j);
       if (cf.time > max_clocks || ramp > max_clocks / 4) continue;
-      if (!cf.feasible && std::fabs(ld(c.v)) > ld(c.d) * max_clocks / 8) continue;
+      // A start that cannot stop reverses with up to ~a^2 / 2J and then stops
+      // from there at D: keep that within the case limit too.
+      const ld reverse_v = ld(c.a) * ld(c.a) / (2 * ld(c.j));
+      if (!cf.feasible && (std::fabs(ld(c.v)) + reverse_v) > ld(c.d) * max_clocks / 8) continue;
       return c;
     }
   }
