@@ -1,0 +1,335 @@
+// sc_stop_gen: jerk-limited controlled stop from any (v, a) to rest.
+//
+// The executor integrates pos += v; v += a; a += jerk_o every clock while
+// active_o is high. The generator keeps its own copy of the state, mirrored
+// so that the motion is forward (v >= 0): level b = -a (braking acceleration
+// > 0). Each clock it picks the largest next level b' (the most braking) among
+//   up   b + J (clamped at D)     if the stop stays possible from (v', b')
+//   land b' = v' (<= J)           ends the stop exactly at the next clock
+//   hold b                        if the stop stays possible
+//   down b - J (to 0 at the end)  always possible while the start was
+// where v' = v - b and "possible" is v' >= u(b'): u is an upper bound of
+// the velocity the ramp-down path from b' consumes (exact sum of its levels,
+// tracked with adders as b' moves by J). A braking start level b0 > J needs
+// R(b0) = sum of b0, b0 - J, ..., b0 mod J: a restoring division of b0 by J,
+// one quotient bit per clock (set up by one shifter over the first clocks),
+// tightens u from a safe bound to the exact sum while the stop already runs. Algorithm, proofs, latency: docs/stop.md.
+//
+// Timing: in the clock with start_i = 1, vel_i/acc_i are the values the
+// executor's v and a registers take at that clock edge; from the next clock
+// on (active_o = 1) the executor applies jerk_o. done_o rises with the clock
+// edge after which v = a = 0; active_o falls at the same edge.
+module sc_stop_gen (
+  input  logic                               clk_i,
+  input  logic                               rst_ni,
+
+  input  logic                               start_i,
+  input  logic signed [sc_pkg::VelW-1:0]     vel_i,
+  input  logic signed [sc_pkg::AccW-1:0]     acc_i,
+  input  logic        [sc_pkg::JerkW-1:0]    stop_jerk_i,  // J > 0 (0 -> 1, >= 2^(JerkW-1) clamped)
+  input  logic        [sc_pkg::AccW-1:0]     stop_acc_i,   // D > 0 (0 -> 1, >= 2^(AccW-1) clamped)
+
+  output logic                               active_o,
+  output logic                               done_o,
+  output logic                               overshoot_o,  // sticky: start state not stoppable within J
+  output logic signed [sc_pkg::JerkW-1:0]    jerk_o
+);
+
+  localparam int VelW  = sc_pkg::VelW;
+  localparam int AccW  = sc_pkg::AccW;
+  localparam int JerkW = sc_pkg::JerkW;
+  localparam int VW    = VelW + 1;  // mirrored velocity
+  localparam int BW    = AccW + 1;  // mirrored level
+  localparam int UW    = 88;        // bound u
+  localparam int DW    = 86;        // division registers
+  localparam int CW    = 90;        // compare width
+  localparam int KW    = 7;         // division bit index
+  localparam int JW    = JerkW - 1; // latched J (positive)
+  localparam int AW    = AccW - 1;  // latched D (positive)
+  localparam int InfExp = 84;
+
+  logic                  active_q, active_d;
+  logic                  done_q, done_d;
+  logic                  neg_q, neg_d;
+  logic                  over_q, over_d;
+  logic                  div_q, div_d;
+  logic                  uinf_q, uinf_d;
+  logic                  clamp_q, clamp_d;
+  logic signed [VW-1:0]  v_q, v_d;
+  logic signed [BW-1:0]  b_q, b_d;
+  logic signed [UW-1:0]  u_q, u_d;
+  logic signed [BW-1:0]  g_q, g_d;
+  logic [JW-1:0]         j_q, j_d;
+  logic [AW-1:0]         dlim_q, dlim_d;
+  logic [KW-1:0]         k_q, k_d;
+  logic [1:0]            prep_q, prep_d;  // division set-up: 1 = J << k next, 2 = J << 2k next
+  logic [BW-1:0]         rem_q, rem_d;
+  logic [DW-1:0]         jk_q, jk_d;
+  logic [DW-1:0]         j2k_q, j2k_d;
+  logic [DW-1:0]         remk_q, remk_d;
+
+  // ---- load: mirror the start state, latch the limits, set up the division
+  logic [JW-1:0]        j_ld;
+  logic [AW-1:0]        d_ld;
+  logic                 neg_ld;
+  logic signed [VW-1:0] vel_x;
+  logic signed [BW-1:0] acc_x;
+  logic signed [VW-1:0] v_ld;
+  logic signed [BW-1:0] b_ld;
+  logic [5:0]           eb, ej;
+  logic [KW-1:0]        k_ld;
+  logic [KW:0]          inf_exp;
+
+  assign vel_x  = VW'(vel_i);
+  assign acc_x  = BW'(acc_i);
+  assign neg_ld = vel_i < 0 || (vel_i == '0 && acc_i < 0);
+  assign v_ld   = neg_ld ? -vel_x : vel_x;
+  assign b_ld   = neg_ld ? acc_x : -acc_x;
+
+  assign j_ld = stop_jerk_i == '0 ? JW'(1) : stop_jerk_i[JerkW-1] ? '1 : stop_jerk_i[JW-1:0];
+  assign d_ld = stop_acc_i == '0 ? AW'(1) : stop_acc_i[AccW-1] ? '1 : stop_acc_i[AW-1:0];
+
+  // Highest set bits of b (a braking start: 0 < J < b <= 2^63) and J.
+  always_comb begin
+    eb = '0;
+    for (int i = 0; i < 64; i++) begin
+      if (b_ld[i]) eb = 6'(i);
+    end
+    ej = '0;
+    for (int i = 0; i < JW; i++) begin
+      if (j_ld[i]) ej = 6'(i);
+    end
+  end
+  assign k_ld    = KW'(eb) - KW'(ej);
+
+  // One shifter sets the division up over three clocks: b0 << k0 in the start
+  // clock (the first bound), then J << k0, then (J << k0) << k0 = J << 2k0.
+  // (inputs below 2^(BW-1): b0 <= 2^63, J << k0 < 2^(msb(b0)+1); k0 <= 63)
+  logic [BW-1:0] sh_in;
+  logic [5:0]    sh_amt;
+  logic [DW-1:0] sh_out;
+  assign sh_in  = start_i ? b_ld : prep_q == 2'd1 ? BW'({1'b0, j_q}) : jk_q[BW-1:0];
+  assign sh_amt = start_i ? k_ld[5:0] : k_q[5:0];
+  assign sh_out = DW'(sh_in) << sh_amt;
+  assign inf_exp = {1'b0, eb, 1'b0} - (KW+1)'(ej);
+
+  // ---- one clock of the stop (mirrored): pick the next level ---------------
+  // Levels (b, J, D) in LW bits, velocities and bounds in CW bits.
+  localparam int LW = BW + 2;
+  logic signed [CW-1:0] v1, u, uu;
+  logic signed [LW-1:0] b, j, dl, bsum, bu, bdn, b1;
+  logic signed [LW-1:0] v1_lo;     // v1 when 0 <= v1 < 2^JW (landing range)
+  logic signed [UW-1:0] u1;
+  logic                 clamp_up, up_ok, land_ok, hold_ok, v1_small;
+  logic                 take;
+  logic [DW:0]          dec;
+
+  assign v1       = CW'(v_q) - CW'(b_q);
+  assign v1_small = v1[CW-1:JW] == '0;
+  assign v1_lo    = LW'({1'b0, v1[JW-1:0]});
+
+  always_comb begin
+    u        = CW'(u_q);
+    b        = LW'(b_q);
+    j        = LW'({1'b0, j_q});
+    dl       = LW'({1'b0, dlim_q});
+    bsum     = b + j;
+    clamp_up = bsum > dl;
+    bu       = clamp_up ? dl : bsum;
+    if (b <= 0) begin
+      uu = bu > 0 ? CW'(bu) : '0;
+    end else begin
+      uu = u + CW'(bu);
+    end
+    up_ok   = b < dl && !uinf_q && v1 >= uu;
+    land_ok = v1_small && v1_lo <= j && v1_lo <= dl && v1_lo <= bsum && v1_lo >= b - j;
+    hold_ok = b <= dl && !uinf_q && v1 >= u;
+    if (b > j) begin
+      bdn = clamp_q ? LW'(g_q) : b - j;
+    end else begin
+      bdn = b > 0 ? '0 : b;
+    end
+    if (up_ok) begin
+      b1 = bu;
+      u1 = UW'(uu);
+    end else if (land_ok) begin
+      b1 = v1_lo;
+      u1 = UW'(v1_lo);
+    end else if (hold_ok) begin
+      b1 = b;
+      u1 = u_q;
+    end else begin
+      b1 = bdn;
+      if (bdn <= j) begin
+        u1 = bdn > 0 ? UW'(bdn) : '0;
+      end else begin
+        u1 = UW'(u - CW'(b));
+      end
+    end
+  end
+
+  // ---- next state ------------------------------------------------------------
+  always_comb begin
+    active_d = active_q;
+    done_d   = done_q;
+    neg_d    = neg_q;
+    over_d   = over_q;
+    div_d    = div_q;
+    uinf_d   = uinf_q;
+    clamp_d  = clamp_q;
+    v_d      = v_q;
+    b_d      = b_q;
+    u_d      = u_q;
+    g_d      = g_q;
+    j_d      = j_q;
+    dlim_d   = dlim_q;
+    k_d      = k_q;
+    prep_d   = prep_q;
+    rem_d    = rem_q;
+    jk_d     = jk_q;
+    j2k_d    = j2k_q;
+    remk_d   = remk_q;
+    take     = rem_q >= BW'(jk_q);
+    dec      = take ? ((DW+1)'(j2k_q) + {j2k_q, 1'b0} - (DW+1)'(jk_q)) >> 1 : (DW+1)'(remk_q);
+
+    if (start_i) begin
+      active_d = 1'b0;
+      done_d   = 1'b0;
+      neg_d    = neg_ld;
+      over_d   = 1'b0;
+      div_d    = 1'b0;
+      uinf_d   = 1'b0;
+      clamp_d  = 1'b0;
+      v_d      = v_ld;
+      b_d      = b_ld;
+      u_d      = '0;
+      g_d      = '0;
+      j_d      = j_ld;
+      dlim_d   = d_ld;
+      k_d      = '0;
+      prep_d   = '0;
+      rem_d    = '0;
+      jk_d     = '0;
+      j2k_d    = '0;
+      remk_d   = '0;
+      if (v_ld == '0 && b_ld == '0) begin
+        done_d = 1'b1;
+      end else begin
+        active_d = 1'b1;
+        if (b_ld <= $signed(BW'({1'b0, j_ld}))) begin
+          u_d = b_ld > 0 ? UW'(b_ld) : '0;
+        end else if (inf_exp >= (KW+1)'(InfExp)) begin
+          uinf_d = 1'b1;
+        end else begin
+          div_d  = 1'b1;
+          prep_d = 2'd1;
+          k_d    = k_ld;
+          rem_d  = b_ld;
+          remk_d = sh_out;
+          u_d    = UW'({sh_out, 1'b0});
+        end
+      end
+    end else if (active_q) begin
+      v_d     = VW'(v1);
+      b_d     = BW'(b1);
+      u_d     = u1;
+      clamp_d = up_ok ? clamp_up : (!land_ok && hold_ok && clamp_q);
+      if (up_ok && clamp_up) begin
+        g_d = b_q;
+      end
+      if (b1 <= j) begin
+        // at or below one jerk step the bound is exact (R(b) = b)
+        div_d  = 1'b0;
+        uinf_d = 1'b0;
+      end else if (div_q && prep_q == 2'd1) begin
+        jk_d   = sh_out;
+        prep_d = 2'd2;
+      end else if (div_q && prep_q == 2'd2) begin
+        j2k_d  = sh_out;
+        prep_d = 2'd0;
+      end else if (div_q) begin
+        u_d = u1 - UW'(dec);
+        if (take) begin
+          rem_d  = rem_q - BW'(jk_q);
+          remk_d = remk_q - j2k_q;
+        end
+        if (k_q == '0) begin
+          div_d = 1'b0;
+        end else begin
+          k_d    = k_q - KW'(1);
+          jk_d   = jk_q >> 1;
+          j2k_d  = j2k_q >> 2;
+          remk_d = (take ? remk_q - j2k_q : remk_q) >> 1;
+        end
+      end
+      if (v1 < 0) begin
+        over_d = 1'b1;
+        if (b1 == '0) begin
+          neg_d = !neg_q;
+          v_d   = VW'(-v1);
+        end
+      end
+      if (v1 == '0 && b1 == '0) begin
+        active_d = 1'b0;
+        done_d   = 1'b1;
+        div_d    = 1'b0;
+        clamp_d  = 1'b0;
+      end
+    end
+  end
+
+  always_ff @(posedge clk_i) begin
+    if (!rst_ni) begin
+      active_q <= 1'b0;
+      done_q   <= 1'b0;
+      neg_q    <= 1'b0;
+      over_q   <= 1'b0;
+      div_q    <= 1'b0;
+      uinf_q   <= 1'b0;
+      clamp_q  <= 1'b0;
+      v_q      <= '0;
+      b_q      <= '0;
+      u_q      <= '0;
+      g_q      <= '0;
+      j_q      <= JW'(1);
+      dlim_q   <= AW'(1);
+      k_q      <= '0;
+      prep_q   <= '0;
+      rem_q    <= '0;
+      jk_q     <= '0;
+      j2k_q    <= '0;
+      remk_q   <= '0;
+    end else begin
+      active_q <= active_d;
+      done_q   <= done_d;
+      neg_q    <= neg_d;
+      over_q   <= over_d;
+      div_q    <= div_d;
+      uinf_q   <= uinf_d;
+      clamp_q  <= clamp_d;
+      v_q      <= v_d;
+      b_q      <= b_d;
+      u_q      <= u_d;
+      g_q      <= g_d;
+      j_q      <= j_d;
+      dlim_q   <= dlim_d;
+      k_q      <= k_d;
+      prep_q   <= prep_d;
+      rem_q    <= rem_d;
+      jk_q     <= jk_d;
+      j2k_q    <= j2k_d;
+      remk_q   <= remk_d;
+    end
+  end
+
+  // jerk applied this clock: a' - a with a = neg ? b : -b
+  // (only the low JerkW bits of the difference matter: |b1 - b| <= J)
+  logic [JerkW-1:0] lev_new, lev_old;
+  assign lev_new     = neg_q ? JerkW'(b1) : JerkW'(b_q);
+  assign lev_old     = neg_q ? JerkW'(b_q) : JerkW'(b1);
+  assign jerk_o      = !active_q ? '0 : $signed(lev_new - lev_old);
+  assign active_o    = active_q;
+  assign done_o      = done_q;
+  assign overshoot_o = over_q;
+
+endmodule
