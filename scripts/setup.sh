@@ -11,6 +11,7 @@ pkgs=(
   zlib1g-dev
   python3-matplotlib
   tcl procps
+  clang-14 libclang-rt-14-dev
 )
 missing=()
 for p in "${pkgs[@]}"; do

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "closed_loop_run.h"
+#include "scenario_json.h"
 #include "planner.h"
 
 namespace CLI {
@@ -14,17 +15,6 @@ class App;
 }
 
 namespace sc {
-
-// Controller settings as given (flags, then the scenario's "controller"
-// object): the ones not given take scurve::controller_defaults() at the
-// control rate, so the default gains suit the rate (docs/closed_loop.md).
-struct ControllerInput {
-  ControllerParams values{};
-  std::vector<bool> given;  // by controller_params() index
-  ControllerInput();
-  void set(size_t param, double v);
-  ControllerParams resolve() const;
-};
 
 struct ClosedLoopCli {
   bool enabled = false;
@@ -40,24 +30,6 @@ struct ClosedLoopCli {
 };
 
 void add_closed_loop_flags(CLI::App* sim, ClosedLoopCli& f);
-
-// A number a user can give as a flag and as a scenario key: one table per
-// target (plant, controller), so both ways in share the range, the
-// integer-ness and the meaning, and go through the validation layer.
-template <class Target>
-struct NumberParam {
-  const char* flag;  // without "--"
-  const char* key;   // in the scenario's "plant" / "controller" object
-  double lo, hi;
-  bool integer;
-  const char* what;  // meaning and unit (the flag's help)
-  void (*set)(Target&, double);
-  double (*get)(const Target&);
-};
-using PlantParam = NumberParam<PlantConfig>;
-using ControllerParam = NumberParam<ControllerParams>;
-const std::vector<PlantParam>& plant_params();
-const std::vector<ControllerParam>& controller_params();
 
 // Runs every job (name, request) in closed loop; prints the results table,
 // the paper's Table 3 layout for paper groups, and with compare the
@@ -78,7 +50,5 @@ std::string closed_loop_table(const std::vector<ClosedLoopResult>& r);
 std::string table3_layout(const std::vector<ClosedLoopResult>& r);  // rows named groupN
 std::string comparison_table(const std::vector<ClosedLoopResult>& r);
 
-// Applies a JSON scenario ({"plant": {...}, "controller": {...}}); error text or "".
-std::string apply_scenario_json(const std::string& text, ControllerInput& c, PlantConfig& p);
 
 }  // namespace sc

@@ -38,6 +38,7 @@ for f in k-p k-v kb eta-p1 eta-p2 eta-v1 eta-v2 learn-dz-p learn-dz-v v-lim u-li
          learn-shift enc-filter tail; do
   for v in nan inf -inf 0x10 1e999 ten; do expect2 "$f=$v" "--$f" "$v"; done
   expect2 "$f=''" "--$f" ""
+  expect2 "$f=''" "--$f="  # empty after '=': the value as given, not the next argument
 done
 for a in k-p=-1 k-p=16 k-v=-1 kb=-1 eta-p1=-1 eta-v2=16 learn-dz-p=-1 learn-dz-p=32768 learn-dz-v=-1 \
          v-lim=-1 v-lim=1e8 u-lim=-1 u-lim=1e8 inpos-win=-1 inpos-hold=-1 inpos-hold=7 settle-rate=1e8 \
@@ -46,8 +47,15 @@ for a in k-p=-1 k-p=16 k-v=-1 kb=-1 eta-p1=-1 eta-v2=16 learn-dz-p=-1 learn-dz-p
          learn-shift=1.5 enc-filter=16 enc-filter=-1 enc-filter=010 enc-filter=0x1; do
   expect2 "$a" "--${a%%=*}" "${a#*=}"
 done
-# Switches take no value; of repeated numbers the last counts, each checked.
-for a in no-ff=false fixed-gain=0 open-loop=no missed-steps=false; do expect2 "${a%%=*}" "--$a"; done
+# Switches take no value (the message shows the value as given); of repeated
+# numbers the last counts, each checked.
+for a in no-ff=false no-ff=true fixed-gain=0 open-loop=no missed-steps=false compare=1; do
+  expect2 "$a: a switch takes no value" "--$a"
+done
+expect2 "no-ff='': a switch takes no value" --no-ff=
+# "--k-p=" never takes the next argument as its value.
+expect2 "k-p=''" --k-p= 0.004
+expect2 "k-p=''" --k-p= --k-v 0.1
 expect2 "k-p=nan" --k-p 0.004 --k-p nan
 expect2 "k-p=nan" --k-p nan --k-p 0.004
 expect2 "enc-filter=010" --enc-filter 010 --enc-filter 3

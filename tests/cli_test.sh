@@ -54,6 +54,11 @@ check_bad "clock-hz=0x10" plan --distance 100 --v-cruise 100 --a-max 500 --j-max
 check_bad "context=-1" diff a.csv b.csv --context -1
 check_bad "shard=01" regress --shard 01/2 --list-only
 check_bad "json-out=$tmp: is a directory" plan --distance 100 --v-cruise 100 --a-max 500 --j-max 2500 --json-out "$tmp"
+# "--flag=" is an empty value (never the next argument); a switch given a
+# value is refused showing the value.
+check_bad "distance=''" plan --distance= --v-cruise 100 --a-max 500 --j-max 2500
+check_bad "distance=''" plan --distance= 100 --v-cruise 100 --a-max 500 --j-max 2500
+check_bad "json=false: a switch takes no value" plan --distance 100 --v-cruise 100 --a-max 500 --j-max 2500 --json=false
 
 # --json-out: regs writes its JSON too; a failed write (file-size limit) is
 # exit 2 and leaves no partial file.

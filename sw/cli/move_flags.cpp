@@ -6,6 +6,8 @@
 #include <cmath>
 #include <csignal>
 #include <cstdio>
+#include <string>
+#include <vector>
 
 namespace scurve::cli {
 
@@ -138,16 +140,67 @@ std::string check_clock_flag(double hz) {
 }
 
 int bad_input(const std::string& msg) {
-  std::fprintf(stderr, "error: %s\n", msg.c_str());
+  // One line whatever the message quotes (file text, a JSON parser's view).
+  std::fprintf(stderr, "error: %s\n", input::printable(msg).c_str());
   return 2;
 }
+
+namespace {
+
+// The option named "--name" on the app or any of its subcommands.
+const CLI::Option* find_long_option(const CLI::App& app, const std::string& name) {
+  if (const CLI::Option* o = app.get_option_no_throw(name)) return o;
+  for (const CLI::App* sub : app.get_subcommands({})) {
+    if (const CLI::Option* o = find_long_option(*sub, name)) return o;
+  }
+  return nullptr;
+}
+
+// "--name=value" forms CLI11 gets wrong, settled before it parses: a switch
+// given a value is refused naming the value (CLI11 says only "was given a
+// disallowed flag override"), and "--name=" becomes "--name" "" (CLI11
+// would take the next argument as the value, or report the value missing),
+// so an empty value is checked and reported like any other. Returns an
+// error line, or "" with args rewritten.
+std::string settle_equals_forms(const CLI::App& app, std::vector<std::string>& args) {
+  std::vector<std::string> out;
+  bool options = true;
+  for (const std::string& a : args) {
+    if (a == "--") options = false;
+    const size_t eq = a.find('=');
+    if (!options || a.rfind("--", 0) != 0 || eq == std::string::npos || eq < 3) {
+      out.push_back(a);
+      continue;
+    }
+    const std::string name = a.substr(0, eq), value = a.substr(eq + 1);
+    const CLI::Option* o = find_long_option(app, name);
+    if (o && o->get_items_expected_max() == 0) {
+      return input::Error(name.substr(2), value.empty() ? "''" : value, "a switch takes no value").what();
+    }
+    if (o && value.empty()) {
+      out.push_back(name);
+      out.emplace_back();
+      continue;
+    }
+    out.push_back(a);
+  }
+  args = std::move(out);
+  return "";
+}
+
+}  // namespace
 
 std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv) {
   // A file-size limit makes a write fail (EFBIG) instead of killing the
   // program, so it reports the failure and removes its partial files.
   std::signal(SIGXFSZ, SIG_IGN);
+  std::vector<std::string> args(argv + (argc > 0 ? 1 : 0), argv + argc);
+  if (const std::string e = settle_equals_forms(app, args); !e.empty()) return bad_input(e);
+  std::vector<char*> settled = {argc > 0 ? argv[0] : nullptr};
+  for (std::string& a : args) settled.push_back(a.data());
+  settled.push_back(nullptr);
   try {
-    app.parse(argc, argv);
+    app.parse(int(settled.size() - 1), settled.data());
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);
   } catch (const CLI::CallForAllHelp& e) {
@@ -155,10 +208,10 @@ std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     // "scurve frob": name the word and the commands there are, not only
     // that one is required.
-    if (app.get_require_subcommand_min() > 0 && app.get_subcommands().empty() && argc > 1 && argv[1][0] != '-') {
+    if (app.get_require_subcommand_min() > 0 && app.get_subcommands().empty() && !args.empty() && args[0][0] != '-') {
       std::string known;
       for (const CLI::App* sub : app.get_subcommands({})) known += (known.empty() ? "" : ", ") + sub->get_name();
-      return bad_input(fmt::format("{}: unknown command (commands: {})", argv[1], known));
+      return bad_input(fmt::format("{}: unknown command (commands: {})", args[0], known));
     }
     return bad_input(e.what());
   }

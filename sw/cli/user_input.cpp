@@ -12,8 +12,21 @@
 
 namespace scurve::input {
 
+std::string printable(std::string_view text) {
+  std::string out;
+  for (const char c : text) {
+    const auto u = static_cast<unsigned char>(c);
+    if (u < 0x20 || u == 0x7f) {
+      out += fmt::format("\\x{:02x}", u);
+    } else {
+      out += c;
+    }
+  }
+  return out;
+}
+
 Error::Error(std::string parameter, std::string value, const std::string& why)
-    : std::invalid_argument(fmt::format("{}={}: {}", parameter, value, why)),
+    : std::invalid_argument(fmt::format("{}={}: {}", printable(parameter), printable(value), printable(why))),
       parameter_(std::move(parameter)),
       value_(std::move(value)) {}
 

@@ -91,10 +91,17 @@ std::vector<std::string> split(const std::string& s, char sep) {
 
 KinTraceReader::KinTraceReader(const std::string& path) : path_(path) {
   if (!std::filesystem::is_regular_file(path)) throw std::runtime_error(fmt::format("{}: not a readable file", path));
-  in_.open(path);
-  if (!in_) throw std::runtime_error(fmt::format("{}: cannot read", path));
+  file_.open(path);
+  if (!file_) throw std::runtime_error(fmt::format("{}: cannot read", path));
+  read_header();
+}
+
+KinTraceReader::KinTraceReader(std::istream& in, const std::string& name) : in_(&in), path_(name) { read_header(); }
+
+void KinTraceReader::read_header() {
+  const std::string& path = path_;
   // Header: "# scurve-kin-trace v1 ..." then the column line.
-  while (columns_.empty() && std::getline(in_, line_)) {
+  while (columns_.empty() && std::getline(*in_, line_)) {
     ++lineno_;
     if (line_.empty()) continue;
     if (line_[0] == '#') {
@@ -112,7 +119,8 @@ KinTraceReader::KinTraceReader(const std::string& path) : path_(path) {
     std::sort(sorted.begin(), sorted.end());
     for (size_t i = 0; i < sorted.size(); ++i) {
       if (sorted[i].empty() || (i > 0 && sorted[i] == sorted[i - 1])) {
-        throw std::runtime_error(fmt::format("{}:{}: column '{}' empty or repeated", path, lineno_, sorted[i]));
+        throw std::runtime_error(
+            fmt::format("{}:{}: column '{}' empty or repeated", path, lineno_, input::printable(sorted[i])));
       }
     }
     const std::vector<std::string> held_names = split(meta_.count("held") ? meta_.at("held") : "", ';');
@@ -150,7 +158,7 @@ void KinTraceReader::parse_meta(const std::string& line) {
 }
 
 bool KinTraceReader::next(uint64_t& clock, std::vector<std::string>& row) {
-  while (std::getline(in_, line_)) {
+  while (std::getline(*in_, line_)) {
     ++lineno_;
     if (line_.empty()) continue;
     if (line_[0] == '#') {
@@ -169,7 +177,7 @@ bool KinTraceReader::next(uint64_t& clock, std::vector<std::string>& row) {
     for (size_t i = 1; i < row.size(); ++i) {
       if (!input::is_decimal_integer(row[i])) {
         throw std::runtime_error(fmt::format("{}:{}: {}='{}': not a decimal integer", path_, lineno_,
-                                             columns_[i - 1], row[i].substr(0, 40)));
+                                             input::printable(columns_[i - 1]), input::printable(row[i].substr(0, 40))));
       }
     }
     row.erase(row.begin());
@@ -177,7 +185,7 @@ bool KinTraceReader::next(uint64_t& clock, std::vector<std::string>& row) {
     have_row_ = true;
     return true;
   }
-  if (in_.bad()) throw std::runtime_error(fmt::format("{}: read error", path_));
+  if (in_->bad()) throw std::runtime_error(fmt::format("{}: read error", path_));
   return false;
 }
 

@@ -64,6 +64,8 @@ class KinTraceWriter {
 class KinTraceReader {
  public:
   explicit KinTraceReader(const std::string& path);
+  // A trace from a stream (kept by the caller); name stands for the path in messages.
+  KinTraceReader(std::istream& in, const std::string& name);
   KinTraceReader(const KinTraceReader&) = delete;
   KinTraceReader& operator=(const KinTraceReader&) = delete;
 
@@ -78,8 +80,10 @@ class KinTraceReader {
   uint64_t end_clock() const;
 
  private:
+  void read_header();
   void parse_meta(const std::string& line);
-  std::ifstream in_;
+  std::ifstream file_;
+  std::istream* in_ = &file_;
   std::string path_;
   size_t lineno_ = 0;
   std::map<std::string, std::string> meta_;

@@ -153,7 +153,7 @@ int run_regress(const ToolCommands& t) {
         }
         results.insert(results.end(), part.begin(), part.end());
       } catch (const std::exception& e) {
-        return bad_input(fmt::format("--merge={}: {}", f, e.what()));
+        return bad_input(fmt::format("--merge={}: {}", f, input::printable(e.what())));
       }
     }
     shard_text = "merged";
@@ -172,7 +172,7 @@ int run_regress(const ToolCommands& t) {
       try {
         parsed = nlohmann::json::parse(in);
       } catch (const nlohmann::json::exception& e) {
-        return bad_input(fmt::format("--list={}: not JSON ({})", list, e.what()));
+        return bad_input(fmt::format("--list={}: not JSON ({})", list, input::printable(e.what())));
       }
       tests = expand_list(parsed, t.labels, t.exclude_labels);
       if (!t.shard.empty()) {

@@ -8,7 +8,6 @@
 #include <stdexcept>
 #include <unordered_map>
 
-#include "fstapi.h"
 #include "kin_trace.h"
 
 namespace sc {
@@ -39,10 +38,6 @@ std::string DiffReport::to_text() const {
 
 namespace {
 
-bool ends_with(const std::string& s, const std::string& suffix) {
-  return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
-}
-
 std::string with_source(const std::string& path, const std::map<std::string, std::string>& meta) {
   const auto it = meta.find("source");
   return it == meta.end() ? path : fmt::format("{} ({})", path, it->second);
@@ -63,6 +58,7 @@ namespace {
 // One trace as a sequence of rows with one row of look-ahead.
 struct Stream {
   explicit Stream(const std::string& path) : r(path) { more = r.next(next_clock, next_row); }
+  Stream(std::istream& in, const std::string& name) : r(in, name) { more = r.next(next_clock, next_row); }
   // The next row becomes the current one.
   void advance() {
     cur_clock = next_clock;
@@ -83,8 +79,10 @@ struct ContextRows {
 
 }  // namespace
 
-DiffReport diff_kin_traces(const std::string& a_path, const std::string& b_path, const DiffOptions& opt) {
-  Stream a(a_path), b(b_path);
+namespace {
+
+DiffReport diff_kin(Stream& a, const std::string& a_path, Stream& b, const std::string& b_path,
+                    const DiffOptions& opt) {
   DiffReport rep;
   rep.format = "csv";
 
@@ -218,174 +216,17 @@ DiffReport diff_kin_traces(const std::string& a_path, const std::string& b_path,
   return rep;
 }
 
-// ---- FST ------------------------------------------------------------------
-namespace {
-
-struct FstSignals {
-  std::vector<std::string> names;                         // one per handle we keep
-  std::unordered_map<fstHandle, size_t> by_handle;
-  std::vector<std::vector<std::pair<uint64_t, std::string>>> changes;  // per signal, time ordered
-  uint64_t end_time = 0;
-};
-
-FstSignals read_fst(const std::string& path) {
-  void* ctx = fstReaderOpen(path.c_str());
-  if (!ctx) throw std::runtime_error(fmt::format("cannot read FST {}", path));
-  FstSignals s;
-  s.end_time = fstReaderGetEndTime(ctx);
-  std::vector<std::string> scope;
-  while (const fstHier* h = fstReaderIterateHier(ctx)) {
-    switch (h->htyp) {
-      case FST_HT_SCOPE: scope.emplace_back(h->u.scope.name); break;
-      case FST_HT_UPSCOPE:
-        if (!scope.empty()) scope.pop_back();
-        break;
-      case FST_HT_VAR: {
-        std::string name;
-        for (const std::string& p : scope) name += p + ".";
-        name += h->u.var.name;
-        // Aliases share a handle: keep the first name (the values are the same).
-        if (!h->u.var.is_alias && !s.by_handle.count(h->u.var.handle)) {
-          s.by_handle[h->u.var.handle] = s.names.size();
-          s.names.push_back(name);
-        }
-        break;
-      }
-      default: break;
-    }
-  }
-  s.changes.resize(s.names.size());
-  fstReaderSetFacProcessMaskAll(ctx);
-  auto cb = [](void* user, uint64_t time, fstHandle handle, const unsigned char* value) {
-    auto* sig = static_cast<FstSignals*>(user);
-    const auto it = sig->by_handle.find(handle);
-    if (it == sig->by_handle.end()) return;
-    auto& ch = sig->changes[it->second];
-    std::string v(reinterpret_cast<const char*>(value));
-    if (!ch.empty() && ch.back().first == time) {
-      ch.back().second = std::move(v);  // last write of a time step wins
-    } else {
-      ch.emplace_back(time, std::move(v));
-    }
-  };
-  fstReaderIterBlocks(ctx, cb, &s, nullptr);
-  fstReaderClose(ctx);
-  return s;
-}
-
 }  // namespace
 
-DiffReport diff_fst(const std::string& a_path, const std::string& b_path, const DiffOptions& opt) {
-  const FstSignals a = read_fst(a_path);
-  const FstSignals b = read_fst(b_path);
-  DiffReport rep;
-  rep.format = "fst";
-  rep.a_name = a_path;
-  rep.b_name = b_path;
-  const uint64_t ticks = std::max<uint64_t>(1, opt.fst_ticks_per_clock);
-  auto to_clock = [&](uint64_t t) { return t / ticks; };
-  rep.a_last_clock = to_clock(a.end_time);
-  rep.b_last_clock = to_clock(b.end_time);
-  rep.length_differs = a.end_time != b.end_time;
-  const uint64_t end = std::min(a.end_time, b.end_time);
-  rep.compared_clocks = to_clock(end) + 1;
-
-  std::map<std::string, size_t> b_index;
-  for (size_t i = 0; i < b.names.size(); ++i) b_index[b.names[i]] = i;
-  std::map<std::string, bool> in_a;
-  // Clock intervals where some signal differs, merged afterwards.
-  std::vector<std::pair<uint64_t, uint64_t>> bad;
-  struct First {
-    size_t ia, ib;
-    uint64_t time;
-  };
-  std::vector<First> firsts;
-  for (size_t i = 0; i < a.names.size(); ++i) {
-    const std::string& name = a.names[i];
-    in_a[name] = true;
-    if (ignored(opt, name)) continue;
-    const auto it = b_index.find(name);
-    if (it == b_index.end()) {
-      rep.only_in_a.push_back(name);
-      continue;
-    }
-    ++rep.compared_signals;
-    const auto& ca = a.changes[i];
-    const auto& cb = b.changes[it->second];
-    // Walk both change lists: the value holds until the next change.
-    size_t pa = 0, pb = 0;
-    const std::string none = "x";
-    const std::string* va = &none;
-    const std::string* vb = &none;
-    bool differing = false;
-    uint64_t diff_from = 0, t = 0, total = 0;
-    SignalDiff sd;
-    bool seen = false;
-    while (true) {
-      const uint64_t ta = pa < ca.size() ? ca[pa].first : UINT64_MAX;
-      const uint64_t tb = pb < cb.size() ? cb[pb].first : UINT64_MAX;
-      t = std::min(ta, tb);
-      if (t > end) t = end + 1;
-      // close the interval [diff_from, t)
-      if (differing && t > diff_from) {
-        bad.emplace_back(to_clock(diff_from), to_clock(t - 1) + 1);
-        total += to_clock(t - 1) + 1 - to_clock(diff_from);
-      }
-      if (t > end) break;
-      while (pa < ca.size() && ca[pa].first == t) va = &ca[pa++].second;
-      while (pb < cb.size() && cb[pb].first == t) vb = &cb[pb++].second;
-      differing = *va != *vb;
-      diff_from = t;
-      if (differing && !seen) {
-        seen = true;
-        sd = {name, to_clock(t), *va, *vb, 0};
-        firsts.push_back({i, it->second, t});
-      }
-    }
-    if (seen) {
-      sd.differing_clocks = std::max<uint64_t>(1, total);
-      rep.signals.push_back(sd);
-    }
-  }
-  for (const std::string& n : b.names) {
-    if (!in_a.count(n) && !ignored(opt, n)) rep.only_in_b.push_back(n);
-  }
-  std::stable_sort(rep.signals.begin(), rep.signals.end(),
-                   [](const SignalDiff& x, const SignalDiff& y) { return x.first_clock < y.first_clock; });
-  std::sort(bad.begin(), bad.end());
-  uint64_t covered_to = 0;
-  for (const auto& [from, to] : bad) {
-    const uint64_t f = std::max(from, covered_to);
-    if (to > f) rep.differing_clocks += to - f;
-    covered_to = std::max(covered_to, to);
-  }
-  if (!firsts.empty()) {
-    const First f = *std::min_element(firsts.begin(), firsts.end(),
-                                      [](const First& x, const First& y) { return x.time < y.time; });
-    auto render = [&](const FstSignals& s, size_t idx, const char* tag) {
-      const auto& ch = s.changes[idx];
-      const auto pos = size_t(std::lower_bound(ch.begin(), ch.end(), std::make_pair(f.time, std::string())) -
-                              ch.begin());
-      const size_t from = pos > opt.context_rows ? pos - opt.context_rows : 0;
-      const size_t to = std::min(ch.size(), pos + opt.context_rows + 1);
-      std::string out;
-      for (size_t r = from; r < to; ++r) {
-        out += fmt::format("  {} clock {:>11} (t={}){} {}={}\n", tag, to_clock(ch[r].first), ch[r].first,
-                           ch[r].first == f.time ? " >" : "  ", s.names[idx], ch[r].second);
-      }
-      return out;
-    };
-    rep.context = "context (value changes of that signal around the first divergence):\n" +
-                  render(a, f.ia, "A") + render(b, f.ib, "B");
-  }
-  return rep;
+DiffReport diff_kin_traces(const std::string& a_path, const std::string& b_path, const DiffOptions& opt) {
+  Stream a(a_path), b(b_path);
+  return diff_kin(a, a_path, b, b_path, opt);
 }
 
-DiffReport diff_traces(const std::string& a, const std::string& b, const DiffOptions& opt) {
-  if (ends_with(a, ".fst") != ends_with(b, ".fst")) {
-    throw std::runtime_error("diff: both traces must be of the same kind (two .fst or two kinematics CSV)");
-  }
-  return ends_with(a, ".fst") ? diff_fst(a, b, opt) : diff_kin_traces(a, b, opt);
+DiffReport diff_kin_streams(std::istream& a_in, const std::string& a_name, std::istream& b_in,
+                            const std::string& b_name, const DiffOptions& opt) {
+  Stream a(a_in, a_name), b(b_in, b_name);
+  return diff_kin(a, a_name, b, b_name, opt);
 }
 
 }  // namespace sc

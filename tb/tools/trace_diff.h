@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <istream>
 #include <string>
 #include <vector>
 
@@ -42,6 +43,9 @@ struct DiffOptions {
 // Dispatches on the extension (.fst) or the content; throws on unreadable input.
 DiffReport diff_traces(const std::string& a, const std::string& b, const DiffOptions& opt = {});
 DiffReport diff_kin_traces(const std::string& a, const std::string& b, const DiffOptions& opt);
+// The same on two streams (names stand for the paths in the report).
+DiffReport diff_kin_streams(std::istream& a, const std::string& a_name, std::istream& b, const std::string& b_name,
+                            const DiffOptions& opt = {});
 DiffReport diff_fst(const std::string& a, const std::string& b, const DiffOptions& opt);
 
 }  // namespace sc

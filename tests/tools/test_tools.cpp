@@ -6,6 +6,8 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <random>
 #include <nlohmann/json.hpp>
 #include <chrono>
 #include <csignal>
@@ -332,6 +334,41 @@ Outcome run_capture(const std::string& cmd, const std::string& err_file) {
 }
 
 }  // namespace
+
+// A damaged FST is unreadable (exit 2, one line) or read (exit 0 or 1),
+// never a crash: the block chain is checked first, fstapi reads in a child.
+TEST(ScBench, DamagedFstFilesAreRefusedWithOneLineNeverACrash) {
+  const TempDir d("fst_damaged");
+  const std::string good = (d / "good.fst").string();
+  ASSERT_EQ(run(std::string(SC_BENCH) + kShortMove + " --fst " + good + " --fst-from 100000 --fst-to 101000"), 0);
+  std::string bytes;
+  {
+    std::ifstream in(good, std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  ASSERT_GT(bytes.size(), 400u);
+  std::mt19937_64 rng(7);
+  for (int k = 0; k < 40; ++k) {
+    std::string bad = bytes;
+    if (k == 0) {
+      bad.resize(bad.size() / 2);  // truncated
+    } else if (k == 1) {
+      bad[bad.size() - 20] = char(0xff);  // inside the last block
+    } else {
+      // Bytes past the header flipped: lengths and payloads alike.
+      for (int f = 0; f < 1 + k / 4; ++f) bad[330 + rng() % (bad.size() - 330)] ^= char(1 + rng() % 255);
+    }
+    const std::string path = (d / ("bad" + std::to_string(k) + ".fst")).string();
+    std::ofstream(path, std::ios::binary) << bad;
+    const Outcome o = run_capture(std::string(SCURVE) + " diff " + good + " " + path, (d / "err.txt").string());
+    EXPECT_TRUE(o.rc == 0 || o.rc == 1 || o.rc == 2) << "case " << k << ": exit " << o.rc;
+    if (o.rc == 2) {
+      EXPECT_EQ(o.err_lines.size(), 1u) << "case " << k;
+      if (!o.err_lines.empty()) EXPECT_NE(o.err_lines[0].find(path), std::string::npos) << o.err_lines[0];
+    }
+    if (k == 0) EXPECT_EQ(o.rc, 2);
+  }
+}
 
 TEST(Regress, HostileListsAreRefusedAtLoadTimeNamingTheField) {
   const TempDir d("hostile");

@@ -14,6 +14,11 @@
 
 namespace scurve::input {
 
+// Text from a file or the command line made safe for a one-line message:
+// control characters (a newline, an escape sequence) become \xNN.
+std::string printable(std::string_view text);
+
+// The message is "parameter=value: why", each part through printable().
 class Error : public std::invalid_argument {
  public:
   Error(std::string parameter, std::string value, const std::string& why);
