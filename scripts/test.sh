@@ -1,11 +1,12 @@
 #!/usr/bin/env bash
 # The test command: install what is missing, build, run the default ctest
-# suite (every area except the nightly-size `long` campaigns), then the
-# sanitizer build (build-san/: ASan + UBSan, no Verilated RTL) and its suite:
-# the host library, model and parser unit tests, the host CLI test, the fuzz
-# corpora and a 10 s fuzz run per harness. Writes build/test-results.xml and
-# build-san/test-results.xml (JUnit). Arguments replace the default
-# selection and go to the first ctest only (no sanitizer build), e.g.
+# suite (every area except the nightly-size `long` campaigns). Writes
+# build/test-results.xml (JUnit). With SC_SANITIZE=1 it then builds the
+# sanitizer configuration (build-san/: clang, ASan + UBSan, no Verilated RTL)
+# and runs its suite: the host library, model and parser unit tests, the host
+# CLI test, the fuzz corpora and a 10 s fuzz run per harness
+# (build-san/test-results.xml). Arguments replace the default selection and
+# go to the first ctest only (no sanitizer build), e.g.
 #   scripts/test.sh -L long  or  scripts/test.sh -L core
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
@@ -16,10 +17,12 @@ if [ $# -gt 0 ]; then
 fi
 rc=0
 ctest --output-on-failure -j"$(nproc)" --output-junit test-results.xml -LE long || rc=$?
-"$here/scripts/build.sh" --sanitize
-cd "$here/build-san"
-# Stop at the first report; leaks count (LeakSanitizer).
-export ASAN_OPTIONS=abort_on_error=1:detect_leaks=1:strict_string_checks=1
-export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
-ctest --output-on-failure -j"$(nproc)" --output-junit test-results.xml -LE long || rc=$?
+if [ "${SC_SANITIZE:-0}" = "1" ]; then
+  "$here/scripts/build.sh" --sanitize
+  cd "$here/build-san"
+  # Stop at the first report; leaks count (LeakSanitizer).
+  export ASAN_OPTIONS=abort_on_error=1:detect_leaks=1:strict_string_checks=1
+  export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+  ctest --output-on-failure -j"$(nproc)" --output-junit test-results.xml -LE long || rc=$?
+fi
 exit "$rc"
