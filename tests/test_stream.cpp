@@ -75,8 +75,9 @@ void stream_through_model(size_t n_moves, uint64_t seed) {
   const auto moves = random_moves(g, n_moves, limits.v_max, 100000);
   scurve::StreamPlanner sp(scurve::Clock{}, scurve::PulseTiming{}, limits);
   ProfileExec ex;
-  std::deque<Row> pending;
-  std::deque<int64_t> ends;
+  RowQueue q;  // rows not yet pushed, move ends not yet reached
+  std::deque<Row>& pending = q.rows;
+  std::deque<int64_t>& ends = q.move_ends;
   uint64_t moves_done = 0, clocks = 0;
   bool started = false;
   auto check_boundary = [&] {
@@ -123,23 +124,13 @@ void stream_through_model(size_t n_moves, uint64_t seed) {
   for (const scurve::StreamMove& m : moves) {
     auto e = sp.append(m);
     ASSERT_FALSE(e) << e->message;
-    for (const scurve::StreamedMove& r : sp.take_ready()) {
-      std::vector<Segment> segs;
-      for (const scurve::Segment& s : r.segments) segs.push_back(to_model(s));
-      for (const Row& w : move_rows(segs, false)) pending.push_back(w);
-      ends.push_back(r.end_position);
-    }
+    for (const scurve::StreamedMove& r : sp.take_ready()) q.add(r, false);
     if (pending.size() > 64) run(false);
     if (::testing::Test::HasFatalFailure()) return;
   }
   auto e = sp.flush();
   ASSERT_FALSE(e) << e->message;
-  for (const scurve::StreamedMove& r : sp.take_ready()) {
-    std::vector<Segment> segs;
-    for (const scurve::Segment& s : r.segments) segs.push_back(to_model(s));
-    for (const Row& w : move_rows(segs, false)) pending.push_back(w);
-    ends.push_back(r.end_position);
-  }
+  for (const scurve::StreamedMove& r : sp.take_ready()) q.add(r, false);
   run(true);
   if (::testing::Test::HasFatalFailure()) return;
   EXPECT_EQ(moves_done, n_moves);
