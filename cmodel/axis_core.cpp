@@ -49,6 +49,9 @@ void AxisCore::latch_inputs(const CoreInputs& in) {
   in_q_.enable = in.enable;
   in_q_.start = in.start;
   in_q_.abort = in.abort;
+  in_q_.stop = in.stop;
+  in_q_.stop_jerk = in.stop_jerk & ((uint64_t(1) << JerkW) - 1);
+  in_q_.stop_acc = in.stop_acc;
   in_q_.cfg = in.cfg;
   in_q_.pos_frac0 = mask_bits(in.pos_frac0, FracBits);
 }
@@ -67,7 +70,7 @@ void AxisCore::clock_edge(const CoreExtInputs& x) {
     arm_fwd_d = exec_.head_forward();
     arm_cnt_d = 0;
   } else if (arm_) {
-    if (in_q_.abort) {
+    if (in_q_.abort || in_q_.stop) {
       arm_d = false;
     } else if (sg_.state().dir != arm_fwd_) {
       arm_cnt_d = 0;
@@ -91,6 +94,9 @@ void AxisCore::clock_edge(const CoreExtInputs& x) {
   ei.pos_frac0 = in_q_.pos_frac0;
   ei.start = exec_start;
   ei.abort = in_q_.abort || (kExt && x.abort);
+  ei.stop = in_q_.stop;
+  ei.stop_jerk = in_q_.stop_jerk;
+  ei.stop_acc = in_q_.stop_acc;
   sg_.step(si);  // uses the executor's current (registered) outputs
   exec_.step(ei);
   if constexpr (kExt) exec_started_ = exec_start;
@@ -100,14 +106,20 @@ void AxisCore::clock_edge(const CoreExtInputs& x) {
 }
 
 bool AxisCore::inputs_settled(const CoreInputs& in) const {
-  return !in.start && !in.abort && !in.row_push && !in.fifo_flush && !in_q_.start && !in_q_.abort &&
-         in_q_.enable == in.enable && in_q_.cfg == in.cfg &&
+  return !in.start && !in.abort && !in.stop && !in.row_push && !in.fifo_flush && !in_q_.start && !in_q_.abort &&
+         !in_q_.stop && in_q_.enable == in.enable && in_q_.cfg == in.cfg &&
+         in_q_.stop_jerk == (in.stop_jerk & ((uint64_t(1) << JerkW) - 1)) && in_q_.stop_acc == in.stop_acc &&
          in_q_.pos_frac0 == mask_bits(in.pos_frac0, FracBits);
 }
 CoreOutputs AxisCore::outputs() const {
+  CoreOutputs o;
+  read_outputs(o);
+  return o;
+}
+
+void AxisCore::read_outputs(CoreOutputs& o) const {
   const ProfileExec::State& e = exec_.state();
   const StepGen::State& s = sg_.state();
-  CoreOutputs o;
   o.step = s.step;
   o.dir = s.dir;
   o.en = in_q_.enable;
@@ -118,6 +130,8 @@ CoreOutputs AxisCore::outputs() const {
   o.fault_overrun = s.overrun;
   o.underrun = e.underrun;
   o.discont = e.discont;
+  o.stopping = e.stop;
+  o.overshoot = exec_.overshoot();
   o.move_done = e.move_done;
   o.move_idx = e.move_idx;
   o.boundary_pos = e.bpos;
@@ -128,10 +142,9 @@ CoreOutputs AxisCore::outputs() const {
   o.ref_pos_frac = e.frac;
   o.ref_vel = e.vel;
   o.ref_acc = e.acc;
-  o.ref_jerk = e.jerk;
+  o.ref_jerk = exec_.jerk();
   o.seg_idx = e.idx;
   o.step_pending = s.pend;
-  return o;
 }
 
 void AxisCore::tick() { clock_edge<false>(kNoExt); }
@@ -141,11 +154,12 @@ bool AxisCore::outputs_equal(const CoreOutputs& o) const {
   const StepGen::State& s = sg_.state();
   const bool is_done = done();
   return o.step == s.step && o.dir == s.dir && o.pulse_count == s.count && o.ref_pos_int == e.pint &&
-         o.ref_pos_frac == e.frac && o.ref_vel == e.vel && o.ref_acc == e.acc && o.ref_jerk == e.jerk &&
+         o.ref_pos_frac == e.frac && o.ref_vel == e.vel && o.ref_acc == e.acc && o.ref_jerk == exec_.jerk() &&
          o.done == is_done && o.busy == busy() && o.en == in_q_.enable &&
          o.phase == (is_done ? uint8_t(Phase::PhDone) : uint8_t(e.phase)) && o.fault_table == e.fault &&
          o.fault_overrun == s.overrun && o.seg_idx == e.idx && o.step_pending == s.pend &&
-         o.underrun == e.underrun && o.discont == e.discont && o.move_done == e.move_done &&
+         o.underrun == e.underrun && o.discont == e.discont && o.stopping == e.stop &&
+         o.overshoot == exec_.overshoot() && o.move_done == e.move_done &&
          o.move_idx == e.move_idx && o.boundary_pos == e.bpos && o.fifo_level == exec_.fifo_level() &&
          o.fifo_full == exec_.fifo_full();
 }

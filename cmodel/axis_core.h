@@ -17,7 +17,12 @@ struct CoreInputs {
   bool fifo_flush = false;
   u128 pos_frac0 = 0;
   bool start = false;
-  bool abort = false;
+  bool abort = false;          // immediate stop (e-stop)
+  bool stop = false;           // controlled stop; while arming, the start is dropped
+  // Controlled-stop limits (JerkW / AccW bits); default: the registers'
+  // reset values.
+  uint64_t stop_jerk = StopJerkReset;
+  uint64_t stop_acc = StopAccReset;
 };
 
 // The external step source of sc_axis_core #(.ExtStep(1)) (its ext_*
@@ -45,6 +50,8 @@ struct CoreOutputs {
   bool fault_overrun = false;
   bool underrun = false;
   bool discont = false;
+  bool stopping = false;
+  bool overshoot = false;
   bool move_done = false;
   uint32_t move_idx = 0;
   int32_t boundary_pos = 0;
@@ -70,6 +77,9 @@ class AxisCore {
   // this clock (from the external source's registers, before its clock).
   void step(const CoreInputs& in, const CoreExtInputs& x);
   CoreOutputs outputs() const;
+  // outputs() into an existing struct: a returned temporary written field by
+  // field and then copied whole stalls on store forwarding (hot loops).
+  void read_outputs(CoreOutputs& o) const;
   // outputs() == o, without building the struct (the lockstep hot path).
   bool outputs_equal(const CoreOutputs& o) const;
   // One clock holding the inputs of the previous step(), which must not have
@@ -111,6 +121,9 @@ class AxisCore {
     bool enable = false;
     bool start = false;
     bool abort = false;
+    bool stop = false;
+    uint64_t stop_jerk = 0;
+    uint64_t stop_acc = 0;
     PulseTiming cfg{0, 0, 0, 0};
     u128 pos_frac0 = 0;
   };

@@ -7,6 +7,7 @@ namespace sc {
 void ProfileExec::reset() {
   q_ = State{};
   fifo_.reset();
+  stop_.reset();
 }
 
 bool ProfileExec::head_forward() const {
@@ -19,28 +20,37 @@ void ProfileExec::step(const Inputs& in) {
   // its clock edge (asynchronous read).
   const bool fifo_empty = fifo_.empty();
   const Row& hd = fifo_.head();
-  const bool boundary = q_.run && !in.abort && q_.left == 1;
+  const bool boundary = q_.run && !q_.stop && !in.abort && q_.left == 1;
   const i128 vel_end = wrap_signed(q_.vel + q_.acc, VelW);
   const int64_t acc_end = wrap_signed64(add_wrap64(q_.acc, q_.jerk), AccW);
   const bool continues = hd.seg.vel0 == vel_end && (hd.seg.acc0 == acc_end || (hd.flags & kRowAccStep));
   const bool at_rest = vel_end == 0 && acc_end == 0;
   const bool move_done = boundary && (q_.flags & kRowMoveEnd);
+  const bool ends = (q_.flags & kRowStreamEnd) || (fifo_empty && at_rest);
   bool load = false;
   if (boundary) {
     load = !(q_.flags & kRowStreamEnd) && !fifo_empty && continues;
   } else if (!q_.run) {
     load = in.start && !fifo_empty;
   }
+  const bool row_bad = load && hd.seg.clocks == 0;
+  const bool stop_start = q_.run && !q_.stop && !in.abort &&
+                          ((in.stop && !(boundary && !load && ends)) || (boundary && ((!load && !ends) || row_bad)));
+  // The stop generator's outputs of this clock (from its registers).
+  const bool sg_active = stop_.active();
+  const int64_t sg_jerk = q_.stop && sg_active ? stop_.jerk() : 0;
   bool flush = false;
 
   // State is updated in place: each statement reads only fields that are
   // still at their current-clock value (no per-clock copy of the State).
   const bool was_running = q_.run;
+  const bool was_stopping = q_.stop;
   const uint8_t flags_now = q_.flags;
   q_.step_req = false;
   if (was_running) {
     if (in.abort) {
       q_.run = false;
+      q_.stop = false;
       q_.vel = 0;
       q_.acc = 0;
       q_.jerk = 0;
@@ -61,24 +71,28 @@ void ProfileExec::step(const Inputs& in) {
       } else {
         q_.frac = u128(sum);
       }
-      if (q_.left == 1) {
+      if (was_stopping) {
+        if (sg_active) {
+          q_.vel = vel_end;
+          q_.acc = wrap_signed64(add_wrap64(q_.acc, sg_jerk), AccW);
+        } else {
+          q_.run = false;
+          q_.stop = false;
+        }
+      } else if (q_.left == 1) {
         if (move_done) {
           ++q_.move_idx;
           q_.bpos = q_.pint;
         }
-        if (!load) {
+        if (!load && ends) {
           q_.run = false;
           q_.vel = 0;
           q_.acc = 0;
           q_.jerk = 0;
-          if ((flags_now & kRowStreamEnd) || (fifo_empty && at_rest)) {
-            q_.finished = true;
-          } else {
-            q_.underrun = fifo_empty;
-            q_.discont = !fifo_empty;
-            q_.phase = Phase::PhAbort;
-            flush = true;
-          }
+          q_.finished = true;
+        } else if (!load) {
+          q_.underrun = fifo_empty;
+          q_.discont = !fifo_empty;
         }
       } else {
         q_.left = q_.left - 1;
@@ -100,7 +114,15 @@ void ProfileExec::step(const Inputs& in) {
     }
   }
 
-  if (load) {
+  if (stop_start) {
+    q_.stop = true;
+    q_.vel = vel_end;
+    q_.acc = acc_end;
+    q_.jerk = 0;
+    q_.phase = Phase::PhStop;
+    flush = true;
+    if (row_bad) q_.fault = true;
+  } else if (load) {
     if (hd.seg.clocks == 0) {
       q_.run = false;
       q_.fault = true;
@@ -131,14 +153,26 @@ void ProfileExec::step(const Inputs& in) {
     w.seg.vel0 = wrap_signed(in.row.seg.vel0, VelW);
     w.flags = uint8_t(in.row.flags & ((1u << RowFlagW) - 1));
   }
-  fifo_.step(flush || in.fifo_flush, in.row_push, w, load);
+  held_stop_jerk_ = in.stop_jerk;
+  held_stop_acc_ = in.stop_acc;
+  // The stop generator's clock; idle and not started, it holds its state.
+  if (stop_start || stop_.active()) {
+    StopGen::Inputs si;
+    si.start = stop_start;
+    si.vel = vel_end;
+    si.acc = acc_end;
+    si.stop_jerk = in.stop_jerk;
+    si.stop_acc = in.stop_acc;
+    stop_.step(si);
+  }
+  fifo_.step(flush || in.fifo_flush || was_stopping, in.row_push, w, load);
 }
 
 // A jump is exact when, over the rest of the segment, velocity keeps one
 // sign (so the position is monotone and "next carry" is a binary search)
 // and nothing would wrap.
 bool ProfileExec::jump_safe() const {
-  if (!q_.run || q_.left < 2) return false;
+  if (!q_.run || q_.stop || q_.left < 2) return false;
   const uint64_t k = q_.left - 1;  // integrations left in this segment
   const i128 a_end = acc_after(q_.acc, q_.jerk, k);
   const i128 amax = (i128(1) << (AccW - 1)) - 1;
@@ -203,7 +237,9 @@ void ProfileExec::advance(uint64_t k) {
 
 int64_t ProfileExec::fast_forward(uint64_t n) {
   // advance() never covers a reload clock, so the FIFO only moves in step().
-  const Inputs quiet{};
+  Inputs quiet{};
+  quiet.stop_jerk = held_stop_jerk_;
+  quiet.stop_acc = held_stop_acc_;
   const int32_t p0 = q_.pint;
   while (n > 0) {
     const uint64_t span = std::min(closed_form_span(), n);

@@ -1,4 +1,5 @@
-// Bit-exact model of rtl/sc_profile_exec.sv (with its sc_row_fifo): same
+// Bit-exact model of rtl/sc_profile_exec.sv (with its sc_row_fifo and
+// sc_stop_gen): same
 // state, same update order, same wrap. step() is one clock; fast_forward() jumps many clocks in closed
 // form and is tested equal to step().
 #pragma once
@@ -8,6 +9,7 @@
 
 #include "fixed_point.h"
 #include "row_fifo.h"
+#include "stop_gen.h"
 
 namespace sc {
 
@@ -40,6 +42,9 @@ class ProfileExec {
     u128 pos_frac0 = 0;
     bool start = false;
     bool abort = false;
+    bool stop = false;         // controlled stop
+    uint64_t stop_jerk = 0;    // JerkW bits
+    uint64_t stop_acc = 0;     // AccW bits
   };
   struct State {
     bool run = false;
@@ -47,6 +52,7 @@ class ProfileExec {
     bool fault = false;
     bool underrun = false;
     bool discont = false;
+    bool stop = false;  // controlled stop running
     uint8_t idx = 0;
     uint8_t flags = 0;
     uint32_t left = 0;
@@ -89,7 +95,13 @@ class ProfileExec {
   const State& state() const { return q_; }
   State& mutable_state() { return q_; }  // for fault-injection tests only
   size_t fifo_level() const { return fifo_.level(); }
-  bool fifo_full() const { return fifo_.full(); }
+  // fifo_full_o: no row is taken (full, or a controlled stop runs).
+  bool fifo_full() const { return fifo_.full() || q_.stop; }
+  // jerk_o: the jerk applied this clock (the stop's while stopping).
+  int64_t jerk() const { return q_.stop ? stop_.jerk() : q_.jerk; }
+  bool stopping() const { return q_.stop; }
+  bool overshoot() const { return stop_.overshoot(); }
+  const StopGen& stop_gen() const { return stop_; }
   // head_fwd_o: direction of the head row (velocity's sign, else the
   // acceleration's, else the jerk's).
   bool head_forward() const;
@@ -98,6 +110,10 @@ class ProfileExec {
   bool jump_safe() const;
   State q_;
   RowFifo<Row, RowFifoDepth> fifo_;
+  StopGen stop_;
+  // The stop limits of the last step() (inputs the RTL sees held while
+  // fast_forward() runs without inputs).
+  uint64_t held_stop_jerk_ = 0, held_stop_acc_ = 0;
 };
 
 }  // namespace sc

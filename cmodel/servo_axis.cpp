@@ -61,6 +61,9 @@ void ServoAxis::step(const ServoInputs& in) {
   ki.pos_frac0 = in.pos_frac0;
   ki.start = in.start;
   ki.abort = in.abort;
+  ki.stop = in.stop;
+  ki.stop_jerk = in.stop_jerk;
+  ki.stop_acc = in.stop_acc;
 
   NeuronPi::Inputs ci;
   ci.stop = core_.abort_q();
@@ -115,6 +118,8 @@ ServoOutputs ServoAxis::outputs() const {
   o.in_pos = c.in_pos;
   o.underrun = e.underrun;
   o.discont = e.discont;
+  o.stopping = e.stop;
+  o.overshoot = core_.exec().overshoot();
   o.move_done = e.move_done;
   o.move_idx = e.move_idx;
   o.boundary_pos = e.bpos;

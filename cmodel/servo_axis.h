@@ -33,6 +33,9 @@ struct ServoInputs {
   u128 pos_frac0 = 0;
   bool start = false;
   bool abort = false;
+  bool stop = false;
+  uint64_t stop_jerk = StopJerkReset;  // controlled-stop limits (as CoreInputs)
+  uint64_t stop_acc = StopAccReset;
   bool enc_a = false;
   bool enc_b = false;
 };
@@ -44,6 +47,7 @@ struct ServoOutputs {
   uint8_t phase = 0;
   bool fault_table = false, fault_overrun = false, fault_ferr = false, in_pos = false;
   bool underrun = false, discont = false, move_done = false, fifo_full = false;
+  bool stopping = false, overshoot = false;
   uint32_t move_idx = 0;
   int32_t boundary_pos = 0;
   uint8_t fifo_level = 0;

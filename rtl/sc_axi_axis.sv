@@ -76,6 +76,7 @@ module sc_axi_axis (
   logic signed [JerkW-1:0]     unused_ref_jerk;
   logic signed [PendW-1:0]     unused_pending;
   logic                        unused_exec_start, unused_abort, unused_ref_done, unused_step_busy;
+  logic                        unused_stopping, unused_overshoot;
   logic                        unused_closed;
   logic [sc_pkg::CtlCfgW-1:0]  unused_ctl_cfg;
 
@@ -162,6 +163,11 @@ module sc_axi_axis (
     .pos_frac0_i     (pos_frac0),
     .start_i         (start),
     .abort_i         (abort),
+    // CMD.STOP still aborts; the stop limits are their reset values until
+    // the register file has STOP_JERK / STOP_ACC.
+    .stop_i          (1'b0),
+    .stop_jerk_i     (sc_pkg::StopJerkReset),
+    .stop_acc_i      (sc_pkg::StopAccReset),
     .ext_sel_i        (1'b0),
     .ext_req_i        (1'b0),
     .ext_fwd_i        (1'b0),
@@ -184,6 +190,8 @@ module sc_axi_axis (
     .fault_overrun_o (fault_overrun),
     .underrun_o      (underrun),
     .discont_o       (discont),
+    .stopping_o      (unused_stopping),
+    .overshoot_o     (unused_overshoot),
     .move_done_o     (move_done),
     .move_idx_o      (move_idx),
     .boundary_pos_o  (boundary_pos),

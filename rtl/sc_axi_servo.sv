@@ -76,6 +76,7 @@ module sc_axi_servo (
   logic signed [VelW-1:0]      seg_vel0;
   logic [sc_pkg::RowFlagW-1:0] row_flags;
   logic                        underrun, discont, move_done, fifo_full;
+  logic                        unused_stopping, unused_overshoot;
   logic [sc_pkg::MoveIdxW-1:0] move_idx;
   logic signed [sc_pkg::PosIntW-1:0] boundary_pos;
   logic [RowLevelW-1:0]        fifo_level;
@@ -211,6 +212,11 @@ module sc_axi_servo (
     .pos_frac0_i       (pos_frac0),
     .start_i           (start),
     .abort_i           (abort),
+    // CMD.STOP still aborts; the stop limits are their reset values until
+    // the register file has STOP_JERK / STOP_ACC.
+    .stop_i            (1'b0),
+    .stop_jerk_i       (sc_pkg::StopJerkReset),
+    .stop_acc_i        (sc_pkg::StopAccReset),
     .enc_a_i,
     .enc_b_i,
     .ctl_cfg_i         (ctl_cfg),
@@ -224,6 +230,8 @@ module sc_axi_servo (
     .fault_overrun_o   (fault_overrun),
     .underrun_o        (underrun),
     .discont_o         (discont),
+    .stopping_o        (unused_stopping),
+    .overshoot_o       (unused_overshoot),
     .move_done_o       (move_done),
     .move_idx_o        (move_idx),
     .boundary_pos_o    (boundary_pos),

@@ -14,6 +14,10 @@
 // Steps therefore never pile up in the step generator's queue behind a DIR
 // change.
 //
+// stop_i asks for the controlled stop (sc_profile_exec: jerk-limited to
+// rest with stop_jerk_i / stop_acc_i); during the arming it drops the start.
+// abort_i is the immediate stop (e-stop).
+//
 // ExtStep = 1 adds an external step source (sc_servo_axis's closed-loop
 // NCO): with ext_sel_i set it replaces the executor's carry at the step
 // generator. DIR is pre-positioned (while no step is owed) by the arming,
@@ -46,7 +50,10 @@ module sc_axis_core #(
   input  logic                        fifo_flush_i,
   input  logic [sc_pkg::FracBits-1:0]         pos_frac0_i,
   input  logic                        start_i,      // ignored while busy_o or !enable_i (seen a clock later)
-  input  logic                        abort_i,
+  input  logic                        abort_i,      // immediate stop (e-stop)
+  input  logic                        stop_i,       // controlled stop; while arming, the start is dropped
+  input  logic [sc_pkg::JerkW-1:0]            stop_jerk_i,  // controlled-stop limits
+  input  logic [sc_pkg::AccW-1:0]             stop_acc_i,
 
   // external step source (ExtStep = 1 only)
   input  logic                        ext_sel_i,         // steps come from ext_req_i/ext_fwd_i
@@ -73,6 +80,8 @@ module sc_axis_core #(
   output logic                        fault_overrun_o,
   output logic                        underrun_o,
   output logic                        discont_o,
+  output logic                        stopping_o,   // a controlled stop runs
+  output logic                        overshoot_o,  // the last stop could not avoid a reversal
   output logic                        move_done_o,
   output logic [sc_pkg::MoveIdxW-1:0]         move_idx_o,
   output logic signed [sc_pkg::PosIntW-1:0]   boundary_pos_o,
@@ -101,7 +110,9 @@ module sc_axis_core #(
   logic   sg_req, sg_fwd, sg_hint_valid, sg_hint;
   logic   use_ext, exec_abort, finished, ref_moving;
   logic   start_ok, exec_start;
-  logic   en_q, start_q, abort_q;
+  logic   en_q, start_q, abort_q, stop_q;
+  logic [sc_pkg::JerkW-1:0] stop_jerk_q;
+  logic [sc_pkg::AccW-1:0]  stop_acc_q;
   logic   head_fwd;                      // direction of the FIFO's head row
   logic   arm_q, arm_d;                  // start accepted, waiting for DIR
   logic   arm_fwd_q, arm_fwd_d;
@@ -137,7 +148,7 @@ module sc_axis_core #(
       arm_fwd_d = head_fwd;
       arm_cnt_d = '0;
     end else if (arm_q) begin
-      if (abort_q) begin
+      if (abort_q || stop_q) begin
         arm_d = 1'b0;
       end else if (sg_dir != arm_fwd_q) begin
         arm_cnt_d = '0;
@@ -164,11 +175,16 @@ module sc_axis_core #(
     .pos_frac0_i (pos_frac0_q),
     .start_i     (exec_start),
     .abort_i     (exec_abort),
+    .stop_i      (stop_q),
+    .stop_jerk_i (stop_jerk_q),
+    .stop_acc_i  (stop_acc_q),
     .running_o   (exec_running),
     .finished_o  (exec_finished),
     .fault_o     (exec_fault),
     .underrun_o,
     .discont_o,
+    .stopping_o,
+    .overshoot_o,
     .move_done_o,
     .move_idx_o,
     .boundary_pos_o,
@@ -214,6 +230,9 @@ module sc_axis_core #(
       arm_cnt_q   <= '0;
       start_q     <= 1'b0;
       abort_q     <= 1'b0;
+      stop_q      <= 1'b0;
+      stop_jerk_q <= '0;
+      stop_acc_q  <= '0;
       cfg_high_q  <= '0;
       cfg_low_q   <= '0;
       cfg_setup_q <= '0;
@@ -226,6 +245,9 @@ module sc_axis_core #(
       arm_cnt_q   <= arm_cnt_d;
       start_q     <= start_i;
       abort_q     <= abort_i;
+      stop_q      <= stop_i;
+      stop_jerk_q <= stop_jerk_i;
+      stop_acc_q  <= stop_acc_i;
       cfg_high_q  <= cfg_high_i;
       cfg_low_q   <= cfg_low_i;
       cfg_setup_q <= cfg_setup_i;

@@ -153,6 +153,13 @@ package sc_pkg;
   localparam logic [3:0] PhDone        = 4'd8;
   localparam logic [3:0] PhAbort       = 4'd9;
   localparam logic [3:0] PhFault       = 4'd10;
+  localparam logic [3:0] PhStop        = 4'd11;  // controlled stop (sc_stop_gen)
+
+  // Controlled-stop limits at reset, in executor LSBs at 20 MHz: jerk
+  // 2e7 pulses/s^3 (2e7 * 2^80 / (2e7)^3), deceleration 2e5 pulses/s^2
+  // (2e5 * 2^80 / (2e7)^2).
+  localparam logic [47:0] StopJerkReset = 48'd3022314549;
+  localparam logic [63:0] StopAccReset  = 64'd604462909807314;
 
   // One row of the segment table (written field by field on the seg_*_i
   // ports): phase code, duration in clocks, jerk, and the exact starting

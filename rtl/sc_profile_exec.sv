@@ -19,11 +19,21 @@
 //   * else the head row is loaded if it continues exactly;
 //   * else, with the FIFO empty and the end state at rest (v = a = 0), the
 //     stream ends; moving, it is an underrun: the axis stops.
+//   * else (the FIFO ran dry while moving, the head row does not continue,
+//     or it has no clocks): a controlled stop.
 // A row flagged MOVE_END closes a move: move_idx_o counts the moves done
 // since START and boundary_pos_o holds the integer position at that
-// boundary (after the step of its last clock). A stop (abort, underrun,
-// discontinuity) flushes the FIFO: rows planned from a state the axis never
-// reached must not run after it.
+// boundary (after the step of its last clock).
+//
+// Controlled stop (stop_i, underrun, discontinuity, malformed row): the
+// clock that triggers it still integrates the running row (v + a, a + j),
+// then sc_stop_gen chooses the jerk every clock (pos += v; v += a;
+// a += jerk) until v = a = 0 with the stop limits stop_jerk_i and
+// stop_acc_i: no velocity or acceleration step, position counts exact. A
+// stop_i in the clock a stream ends as planned changes nothing. abort_i is
+// the immediate stop (e-stop): v, a and j go to 0 at once. Every stop
+// flushes the FIFO: rows planned from a state the axis never reached must
+// not run after it.
 module sc_profile_exec (
   input  logic                       clk_i,
   input  logic                       rst_ni,
@@ -41,17 +51,22 @@ module sc_profile_exec (
 
   input  logic                       start_i,
   input  logic                       abort_i,
+  input  logic                       stop_i,        // controlled stop (ignored while idle)
+  input  logic [sc_pkg::JerkW-1:0]            stop_jerk_i,   // stop limits (sc_stop_gen)
+  input  logic [sc_pkg::AccW-1:0]             stop_acc_i,
 
   output logic                       running_o,
   output logic                       finished_o,
   output logic                       fault_o,       // START met an empty FIFO, or a zero-length row
   output logic                       underrun_o,    // the FIFO ran dry while moving (until START)
   output logic                       discont_o,     // a row did not continue the motion (until START)
+  output logic                       stopping_o,    // a controlled stop runs
+  output logic                       overshoot_o,   // the last stop could not avoid a reversal (until its next start)
   output logic                       move_done_o,   // a MOVE_END row ended (one clock, with its move_idx_o)
   output logic [sc_pkg::MoveIdxW-1:0]         move_idx_o,
   output logic signed [sc_pkg::PosIntW-1:0]   boundary_pos_o,
   output logic [sc_pkg::RowLevelW-1:0]        fifo_level_o,
-  output logic                       fifo_full_o,
+  output logic                       fifo_full_o,   // no row is taken: full, or a controlled stop runs
   output logic                       head_fwd_o,    // direction of the head row
   output logic                       step_req_o,
   output logic                       step_fwd_o,
@@ -84,6 +99,7 @@ module sc_profile_exec (
   logic                      fault_q, fault_d;
   logic                      underrun_q, underrun_d;
   logic                      discont_q, discont_d;
+  logic                      stop_q, stop_d;        // controlled stop running
   logic [SegIdxW-1:0]        idx_q, idx_d;
   logic [RowFlagW-1:0]       flags_q, flags_d;
   logic [SegClkW-1:0]        left_q, left_d;
@@ -103,12 +119,15 @@ module sc_profile_exec (
   // fraction: bit FracBits+1 = result negative (borrow), bit FracBits = carry.
   logic signed [FracBits+1:0] pos_sum;
   logic                       boundary, load, pop, flush;
+  logic                       row_bad, ends, stop_start;
+  logic                       sg_active, sg_overshoot, unused_sg_done;
+  logic signed [JerkW-1:0]    sg_jerk;
   logic signed [VelW-1:0]     vel_end;
   logic signed [AccW-1:0]     acc_end;
   logic                       continues, at_rest;
 
   logic [RowW-1:0]            head;
-  logic                       fifo_empty;
+  logic                       fifo_empty, fifo_full;
   logic [RowFlagW-1:0]        hd_flags;
   logic [PhaseW-1:0]          hd_phase;
   logic [SegClkW-1:0]         hd_clocks;
@@ -129,7 +148,7 @@ module sc_profile_exec (
     .pop_i   (pop),
     .head_o  (head),
     .empty_o (fifo_empty),
-    .full_o  (fifo_full_o),
+    .full_o  (fifo_full),
     .level_o (fifo_level_o)
   );
 
@@ -141,8 +160,14 @@ module sc_profile_exec (
   assign acc_end  = acc_q + AccW'(jerk_q);
   assign continues = hd_vel0 == vel_end && (hd_acc0 == acc_end || hd_flags[sc_pkg::RowFlagAccStep]);
   assign at_rest   = vel_end == '0 && acc_end == '0;
-  assign boundary  = run_q && !abort_i && left_q == SegClkW'(1);
+  assign boundary  = run_q && !stop_q && !abort_i && left_q == SegClkW'(1);
   assign move_done = boundary && flags_q[sc_pkg::RowFlagMoveEnd];
+  // The stream ends as planned at this boundary (no row follows).
+  assign ends      = flags_q[sc_pkg::RowFlagStreamEnd] || (fifo_empty && at_rest);
+  assign row_bad   = load && hd_clocks == '0;
+  assign stop_start = run_q && !stop_q && !abort_i &&
+                      ((stop_i && !(boundary && !load && ends)) ||
+                       (boundary && ((!load && !ends) || row_bad)));
 
   // The head row is loaded at the end of a row that does not end the
   // stream, when it continues exactly, and on an accepted START.
@@ -162,6 +187,7 @@ module sc_profile_exec (
     fault_d    = fault_q;
     underrun_d = underrun_q;
     discont_d  = discont_q;
+    stop_d     = stop_q;
     idx_d      = idx_q;
     flags_d    = flags_q;
     left_d     = left_q;
@@ -180,6 +206,7 @@ module sc_profile_exec (
     if (run_q) begin
       if (abort_i) begin
         run_d   = 1'b0;
+        stop_d  = 1'b0;
         vel_d   = '0;
         acc_d   = '0;
         jerk_d  = '0;
@@ -196,26 +223,31 @@ module sc_profile_exec (
           step_fwd_d = 1'b1;
           pint_d     = pint_q + PosIntW'(1);
         end
-        if (left_q == SegClkW'(1)) begin
+        if (stop_q) begin
+          if (sg_active) begin
+            vel_d = vel_end;
+            acc_d = acc_q + AccW'(sg_jerk);
+          end else begin
+            // v = a = 0: the stop is over
+            run_d  = 1'b0;
+            stop_d = 1'b0;
+          end
+        end else if (left_q == SegClkW'(1)) begin
           if (move_done) begin
             move_idx_d = move_idx_q + MoveIdxW'(1);
             bpos_d     = pint_d;
           end
-          if (!load) begin
-            run_d  = 1'b0;
-            vel_d  = '0;
-            acc_d  = '0;
-            jerk_d = '0;
-            if (flags_q[sc_pkg::RowFlagStreamEnd] || (fifo_empty && at_rest)) begin
-              finished_d = 1'b1;
-            end else begin
-              // A row that does not continue the motion, or none at all:
-              // the rest of the stream is not run.
-              underrun_d = fifo_empty;
-              discont_d  = !fifo_empty;
-              phase_d    = sc_pkg::PhAbort;
-              flush      = 1'b1;
-            end
+          if (!load && ends) begin
+            run_d      = 1'b0;
+            vel_d      = '0;
+            acc_d      = '0;
+            jerk_d     = '0;
+            finished_d = 1'b1;
+          end else if (!load) begin
+            // No row, or one that does not continue the motion: the rest
+            // of the stream is not run.
+            underrun_d = fifo_empty;
+            discont_d  = !fifo_empty;
           end
         end else begin
           left_d = left_q - SegClkW'(1);
@@ -237,7 +269,16 @@ module sc_profile_exec (
       end
     end
 
-    if (load) begin
+    if (stop_start) begin
+      // The running row's integration, then the stop's jerk.
+      stop_d  = 1'b1;
+      vel_d   = vel_end;
+      acc_d   = acc_end;
+      jerk_d  = '0;
+      phase_d = sc_pkg::PhStop;
+      flush   = 1'b1;
+      if (row_bad) fault_d = 1'b1;
+    end else if (load) begin
       if (hd_clocks == '0) begin
         // A zero-length row is malformed: stop rather than guess.
         run_d   = 1'b0;
@@ -259,8 +300,23 @@ module sc_profile_exec (
       end
     end
 
-    if (fifo_flush_i) flush = 1'b1;
+    // Rows pushed while stopping were planned for motion that is not run.
+    if (fifo_flush_i || stop_q) flush = 1'b1;
   end
+
+  sc_stop_gen u_stop (
+    .clk_i,
+    .rst_ni,
+    .start_i     (stop_start),
+    .vel_i       (vel_end),
+    .acc_i       (acc_end),
+    .stop_jerk_i,
+    .stop_acc_i,
+    .active_o    (sg_active),
+    .done_o      (unused_sg_done),
+    .overshoot_o (sg_overshoot),
+    .jerk_o      (sg_jerk)
+  );
 
   always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
@@ -269,6 +325,7 @@ module sc_profile_exec (
       fault_q    <= 1'b0;
       underrun_q <= 1'b0;
       discont_q  <= 1'b0;
+      stop_q     <= 1'b0;
       idx_q      <= '0;
       flags_q    <= '0;
       left_q     <= '0;
@@ -289,6 +346,7 @@ module sc_profile_exec (
       fault_q    <= fault_d;
       underrun_q <= underrun_d;
       discont_q  <= discont_d;
+      stop_q     <= stop_d;
       idx_q      <= idx_d;
       flags_q    <= flags_d;
       left_q     <= left_d;
@@ -316,6 +374,9 @@ module sc_profile_exec (
   assign fault_o        = fault_q;
   assign underrun_o     = underrun_q;
   assign discont_o      = discont_q;
+  assign stopping_o     = stop_q;
+  assign overshoot_o    = sg_overshoot;
+  assign fifo_full_o    = fifo_full || stop_q;
   assign move_done_o    = move_done_q;
   assign move_idx_o     = move_idx_q;
   assign boundary_pos_o = bpos_q;
@@ -325,7 +386,7 @@ module sc_profile_exec (
   assign pos_frac_o     = frac_q;
   assign vel_o          = vel_q;
   assign acc_o          = acc_q;
-  assign jerk_o         = jerk_q;
+  assign jerk_o         = stop_q ? sg_jerk : jerk_q;  // the jerk applied this clock
   assign phase_o        = phase_q;
   assign seg_idx_o      = idx_q;
 

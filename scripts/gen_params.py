@@ -29,10 +29,13 @@ def main(src, dst):
     if not params:
         sys.exit(f"{src}: no localparam int found")
     phases = re.findall(r"localparam\s+logic\s*\[3:0\]\s*(Ph\w+)\s*=\s*4'd(\d+)\s*;", body)
+    # constants wider than an int (up to 64 bits): localparam logic [W-1:0] Name = W'dN;
+    wide = re.findall(r"localparam\s+logic\s*\[(\d+):0\]\s*((?!Ph)\w+)\s*=\s*(\d+)'d([0-9_]+)\s*;", body)
     all_lp = re.findall(r"localparam\b[^;]*;", body)
-    if len(all_lp) != len(params) + len(phases):
-        sys.exit(f"{src}: {len(all_lp)} localparams but only {len(params)} of form "
-                 "'localparam int Name = N;' - extend gen_params.py")
+    if len(all_lp) != len(params) + len(phases) + len(wide):
+        sys.exit(f"{src}: {len(all_lp)} localparams but only {len(params) + len(phases) + len(wide)} of the forms "
+                 "'localparam int Name = N;', 'localparam logic [3:0] PhName = 4'dN;', "
+                 "'localparam logic [W-1:0] Name = W'dN;' - extend gen_params.py")
     if not phases:
         sys.exit(f"{src}: no phase codes (localparam logic [3:0] Ph* = 4'dN;) found")
     items = phases
@@ -52,6 +55,11 @@ def main(src, dst):
             if v >= (1 << int(size)) or v >= (1 << 31):
                 sys.exit(f"{src}: {name} = {value} does not fit {size} bits / int")
         out.append(f"inline constexpr int {name} = {v};")
+    for msb, name, size, value in wide:
+        width, v = int(msb) + 1, int(value.replace("_", ""))
+        if int(size) != width or width > 64 or v >= (1 << width):
+            sys.exit(f"{src}: {name} = {size}'d{value} does not fit logic [{msb}:0] / 64 bits")
+        out.append(f"inline constexpr uint64_t {name} = {v}ull;")
     out += ["", "enum class Phase : uint8_t {"]
     for name, value in items:
         out.append(f"  {name} = {value},")

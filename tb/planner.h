@@ -35,6 +35,7 @@ SC_SAME_PHASE(PhDecJerkDown)
 SC_SAME_PHASE(PhDone)
 SC_SAME_PHASE(PhAbort)
 SC_SAME_PHASE(PhFault)
+SC_SAME_PHASE(PhStop)
 #undef SC_SAME_PHASE
 static_assert(scurve::hw::FracBits == FracBits && scurve::hw::SegClkW == SegClkW && scurve::hw::MaxSegs == MaxSegs,
               "host library and model built from different packages");

@@ -18,6 +18,7 @@ RtlCore::RtlCore() : top_(std::make_unique<VerilatedTop<Vsc_axis_core>>("sc_axis
   put_bits(m.pos_frac0_i, 0, FracBits, 0);
   m.start_i = 0;
   m.abort_i = 0;
+  drive_stop(m, last_.stop, last_.stop_jerk, last_.stop_acc);
   // No external step source on the plain core (ExtStep = 0).
   m.ext_sel_i = 0;
   m.ext_req_i = 0;
@@ -53,6 +54,9 @@ void RtlCore::step(const CoreInputs& in) {
   if (in.pos_frac0 != last_.pos_frac0) put_bits(m.pos_frac0_i, 0, FracBits, in.pos_frac0);
   if (in.start != last_.start) m.start_i = in.start;
   if (in.abort != last_.abort) m.abort_i = in.abort;
+  if (in.stop != last_.stop || in.stop_jerk != last_.stop_jerk || in.stop_acc != last_.stop_acc) {
+    drive_stop(m, in.stop, in.stop_jerk, in.stop_acc);
+  }
   last_.enable = in.enable;
   last_.cfg = in.cfg;
   last_.row_push = in.row_push;
@@ -60,6 +64,9 @@ void RtlCore::step(const CoreInputs& in) {
   last_.pos_frac0 = in.pos_frac0;
   last_.start = in.start;
   last_.abort = in.abort;
+  last_.stop = in.stop;
+  last_.stop_jerk = in.stop_jerk;
+  last_.stop_acc = in.stop_acc;
   tick();
 }
 

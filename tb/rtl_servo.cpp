@@ -39,6 +39,7 @@ void RtlServo::step(const ServoInputs& in) {
   }
   m.start_i = in.start;
   m.abort_i = in.abort;
+  drive_stop(m, in.stop, in.stop_jerk, in.stop_acc);
   m.enc_a_i = in.enc_a;
   m.enc_b_i = in.enc_b;
   top_->tick();

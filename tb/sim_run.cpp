@@ -131,7 +131,7 @@ SimResult run_move(const Plan& plan, const PulseTiming& timing, const Limits4Che
       if (!checker.check(clock, model) && checker.should_stop()) stopped = true;
       cur = &o;
     } else {
-      if (rtl) rtl->read_outputs(out); else out = model.outputs();
+      if (rtl) rtl->read_outputs(out); else model.read_outputs(out);
       cur = &out;
     }
     pins.on_clock(clock, *cur);
@@ -165,7 +165,7 @@ SimResult run_move(const Plan& plan, const PulseTiming& timing, const Limits4Che
         peaks.on_clock(before, true);
         model.fast_forward(in, n);
         clock += n;
-        out = model.outputs();
+        model.read_outputs(out);
         cur = &out;
         pins.on_clock(clock - 1, out);
         peaks.have_prev = false;

@@ -166,6 +166,14 @@ void drive_row(V& m, const Row& r) {
   put_bits(m.row_vel0_i, 0, VelW, u128(s.vel0));
 }
 
+// The controlled-stop inputs of the axis tops (sc_axis_core, sc_servo_axis).
+template <class V>
+void drive_stop(V& m, bool stop, uint64_t stop_jerk, uint64_t stop_acc) {
+  m.stop_i = stop;
+  m.stop_jerk_i = stop_jerk & ((uint64_t(1) << JerkW) - 1);
+  m.stop_acc_i = stop_acc;
+}
+
 // The STEP/DIR and status outputs every top with an axis has under the same
 // port names (sc_axis_core, sc_servo_axis, sc_axi_axis, sc_axi_servo).
 template <class V, class O>
@@ -189,6 +197,8 @@ void read_axis_outputs(const V& m, O& o) {
   o.ref_pos_int = int32_t(m.ref_pos_int_o);
   o.underrun = m.underrun_o;
   o.discont = m.discont_o;
+  o.stopping = m.stopping_o;
+  o.overshoot = m.overshoot_o;
   o.move_done = m.move_done_o;
   o.move_idx = m.move_idx_o;
   o.boundary_pos = int32_t(m.boundary_pos_o);

@@ -181,6 +181,9 @@ StreamRunStats lockstep_stream(std::mt19937_64& g, size_t n_moves, double push_r
   in.enable = true;
   in.cfg = t;
   in.pos_frac0 = kOne / 2;  // read when the executor starts, after the arming
+  // An underrun stops under control within the stream's own limits.
+  in.stop_jerk = uint64_t(limits.j_max * kTwoPowFrac / (double(ClkHz) * ClkHz * ClkHz));
+  in.stop_acc = uint64_t(limits.a_max * kTwoPowFrac / (double(ClkHz) * ClkHz));
   auto tick = [&](const CoreInputs& ci) {
     rtl.step(ci);
     model.step(ci);

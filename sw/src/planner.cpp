@@ -470,6 +470,7 @@ const char* phase_name(Phase p) {
     case Phase::PhDone: return "done";
     case Phase::PhAbort: return "abort";
     case Phase::PhFault: return "fault";
+    case Phase::PhStop: return "stop";
   }
   return "?";
 }

@@ -405,6 +405,8 @@ class PinCoreImpl : public PinCore {
     o.fault_overrun = p.fault_overrun;
     o.underrun = p.underrun;
     o.discont = p.discont;
+    o.stopping = p.stopping;
+    o.overshoot = p.overshoot;
     o.move_done = p.move_done;
     o.fifo_full = p.fifo_full;
     o.move_idx = p.move_idx;
@@ -432,6 +434,9 @@ void PinCore::encode(const CoreInputs& in, PinInputs* p) {
   p->fifo_flush = in.fifo_flush;
   p->start = in.start;
   p->abort = in.abort;
+  p->stop = in.stop;
+  p->stop_jerk = in.stop_jerk & ((uint64_t(1) << JerkW) - 1);
+  p->stop_acc = in.stop_acc;
   p->cfg_high = in.cfg.high;
   p->cfg_low = in.cfg.low;
   p->cfg_setup = in.cfg.setup;

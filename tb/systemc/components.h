@@ -98,7 +98,8 @@ class Stimulus {
 // Pin-level view of the core's ports for the --sc DUT (plain words, so the
 // SystemC side needs no model types). Wide values: little-endian 32-bit words.
 struct PinInputs {
-  bool enable = false, row_push = false, fifo_flush = false, start = false, abort = false;
+  bool enable = false, row_push = false, fifo_flush = false, start = false, abort = false, stop = false;
+  uint64_t stop_jerk = 0, stop_acc = 0;
   uint32_t cfg_high = 0, cfg_low = 0, cfg_setup = 0, cfg_hold = 0;
   uint32_t row_flags = 0, seg_phase = 0, seg_clocks = 0;
   uint64_t seg_jerk = 0, seg_acc0 = 0;
@@ -108,6 +109,7 @@ struct PinOutputs {
   bool step = false, dir = false, en = false, busy = false, done = false;
   bool fault_table = false, fault_overrun = false;
   bool underrun = false, discont = false, move_done = false, fifo_full = false;
+  bool stopping = false, overshoot = false;
   uint32_t phase = 0, pulse_count = 0, ref_pos_int = 0, seg_idx = 0, step_pending = 0;
   uint32_t move_idx = 0, boundary_pos = 0, fifo_level = 0;
   uint64_t ref_acc = 0, ref_jerk = 0;

@@ -48,7 +48,8 @@ class PinSequencer : public sc_core::sc_module {
   sc_core::sc_port<PlantIf> plant;
   sc_core::sc_port<TraceIf, 1, sc_core::SC_ZERO_OR_MORE_BOUND> trace;
 
-  sc_out<bool> rst_no, enable_o, row_push_o, fifo_flush_o, start_o, abort_o;
+  sc_out<bool> rst_no, enable_o, row_push_o, fifo_flush_o, start_o, abort_o, stop_o;
+  sc_out<uint64_t> stop_jerk_o, stop_acc_o;
   sc_out<uint32_t> cfg_high_o, cfg_low_o, cfg_setup_o, cfg_hold_o;
   sc_out<uint32_t> row_flags_o, seg_phase_o, seg_clocks_o;
   sc_out<uint64_t> seg_jerk_o, seg_acc0_o;
@@ -56,7 +57,7 @@ class PinSequencer : public sc_core::sc_module {
   sc_out<FracBv> pos_frac0_o;
 
   sc_in<bool> step_i, dir_i, en_i, busy_i, done_i, fault_table_i, fault_overrun_i;
-  sc_in<bool> underrun_i, discont_i, move_done_i, fifo_full_i;
+  sc_in<bool> underrun_i, discont_i, move_done_i, fifo_full_i, stopping_i, overshoot_i;
   sc_in<uint32_t> phase_i, pulse_count_i, ref_pos_int_i, seg_idx_i, step_pending_i;
   sc_in<uint32_t> move_idx_i, boundary_pos_i, fifo_level_i;
   sc_in<uint64_t> ref_acc_i, ref_jerk_i;
@@ -92,6 +93,9 @@ class PinSequencer : public sc_core::sc_module {
     pos_frac0_o.write(to_bv<kFracW>(p.pos_frac0));
     start_o.write(p.start);
     abort_o.write(p.abort);
+    stop_o.write(p.stop);
+    stop_jerk_o.write(p.stop_jerk);
+    stop_acc_o.write(p.stop_acc);
   }
   void sample() {
     PinOutputs p;
@@ -104,6 +108,8 @@ class PinSequencer : public sc_core::sc_module {
     p.fault_overrun = fault_overrun_i.read();
     p.underrun = underrun_i.read();
     p.discont = discont_i.read();
+    p.stopping = stopping_i.read();
+    p.overshoot = overshoot_i.read();
     p.move_done = move_done_i.read();
     p.fifo_full = fifo_full_i.read();
     p.move_idx = move_idx_i.read();
@@ -179,7 +185,8 @@ int sc_main(int argc, char** argv) {
 
   sc_core::sc_clock clk("clk", sc_core::sc_time(50, sc_core::SC_NS));
   sc_signal<bool> rst_n("rst_n"), enable("enable"), row_push("row_push"), fifo_flush("fifo_flush"), start("start"),
-      abort_sig("abort");
+      abort_sig("abort"), stop_sig("stop");
+  sc_signal<uint64_t> stop_jerk("stop_jerk"), stop_acc("stop_acc");
   sc_signal<uint32_t> cfg_high("cfg_high"), cfg_low("cfg_low"), cfg_setup("cfg_setup"), cfg_hold("cfg_hold");
   sc_signal<uint32_t> row_flags("row_flags"), seg_phase("seg_phase"), seg_clocks("seg_clocks");
   sc_signal<uint64_t> seg_jerk("seg_jerk"), seg_acc0("seg_acc0");
@@ -187,7 +194,7 @@ int sc_main(int argc, char** argv) {
   sc_signal<FracBv> pos_frac0("pos_frac0");
   sc_signal<bool> step("step"), dir("dir"), en("en"), busy("busy"), done("done"), fault_table("fault_table"),
       fault_overrun("fault_overrun"), underrun("underrun"), discont("discont"), move_done("move_done"),
-      fifo_full("fifo_full");
+      fifo_full("fifo_full"), stopping("stopping"), overshoot("overshoot");
   sc_signal<uint32_t> phase("phase"), pulse_count("pulse_count"), ref_pos_int("ref_pos_int"), seg_idx("seg_idx"),
       step_pending("step_pending"), move_idx("move_idx"), boundary_pos("boundary_pos"), fifo_level("fifo_level");
   sc_signal<uint64_t> ref_acc("ref_acc"), ref_jerk("ref_jerk");
@@ -219,6 +226,9 @@ int sc_main(int argc, char** argv) {
   dut.pos_frac0_i(pos_frac0);
   dut.start_i(start);
   dut.abort_i(abort_sig);
+  dut.stop_i(stop_sig);
+  dut.stop_jerk_i(stop_jerk);
+  dut.stop_acc_i(stop_acc);
   // No external step source on the plain core (ExtStep = 0): one constant
   // low signal for every ext_* input; the extra outputs are not observed.
   sc_signal<bool> ext_off("ext_off");
@@ -245,6 +255,8 @@ int sc_main(int argc, char** argv) {
   dut.fault_overrun_o(fault_overrun);
   dut.underrun_o(underrun);
   dut.discont_o(discont);
+  dut.stopping_o(stopping);
+  dut.overshoot_o(overshoot);
   dut.move_done_o(move_done);
   dut.move_idx_o(move_idx);
   dut.boundary_pos_o(boundary_pos);
@@ -278,6 +290,9 @@ int sc_main(int argc, char** argv) {
   seq.fifo_flush_o(fifo_flush);
   seq.start_o(start);
   seq.abort_o(abort_sig);
+  seq.stop_o(stop_sig);
+  seq.stop_jerk_o(stop_jerk);
+  seq.stop_acc_o(stop_acc);
   seq.cfg_high_o(cfg_high);
   seq.cfg_low_o(cfg_low);
   seq.cfg_setup_o(cfg_setup);
@@ -298,6 +313,8 @@ int sc_main(int argc, char** argv) {
   seq.fault_overrun_i(fault_overrun);
   seq.underrun_i(underrun);
   seq.discont_i(discont);
+  seq.stopping_i(stopping);
+  seq.overshoot_i(overshoot);
   seq.move_done_i(move_done);
   seq.fifo_full_i(fifo_full);
   seq.move_idx_i(move_idx);

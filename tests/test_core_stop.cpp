@@ -1,0 +1,436 @@
+// Controlled stops through the whole open-loop core (sc_axis_core with its
+// executor, FIFO and stop generator): a planned move is interrupted at a
+// random clock by STOP, by an underrun (only part of its rows pushed) or by
+// a discontinuity (a row that does not continue the motion), with random
+// stop limits. RTL and model in lockstep every clock; the pin monitor checks
+// every pulse against the reference position; the stop itself is checked
+// from the outputs by the property checker of the stop generator's tests
+// (tests/stop_harness.h, which knows nothing of the algorithm) and against
+// the continuous closed-form stopping distance.
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "lockstep.h"
+#include "pin_monitor.h"
+#include "planner.h"
+#include "rtl_core.h"
+#include "stop_harness.h"
+
+using namespace sc;
+using stoptest::ld;
+
+namespace {
+
+enum class Trigger { Stop, Underrun, Discontinuity };
+
+const char* trigger_name(Trigger t) {
+  switch (t) {
+    case Trigger::Stop: return "STOP";
+    case Trigger::Underrun: return "underrun";
+    case Trigger::Discontinuity: return "discontinuity";
+  }
+  return "?";
+}
+
+ld log_uniform(std::mt19937_64& g, ld lo, ld hi) {
+  std::uniform_real_distribution<double> u(std::log(double(lo)), std::log(double(hi)));
+  return std::exp(ld(u(g)));
+}
+
+// Physical limits in executor LSBs at the model's clock.
+uint64_t jerk_lsb(ld j) { return uint64_t(j * stoptest::kLsb / (stoptest::kF * stoptest::kF * stoptest::kF)); }
+uint64_t acc_lsb(ld a) { return uint64_t(a * stoptest::kLsb / (stoptest::kF * stoptest::kF)); }
+
+ld position_lsb(const CoreOutputs& o) { return ld(o.ref_pos_int) * stoptest::kLsb + ld(o.ref_pos_frac); }
+
+struct CampaignStats {
+  int stops = 0, infeasible = 0, by_trigger[3] = {0, 0, 0};
+  uint64_t clocks = 0;
+  ld worst_excess = -1e30;  // stopping distance - closed form, pulses (feasible stops)
+};
+
+// One move interrupted once. Returns false after a failure.
+bool run_case(std::mt19937_64& g, CampaignStats& st, int index) {
+  // A move short enough to simulate quickly, in either direction.
+  MoveRequest req;
+  PulseTiming t;
+  t.high = uint16_t(2 + g() % 10);
+  t.low = uint16_t(2 + g() % 10);
+  t.setup = uint16_t(g() % 40);
+  t.hold = uint16_t(g() % 40);
+  Plan plan;
+  for (;;) {
+    req.distance = int64_t(50 + g() % 20000) * ((g() & 1) ? 1 : -1);
+    req.v_cruise = double(log_uniform(g, 2e3, 1.5e5));
+    req.a_max = double(log_uniform(g, 1e4, 2e6));
+    req.j_max = double(log_uniform(g, 1e5, 5e9));
+    req.kind = g() % 5 == 0 ? ProfileKind::Trapezoid : ProfileKind::SCurve;
+    PlanResult r = plan_move(req, t);
+    if (auto* p = std::get_if<Plan>(&r); p && p->total_clocks < 400'000 && p->segments.size() >= 2) {
+      plan = *p;
+      break;
+    }
+  }
+  const Trigger trig = Trigger(g() % 3);
+  // Stop limits around the plan's own (below them a stop may not avoid a
+  // reversal: the overshoot case).
+  const ld J = log_uniform(g, 0.3, 5) * ld(req.kind == ProfileKind::Trapezoid ? 1e9 : req.j_max);
+  const ld D = log_uniform(g, 0.3, 5) * ld(req.a_max);
+  CoreInputs in;
+  in.enable = true;
+  in.cfg = t;
+  in.pos_frac0 = plan.pos_frac0;
+  in.stop_jerk = std::max<uint64_t>(1, jerk_lsb(J));
+  in.stop_acc = std::max<uint64_t>(1, acc_lsb(D));
+
+  std::vector<Row> rows = move_rows(plan.segments);
+  // Underrun: only the first k rows; discontinuity: row k off by one LSB.
+  const size_t k = 1 + g() % (rows.size() - 1);
+  if (trig == Trigger::Underrun) rows.resize(k);
+  if (trig == Trigger::Discontinuity) rows[k].seg.vel0 += (g() & 1) ? 1 : -1;
+
+  RtlCore rtl;
+  rtl.reset();
+  AxisCore model;
+  LockstepChecker chk;
+  PinRules rules{t};
+  rules.profile_phases = false;  // the stop follows no planned phase
+  rules.accounting = StepAccounting::ReferencePosition;
+  PinMonitor pins(rules);
+  uint64_t clock = 0;
+  const CoreOutputs* cur = nullptr;  // the RTL's outputs of the last clock (a lockstep ring slot)
+  // held: the inputs of the previous clock again, no row pushed.
+  auto tick = [&](const CoreInputs& ci, bool held = false) {
+    if (held) {
+      rtl.tick();
+      model.tick();
+    } else {
+      rtl.step(ci);
+      model.step(ci);
+    }
+    CoreOutputs& o = chk.slot(clock);
+    rtl.read_outputs(o);
+    chk.check(clock, model);
+    pins.on_clock(clock, o);
+    cur = &o;
+    ++clock;
+  };
+  for (const Row& r : rows) {
+    CoreInputs w = in;
+    w.row_push = true;
+    w.row = r;
+    tick(w);
+  }
+  CoreInputs s = in;
+  s.start = true;
+  tick(s);
+  const uint64_t stop_at = clock + t.setup + 3 + g() % std::max<uint64_t>(1, plan.total_clocks - 2);
+
+  const std::string what = fmt::format("case {}: {} of a {}-pulse move at clock {}, J {:.3g}, D {:.3g}", index,
+                                       trigger_name(trig), req.distance, stop_at, double(J), double(D));
+  bool stopping_seen = false, stop_ended = false;
+  std::unique_ptr<stoptest::StopChecker> props;
+  stoptest::ClosedForm cf;
+  ld pos0 = 0;
+  int64_t prev_acc = 0;
+  uint64_t rest_clock = 0;
+  const uint64_t limit = clock + plan.total_clocks + 20'000'000;
+  bool held = false;
+  while (clock < limit && !chk.should_stop()) {
+    if (trig == Trigger::Stop && clock == stop_at) {
+      CoreInputs ci = in;
+      ci.stop = true;
+      tick(ci);
+      held = false;
+    } else {
+      tick(in, held);
+      held = true;
+    }
+    const CoreOutputs& o = *cur;
+    if (o.stopping && !stopping_seen) {
+      // The first stop clock shows the state the stop starts from.
+      stopping_seen = true;
+      stoptest::StopCase c{o.ref_vel, o.ref_acc, in.stop_jerk, in.stop_acc};
+      props = std::make_unique<stoptest::StopChecker>(c);
+      cf = stoptest::closed_form(ld(o.ref_vel), ld(o.ref_acc), ld(in.stop_jerk), ld(in.stop_acc));
+      pos0 = position_lsb(o);
+      prev_acc = o.ref_acc;
+      EXPECT_EQ(o.phase, uint8_t(Phase::PhStop)) << what;
+      EXPECT_TRUE(o.fifo_full) << what << ": no row is taken while stopping";
+      EXPECT_EQ(o.underrun, trig == Trigger::Underrun) << what;
+      EXPECT_EQ(o.discont, trig == Trigger::Discontinuity) << what;
+    }
+    if (stopping_seen && !stop_ended) {
+      stoptest::Integrator x;
+      x.v = o.ref_vel;
+      x.a = prev_acc;
+      props->after_clock(x);
+      if (o.stopping) {
+        x.a = o.ref_acc;
+        props->clock(x, o.ref_jerk);
+        prev_acc = o.ref_acc;
+      } else {
+        stop_ended = true;
+        rest_clock = clock;
+        x.a = o.ref_acc;
+        props->at_end(x);
+        EXPECT_FALSE(o.busy) << what;
+        EXPECT_FALSE(o.done) << what << ": a stopped stream is not done";
+        EXPECT_EQ(o.phase, uint8_t(Phase::PhStop)) << what;
+        EXPECT_EQ(o.fifo_level, 0) << what;
+        EXPECT_EQ(o.overshoot, !props->feasible()) << what;
+        const ld dist = (position_lsb(o) - pos0) * props->dir() / stoptest::kLsb;
+        if (props->feasible()) {
+          const ld excess = dist - cf.dist / stoptest::kLsb;
+          EXPECT_LT(std::fabs(double(excess)), 1.0) << what << ": distance " << double(dist) << " vs closed form "
+                                                     << double(cf.dist / stoptest::kLsb);
+          st.worst_excess = std::max(st.worst_excess, excess);
+        } else {
+          ++st.infeasible;
+        }
+        break;
+      }
+    }
+    if (!stopping_seen && !o.busy && clock > stop_at + 4) break;  // the move ended first
+  }
+  // Nothing moves after the stop (or after the move, when it ended first).
+  const int32_t pos_end = cur->ref_pos_int;
+  for (int i = 0; i < 3000; ++i) {
+    tick(in, held);
+    held = true;
+    EXPECT_FALSE(cur->step) << what << ": a step after rest";
+    EXPECT_FALSE(cur->busy) << what;
+  }
+  EXPECT_EQ(rtl.outputs().ref_pos_int, pos_end) << what;
+  pins.finish(clock);
+  EXPECT_TRUE(chk.errors().empty()) << what << "\n" << chk.finish();
+  for (const std::string& e : pins.errors()) ADD_FAILURE() << what << ": " << e;
+  EXPECT_EQ(pins.net_steps(), int64_t(rtl.outputs().ref_pos_int)) << what << ": every reference step on the pins";
+  if (props) {
+    for (const std::string& e : props->errors()) ADD_FAILURE() << what << ": " << e;
+  }
+  // A STOP after the move's end, or an underrun/discontinuity that the move
+  // did not reach, stops nothing; every trigger that came while moving did.
+  if (stopping_seen) {
+    EXPECT_TRUE(stop_ended) << what << ": the stop did not end";
+    ++st.stops;
+    ++st.by_trigger[int(trig)];
+  } else {
+    EXPECT_TRUE(trig == Trigger::Stop) << what << ": an underrun or discontinuity must stop";
+  }
+  (void)rest_clock;
+  st.clocks += clock;
+  return !::testing::Test::HasFailure();
+}
+
+void stop_campaign(int cases, uint64_t seed) {
+  std::mt19937_64 g(seed);
+  CampaignStats st;
+  for (int i = 0; i < cases; ++i) {
+    if (!run_case(g, st, i)) return;
+  }
+  EXPECT_GT(st.by_trigger[0], cases / 5);
+  EXPECT_GT(st.by_trigger[1], cases / 5);
+  EXPECT_GT(st.by_trigger[2], cases / 5);
+  ::testing::Test::RecordProperty("stops", std::to_string(st.stops));
+  ::testing::Test::RecordProperty("clocks", std::to_string(st.clocks));
+  std::printf("[stop] %d stops (STOP %d, underrun %d, discontinuity %d; %d not stoppable without reversal), "
+              "%llu clocks in lockstep, worst distance - closed form %+.4f pulse\n",
+              st.stops, st.by_trigger[0], st.by_trigger[1], st.by_trigger[2], st.infeasible,
+              (unsigned long long)st.clocks, double(st.worst_excess));
+}
+
+// The core with rows loaded, started and running its first row.
+struct RunningCore {
+  RtlCore rtl;
+  AxisCore model;
+  LockstepChecker chk;
+  CoreInputs in;
+  uint64_t clock = 0;
+  Plan plan;
+  RunningCore() {
+    rtl.reset();
+    MoveRequest req;
+    req.distance = 3000;
+    req.v_cruise = 40000;
+    req.a_max = 4e5;
+    req.j_max = 4e7;
+    plan = std::get<Plan>(plan_move(req, PulseTiming{}));
+    in.enable = true;
+    in.cfg = PulseTiming{};
+    in.pos_frac0 = plan.pos_frac0;
+    in.stop_jerk = jerk_lsb(4e7);
+    in.stop_acc = acc_lsb(4e5);
+    for (const Row& r : move_rows(plan.segments)) {
+      CoreInputs w = in;
+      w.row_push = true;
+      w.row = r;
+      tick(w);
+    }
+  }
+  void tick(const CoreInputs& ci) {
+    rtl.step(ci);
+    model.step(ci);
+    chk.compare(clock++, rtl.outputs(), model.outputs());
+  }
+  void tick() { tick(in); }
+  CoreOutputs out() const { return rtl.outputs(); }
+};
+
+}  // namespace
+
+TEST(CoreStop, RandomStopsUnderrunsAndDiscontinuitiesStopUnderControl) { stop_campaign(48, 5); }
+
+TEST(CoreStopLong, ThousandRandomStopsStopUnderControl) { stop_campaign(1000, 6); }
+
+TEST(CoreStop, StopWhileIdleChangesNothing) {
+  RunningCore c;  // rows loaded, not started
+  CoreInputs s = c.in;
+  s.stop = true;
+  c.tick(s);
+  for (int i = 0; i < 20; ++i) c.tick();
+  const CoreOutputs o = c.out();
+  EXPECT_FALSE(o.busy);
+  EXPECT_FALSE(o.stopping);
+  EXPECT_EQ(o.phase, uint8_t(Phase::PhIdle));
+  EXPECT_EQ(o.fifo_level, c.plan.segments.size()) << "the queued rows stay";
+  EXPECT_FALSE(o.underrun || o.discont || o.fault_table);
+  EXPECT_TRUE(c.chk.errors().empty()) << c.chk.finish();
+}
+
+TEST(CoreStop, StopWhileArmingDropsTheStart) {
+  RunningCore c;
+  c.in.cfg.setup = 200;  // a long arming
+  for (int i = 0; i < 4; ++i) c.tick();
+  CoreInputs s = c.in;
+  s.start = true;
+  c.tick(s);
+  for (int i = 0; i < 20; ++i) c.tick();
+  EXPECT_TRUE(c.out().busy) << "arming";
+  s = c.in;
+  s.stop = true;
+  c.tick(s);
+  for (int i = 0; i < 400; ++i) {
+    c.tick();
+    ASSERT_FALSE(c.out().step);
+  }
+  const CoreOutputs o = c.out();
+  EXPECT_FALSE(o.busy);
+  EXPECT_EQ(o.ref_pos_int, 0);
+  EXPECT_EQ(o.phase, uint8_t(Phase::PhIdle)) << "the executor never started";
+  EXPECT_TRUE(c.chk.errors().empty()) << c.chk.finish();
+}
+
+TEST(CoreStop, AbortDuringAStopIsImmediate) {
+  RunningCore c;
+  CoreInputs s = c.in;
+  s.start = true;
+  c.tick(s);
+  while (c.out().ref_vel < c.plan.segments[1].vel0 && c.clock < 1'000'000) c.tick();
+  s = c.in;
+  s.stop = true;
+  c.tick(s);
+  for (int i = 0; i < 40; ++i) c.tick();
+  ASSERT_TRUE(c.out().stopping);
+  ASSERT_NE(c.out().ref_vel, 0);
+  s = c.in;
+  s.abort = true;
+  c.tick(s);
+  c.tick();
+  c.tick();
+  const CoreOutputs o = c.out();
+  EXPECT_FALSE(o.stopping);
+  EXPECT_EQ(o.ref_vel, 0);
+  EXPECT_EQ(o.ref_acc, 0);
+  EXPECT_EQ(o.ref_jerk, 0);
+  EXPECT_EQ(o.phase, uint8_t(Phase::PhAbort));
+  EXPECT_TRUE(c.chk.errors().empty()) << c.chk.finish();
+}
+
+TEST(CoreStop, RowsPushedWhileStoppingAreRefusedAndAFreshStreamRunsAfter) {
+  RunningCore c;
+  CoreInputs s = c.in;
+  s.start = true;
+  c.tick(s);
+  for (int i = 0; i < 2000; ++i) c.tick();
+  s = c.in;
+  s.stop = true;
+  c.tick(s);
+  c.tick();
+  ASSERT_TRUE(c.out().stopping);
+  const std::vector<Row> rows = move_rows(c.plan.segments);
+  CoreInputs w = c.in;
+  w.row_push = true;
+  w.row = rows[0];
+  c.tick(w);
+  EXPECT_EQ(c.out().fifo_level, 0) << "a push while stopping is not taken";
+  EXPECT_TRUE(c.out().fifo_full) << "and the FIFO says so";
+  while (c.out().busy && c.clock < 2'000'000) c.tick();
+  ASSERT_FALSE(c.out().busy);
+  EXPECT_FALSE(c.out().fifo_full);
+  // The same move again, from where the stop left the axis: exact.
+  const int32_t p0 = c.out().ref_pos_int;
+  for (const Row& r : rows) {
+    w.row = r;
+    c.tick(w);
+  }
+  s = c.in;
+  s.start = true;
+  c.tick(s);
+  while ((c.out().busy || !c.out().done) && c.clock < 4'000'000) c.tick();
+  EXPECT_TRUE(c.out().done);
+  EXPECT_EQ(c.out().ref_pos_int - p0, c.plan.distance);
+  EXPECT_TRUE(c.chk.errors().empty()) << c.chk.finish();
+}
+
+// Stop limits ten times below the plan's, from a row boundary in its
+// acceleration: the stop first ramps the acceleration down (it starts above
+// the stop's deceleration limit), then brakes.
+TEST(CoreStop, LowLimitsStopAMoveFromItsAccelerationUnderControl) {
+  RtlCore rtl;
+  rtl.reset();
+  AxisCore model;
+  LockstepChecker chk;
+  MoveRequest req;
+  req.distance = 6000;
+  req.v_cruise = 30000;
+  req.a_max = 4e5;
+  req.j_max = 4e8;
+  const Plan plan = std::get<Plan>(plan_move(req, PulseTiming{}));
+  ASSERT_GE(plan.segments.size(), 3u);
+  std::vector<Row> rows = move_rows(plan.segments);
+  rows[2].seg.vel0 += 1;
+  CoreInputs in;
+  in.enable = true;
+  in.pos_frac0 = plan.pos_frac0;
+  in.stop_jerk = jerk_lsb(4e7);
+  in.stop_acc = acc_lsb(2e5);
+  uint64_t clock = 0;
+  auto tick = [&](const CoreInputs& ci) {
+    rtl.step(ci);
+    model.step(ci);
+    chk.compare(clock++, rtl.outputs(), model.outputs());
+  };
+  for (const Row& r : rows) {
+    CoreInputs w = in;
+    w.row_push = true;
+    w.row = r;
+    tick(w);
+  }
+  CoreInputs s = in;
+  s.start = true;
+  tick(s);
+  bool stopped = false;
+  while (clock < 40'000'000 && !chk.should_stop()) {
+    tick(in);
+    stopped = stopped || rtl.outputs().stopping;
+    if (stopped && !rtl.outputs().busy) break;
+  }
+  EXPECT_TRUE(stopped);
+  EXPECT_FALSE(rtl.outputs().busy);
+  EXPECT_TRUE(rtl.outputs().discont);
+  EXPECT_EQ(rtl.outputs().ref_vel, 0);
+  EXPECT_TRUE(chk.errors().empty()) << chk.finish();
+}
