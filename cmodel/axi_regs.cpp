@@ -19,7 +19,10 @@ u128 put_word(u128 v, int lsb, uint32_t w, int width) {
   return mask_bits((v & ~m) | (u128(w) << lsb), width);
 }
 uint32_t get_word(u128 v, int lsb) { return uint32_t(v >> lsb); }
-bool locked_addr(uint8_t a) {
+// The RegAddrW-bit address arithmetic of the RTL (wraps at the window).
+constexpr uint16_t kAddrMask = uint16_t((1u << RegAddrW) - 1);
+static_assert(RegAddrW <= 16, "AxiIn addresses are 16 bits");
+bool locked_addr(uint16_t a) {
   switch (a) {
     case RegPulseTime: case RegDirTime:
     case RegPosFrac0: case RegPosFrac0 + 4: case RegPosFrac0 + 8:
@@ -42,17 +45,17 @@ void AxiRegs::reset() {
   for (int i = 0; i < ClCfgWords; ++i) q_.cl[size_t(i)] = cl_reset(i);
 }
 
-int AxiRegs::cfg_index(uint8_t a) const {
-  const uint8_t off = uint8_t(a - RegClFirst);
+int AxiRegs::cfg_index(uint16_t a) const {
+  const uint16_t off = uint16_t((a - RegClFirst) & kAddrMask);
   return (servo_ && (off & 3) == 0 && (off >> 2) < ClCfgWords) ? (off >> 2) : -1;
 }
 
-int AxiRegs::stat_index(uint8_t a) const {
-  const uint8_t off = uint8_t(a - RegClStat);
+int AxiRegs::stat_index(uint16_t a) const {
+  const uint16_t off = uint16_t((a - RegClStat) & kAddrMask);
   return (servo_ && (off & 3) == 0 && (off >> 2) < ClStatWords) ? (off >> 2) : -1;
 }
 
-uint32_t AxiRegs::read_word(uint8_t a, const RegsSide& side, const CoreOutputs& core, const ServoStatus& st,
+uint32_t AxiRegs::read_word(uint16_t a, const RegsSide& side, const CoreOutputs& core, const ServoStatus& st,
                             uint8_t& resp) const {
   resp = kOkay;
   const bool busy_eff = busy(core);
@@ -132,7 +135,7 @@ void AxiRegs::step(const AxiIn& in, const RegsSide& side, const CoreOutputs& cor
 
   if (in.awvalid && !q.aw_full) {
     d.aw_full = true;
-    d.awaddr = uint8_t(in.awaddr & ((1u << RegAddrW) - 1));
+    d.awaddr = uint16_t(in.awaddr & kAddrMask);
   }
   if (in.wvalid && !q.w_full) {
     d.w_full = true;
@@ -147,7 +150,7 @@ void AxiRegs::step(const AxiIn& in, const RegsSide& side, const CoreOutputs& cor
     d.w_full = false;
     d.bvalid = true;
     d.bresp = kOkay;
-    const uint8_t a = q.awaddr;
+    const uint16_t a = q.awaddr;
     const bool closed_change = a == RegCtrl && (q.wstrb & 1) && (((wd >> CtrlClosedBit) & 1) != uint32_t(q.closed));
     if (busy_eff && (locked_addr(a) || cfg_index(a) >= 0 || closed_change)) {
       d.bresp = kSlvErr;
@@ -270,7 +273,7 @@ void AxiRegs::step(const AxiIn& in, const RegsSide& side, const CoreOutputs& cor
   if (do_read) {
     uint8_t resp = kOkay;
     d.rvalid = true;
-    d.rdata = read_word(uint8_t(in.araddr & ((1u << RegAddrW) - 1)), side, core, st, resp);
+    d.rdata = read_word(uint16_t(in.araddr & kAddrMask), side, core, st, resp);
     d.rresp = resp;
     if (resp != kOkay) set_bad = true;
   }

@@ -14,13 +14,13 @@ namespace sc {
 
 // AXI4-Lite inputs of the slave for one clock (what the master drives).
 struct AxiIn {
-  uint8_t awaddr = 0;
+  uint16_t awaddr = 0;  // RegAddrW bits used
   bool awvalid = false;
   uint32_t wdata = 0;
   uint8_t wstrb = 0;
   bool wvalid = false;
   bool bready = false;
-  uint8_t araddr = 0;
+  uint16_t araddr = 0;
   bool arvalid = false;
   bool rready = false;
 };
@@ -58,7 +58,7 @@ class AxiRegs {
  public:
   struct State {
     bool aw_full = false;
-    uint8_t awaddr = 0;
+    uint16_t awaddr = 0;
     bool w_full = false;
     uint32_t wdata = 0;
     uint8_t wstrb = 0;
@@ -113,10 +113,10 @@ class AxiRegs {
   const State& state() const { return q_; }
 
  private:
-  uint32_t read_word(uint8_t addr, const RegsSide& side, const CoreOutputs& core, const ServoStatus& st,
+  uint32_t read_word(uint16_t addr, const RegsSide& side, const CoreOutputs& core, const ServoStatus& st,
                      uint8_t& resp) const;
-  int cfg_index(uint8_t addr) const;   // -1: not a controller-settings word
-  int stat_index(uint8_t addr) const;  // -1: not a closed-loop status word
+  int cfg_index(uint16_t addr) const;   // -1: not a controller-settings word
+  int stat_index(uint16_t addr) const;  // -1: not a closed-loop status word
   bool servo_;
   State q_;
 };

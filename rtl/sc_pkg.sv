@@ -175,16 +175,18 @@ package sc_pkg;
   // docs/regmap.md and build/generated/sc_regmap.h (a ctest fails when the
   // committed docs differ). //@reg NAME ACCESS [wide=WidthParam] "text";
   // //@field REG NAME WIDTH [reset=N] "text" (LSB = the localparam's value).
-  // Any address not listed answers DECERR.
-  localparam int RegAddrW      = 8;       // byte address bits of the window
-  localparam int RegMapVersion = 512;     // 0x0200 = 2.0 (row FIFO)
+  // Any address not listed answers DECERR. The window is 1 KiB (256 words;
+  // the UART bridge's address byte is a word address so it reaches them all);
+  // 0x000 .. 0x0FC hold the 2.x map unchanged, the rest is free.
+  localparam int RegAddrW      = 10;      // byte address bits of the window
+  localparam int RegMapVersion = 768;     // 0x0300 = 3.0 (1 KiB window, UART word address)
   localparam int RegIdMagic    = 21315;   // 0x5343, ASCII "SC"
   localparam int RstPulseHigh  = 50;      // reset values of the pulse timing
   localparam int RstPulseLow   = 50;
   localparam int RstDirSetup   = 100;
   localparam int RstDirHold    = 100;
   localparam int RegId         = 32'h0000_0000;  //@reg ID RO "identification"
-  localparam int IdVersionLsb  = 0;      //@field ID VERSION 16 reset=512 "register map version, 0x0200 = 2.0"
+  localparam int IdVersionLsb  = 0;      //@field ID VERSION 16 reset=RegMapVersion "register map version, 0x0300 = 3.0"
   localparam int IdMagicLsb    = 16;     //@field ID MAGIC 16 reset=21315 "0x5343, ASCII 'SC'"
   localparam int RegCtrl       = 32'h0000_0004;  //@reg CTRL RW "control"
   localparam int CtrlEnableBit = 0;      //@field CTRL ENABLE 1 "drives the EN pin; START is refused while 0; ESTOP clears it"

@@ -3,6 +3,8 @@
 //
 //   host -> board  write: A5 01 addr d0 d1 d2 d3 crc     (data little-endian)
 //                  read : A5 02 addr crc
+//   addr: WORD address (bus byte address = addr * 4), so the one byte
+//   reaches all 256 words of the 1 KiB window (register map 3.0 on).
 //   board -> host  write: 5A status crc
 //                  read : 5A status d0 d1 d2 d3 crc
 //                  error: 5A 80 crc (CRC wrong) | 5A 81 crc (unknown command)
@@ -81,7 +83,7 @@ module sc_uart_bridge #(
 
   state_e          state_q, state_d;
   logic            is_write_q, is_write_d;
-  logic [AW-1:0]   addr_q, addr_d;
+  logic [7:0]      addr_q, addr_d;        // word address as received
   logic [31:0]     data_q, data_d;
   logic [1:0]      dcnt_q, dcnt_d;
   logic [7:0]      crc_q, crc_d;
@@ -165,7 +167,7 @@ module sc_uart_bridge #(
       SAddr: begin
         if (rx_valid_i) begin
           crc_d   = crc8(crc_q, rx_data_i);
-          addr_d  = AW'(rx_data_i);
+          addr_d  = rx_data_i;
           dcnt_d  = 2'd0;
           data_d  = '0;
           if (is_write_q) state_d = SData;
@@ -262,13 +264,14 @@ module sc_uart_bridge #(
     end
   end
 
-  assign m_axi_awaddr_o  = addr_q;
+  // word address -> byte address: always aligned, no alias inside the window
+  assign m_axi_awaddr_o  = AW'({addr_q, 2'b00});
   assign m_axi_awvalid_o = state_q == SWrite && !aw_done_q;
   assign m_axi_wdata_o   = data_q;
   assign m_axi_wstrb_o   = 4'hF;
   assign m_axi_wvalid_o  = state_q == SWrite && !w_done_q;
   assign m_axi_bready_o  = state_q == SWrite;
-  assign m_axi_araddr_o  = addr_q;
+  assign m_axi_araddr_o  = AW'({addr_q, 2'b00});
   assign m_axi_arvalid_o = state_q == SRead && a_pend_q;
   assign m_axi_rready_o  = state_q == SRead;
 

@@ -144,7 +144,7 @@ def parse(path):
     if not regs:
         sys.exit(f"{path}: no //@reg tags found")
     # expand wide registers into words, check overlaps
-    words, used = [], {}
+    words = []
     for reg in regs:
         if reg["wide"]:
             width = params.get(reg["wide"])
@@ -170,14 +170,32 @@ def parse(path):
             words.append({"name": reg["name"], "addr": reg["addr"], "access": reg["access"],
                           "desc": reg["desc"], "mask": mask, "reset": reset,
                           "fields": reg["fields"], "group": reg["name"], "servo": reg["servo"]})
-    for w in words:
-        if w["addr"] % 4 or w["addr"] >= (1 << params["RegAddrW"]):
-            sys.exit(f"{path}: {w['name']} address 0x{w['addr']:x} unaligned or outside the window")
-        if w["addr"] in used:
-            sys.exit(f"{path}: {w['name']} and {used[w['addr']]} share address 0x{w['addr']:02x}")
-        used[w["addr"]] = w["name"]
+    check_addresses(path, params, words)
     words.sort(key=lambda w: w["addr"])
     return params, words
+
+
+def check_addresses(path, params, words):
+    """Every register word inside the RegAddrW-bit window, word-aligned and
+    alone at its address; the window no larger than the UART bridge's
+    address byte reaches (256 words: the frame carries the word address)."""
+    aw = params.get("RegAddrW")
+    if aw is None:
+        sys.exit(f"{path}: RegAddrW (byte address bits of the register window) missing")
+    if not 2 < aw <= 10:
+        sys.exit(f"{path}: RegAddrW = {aw}: the window must hold 2..256 words (3 <= RegAddrW <= 10; "
+                 "the UART frame's address byte is a word address)")
+    top = (1 << aw) - 4
+    used = {}
+    for w in words:
+        where = f"{path}: register {w['name']} at 0x{w['addr']:03X}"
+        if w["addr"] % 4:
+            sys.exit(f"{where}: not word-aligned (byte addresses must be multiples of 4)")
+        if not 0 <= w["addr"] <= top:
+            sys.exit(f"{where}: outside the register window 0x000..0x{top:03X} (RegAddrW = {aw})")
+        if w["addr"] in used:
+            sys.exit(f"{where}: address already used by {used[w['addr']]}")
+        used[w["addr"]] = w["name"]
 
 
 def cstr(s):
@@ -318,8 +336,11 @@ def doc(params, words, enums=None):
     out = ["# Register map and UART protocol", "",
            "<!-- Generated from rtl/sc_pkg.sv by scripts/gen_regmap.py - do not edit;",
            "     ctest regmap_docs_in_sync fails when this file is stale. -->", "",
-           f"AXI4-Lite slave `sc_axi_regs` (in `sc_axi_axis` and `sc_axi_servo`), {p['RegAddrW']}-bit byte addresses, "
-           "32-bit registers. Any other address answers DECERR; a write to a read-only register "
+           f"AXI4-Lite slave `sc_axi_regs` (in `sc_axi_axis` and `sc_axi_servo`), {p['RegAddrW']}-bit byte addresses "
+           f"(a {1 << p['RegAddrW']}-byte window of {1 << (p['RegAddrW'] - 2)} words; register map "
+           f"{p['RegMapVersion'] >> 8}.{p['RegMapVersion'] & 0xFF}, ID.VERSION = 0x{p['RegMapVersion']:04X}), "
+           "32-bit registers. Any other address answers DECERR (addresses do not wrap: 0x100 is not 0x000); "
+           "a write to a read-only register "
            "answers SLVERR. Both set ERR.BAD_ACCESS and change nothing else. Reserved bits read 0 "
            "and ignore writes. WSTRB selects bytes (CMD, ERR, IRQ_STATUS and ROW_PUSH act on byte 0).", "",
            "Writes to PULSE_TIME, DIR_TIME, POS_FRAC0_*, CMD.START and CMD.FLUSH while "
@@ -380,7 +401,12 @@ def doc(params, words, enums=None):
             f"| read response | 0x{p['UartRspSync']:02X}, status, d0, d1, d2, d3, crc |",
             f"| error response | 0x{p['UartRspSync']:02X}, 0x{p['UartStCrcErr']:02X} (CRC wrong) "
             f"or 0x{p['UartStBadCmd']:02X} (unknown command), crc |", "",
-            "- data little-endian (d0 = bits 7:0); addr = byte address;",
+            f"- addr = WORD address: the bus byte address is addr * 4, so the one byte reaches all "
+            f"{1 << (p['RegAddrW'] - 2)} words of the window (register byte address 0x{(1 << p['RegAddrW']) - 4:03X} "
+            "is addr 0xFF) and an unaligned access cannot be sent. Register map 2.x (8-bit window) "
+            "sent the byte address here: a 2.x host talking to a 3.0 board reaches the wrong "
+            "registers, so check ID.VERSION first (it is at 0 in both);",
+            "- data little-endian (d0 = bits 7:0);",
             "- crc: CRC-8, polynomial 0x07, initial value 0x00, no reflection, no final XOR, over "
             "every byte after the sync byte;",
             "- status: the AXI response, 0 OKAY, 2 SLVERR, 3 DECERR;",

@@ -124,7 +124,7 @@ int AxiMaster::delay() {
 uint8_t AxiMaster::write(uint32_t addr, uint32_t data, uint8_t strb) {
   int aw_wait = delay(), w_wait = delay(), b_wait = delay();
   bool aw_done = false, w_done = false;
-  in_.awaddr = uint8_t(addr);
+  in_.awaddr = uint16_t(addr & ((1u << RegAddrW) - 1));  // the bus has RegAddrW wires
   in_.wdata = data;
   in_.wstrb = strb;
   for (int guard = 0; guard < 1000 && !failed(); ++guard) {
@@ -146,14 +146,14 @@ uint8_t AxiMaster::write(uint32_t addr, uint32_t data, uint8_t strb) {
       return o.bresp;
     }
   }
-  if (error_.empty()) error_ = fmt::format("write 0x{:02x}: no response", addr);
+  if (error_.empty()) error_ = fmt::format("write 0x{:03x}: no response", addr);
   return 0xff;
 }
 
 std::pair<uint32_t, uint8_t> AxiMaster::read(uint32_t addr) {
   int ar_wait = delay(), r_wait = delay();
   bool ar_done = false;
-  in_.araddr = uint8_t(addr);
+  in_.araddr = uint16_t(addr & ((1u << RegAddrW) - 1));
   for (int guard = 0; guard < 1000 && !failed(); ++guard) {
     in_.arvalid = !ar_done && ar_wait <= 0;
     in_.rready = ar_done && r_wait <= 0;
@@ -169,7 +169,7 @@ std::pair<uint32_t, uint8_t> AxiMaster::read(uint32_t addr) {
       return {o.rdata, o.rresp};
     }
   }
-  if (error_.empty()) error_ = fmt::format("read 0x{:02x}: no response", addr);
+  if (error_.empty()) error_ = fmt::format("read 0x{:03x}: no response", addr);
   return {0, 0xff};
 }
 
@@ -243,12 +243,26 @@ std::vector<uint8_t> UartHost::transact(const std::vector<uint8_t>& frame, size_
   return rx_;
 }
 
-UartResponse UartHost::write(uint8_t addr, uint32_t data) {
-  return parse_uart_response(transact(uart_write_frame(addr, data), 3), false);
+namespace {
+
+UartResponse refused(const scurve::Error& e) {
+  UartResponse r;
+  r.error = e.message;
+  return r;
 }
 
-UartResponse UartHost::read(uint8_t addr) {
-  return parse_uart_response(transact(uart_read_frame(addr), 7), true);
+}  // namespace
+
+UartResponse UartHost::write(uint32_t addr, uint32_t data) {
+  const scurve::FrameResult f = uart_write_frame(addr, data);
+  if (const auto* e = std::get_if<scurve::Error>(&f)) return refused(*e);
+  return parse_uart_response(transact(std::get<std::vector<uint8_t>>(f), 3), false);
+}
+
+UartResponse UartHost::read(uint32_t addr) {
+  const scurve::FrameResult f = uart_read_frame(addr);
+  if (const auto* e = std::get_if<scurve::Error>(&f)) return refused(*e);
+  return parse_uart_response(transact(std::get<std::vector<uint8_t>>(f), 7), true);
 }
 
 }  // namespace sc

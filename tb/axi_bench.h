@@ -143,9 +143,10 @@ class UartHost {
   // Send raw bytes, then collect response bytes until `expect` arrived or
   // `timeout_bits` bit times passed with no byte.
   std::vector<uint8_t> transact(const std::vector<uint8_t>& frame, size_t expect, int timeout_bits = 60);
-  // Register access through the bridge (fails the test on a bad response).
-  UartResponse write(uint8_t addr, uint32_t data);
-  UartResponse read(uint8_t addr);
+  // Register access through the bridge at a byte address (the frame carries
+  // addr / 4); an address the encoder refuses comes back as !ok with its error.
+  UartResponse write(uint32_t addr, uint32_t data);
+  UartResponse read(uint32_t addr);
   // Keep the clock running with the line idle.
   void idle(uint64_t clocks100);
   bool estop = false;

@@ -17,6 +17,7 @@
 namespace sc {
 
 using scurve::crc8;
+using scurve::FrameResult;
 using scurve::parse_uart_response;
 using scurve::reg_name;
 using scurve::RegWrite;

@@ -90,18 +90,21 @@ TEST(AxiRegs, IllegalAddressesAnswerDecErrAndChangeNothing) {
   std::vector<uint32_t> snapshot;
   for (const regmap::Reg& r : regmap::kRegs)
     if (!r.servo) snapshot.push_back(b.read(r.addr).first);
+  // the whole 1 KiB window: the 2.x map sits at 0x000..0x0FC and nothing
+  // above it aliases it (0x100 + a must not reach register a)
   int illegal = 0;
-  for (uint32_t a = 0; a < 256; ++a) {
+  for (uint32_t a = 0; a < (1u << RegAddrW); ++a) {
     bool mapped = false;
     for (const regmap::Reg& r : regmap::kRegs) mapped = mapped || (r.addr == a && !r.servo);
     if (mapped) continue;
     ++illegal;
     const auto [v, rresp] = b.read(a);
     EXPECT_EQ(rresp, kDecErr) << "read 0x" << std::hex << a;
-    EXPECT_EQ(v, 0u);
+    EXPECT_EQ(v, 0u) << "read 0x" << std::hex << a;
     EXPECT_EQ(b.write(a, 0xffffffffu), kDecErr) << "write 0x" << std::hex << a;
   }
-  EXPECT_GT(illegal, 150);  // unaligned and unmapped
+  EXPECT_GT(illegal, 950);  // unaligned, unmapped and every word above 0x0FC
+  EXPECT_EQ(RegAddrW, 10);
   EXPECT_EQ(b.read(reg_addr("ERR")).first, field_mask("ERR", "BAD_ACCESS"));
   EXPECT_EQ(b.write(reg_addr("ERR"), 0xffffffffu), kOkay);
   size_t i = 0;
@@ -410,6 +413,12 @@ TEST(AxiRegs, CheckerCatchesAnInjectedDifference) {
 // ---------------------------------------------------------------------------------
 namespace {
 
+// A frame the encoder must accept (the test's addresses are registers).
+std::vector<uint8_t> frame(const FrameResult& f) {
+  if (const auto* e = std::get_if<scurve::Error>(&f)) throw std::runtime_error(e->message);
+  return std::get<std::vector<uint8_t>>(f);
+}
+
 struct Board {
   RtlBoard rtl;
   UartHost host{rtl, UartClksPerBit};
@@ -420,7 +429,7 @@ struct Board {
 
 TEST(BoardUart, LoadMoveStartPollAndCountPulses) {
   Board bd;
-  UartResponse r = bd.host.read(uint8_t(reg_addr("ID")));
+  UartResponse r = bd.host.read(reg_addr("ID"));
   ASSERT_TRUE(r.ok) << r.error;
   EXPECT_EQ(r.status, kOkay);
   EXPECT_EQ(r.data, reg("ID").reset);
@@ -430,18 +439,18 @@ TEST(BoardUart, LoadMoveStartPollAndCountPulses) {
   req.j_max = 1e10;
   const Plan p = plan_or_die(req, t);
   for (const RegWrite& w : encode_move(p, t, true)) {
-    r = bd.host.write(uint8_t(w.addr), w.data);
+    r = bd.host.write(w.addr, w.data);
     ASSERT_TRUE(r.ok) << reg_name(w.addr) << ": " << r.error;
     ASSERT_EQ(r.status, kOkay) << reg_name(w.addr);
   }
   bool done = false;
   for (int i = 0; i < 200 && !done; ++i) {
-    r = bd.host.read(uint8_t(reg_addr("STATUS")));
+    r = bd.host.read(reg_addr("STATUS"));
     ASSERT_TRUE(r.ok) << r.error;
     done = r.data & field_mask("STATUS", "DONE");
   }
   ASSERT_TRUE(done);
-  r = bd.host.read(uint8_t(reg_addr("PULSE_COUNT")));
+  r = bd.host.read(reg_addr("PULSE_COUNT"));
   EXPECT_EQ(int32_t(r.data), 2000);
   EXPECT_EQ(bd.host.net_steps(), 2000);
   EXPECT_EQ(bd.host.pulses(), 2000u);
@@ -450,28 +459,44 @@ TEST(BoardUart, LoadMoveStartPollAndCountPulses) {
 
 TEST(BoardUart, IllegalAddressReservedBitsAndWriteWhileBusy) {
   Board bd;
-  UartResponse r = bd.host.read(0xce);  // unaligned: no register (the board's map has no holes)
+  // The frame carries a word address: an unaligned or out-of-window byte
+  // address cannot be sent, the encoder refuses it naming the address.
+  UartResponse r = bd.host.read(0xce);
+  EXPECT_FALSE(r.ok);
+  EXPECT_NE(r.error.find("addr=0xCE"), std::string::npos) << r.error;
+  r = bd.host.write(0x400, 1);
+  EXPECT_FALSE(r.ok);
+  EXPECT_NE(r.error.find("0x3FC"), std::string::npos) << r.error;
+  // Words above the 2.x map (address bytes 0x40..0xFF) reach the bus as
+  // byte addresses 0x100..0x3FC: unmapped, DECERR, no alias of 0x000..0x0FC
+  // (0x100 is not ID, 0x104 not CTRL).
+  for (const uint32_t a : {0x100u, 0x104u, 0x1F8u, 0x200u, 0x2CCu, 0x3FCu}) {
+    r = bd.host.read(a);
+    ASSERT_TRUE(r.ok) << r.error;
+    EXPECT_EQ(r.status, kDecErr) << std::hex << a;
+    EXPECT_EQ(r.data, 0u) << std::hex << a;
+  }
+  r = bd.host.write(0x104, field_mask("CTRL", "ENABLE"));
   ASSERT_TRUE(r.ok) << r.error;
   EXPECT_EQ(r.status, kDecErr);
-  r = bd.host.write(0xfd, 1);
-  EXPECT_EQ(r.status, kDecErr);
-  r = bd.host.write(uint8_t(reg_addr("ID")), 0);
+  EXPECT_EQ(bd.host.read(reg_addr("CTRL")).data, 0u) << "0x104 wrote CTRL";
+  r = bd.host.write(reg_addr("ID"), 0);
   EXPECT_EQ(r.status, kSlvErr);
-  r = bd.host.write(uint8_t(reg_addr("SEG_PHASE")), 0xffffffffu);
+  r = bd.host.write(reg_addr("SEG_PHASE"), 0xffffffffu);
   EXPECT_EQ(r.status, kOkay);
-  EXPECT_EQ(bd.host.read(uint8_t(reg_addr("SEG_PHASE"))).data, reg("SEG_PHASE").mask);
-  EXPECT_EQ(bd.host.read(uint8_t(reg_addr("ERR"))).data, field_mask("ERR", "BAD_ACCESS"));
-  EXPECT_EQ(bd.host.write(uint8_t(reg_addr("ERR")), 0xff).status, kOkay);
+  EXPECT_EQ(bd.host.read(reg_addr("SEG_PHASE")).data, reg("SEG_PHASE").mask);
+  EXPECT_EQ(bd.host.read(reg_addr("ERR")).data, field_mask("ERR", "BAD_ACCESS"));
+  EXPECT_EQ(bd.host.write(reg_addr("ERR"), 0xff).status, kOkay);
   // a move, then writes while it runs
   const PulseTiming t{};
   const Plan p = plan_or_die(short_move(3000), t);
-  for (const RegWrite& w : encode_move(p, t, true)) ASSERT_EQ(bd.host.write(uint8_t(w.addr), w.data).status, kOkay);
-  r = bd.host.write(uint8_t(reg_addr("PULSE_TIME")), 0x00010001);
+  for (const RegWrite& w : encode_move(p, t, true)) ASSERT_EQ(bd.host.write(w.addr, w.data).status, kOkay);
+  r = bd.host.write(reg_addr("PULSE_TIME"), 0x00010001);
   EXPECT_EQ(r.status, kSlvErr);
-  EXPECT_EQ(bd.host.read(uint8_t(reg_addr("PULSE_TIME"))).data, (uint32_t(t.low) << 16) | t.high);
-  EXPECT_TRUE(bd.host.read(uint8_t(reg_addr("ERR"))).data & field_mask("ERR", "REJECT"));
+  EXPECT_EQ(bd.host.read(reg_addr("PULSE_TIME")).data, (uint32_t(t.low) << 16) | t.high);
+  EXPECT_TRUE(bd.host.read(reg_addr("ERR")).data & field_mask("ERR", "REJECT"));
   bool done = false;
-  for (int i = 0; i < 400 && !done; ++i) done = bd.host.read(uint8_t(reg_addr("STATUS"))).data & field_mask("STATUS", "DONE");
+  for (int i = 0; i < 400 && !done; ++i) done = bd.host.read(reg_addr("STATUS")).data & field_mask("STATUS", "DONE");
   ASSERT_TRUE(done);
   EXPECT_EQ(bd.host.net_steps(), 3000);
   EXPECT_TRUE(bd.host.pins().errors().empty()) << bd.host.pins().errors().front();
@@ -479,10 +504,10 @@ TEST(BoardUart, IllegalAddressReservedBitsAndWriteWhileBusy) {
 
 TEST(BoardUart, CorruptedFramesAreRejectedWithNothingWritten) {
   Board bd;
-  const uint8_t a = uint8_t(reg_addr("SEG_CLOCKS"));
+  const uint32_t a = reg_addr("SEG_CLOCKS");
   ASSERT_EQ(bd.host.write(a, 0x12345678u).status, kOkay);
   // one data bit flipped after the CRC was computed
-  std::vector<uint8_t> f = uart_write_frame(a, 0xdeadbeefu);
+  std::vector<uint8_t> f = frame(uart_write_frame(a, 0xdeadbeefu));
   f[4] ^= 0x10;
   std::vector<uint8_t> rsp = bd.host.transact(f, 3);
   UartResponse r = parse_uart_response(rsp, false);
@@ -490,24 +515,25 @@ TEST(BoardUart, CorruptedFramesAreRejectedWithNothingWritten) {
   EXPECT_EQ(r.status, uint8_t(UartStCrcErr));
   EXPECT_EQ(bd.host.read(a).data, 0x12345678u) << "corrupted frame wrote";
   // wrong CRC byte on a write to CMD (would start / stop): ignored
-  f = uart_write_frame(uint8_t(reg_addr("CTRL")), 1);
+  f = frame(uart_write_frame(reg_addr("CTRL"), 1));
   f.back() ^= 0xff;
   r = parse_uart_response(bd.host.transact(f, 3), false);
   EXPECT_EQ(r.status, uint8_t(UartStCrcErr));
-  EXPECT_EQ(bd.host.read(uint8_t(reg_addr("CTRL"))).data, 0u);
+  EXPECT_EQ(bd.host.read(reg_addr("CTRL")).data, 0u);
   // address byte corrupted: nothing written anywhere
-  f = uart_write_frame(a, 1);
-  f[2] ^= 0x04;
+  f = frame(uart_write_frame(a, 1));
+  ASSERT_EQ(f[2], a / 4);  // the word address
+  f[2] ^= 0x01;            // would be SEG_PHASE
   r = parse_uart_response(bd.host.transact(f, 3), false);
   EXPECT_EQ(r.status, uint8_t(UartStCrcErr));
   EXPECT_EQ(bd.host.read(a).data, 0x12345678u);
-  EXPECT_EQ(bd.host.read(uint8_t(a - 4)).data, 0u);  // SEG_PHASE
+  EXPECT_EQ(bd.host.read(a - 4).data, 0u);  // SEG_PHASE
   // unknown command byte
   std::vector<uint8_t> bad = {0xA5, 0x07};
   r = parse_uart_response(bd.host.transact(bad, 3), false);
   EXPECT_EQ(r.status, uint8_t(UartStBadCmd));
   // a truncated frame is dropped after the gap; the next frame works
-  f = uart_write_frame(a, 0xcafef00du);
+  f = frame(uart_write_frame(a, 0xcafef00du));
   f.resize(5);
   EXPECT_TRUE(bd.host.transact(f, 1, 2 * UartTimeoutBits).empty());
   EXPECT_EQ(bd.host.read(a).data, 0x12345678u);
@@ -515,7 +541,7 @@ TEST(BoardUart, CorruptedFramesAreRejectedWithNothingWritten) {
   EXPECT_EQ(bd.host.read(a).data, 0x0badf00du);
   // garbage between frames is skipped
   std::vector<uint8_t> g = {0x00, 0x5A, 0xFF};
-  const std::vector<uint8_t> rd = uart_read_frame(a);
+  const std::vector<uint8_t> rd = frame(uart_read_frame(a));
   g.insert(g.end(), rd.begin(), rd.end());
   r = parse_uart_response(bd.host.transact(g, 7), true);
   ASSERT_TRUE(r.ok) << r.error;
@@ -531,17 +557,17 @@ TEST(BoardUart, EncoderPinsCountThroughTheQuadratureDecoder) {
     bd.host.enc_ab = kGray[i & 3];
     bd.host.idle(500);
   }
-  UartResponse r = bd.host.read(uint8_t(reg_addr("ENC_POS")));
+  UartResponse r = bd.host.read(reg_addr("ENC_POS"));
   ASSERT_TRUE(r.ok) << r.error;
   EXPECT_EQ(int32_t(r.data), 10);
-  EXPECT_EQ((bd.host.read(uint8_t(reg_addr("STATUS"))).data & field_mask("STATUS", "ENC_AB")) >> 12, uint32_t(kGray[10 & 3]));
+  EXPECT_EQ((bd.host.read(reg_addr("STATUS")).data & field_mask("STATUS", "ENC_AB")) >> 12, uint32_t(kGray[10 & 3]));
   for (int i = 9; i >= 7; --i) {
     bd.host.enc_ab = kGray[i & 3];
     bd.host.idle(500);
   }
-  EXPECT_EQ(int32_t(bd.host.read(uint8_t(reg_addr("ENC_POS"))).data), 7);
-  EXPECT_EQ(int32_t(bd.host.read(uint8_t(reg_addr("FOLLOW_ERR"))).data), -7);
-  EXPECT_EQ(bd.host.read(uint8_t(reg_addr("CL_STATUS"))).data & field_mask("CL_STATUS", "ENC_ILLEGAL"), 0u);
+  EXPECT_EQ(int32_t(bd.host.read(reg_addr("ENC_POS")).data), 7);
+  EXPECT_EQ(int32_t(bd.host.read(reg_addr("FOLLOW_ERR")).data), -7);
+  EXPECT_EQ(bd.host.read(reg_addr("CL_STATUS")).data & field_mask("CL_STATUS", "ENC_ILLEGAL"), 0u);
 }
 
 // ---------------------------------------------------------------------------------

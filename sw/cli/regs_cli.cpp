@@ -37,13 +37,26 @@ int run_regs_cli(const RegsCliFlags& f, const Plan& plan, const PulseTiming& tim
     writes.erase(writes.begin());  // CTRL = enable: replaced by the closed-loop CTRL write
     writes.insert(writes.begin(), cl.begin(), cl.end());
   }
+  // The UART frames (word address in the frame), each checked by the encoder.
+  std::vector<std::vector<uint8_t>> frames;
+  if (f.uart) {
+    for (const RegWrite& w : writes) {
+      FrameResult fr = uart_write_frame(w.addr, w.data);
+      if (const Error* err = std::get_if<Error>(&fr)) {
+        std::cerr << "scurve regs --uart: " << reg_name(w.addr) << ": " << err->message << "\n";
+        return 2;
+      }
+      frames.push_back(std::move(std::get<std::vector<uint8_t>>(fr)));
+    }
+  }
   if (json || !json_out.empty()) {
     nlohmann::json out = nlohmann::json::array();
-    for (const RegWrite& w : writes) {
+    for (size_t i = 0; i < writes.size(); ++i) {
+      const RegWrite& w = writes[i];
       nlohmann::json j = {{"addr", w.addr}, {"reg", reg_name(w.addr)}, {"data", w.data}};
       if (f.uart) {
         std::string hex;
-        for (uint8_t b : uart_write_frame(uint8_t(w.addr), w.data)) hex += fmt::format("{:02X}", b);
+        for (uint8_t b : frames[i]) hex += fmt::format("{:02X}", b);
         j["frame"] = hex;
       }
       out.push_back(j);
@@ -57,11 +70,13 @@ int run_regs_cli(const RegsCliFlags& f, const Plan& plan, const PulseTiming& tim
       return 0;
     }
   }
-  for (const RegWrite& w : writes) {
+  for (size_t i = 0; i < writes.size(); ++i) {
+    const RegWrite& w = writes[i];
     if (f.uart) {
       std::string hex;
-      for (uint8_t b : uart_write_frame(uint8_t(w.addr), w.data)) hex += fmt::format("{:02X} ", b);
-      std::cout << fmt::format("{} # {} = 0x{:08X}\n", hex, reg_name(w.addr), w.data);
+      for (uint8_t b : frames[i]) hex += fmt::format("{:02X} ", b);
+      // the frame holds the word address; the comment names the byte address
+      std::cout << fmt::format("{} # {} (0x{:02X}) = 0x{:08X}\n", hex, reg_name(w.addr), w.addr, w.data);
     } else {
       std::cout << fmt::format("0x{:02X} {:<12} 0x{:08X}\n", w.addr, reg_name(w.addr), w.data);
     }

@@ -83,18 +83,35 @@ uint8_t crc8(const uint8_t* data, size_t n, uint8_t crc) {
   return crc;
 }
 
-std::vector<uint8_t> uart_write_frame(uint8_t addr, uint32_t data) {
-  std::vector<uint8_t> f = {uint8_t(UartReqSync), uint8_t(UartCmdWrite), addr,
-                            uint8_t(data), uint8_t(data >> 8), uint8_t(data >> 16), uint8_t(data >> 24)};
+namespace {
+
+// The frame's address byte (the word address), or why `addr` has none.
+std::variant<uint8_t, Error> frame_addr(uint32_t addr) {
+  constexpr uint32_t kWindow = uint32_t(1) << RegAddrW;  // bytes
+  static_assert(kWindow / 4 <= 256, "a word address must fit the frame's address byte");
+  if (addr % 4 != 0)
+    return Error{"addr", fmt::format("addr=0x{:X}: not word-aligned (must be a multiple of 4)", addr)};
+  if (addr >= kWindow)
+    return Error{"addr", fmt::format("addr=0x{:X}: outside the register window 0x000..0x{:03X}", addr, kWindow - 4)};
+  return uint8_t(addr / 4);
+}
+
+FrameResult request_frame(uint8_t cmd, uint32_t addr, const uint32_t* data) {
+  const std::variant<uint8_t, Error> a = frame_addr(addr);
+  if (const Error* e = std::get_if<Error>(&a)) return *e;
+  std::vector<uint8_t> f = {uint8_t(UartReqSync), cmd, std::get<uint8_t>(a)};
+  if (data) {
+    for (int i = 0; i < 4; ++i) f.push_back(uint8_t(*data >> (8 * i)));
+  }
   f.push_back(crc8(f.data() + 1, f.size() - 1));
   return f;
 }
 
-std::vector<uint8_t> uart_read_frame(uint8_t addr) {
-  std::vector<uint8_t> f = {uint8_t(UartReqSync), uint8_t(UartCmdRead), addr};
-  f.push_back(crc8(f.data() + 1, f.size() - 1));
-  return f;
-}
+}  // namespace
+
+FrameResult uart_write_frame(uint32_t addr, uint32_t data) { return request_frame(uint8_t(UartCmdWrite), addr, &data); }
+
+FrameResult uart_read_frame(uint32_t addr) { return request_frame(uint8_t(UartCmdRead), addr, nullptr); }
 
 UartResponse parse_uart_response(const std::vector<uint8_t>& b, bool is_read) {
   UartResponse r;

@@ -1,6 +1,9 @@
 // Controller settings in physical units -> register values, at a clock rate.
 #include <gtest/gtest.h>
 
+#include <cstdio>
+#include <string>
+
 #include "scurve/reg_encode.h"
 #include "scurve/servo_config.h"
 
@@ -62,10 +65,48 @@ TEST(ServoConfig, EncodedWordsCoverTheControllerWindow) {
   EXPECT_EQ(c.ctl.shift, 2);
 }
 
-TEST(RegEncode, UartFrameCarriesAddressDataAndCrc) {
-  const std::vector<uint8_t> f = uart_write_frame(0x08, 1);
+TEST(RegEncode, UartFrameCarriesWordAddressDataAndCrc) {
+  const FrameResult r = uart_write_frame(uint32_t(hw::RegCmd), 0x04030201u);
+  ASSERT_TRUE(std::holds_alternative<std::vector<uint8_t>>(r));
+  const std::vector<uint8_t>& f = std::get<std::vector<uint8_t>>(r);
   ASSERT_EQ(f.size(), 8u);
   EXPECT_EQ(f[0], hw::UartReqSync);
+  EXPECT_EQ(f[1], hw::UartCmdWrite);
+  EXPECT_EQ(f[2], hw::RegCmd / 4);  // word address
+  EXPECT_EQ(f[3], 0x01);            // data little-endian
+  EXPECT_EQ(f[6], 0x04);
   EXPECT_EQ(f[7], crc8(f.data() + 1, 6));
   EXPECT_EQ(reg_name(uint32_t(hw::RegCmd)), "CMD");
+  // the last word of the 1 KiB window is address byte 0xFF
+  const FrameResult last = uart_read_frame((1u << hw::RegAddrW) - 4);
+  ASSERT_TRUE(std::holds_alternative<std::vector<uint8_t>>(last));
+  EXPECT_EQ(std::get<std::vector<uint8_t>>(last).size(), 4u);
+  EXPECT_EQ(std::get<std::vector<uint8_t>>(last)[2], 0xFF);
+}
+
+namespace {
+
+std::string hex_addr(uint32_t a) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "addr=0x%X", unsigned(a));
+  return buf;
+}
+
+}  // namespace
+
+TEST(RegEncode, UartFrameRefusesUnalignedAndOutOfWindowAddresses) {
+  for (const uint32_t a : {0x01u, 0x02u, 0x4Eu, 0x3FDu}) {
+    const FrameResult r = uart_write_frame(a, 0);
+    ASSERT_TRUE(std::holds_alternative<Error>(r)) << a;
+    EXPECT_EQ(std::get<Error>(r).parameter, "addr");
+    EXPECT_NE(std::get<Error>(r).message.find(hex_addr(a)), std::string::npos);
+    EXPECT_NE(std::get<Error>(r).message.find("multiple of 4"), std::string::npos) << std::get<Error>(r).message;
+  }
+  for (const uint32_t a : {0x400u, 0x404u, 0xFFFFFFFCu}) {
+    const FrameResult r = uart_read_frame(a);
+    ASSERT_TRUE(std::holds_alternative<Error>(r)) << a;
+    EXPECT_EQ(std::get<Error>(r).parameter, "addr");
+    EXPECT_NE(std::get<Error>(r).message.find(hex_addr(a)), std::string::npos);
+    EXPECT_NE(std::get<Error>(r).message.find("0x000..0x3FC"), std::string::npos) << std::get<Error>(r).message;
+  }
 }

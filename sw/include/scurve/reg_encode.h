@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "scurve/planner.h"
@@ -45,8 +46,14 @@ std::vector<RegWrite> encode_row(const Segment& s, RowFlags flags = {});
 
 // CRC-8, polynomial 0x07, initial 0x00, no reflection, no final XOR.
 uint8_t crc8(const uint8_t* data, size_t n, uint8_t crc = 0);
-std::vector<uint8_t> uart_write_frame(uint8_t addr, uint32_t data);
-std::vector<uint8_t> uart_read_frame(uint8_t addr);
+// UART bridge request frames for the register at byte address `addr` (as in
+// RegWrite and docs/regmap.md). The frame's address byte is the WORD
+// address addr / 4 (register map 3.0: one byte reaches the 1 KiB window).
+// An address that is not word-aligned or lies outside the window is an
+// Error for parameter "addr".
+using FrameResult = std::variant<std::vector<uint8_t>, Error>;
+FrameResult uart_write_frame(uint32_t addr, uint32_t data);
+FrameResult uart_read_frame(uint32_t addr);
 
 struct UartResponse {
   bool ok = false;        // well formed and CRC correct
