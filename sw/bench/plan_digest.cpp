@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <ctime>
 #include <fstream>
@@ -142,7 +143,8 @@ int main(int argc, char** argv) {
   std::string mode = argc > 1 ? argv[1] : "--slowest";
   const std::string file = argc > 2 ? argv[2] : "";
   const int n_slow = mode == "--slowest" && argc > 2 ? std::atoi(argv[2]) : 20;
-  const int n_requests = 4000;
+  const char* n_env = std::getenv("PLAN_DIGEST_N");  // requests per clock rate
+  const int n_requests = n_env ? std::atoi(n_env) : 4000;
 
   std::vector<std::string> lines;
   std::vector<Timed> times;
