@@ -146,7 +146,7 @@ int main(int argc, char** argv) {
   const char* n_env = std::getenv("PLAN_DIGEST_N");  // requests per clock rate
   const int n_requests = n_env ? std::atoi(n_env) : 4000;
 
-  std::vector<std::string> lines;
+  std::vector<std::string> lines, what;  // what: the request of each line
   std::vector<Timed> times;
   char buf[128];
 
@@ -162,6 +162,7 @@ int main(int argc, char** argv) {
       double t1 = cpu_seconds();
       std::snprintf(buf, sizeof buf, "plan %g %d %016llx", hz, i, (unsigned long long)digest(r));
       lines.push_back(buf);
+      what.push_back(describe(rr));
       times.push_back({(t1 - t0) * 1e6, std::string("plan ") + (std::holds_alternative<Plan>(r) ? "ok  " : "err ") +
                                             describe(rr)});
       // From an exact state: the request's start speed (in the move's
@@ -178,6 +179,7 @@ int main(int argc, char** argv) {
       std::snprintf(buf, sizeof buf, "from %g %d %016llx", hz, i, (unsigned long long)digest(rf));
       lines.push_back(buf);
       std::snprintf(buf, sizeof buf, " v0=%.17g", v);
+      what.push_back(describe(rr) + buf);
       times.push_back({(t1 - t0) * 1e6, std::string("from ") + (std::holds_alternative<Plan>(rf) ? "ok  " : "err ") +
                                             describe(rr) + buf});
     }
@@ -202,11 +204,13 @@ int main(int argc, char** argv) {
       for (size_t k = 0; k < out.size(); ++k) {
         std::snprintf(buf, sizeof buf, "stream %d %zu %016llx", run, k, (unsigned long long)digest(out[k]));
         lines.push_back(buf);
+        what.push_back("stream move");
       }
       Hash h;
       h.str(err);
       std::snprintf(buf, sizeof buf, "stream %d end %zu %016llx", run, out.size(), (unsigned long long)h.h);
       lines.push_back(buf);
+      what.push_back("stream end");
       ++run;
     }
   }
@@ -223,7 +227,10 @@ int main(int argc, char** argv) {
     size_t k = 0, bad = 0;
     while (std::getline(f, l)) {
       if (k >= lines.size() || lines[k] != l) {
-        if (bad < 20) std::printf("DIFF: want %s got %s\n", l.c_str(), k < lines.size() ? lines[k].c_str() : "-");
+        if (bad < 20) {
+          std::printf("DIFF: want %s got %s  %s\n", l.c_str(), k < lines.size() ? lines[k].c_str() : "-",
+                      k < what.size() ? what[k].c_str() : "");
+        }
         ++bad;
       }
       ++k;
