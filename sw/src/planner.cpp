@@ -38,7 +38,7 @@ i128 row_gain(const Row& r) { return pos_gain(r.vel0, r.acc0, r.jerk, r.clocks);
 //   k clocks at jerk x, k at -x          : x*k^2   (the bulk, k ~ sqrt(rest/j))
 //   1 clock at y, m-1 holding y, 1 at -y : y*m     (what is left, < (2k+1)*j)
 //   1 clock at z, 1 at -z                : z       (what is left, < m)
-void append_exact_tail(std::vector<Row>& rows, i128 rest, int s, int64_t j_lim, int64_t a_max, Phase ph_up,
+void append_exact_tail(RowList& rows, i128 rest, int s, int64_t j_lim, int64_t a_max, Phase ph_up,
                        Phase ph_down) {
   const i128 x_max = std::min<i128>(j_lim, a_max);
   for (int iter = 0; iter < 64 && rest > 0; ++iter) {
@@ -78,7 +78,6 @@ Transition make_transition(i128 v_a, i128 dv, int s, int64_t j_in, int64_t j_out
   const Phase ph_up = s > 0 ? Phase::PhAccJerkUp : Phase::PhDecJerkUp;
   const Phase ph_const = s > 0 ? Phase::PhAccConst : Phase::PhDecConst;
   const Phase ph_down = s > 0 ? Phase::PhAccJerkDown : Phase::PhDecJerkDown;
-  t.rows.reserve(exact ? 12 : 4);  // one allocation: up to 4 rows, an exact tail adds a few
   const double dvd = double(dv);
   const double v_hi = std::max(double(v_a), double(v_a) + s * dvd) / u.vel;
 
@@ -190,9 +189,13 @@ struct Candidate {
 // Plateau v1 (LSB) between the transitions vs -> v1 -> ve. Feasible when a
 // cruise of n >= 0 clocks at the plateau puts the travel in the window:
 // gain < hi, and with no plateau speed the gain itself must be >= lo.
-Candidate evaluate(i128 vs, i128 v1_lsb, i128 ve, const TravelWindow& w, const Limits& lim) {
+// probe: the caller keeps only feasible candidates, so an infeasible one may
+// stop early, without t2 or gain, once the first transition alone is too
+// far or covers the window (the second one's gain is >= 0).
+Candidate evaluate(i128 vs, i128 v1_lsb, i128 ve, const TravelWindow& w, const Limits& lim, bool probe = false) {
   Candidate c;
   c.t1 = transition_to(vs, v1_lsb, lim);
+  if (probe && (c.t1.too_far || c.t1.gain >= w.hi)) return c;
   c.t2 = transition_to(c.t1.v_end, ve, lim);
   c.too_far = c.t1.too_far || c.t2.too_far;
   if (c.too_far) return c;
@@ -267,7 +270,7 @@ std::variant<Solved, Unsolvable> solve_profile(i128 vs, double v_start, double v
     try_cruise = guess >= v_cruise * (1.0 - 1.0 / 64);
   }
   Candidate c;
-  if (try_cruise) c = evaluate(vs, to_lsb(v_cruise), ve, w, lim);
+  if (try_cruise) c = evaluate(vs, to_lsb(v_cruise), ve, w, lim, /*probe=*/true);
   if (!c.feasible) {
     // Walking up, a plateau never goes below max(vs, ve): the double speeds
     // of an exact start state may round a few LSB under it.
@@ -278,7 +281,7 @@ std::variant<Solved, Unsolvable> solve_profile(i128 vs, double v_start, double v
     Candidate good_c;
     // Evaluates plateau v: a feasible one becomes `good`, else `bad`.
     const auto try_plateau = [&](double v) {
-      Candidate t = evaluate(vs, plateau_lsb(v), ve, w, lim);
+      Candidate t = evaluate(vs, plateau_lsb(v), ve, w, lim, /*probe=*/true);
       const bool ok = t.feasible;
       if (ok) {
         good = v;
@@ -298,19 +301,19 @@ std::variant<Solved, Unsolvable> solve_profile(i128 vs, double v_start, double v
       }
     }
     const bool far_is_stop = v_far_lsb == 0;  // vs = ve = 0: a tiny plateau always fits
-    if (good < 0) {
+    if (good < 0 && !far_is_stop) {  // (a stop has no least-travel fallback)
       Candidate far = evaluate(vs, v_far_lsb, ve, w, lim);
-      if (!far_is_stop && !far.feasible) {
+      if (!far.feasible) {
         Unsolvable why;
         why.end_unreachable = true;
         why.too_far = far.too_far;
         why.least_gain = far.gain;
         return why;
       }
-      if (lim.bisect_plateau && !far_is_stop) {
+      if (lim.bisect_plateau) {
         good = v_far;
         good_c = std::move(far);
-      } else if (!far_is_stop) {
+      } else {
         good_c = std::move(far);  // the walk's fallback (good stays < 0 until then)
       }
     }
@@ -351,7 +354,8 @@ std::variant<Solved, Unsolvable> solve_profile(i128 vs, double v_start, double v
     n_cruise = uint64_t((w.lo - c.gain + out.plateau - 1) / out.plateau);
   }
   out.travel = c.gain + i128(n_cruise) * out.plateau;
-  out.rows = std::move(c.t1.rows);
+  out.rows.reserve(c.t1.rows.size() + 1 + c.t2.rows.size());
+  out.rows.assign(c.t1.rows.begin(), c.t1.rows.end());
   if (n_cruise > 0) out.rows.push_back({Phase::PhCruise, n_cruise, 0, 0, out.plateau});
   out.rows.insert(out.rows.end(), c.t2.rows.begin(), c.t2.rows.end());
   out.v_end = c.t2.rows.empty() ? out.plateau : c.t2.v_end;
@@ -419,11 +423,15 @@ int64_t needed_distance(i128 gain) {
   return int64_t(num <= 0 ? 0 : (num + i128(kOne) - 1) / i128(kOne));
 }
 
-// refine_minimum: on an unreachable end speed, search the shortest distance
-// the planner accepts, so the message names the true minimum (the closed-form
+// Refine: on an unreachable end speed, search the shortest distance the
+// planner accepts, so the message names the true minimum (the closed-form
 // estimate can be a pulse or two high). The search itself plans without it.
+// Probe: for the searches over end speed and distance, which only ask
+// whether a plan exists: errors carry the parameter but no message (the
+// message formatting costs more than an unreachable end speed's solve).
+enum class Detail { Refine, Message, Probe };
 PlanResult plan_magnitude(const MoveRequest& req, const PulseTiming& timing, double v_end, Clock clock,
-                          bool refine_minimum = true);
+                          Detail detail = Detail::Refine);
 
 }  // namespace
 
@@ -487,15 +495,18 @@ std::optional<PlanError> check_request(const MoveRequest& req, const PulseTiming
                                              req.distance, PlannerLimits::kMaxDistance)};
   }
   const double v_lim = step_rate_limit(timing, clock);
-  const std::string rate_note = fmt::format(
-      " pulses/s (step-rate limit: pulse high {} + low {} clocks at {} MHz)", timing.high,
-      timing.low, clock.hz / 1e6);
+  // The unit text names the step-rate limit; formatted only for an error.
+  const auto check_speed = [&](const char* name, double v, double lo) -> std::optional<PlanError> {
+    if (std::isfinite(v) && v >= lo && v <= v_lim) return std::nullopt;
+    const std::string rate_note = fmt::format(
+        " pulses/s (step-rate limit: pulse high {} + low {} clocks at {} MHz)", timing.high,
+        timing.low, clock.hz / 1e6);
+    return check_range(name, v, lo, v_lim, rate_note.c_str());
+  };
   const LimitRange acc_ok = accel_range(clock), jerk_ok = jerk_range(clock);
-  if (auto e = check_range("v_start", req.v_start, 0, v_lim, rate_note.c_str())) return *e;
-  if (auto e = check_range("v_cruise", req.v_cruise, PlannerLimits::kMinCruise, v_lim, rate_note.c_str())) {
-    return *e;
-  }
-  if (auto e = check_range("v_end", req.v_end, 0, v_lim, rate_note.c_str())) return *e;
+  if (auto e = check_speed("v_start", req.v_start, 0)) return *e;
+  if (auto e = check_speed("v_cruise", req.v_cruise, PlannerLimits::kMinCruise)) return *e;
+  if (auto e = check_speed("v_end", req.v_end, 0)) return *e;
   if (auto e = check_range("a_max", req.a_max, acc_ok.lo, acc_ok.hi,
                            "pulses/s^2")) {
     return *e;
@@ -524,7 +535,7 @@ PlanResult Planner::plan(const MoveRequest& req, const PulseTiming& timing) cons
   const Clock clock = clock_;
   if (auto e = check_request(req, timing, clock)) return *e;
   // The minimum-distance search runs only for an error the user will see.
-  PlanResult r = plan_magnitude(req, timing, req.v_end, clock, !req.adjust_end_speed);
+  PlanResult r = plan_magnitude(req, timing, req.v_end, clock, req.adjust_end_speed ? Detail::Message : Detail::Refine);
   if (std::holds_alternative<PlanError>(r) && req.adjust_end_speed &&
       std::get<PlanError>(r).parameter == "v_end" && req.v_end != req.v_start) {
     // Bisect the end speed between v_start (always reachable) and v_end.
@@ -532,23 +543,26 @@ PlanResult Planner::plan(const MoveRequest& req, const PulseTiming& timing) cons
     std::optional<Plan> best;
     for (int it = 0; it < 64; ++it) {
       const double mid = 0.5 * (ok + bad);
-      PlanResult m = plan_magnitude(req, timing, mid, clock, false);
-      if (std::holds_alternative<Plan>(m)) {
+      // Once ok and bad are neighbours the midpoint is one of them, whose
+      // outcome is known (planning is deterministic): nothing changes.
+      if (mid == bad || (mid == ok && best)) break;
+      PlanResult m = plan_magnitude(req, timing, mid, clock, Detail::Probe);
+      if (auto* p = std::get_if<Plan>(&m)) {
         ok = mid;
-        best = std::get<Plan>(m);
+        best = std::move(*p);
       } else {
         bad = mid;
       }
     }
     if (!best) {
-      PlanResult m = plan_magnitude(req, timing, req.v_start, clock, false);
+      PlanResult m = plan_magnitude(req, timing, req.v_start, clock, Detail::Probe);
       if (std::holds_alternative<Plan>(m)) best = std::get<Plan>(m);
     }
     if (best) {
       best->end_speed_adjusted = true;
       return *best;
     }
-    return plan_magnitude(req, timing, req.v_end, clock, true);
+    return plan_magnitude(req, timing, req.v_end, clock, Detail::Refine);
   }
   return r;
 }
@@ -593,7 +607,7 @@ std::optional<PlanError> check_table(Plan& plan, const Limits& lim, i128 v_cap, 
 }
 
 PlanResult plan_magnitude(const MoveRequest& req, const PulseTiming& timing, double v_end, Clock clock,
-                          bool refine_minimum) {
+                          Detail detail) {
   const int dir = req.distance < 0 ? -1 : 1;
   const int64_t dist = req.distance * dir;
   const Limits lim = make_limits(req, timing, clock);
@@ -607,6 +621,7 @@ PlanResult plan_magnitude(const MoveRequest& req, const PulseTiming& timing, dou
 
   auto solved = solve_profile(vs, req.v_start, req.v_cruise, ve, v_end, window, lim);
   if (const auto* why = std::get_if<Unsolvable>(&solved)) {
+    if (detail == Detail::Probe) return PlanError{why->end_unreachable ? "v_end" : "distance", {}};
     if (!why->end_unreachable) {
       return PlanError{"distance", fmt::format("distance={}: too short for any motion with these limits", dist)};
     }
@@ -614,12 +629,12 @@ PlanResult plan_magnitude(const MoveRequest& req, const PulseTiming& timing, dou
     std::string need = "more than 1e12";
     if (!why->too_far) {
       int64_t min_dist = needed_distance(why->least_gain);
-      if (refine_minimum) {
+      if (detail == Detail::Refine) {
         const auto accepts = [&](int64_t d) {
           MoveRequest r = req;
           r.distance = d * dir;
           return d <= PlannerLimits::kMaxDistance &&
-                 std::holds_alternative<Plan>(plan_magnitude(r, timing, v_end, clock, false));
+                 std::holds_alternative<Plan>(plan_magnitude(r, timing, v_end, clock, Detail::Probe));
         };
         // Local search from the estimate: the result is accepted and one
         // pulse less is not.
