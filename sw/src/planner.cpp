@@ -38,9 +38,13 @@ i128 row_gain(const Row& r) { return pos_gain(r.vel0, r.acc0, r.jerk, r.clocks);
 //   k clocks at jerk x, k at -x          : x*k^2   (the bulk, k ~ sqrt(rest/j))
 //   1 clock at y, m-1 holding y, 1 at -y : y*m     (what is left, < (2k+1)*j)
 //   1 clock at z, 1 at -z                : z       (what is left, < m)
-void append_exact_tail(RowList& rows, i128 rest, int s, int64_t j_lim, int64_t a_max, Phase ph_up,
-                       Phase ph_down) {
-  const i128 x_max = std::min<i128>(j_lim, a_max);
+// The integer type T holds rest and every product below (int64_t when rest
+// < 2^62: the tail is shorter than one clock at the peak acceleration, so
+// always in practice; __int128 otherwise): the same values either way.
+template <class T>
+void append_exact_tail_in(RowList& rows, T rest, int s, int64_t j_lim, int64_t a_max, Phase ph_up,
+                          Phase ph_down) {
+  const T x_max = std::min<T>(j_lim, a_max);
   for (int iter = 0; iter < 64 && rest > 0; ++iter) {
     if (rest <= x_max) {
       rows.push_back({ph_up, 1, int64_t(s * rest), 0, 0});
@@ -49,19 +53,28 @@ void append_exact_tail(RowList& rows, i128 rest, int s, int64_t j_lim, int64_t a
     }
     const int64_t k = std::max<int64_t>(1, int64_t(std::sqrt(double(rest) / double(x_max))));
     if (k >= 3 && i128(k) * x_max <= a_max) {
-      const i128 x = std::min<i128>(x_max, rest / (i128(k) * k));
+      const T x = std::min<T>(x_max, rest / (T(k) * k));
       rows.push_back({ph_up, uint64_t(k), int64_t(s * x), 0, 0});
       rows.push_back({ph_down, uint64_t(k), int64_t(-s * x), 0, 0});
       rest -= x * k * k;
       continue;
     }
-    const i128 m = (rest + x_max - 1) / x_max;
-    const i128 y = rest / m;
+    const T m = (rest + x_max - 1) / x_max;
+    const T y = rest / m;
     rows.push_back({ph_up, 1, int64_t(s * y), 0, 0});
     if (m > 1) rows.push_back({ph_up == Phase::PhAccJerkUp ? Phase::PhAccConst : Phase::PhDecConst,
                                uint64_t(m - 1), 0, int64_t(s * y), 0});
     rows.push_back({ph_down, 1, int64_t(-s * y), 0, 0});
     rest -= y * m;
+  }
+}
+
+void append_exact_tail(RowList& rows, i128 rest, int s, int64_t j_lim, int64_t a_max, Phase ph_up,
+                       Phase ph_down) {
+  if (rest < (i128(1) << 62)) {
+    append_exact_tail_in<int64_t>(rows, int64_t(rest), s, j_lim, a_max, ph_up, ph_down);
+  } else {
+    append_exact_tail_in<i128>(rows, rest, s, j_lim, a_max, ph_up, ph_down);
   }
 }
 
@@ -120,14 +133,18 @@ Transition make_transition(i128 v_a, i128 dv, int s, int64_t j_in, int64_t j_out
       // Ramp clocks: floor(a/j) keeps the jerk at exactly j (long ramps),
       // ceil(a/j) at a slightly lower jerk reaches nearer to a (ramps of a
       // few clocks); take whichever peaks higher.
-      const int64_t n_floor = std::max<int64_t>(1, a / j_in);
-      const int64_t n_ceil = (a + j_in - 1) / j_in;
-      const int64_t a_floor = n_floor * std::min(j_in, a / n_floor);
-      const int64_t a_ceil = n_ceil * (a / n_ceil);
+      const int64_t q = a / j_in;
+      const int64_t n_floor = std::max<int64_t>(1, q);
+      const int64_t n_ceil = q + (a != q * j_in);  // (a + j_in - 1) / j_in
+      const int64_t a_by_floor = a / n_floor;
+      const int64_t a_by_ceil = n_ceil == n_floor ? a_by_floor : a / n_ceil;
+      const int64_t a_floor = n_floor * std::min(j_in, a_by_floor);
+      const int64_t a_ceil = n_ceil * a_by_ceil;
       const int64_t n1 = a_floor >= a_ceil ? n_floor : n_ceil;
-      const int64_t j1 = std::min(j_in, a / n1);
+      const int64_t j1 = std::min(j_in, a_floor >= a_ceil ? a_by_floor : a_by_ceil);
       const int64_t a1 = n1 * j1;  // realised peak, <= a
-      const int64_t n3 = (a1 + j_out - 1) / j_out;
+      const int64_t q3 = a1 / j_out;
+      const int64_t n3 = q3 + (a1 != q3 * j_out);  // (a1 + j_out - 1) / j_out
       const int64_t j3 = a1 / n3;
       const int64_t r = a1 - n3 * j3;  // first r clocks at j3+1: a ends at exactly 0
       Row rows[4];
@@ -136,16 +153,13 @@ Transition make_transition(i128 v_a, i128 dv, int s, int64_t j_in, int64_t j_out
       rows[n_rows++] = {ph_const, 0, 0, s * a1, 0};
       if (r > 0) rows[n_rows++] = {ph_down, uint64_t(r), -s * (j3 + 1), 0, 0};
       rows[n_rows++] = {ph_down, uint64_t(n3 - r), -s * j3, 0, 0};
-      // Velocity gained by the jerk rows alone (the constant row adds n2*a1).
-      i128 dv_jerk = 0;
-      int64_t acc = 0;
-      for (int i = 0; i < n_rows; ++i) {
-        const Row& row = rows[i];
-        if (row.jerk == 0) continue;
-        dv_jerk += vel_after(0, acc, row.jerk, row.clocks);
-        acc = int64_t(acc_after(acc, row.jerk, row.clocks));
-      }
-      dv_jerk = s > 0 ? dv_jerk : -dv_jerk;
+      // Velocity gained by the jerk rows alone (the constant row adds n2*a1),
+      // in magnitude: up n1 clocks from 0 to a1, down r clocks at j3+1 to
+      // a2, then n3-r clocks at j3 to 0 (the executor's sums, modulo 2^128).
+      const uint64_t m3 = uint64_t(n3 - r);
+      const u128 a2 = u128(i128(a1 - r * (j3 + 1)));
+      const i128 dv_jerk = i128(choose2(uint64_t(n1)) * u128(j1) + u128(r) * u128(a1) -
+                                choose2(uint64_t(r)) * u128(j3 + 1) + u128(m3) * a2 - choose2(m3) * u128(j3));
       if (dv_jerk > dv) {
         if (a == 1) break;  // dv below one LSB of velocity change: nothing to do
         const double shrink = std::sqrt(double(dv) / double(dv_jerk));
@@ -222,6 +236,18 @@ double closed_form_plateau(i128 vs, i128 ve, i128 aim, double v_lo, double v_hi,
     (travel(mid) <= target ? lo : hi) = mid;
   }
   return lo;
+}
+
+// The plateau walk's factors 0.97^k, k = 1..kWalkSteps: std::pow's values,
+// computed once (a pow call per step cost as much as the step's arithmetic).
+constexpr int kWalkSteps = 2000;
+double walk_factor(int k) {
+  static const std::array<double, kWalkSteps + 1> table = [] {
+    std::array<double, kWalkSteps + 1> t{};
+    for (int i = 0; i <= kWalkSteps; ++i) t[size_t(i)] = std::pow(0.97, i);
+    return t;
+  }();
+  return table[size_t(k)];
 }
 
 }  // namespace
@@ -328,8 +354,8 @@ std::variant<Solved, Unsolvable> solve_profile(i128 vs, double v_start, double v
       }
       bad = good;  // done: skip the walk and the fine bisection below
     }
-    for (int k = 1; k <= 2000 && good < 0; ++k) {
-      const double v = v_far + (v_cruise - v_far) * std::pow(0.97, k);
+    for (int k = 1; k <= kWalkSteps && good < 0; ++k) {
+      const double v = v_far + (v_cruise - v_far) * walk_factor(k);
       if (try_plateau(v)) break;
     }
     if (good < 0 && !far_is_stop) good = v_far;  // good_c holds the least-travel candidate

@@ -38,7 +38,7 @@ struct Row {
 // kInline rows spill to the heap.
 class RowList {
  public:
-  static constexpr size_t kInline = 12;
+  static constexpr size_t kInline = 20;
   RowList() = default;
   RowList(const RowList& o) { *this = o; }
   RowList& operator=(const RowList& o) {
