@@ -185,6 +185,12 @@ Transition make_transition(i128 v_a, i128 dv, int s, int64_t j_in, int64_t j_out
   for (Row& row : t.rows) {
     row.vel0 = v;
     if (row.jerk != 0 || row.phase == ph_up) row.acc0 = a;
+    if (row.clocks == 1) {  // the closed forms at k = 1 (most exact-tail rows)
+      t.gain += v;
+      v = i128(u128(v) + u128(i128(row.acc0)));
+      a = row.acc0 + row.jerk;
+      continue;
+    }
     t.gain += row_gain(row);
     v = vel_after(row.vel0, row.acc0, row.jerk, row.clocks);
     a = int64_t(acc_after(row.acc0, row.jerk, row.clocks));
@@ -833,9 +839,14 @@ TableReport run_table(const std::vector<Segment>& rows, u128 pos_frac0, int dire
     }
     const uint64_t n = s.clocks;
     const uint64_t last = n - 1;  // register values v_0 .. v_{n-1}
+    const i128 v_last = vel_after(s.vel0, s.acc0, s.jerk, last);
     upd_v(s.vel0);
-    upd_v(vel_after(s.vel0, s.acc0, s.jerk, last));
-    if (s.jerk != 0) {
+    upd_v(v_last);
+    // v_{c+1} - v_c = a_c: while the acceleration keeps one sign over the
+    // row, v is monotone and its extremes are the two ends above.
+    const i128 a_before_last = last > 0 ? acc_after(s.acc0, s.jerk, last - 1) : s.acc0;
+    const bool monotone = (s.acc0 >= 0 && a_before_last >= 0) || (s.acc0 <= 0 && a_before_last <= 0);
+    if (s.jerk != 0 && !monotone) {
       const double ks = 0.5 - double(s.acc0) / double(s.jerk);
       for (int64_t c = int64_t(std::floor(ks)) - 1; c <= int64_t(std::floor(ks)) + 2; ++c) {
         if (c >= 0 && uint64_t(c) <= last) upd_v(vel_after(s.vel0, s.acc0, s.jerk, uint64_t(c)));
@@ -850,7 +861,7 @@ TableReport run_table(const std::vector<Segment>& rows, u128 pos_frac0, int dire
     }
     pos += pos_gain(s.vel0, s.acc0, s.jerk, n);
     rep.clocks += n;
-    prev_v = vel_after(s.vel0, s.acc0, s.jerk, last);
+    prev_v = v_last;
     prev_a = int64_t(acc_after(s.acc0, s.jerk, last));
     have_prev = true;
   }
