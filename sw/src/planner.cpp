@@ -713,7 +713,7 @@ PlanResult plan_magnitude(const MoveRequest& req, const PulseTiming& timing, dou
 namespace detail {
 
 PlanResult plan_continuation(const JunctionState& start, int64_t distance, double v_cruise, i128 ve,
-                             const Limits& lim, Clock clock) {
+                             const Limits& lim, Clock clock, bool messages) {
   const int dir = distance < 0 ? -1 : 1;
   const int64_t dist = distance * dir;
   const i128 vs = dir * start.velocity;
@@ -732,6 +732,7 @@ PlanResult plan_continuation(const JunctionState& start, int64_t distance, doubl
   const double v_end = vel_to_phys(ve, clock);
   auto solved = solve_profile(vs, v_start, v_cruise, ve, v_end, window, lim);
   if (const auto* why = std::get_if<Unsolvable>(&solved)) {
+    if (!messages) return PlanError{why->end_unreachable ? "v_end" : "distance", {}};
     if (!why->end_unreachable) {
       return PlanError{"distance", fmt::format("distance={}: too short for any motion with these limits", distance)};
     }
@@ -790,7 +791,7 @@ PlanResult Planner::plan_from(const JunctionState& start, const MoveRequest& req
     std::optional<Plan> best;
     while (ok - bad > 1 || bad - ok > 1) {
       const i128 mid = ok + (bad - ok) / 2;
-      PlanResult m = plan_continuation(start, req.distance, req.v_cruise, mid, lim, clock_);
+      PlanResult m = plan_continuation(start, req.distance, req.v_cruise, mid, lim, clock_, /*messages=*/false);
       if (auto* p = std::get_if<Plan>(&m)) {
         ok = mid;
         best = std::move(*p);
@@ -799,7 +800,7 @@ PlanResult Planner::plan_from(const JunctionState& start, const MoveRequest& req
       }
     }
     if (!best) {
-      PlanResult m = plan_continuation(start, req.distance, req.v_cruise, speed, lim, clock_);
+      PlanResult m = plan_continuation(start, req.distance, req.v_cruise, speed, lim, clock_, /*messages=*/false);
       if (auto* p = std::get_if<Plan>(&m)) best = std::move(*p);
     }
     if (best) {

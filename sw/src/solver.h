@@ -149,8 +149,9 @@ uint64_t rows_needed(const std::vector<Row>& rows);
 double closed_form_travel(double x, double y, double a, double j);
 
 // A move from an exact start state to end speed ve (LSB, magnitude): the
-// core of Planner::plan_from (no request validation).
+// core of Planner::plan_from (no request validation). messages = false: an
+// error names the parameter only (for searches that discard it).
 PlanResult plan_continuation(const JunctionState& start, int64_t distance, double v_cruise, i128 ve,
-                             const Limits& lim, Clock clock);
+                             const Limits& lim, Clock clock, bool messages = true);
 
 }  // namespace scurve::detail
