@@ -3,6 +3,9 @@
 //   plan_digest --write FILE     one hash line per request / stream move
 //   plan_digest --check FILE     recompute and compare; exit 1 on a difference
 //   plan_digest --slowest N      the N slowest plan() / plan_from() requests
+//   plan_digest --combined       one hash over all lines
+//   plan_digest --expect HEX     exit 1 unless the combined hash is HEX
+// PLAN_DIGEST_N sets the number of random requests per clock rate (4000).
 // The set: random_request() requests (accepted or not) through plan(), the
 // same requests through plan_from() from exact start states, and random
 // streams through StreamPlanner. Each hash covers the whole result: every
@@ -215,6 +218,18 @@ int main(int argc, char** argv) {
     }
   }
 
+  if (mode == "--combined" || mode == "--expect") {
+    Hash h;
+    for (const auto& l : lines) h.str(l);
+    std::snprintf(buf, sizeof buf, "%016llx", (unsigned long long)h.h);
+    std::printf("%zu hashes, combined %s\n", lines.size(), buf);
+    if (mode == "--expect" && file != buf) {
+      std::printf("expected %s: the planner's output changed (if on purpose, update the expected hash)\n",
+                  file.c_str());
+      return 1;
+    }
+    return 0;
+  }
   if (mode == "--write") {
     std::ofstream f(file);
     for (const auto& l : lines) f << l << "\n";
