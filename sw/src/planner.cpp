@@ -38,9 +38,13 @@ i128 row_gain(const Row& r) { return pos_gain(r.vel0, r.acc0, r.jerk, r.clocks);
 //   k clocks at jerk x, k at -x          : x*k^2   (the bulk, k ~ sqrt(rest/j))
 //   1 clock at y, m-1 holding y, 1 at -y : y*m     (what is left, < (2k+1)*j)
 //   1 clock at z, 1 at -z                : z       (what is left, < m)
-void append_exact_tail(std::vector<Row>& rows, i128 rest, int s, int64_t j_lim, int64_t a_max, Phase ph_up,
-                       Phase ph_down) {
-  const i128 x_max = std::min<i128>(j_lim, a_max);
+// The integer type T holds rest and every product below (int64_t when rest
+// < 2^62: the tail is shorter than one clock at the peak acceleration, so
+// always in practice; __int128 otherwise): the same values either way.
+template <class T>
+void append_exact_tail_in(RowList& rows, T rest, int s, int64_t j_lim, int64_t a_max, Phase ph_up,
+                          Phase ph_down) {
+  const T x_max = std::min<T>(j_lim, a_max);
   for (int iter = 0; iter < 64 && rest > 0; ++iter) {
     if (rest <= x_max) {
       rows.push_back({ph_up, 1, int64_t(s * rest), 0, 0});
@@ -49,19 +53,28 @@ void append_exact_tail(std::vector<Row>& rows, i128 rest, int s, int64_t j_lim, 
     }
     const int64_t k = std::max<int64_t>(1, int64_t(std::sqrt(double(rest) / double(x_max))));
     if (k >= 3 && i128(k) * x_max <= a_max) {
-      const i128 x = std::min<i128>(x_max, rest / (i128(k) * k));
+      const T x = std::min<T>(x_max, rest / (T(k) * k));
       rows.push_back({ph_up, uint64_t(k), int64_t(s * x), 0, 0});
       rows.push_back({ph_down, uint64_t(k), int64_t(-s * x), 0, 0});
       rest -= x * k * k;
       continue;
     }
-    const i128 m = (rest + x_max - 1) / x_max;
-    const i128 y = rest / m;
+    const T m = (rest + x_max - 1) / x_max;
+    const T y = rest / m;
     rows.push_back({ph_up, 1, int64_t(s * y), 0, 0});
     if (m > 1) rows.push_back({ph_up == Phase::PhAccJerkUp ? Phase::PhAccConst : Phase::PhDecConst,
                                uint64_t(m - 1), 0, int64_t(s * y), 0});
     rows.push_back({ph_down, 1, int64_t(-s * y), 0, 0});
     rest -= y * m;
+  }
+}
+
+void append_exact_tail(RowList& rows, i128 rest, int s, int64_t j_lim, int64_t a_max, Phase ph_up,
+                       Phase ph_down) {
+  if (rest < (i128(1) << 62)) {
+    append_exact_tail_in<int64_t>(rows, int64_t(rest), s, j_lim, a_max, ph_up, ph_down);
+  } else {
+    append_exact_tail_in<i128>(rows, rest, s, j_lim, a_max, ph_up, ph_down);
   }
 }
 
@@ -78,7 +91,6 @@ Transition make_transition(i128 v_a, i128 dv, int s, int64_t j_in, int64_t j_out
   const Phase ph_up = s > 0 ? Phase::PhAccJerkUp : Phase::PhDecJerkUp;
   const Phase ph_const = s > 0 ? Phase::PhAccConst : Phase::PhDecConst;
   const Phase ph_down = s > 0 ? Phase::PhAccJerkDown : Phase::PhDecJerkDown;
-  t.rows.reserve(exact ? 12 : 4);  // one allocation: up to 4 rows, an exact tail adds a few
   const double dvd = double(dv);
   const double v_hi = std::max(double(v_a), double(v_a) + s * dvd) / u.vel;
 
@@ -121,14 +133,18 @@ Transition make_transition(i128 v_a, i128 dv, int s, int64_t j_in, int64_t j_out
       // Ramp clocks: floor(a/j) keeps the jerk at exactly j (long ramps),
       // ceil(a/j) at a slightly lower jerk reaches nearer to a (ramps of a
       // few clocks); take whichever peaks higher.
-      const int64_t n_floor = std::max<int64_t>(1, a / j_in);
-      const int64_t n_ceil = (a + j_in - 1) / j_in;
-      const int64_t a_floor = n_floor * std::min(j_in, a / n_floor);
-      const int64_t a_ceil = n_ceil * (a / n_ceil);
+      const int64_t q = a / j_in;
+      const int64_t n_floor = std::max<int64_t>(1, q);
+      const int64_t n_ceil = q + (a != q * j_in);  // (a + j_in - 1) / j_in
+      const int64_t a_by_floor = a / n_floor;
+      const int64_t a_by_ceil = n_ceil == n_floor ? a_by_floor : a / n_ceil;
+      const int64_t a_floor = n_floor * std::min(j_in, a_by_floor);
+      const int64_t a_ceil = n_ceil * a_by_ceil;
       const int64_t n1 = a_floor >= a_ceil ? n_floor : n_ceil;
-      const int64_t j1 = std::min(j_in, a / n1);
+      const int64_t j1 = std::min(j_in, a_floor >= a_ceil ? a_by_floor : a_by_ceil);
       const int64_t a1 = n1 * j1;  // realised peak, <= a
-      const int64_t n3 = (a1 + j_out - 1) / j_out;
+      const int64_t q3 = a1 / j_out;
+      const int64_t n3 = q3 + (a1 != q3 * j_out);  // (a1 + j_out - 1) / j_out
       const int64_t j3 = a1 / n3;
       const int64_t r = a1 - n3 * j3;  // first r clocks at j3+1: a ends at exactly 0
       Row rows[4];
@@ -137,16 +153,13 @@ Transition make_transition(i128 v_a, i128 dv, int s, int64_t j_in, int64_t j_out
       rows[n_rows++] = {ph_const, 0, 0, s * a1, 0};
       if (r > 0) rows[n_rows++] = {ph_down, uint64_t(r), -s * (j3 + 1), 0, 0};
       rows[n_rows++] = {ph_down, uint64_t(n3 - r), -s * j3, 0, 0};
-      // Velocity gained by the jerk rows alone (the constant row adds n2*a1).
-      i128 dv_jerk = 0;
-      int64_t acc = 0;
-      for (int i = 0; i < n_rows; ++i) {
-        const Row& row = rows[i];
-        if (row.jerk == 0) continue;
-        dv_jerk += vel_after(0, acc, row.jerk, row.clocks);
-        acc = int64_t(acc_after(acc, row.jerk, row.clocks));
-      }
-      dv_jerk = s > 0 ? dv_jerk : -dv_jerk;
+      // Velocity gained by the jerk rows alone (the constant row adds n2*a1),
+      // in magnitude: up n1 clocks from 0 to a1, down r clocks at j3+1 to
+      // a2, then n3-r clocks at j3 to 0 (the executor's sums, modulo 2^128).
+      const uint64_t m3 = uint64_t(n3 - r);
+      const u128 a2 = u128(i128(a1 - r * (j3 + 1)));
+      const i128 dv_jerk = i128(choose2(uint64_t(n1)) * u128(j1) + u128(r) * u128(a1) -
+                                choose2(uint64_t(r)) * u128(j3 + 1) + u128(m3) * a2 - choose2(m3) * u128(j3));
       if (dv_jerk > dv) {
         if (a == 1) break;  // dv below one LSB of velocity change: nothing to do
         const double shrink = std::sqrt(double(dv) / double(dv_jerk));
@@ -172,6 +185,12 @@ Transition make_transition(i128 v_a, i128 dv, int s, int64_t j_in, int64_t j_out
   for (Row& row : t.rows) {
     row.vel0 = v;
     if (row.jerk != 0 || row.phase == ph_up) row.acc0 = a;
+    if (row.clocks == 1) {  // the closed forms at k = 1 (most exact-tail rows)
+      t.gain += v;
+      v = i128(u128(v) + u128(i128(row.acc0)));
+      a = row.acc0 + row.jerk;
+      continue;
+    }
     t.gain += row_gain(row);
     v = vel_after(row.vel0, row.acc0, row.jerk, row.clocks);
     a = int64_t(acc_after(row.acc0, row.jerk, row.clocks));
@@ -190,9 +209,13 @@ struct Candidate {
 // Plateau v1 (LSB) between the transitions vs -> v1 -> ve. Feasible when a
 // cruise of n >= 0 clocks at the plateau puts the travel in the window:
 // gain < hi, and with no plateau speed the gain itself must be >= lo.
-Candidate evaluate(i128 vs, i128 v1_lsb, i128 ve, const TravelWindow& w, const Limits& lim) {
+// probe: the caller keeps only feasible candidates, so an infeasible one may
+// stop early, without t2 or gain, once the first transition alone is too
+// far or covers the window (the second one's gain is >= 0).
+Candidate evaluate(i128 vs, i128 v1_lsb, i128 ve, const TravelWindow& w, const Limits& lim, bool probe = false) {
   Candidate c;
   c.t1 = transition_to(vs, v1_lsb, lim);
+  if (probe && (c.t1.too_far || c.t1.gain >= w.hi)) return c;
   c.t2 = transition_to(c.t1.v_end, ve, lim);
   c.too_far = c.t1.too_far || c.t2.too_far;
   if (c.too_far) return c;
@@ -219,6 +242,18 @@ double closed_form_plateau(i128 vs, i128 ve, i128 aim, double v_lo, double v_hi,
     (travel(mid) <= target ? lo : hi) = mid;
   }
   return lo;
+}
+
+// The plateau walk's factors 0.97^k, k = 1..kWalkSteps: std::pow's values,
+// computed once (a pow call per step cost as much as the step's arithmetic).
+constexpr int kWalkSteps = 2000;
+double walk_factor(int k) {
+  static const std::array<double, kWalkSteps + 1> table = [] {
+    std::array<double, kWalkSteps + 1> t{};
+    for (int i = 0; i <= kWalkSteps; ++i) t[size_t(i)] = std::pow(0.97, i);
+    return t;
+  }();
+  return table[size_t(k)];
 }
 
 }  // namespace
@@ -267,7 +302,7 @@ std::variant<Solved, Unsolvable> solve_profile(i128 vs, double v_start, double v
     try_cruise = guess >= v_cruise * (1.0 - 1.0 / 64);
   }
   Candidate c;
-  if (try_cruise) c = evaluate(vs, to_lsb(v_cruise), ve, w, lim);
+  if (try_cruise) c = evaluate(vs, to_lsb(v_cruise), ve, w, lim, /*probe=*/true);
   if (!c.feasible) {
     // Walking up, a plateau never goes below max(vs, ve): the double speeds
     // of an exact start state may round a few LSB under it.
@@ -278,7 +313,7 @@ std::variant<Solved, Unsolvable> solve_profile(i128 vs, double v_start, double v
     Candidate good_c;
     // Evaluates plateau v: a feasible one becomes `good`, else `bad`.
     const auto try_plateau = [&](double v) {
-      Candidate t = evaluate(vs, plateau_lsb(v), ve, w, lim);
+      Candidate t = evaluate(vs, plateau_lsb(v), ve, w, lim, /*probe=*/true);
       const bool ok = t.feasible;
       if (ok) {
         good = v;
@@ -298,19 +333,19 @@ std::variant<Solved, Unsolvable> solve_profile(i128 vs, double v_start, double v
       }
     }
     const bool far_is_stop = v_far_lsb == 0;  // vs = ve = 0: a tiny plateau always fits
-    if (good < 0) {
+    if (good < 0 && !far_is_stop) {  // (a stop has no least-travel fallback)
       Candidate far = evaluate(vs, v_far_lsb, ve, w, lim);
-      if (!far_is_stop && !far.feasible) {
+      if (!far.feasible) {
         Unsolvable why;
         why.end_unreachable = true;
         why.too_far = far.too_far;
         why.least_gain = far.gain;
         return why;
       }
-      if (lim.bisect_plateau && !far_is_stop) {
+      if (lim.bisect_plateau) {
         good = v_far;
         good_c = std::move(far);
-      } else if (!far_is_stop) {
+      } else {
         good_c = std::move(far);  // the walk's fallback (good stays < 0 until then)
       }
     }
@@ -325,8 +360,8 @@ std::variant<Solved, Unsolvable> solve_profile(i128 vs, double v_start, double v
       }
       bad = good;  // done: skip the walk and the fine bisection below
     }
-    for (int k = 1; k <= 2000 && good < 0; ++k) {
-      const double v = v_far + (v_cruise - v_far) * std::pow(0.97, k);
+    for (int k = 1; k <= kWalkSteps && good < 0; ++k) {
+      const double v = v_far + (v_cruise - v_far) * walk_factor(k);
       if (try_plateau(v)) break;
     }
     if (good < 0 && !far_is_stop) good = v_far;  // good_c holds the least-travel candidate
@@ -351,7 +386,8 @@ std::variant<Solved, Unsolvable> solve_profile(i128 vs, double v_start, double v
     n_cruise = uint64_t((w.lo - c.gain + out.plateau - 1) / out.plateau);
   }
   out.travel = c.gain + i128(n_cruise) * out.plateau;
-  out.rows = std::move(c.t1.rows);
+  out.rows.reserve(c.t1.rows.size() + 1 + c.t2.rows.size());
+  out.rows.assign(c.t1.rows.begin(), c.t1.rows.end());
   if (n_cruise > 0) out.rows.push_back({Phase::PhCruise, n_cruise, 0, 0, out.plateau});
   out.rows.insert(out.rows.end(), c.t2.rows.begin(), c.t2.rows.end());
   out.v_end = c.t2.rows.empty() ? out.plateau : c.t2.v_end;
@@ -419,11 +455,15 @@ int64_t needed_distance(i128 gain) {
   return int64_t(num <= 0 ? 0 : (num + i128(kOne) - 1) / i128(kOne));
 }
 
-// refine_minimum: on an unreachable end speed, search the shortest distance
-// the planner accepts, so the message names the true minimum (the closed-form
+// Refine: on an unreachable end speed, search the shortest distance the
+// planner accepts, so the message names the true minimum (the closed-form
 // estimate can be a pulse or two high). The search itself plans without it.
+// Probe: for the searches over end speed and distance, which only ask
+// whether a plan exists: errors carry the parameter but no message (the
+// message formatting costs more than an unreachable end speed's solve).
+enum class Detail { Refine, Message, Probe };
 PlanResult plan_magnitude(const MoveRequest& req, const PulseTiming& timing, double v_end, Clock clock,
-                          bool refine_minimum = true);
+                          Detail detail = Detail::Refine);
 
 }  // namespace
 
@@ -488,15 +528,18 @@ std::optional<PlanError> check_request(const MoveRequest& req, const PulseTiming
                                              req.distance, PlannerLimits::kMaxDistance)};
   }
   const double v_lim = step_rate_limit(timing, clock);
-  const std::string rate_note = fmt::format(
-      " pulses/s (step-rate limit: pulse high {} + low {} clocks at {} MHz)", timing.high,
-      timing.low, clock.hz / 1e6);
+  // The unit text names the step-rate limit; formatted only for an error.
+  const auto check_speed = [&](const char* name, double v, double lo) -> std::optional<PlanError> {
+    if (std::isfinite(v) && v >= lo && v <= v_lim) return std::nullopt;
+    const std::string rate_note = fmt::format(
+        " pulses/s (step-rate limit: pulse high {} + low {} clocks at {} MHz)", timing.high,
+        timing.low, clock.hz / 1e6);
+    return check_range(name, v, lo, v_lim, rate_note.c_str());
+  };
   const LimitRange acc_ok = accel_range(clock), jerk_ok = jerk_range(clock);
-  if (auto e = check_range("v_start", req.v_start, 0, v_lim, rate_note.c_str())) return *e;
-  if (auto e = check_range("v_cruise", req.v_cruise, PlannerLimits::kMinCruise, v_lim, rate_note.c_str())) {
-    return *e;
-  }
-  if (auto e = check_range("v_end", req.v_end, 0, v_lim, rate_note.c_str())) return *e;
+  if (auto e = check_speed("v_start", req.v_start, 0)) return *e;
+  if (auto e = check_speed("v_cruise", req.v_cruise, PlannerLimits::kMinCruise)) return *e;
+  if (auto e = check_speed("v_end", req.v_end, 0)) return *e;
   if (auto e = check_range("a_max", req.a_max, acc_ok.lo, acc_ok.hi,
                            "pulses/s^2")) {
     return *e;
@@ -525,7 +568,7 @@ PlanResult Planner::plan(const MoveRequest& req, const PulseTiming& timing) cons
   const Clock clock = clock_;
   if (auto e = check_request(req, timing, clock)) return *e;
   // The minimum-distance search runs only for an error the user will see.
-  PlanResult r = plan_magnitude(req, timing, req.v_end, clock, !req.adjust_end_speed);
+  PlanResult r = plan_magnitude(req, timing, req.v_end, clock, req.adjust_end_speed ? Detail::Message : Detail::Refine);
   if (std::holds_alternative<PlanError>(r) && req.adjust_end_speed &&
       std::get<PlanError>(r).parameter == "v_end" && req.v_end != req.v_start) {
     // Bisect the end speed between v_start (always reachable) and v_end.
@@ -533,23 +576,26 @@ PlanResult Planner::plan(const MoveRequest& req, const PulseTiming& timing) cons
     std::optional<Plan> best;
     for (int it = 0; it < 64; ++it) {
       const double mid = 0.5 * (ok + bad);
-      PlanResult m = plan_magnitude(req, timing, mid, clock, false);
-      if (std::holds_alternative<Plan>(m)) {
+      // Once ok and bad are neighbours the midpoint is one of them, whose
+      // outcome is known (planning is deterministic): nothing changes.
+      if (mid == bad || (mid == ok && best)) break;
+      PlanResult m = plan_magnitude(req, timing, mid, clock, Detail::Probe);
+      if (auto* p = std::get_if<Plan>(&m)) {
         ok = mid;
-        best = std::get<Plan>(m);
+        best = std::move(*p);
       } else {
         bad = mid;
       }
     }
     if (!best) {
-      PlanResult m = plan_magnitude(req, timing, req.v_start, clock, false);
+      PlanResult m = plan_magnitude(req, timing, req.v_start, clock, Detail::Probe);
       if (std::holds_alternative<Plan>(m)) best = std::get<Plan>(m);
     }
     if (best) {
       best->end_speed_adjusted = true;
       return *best;
     }
-    return plan_magnitude(req, timing, req.v_end, clock, true);
+    return plan_magnitude(req, timing, req.v_end, clock, Detail::Refine);
   }
   return r;
 }
@@ -594,7 +640,7 @@ std::optional<PlanError> check_table(Plan& plan, const Limits& lim, i128 v_cap, 
 }
 
 PlanResult plan_magnitude(const MoveRequest& req, const PulseTiming& timing, double v_end, Clock clock,
-                          bool refine_minimum) {
+                          Detail detail) {
   const int dir = req.distance < 0 ? -1 : 1;
   const int64_t dist = req.distance * dir;
   const Limits lim = make_limits(req, timing, clock);
@@ -608,6 +654,7 @@ PlanResult plan_magnitude(const MoveRequest& req, const PulseTiming& timing, dou
 
   auto solved = solve_profile(vs, req.v_start, req.v_cruise, ve, v_end, window, lim);
   if (const auto* why = std::get_if<Unsolvable>(&solved)) {
+    if (detail == Detail::Probe) return PlanError{why->end_unreachable ? "v_end" : "distance", {}};
     if (!why->end_unreachable) {
       return PlanError{"distance", fmt::format("distance={}: too short for any motion with these limits", dist)};
     }
@@ -615,12 +662,12 @@ PlanResult plan_magnitude(const MoveRequest& req, const PulseTiming& timing, dou
     std::string need = "more than 1e12";
     if (!why->too_far) {
       int64_t min_dist = needed_distance(why->least_gain);
-      if (refine_minimum) {
+      if (detail == Detail::Refine) {
         const auto accepts = [&](int64_t d) {
           MoveRequest r = req;
           r.distance = d * dir;
           return d <= PlannerLimits::kMaxDistance &&
-                 std::holds_alternative<Plan>(plan_magnitude(r, timing, v_end, clock, false));
+                 std::holds_alternative<Plan>(plan_magnitude(r, timing, v_end, clock, Detail::Probe));
         };
         // Local search from the estimate: the result is accepted and one
         // pulse less is not.
@@ -667,7 +714,7 @@ PlanResult plan_magnitude(const MoveRequest& req, const PulseTiming& timing, dou
 namespace detail {
 
 PlanResult plan_continuation(const JunctionState& start, int64_t distance, double v_cruise, i128 ve,
-                             const Limits& lim, Clock clock) {
+                             const Limits& lim, Clock clock, bool messages) {
   const int dir = distance < 0 ? -1 : 1;
   const int64_t dist = distance * dir;
   const i128 vs = dir * start.velocity;
@@ -686,6 +733,7 @@ PlanResult plan_continuation(const JunctionState& start, int64_t distance, doubl
   const double v_end = vel_to_phys(ve, clock);
   auto solved = solve_profile(vs, v_start, v_cruise, ve, v_end, window, lim);
   if (const auto* why = std::get_if<Unsolvable>(&solved)) {
+    if (!messages) return PlanError{why->end_unreachable ? "v_end" : "distance", {}};
     if (!why->end_unreachable) {
       return PlanError{"distance", fmt::format("distance={}: too short for any motion with these limits", distance)};
     }
@@ -744,7 +792,7 @@ PlanResult Planner::plan_from(const JunctionState& start, const MoveRequest& req
     std::optional<Plan> best;
     while (ok - bad > 1 || bad - ok > 1) {
       const i128 mid = ok + (bad - ok) / 2;
-      PlanResult m = plan_continuation(start, req.distance, req.v_cruise, mid, lim, clock_);
+      PlanResult m = plan_continuation(start, req.distance, req.v_cruise, mid, lim, clock_, /*messages=*/false);
       if (auto* p = std::get_if<Plan>(&m)) {
         ok = mid;
         best = std::move(*p);
@@ -753,7 +801,7 @@ PlanResult Planner::plan_from(const JunctionState& start, const MoveRequest& req
       }
     }
     if (!best) {
-      PlanResult m = plan_continuation(start, req.distance, req.v_cruise, speed, lim, clock_);
+      PlanResult m = plan_continuation(start, req.distance, req.v_cruise, speed, lim, clock_, /*messages=*/false);
       if (auto* p = std::get_if<Plan>(&m)) best = std::move(*p);
     }
     if (best) {
@@ -793,9 +841,14 @@ TableReport run_table(const std::vector<Segment>& rows, u128 pos_frac0, int dire
     }
     const uint64_t n = s.clocks;
     const uint64_t last = n - 1;  // register values v_0 .. v_{n-1}
+    const i128 v_last = vel_after(s.vel0, s.acc0, s.jerk, last);
     upd_v(s.vel0);
-    upd_v(vel_after(s.vel0, s.acc0, s.jerk, last));
-    if (s.jerk != 0) {
+    upd_v(v_last);
+    // v_{c+1} - v_c = a_c: while the acceleration keeps one sign over the
+    // row, v is monotone and its extremes are the two ends above.
+    const i128 a_before_last = last > 0 ? acc_after(s.acc0, s.jerk, last - 1) : s.acc0;
+    const bool monotone = (s.acc0 >= 0 && a_before_last >= 0) || (s.acc0 <= 0 && a_before_last <= 0);
+    if (s.jerk != 0 && !monotone) {
       const double ks = 0.5 - double(s.acc0) / double(s.jerk);
       for (int64_t c = int64_t(std::floor(ks)) - 1; c <= int64_t(std::floor(ks)) + 2; ++c) {
         if (c >= 0 && uint64_t(c) <= last) upd_v(vel_after(s.vel0, s.acc0, s.jerk, uint64_t(c)));
@@ -810,7 +863,7 @@ TableReport run_table(const std::vector<Segment>& rows, u128 pos_frac0, int dire
     }
     pos += pos_gain(s.vel0, s.acc0, s.jerk, n);
     rep.clocks += n;
-    prev_v = vel_after(s.vel0, s.acc0, s.jerk, last);
+    prev_v = v_last;
     prev_a = int64_t(acc_after(s.acc0, s.jerk, last));
     have_prev = true;
   }

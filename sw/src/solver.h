@@ -3,6 +3,7 @@
 // search and the row finishing. Not installed; not part of the API.
 #pragma once
 
+#include <algorithm>
 #include <optional>
 #include <string>
 #include <variant>
@@ -31,8 +32,46 @@ struct Row {
   i128 vel0;
 };
 
+// The rows of one transition: at most 4, or a few more with an exact tail.
+// Held inline (a transition is built for every candidate plateau the
+// searches try, so a heap allocation each time would dominate); more than
+// kInline rows spill to the heap.
+class RowList {
+ public:
+  static constexpr size_t kInline = 20;
+  RowList() = default;
+  RowList(const RowList& o) { *this = o; }
+  RowList& operator=(const RowList& o) {
+    if (this == &o) return *this;
+    n_ = o.n_;
+    heap_ = o.heap_;
+    std::copy(o.inline_, o.inline_ + std::min(n_, kInline), inline_);
+    return *this;
+  }
+  void push_back(const Row& r) {
+    if (n_ < kInline && heap_.empty()) {
+      inline_[n_++] = r;
+      return;
+    }
+    if (heap_.empty()) heap_.assign(inline_, inline_ + n_);
+    heap_.push_back(r);
+    ++n_;
+  }
+  size_t size() const { return n_; }
+  bool empty() const { return n_ == 0; }
+  Row* begin() { return heap_.empty() ? inline_ : heap_.data(); }
+  Row* end() { return begin() + n_; }
+  const Row* begin() const { return heap_.empty() ? inline_ : heap_.data(); }
+  const Row* end() const { return begin() + n_; }
+
+ private:
+  Row inline_[kInline];
+  size_t n_ = 0;
+  std::vector<Row> heap_;  // all rows once spilled
+};
+
 struct Transition {
-  std::vector<Row> rows;
+  RowList rows;
   i128 v_end = 0;
   i128 gain = 0;             // position LSBs covered
   i128 shortfall_bound = 0;  // the realised change falls short of dv by <= this
@@ -110,8 +149,9 @@ uint64_t rows_needed(const std::vector<Row>& rows);
 double closed_form_travel(double x, double y, double a, double j);
 
 // A move from an exact start state to end speed ve (LSB, magnitude): the
-// core of Planner::plan_from (no request validation).
+// core of Planner::plan_from (no request validation). messages = false: an
+// error names the parameter only (for searches that discard it).
 PlanResult plan_continuation(const JunctionState& start, int64_t distance, double v_cruise, i128 ve,
-                             const Limits& lim, Clock clock);
+                             const Limits& lim, Clock clock, bool messages = true);
 
 }  // namespace scurve::detail
