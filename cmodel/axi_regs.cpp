@@ -26,6 +26,7 @@ bool locked_addr(uint16_t a) {
   switch (a) {
     case RegPulseTime: case RegDirTime:
     case RegPosFrac0: case RegPosFrac0 + 4: case RegPosFrac0 + 8:
+    case RegStopJerk: case RegStopJerk + 4: case RegStopAcc: case RegStopAcc + 4:
       return true;
     default:
       return false;
@@ -78,6 +79,8 @@ uint32_t AxiRegs::read_word(uint16_t a, const RegsSide& side, const CoreOutputs&
       s |= uint32_t(core.seg_idx & ((1u << SegIdxW) - 1)) << StatusSegIdxLsb;
       if (core.underrun) s |= bit(StatusUnderrunBit);
       if (core.discont) s |= bit(StatusDiscontBit);
+      if (core.stopping) s |= bit(StatusStoppingBit);
+      if (core.overshoot) s |= bit(StatusOvershootBit);
       return s;
     }
     case RegErr:
@@ -105,6 +108,10 @@ uint32_t AxiRegs::read_word(uint16_t a, const RegsSide& side, const CoreOutputs&
     case RegSegClocks: return q_.st_clocks;
     case RegSegJerk: return uint32_t(q_.st_jerk);
     case RegSegJerk + 4: return uint32_t(q_.st_jerk >> 32);
+    case RegStopJerk: return uint32_t(q_.stop_jerk);
+    case RegStopJerk + 4: return uint32_t(q_.stop_jerk >> 32);
+    case RegStopAcc: return uint32_t(q_.stop_acc);
+    case RegStopAcc + 4: return uint32_t(q_.stop_acc >> 32);
     case RegSegAcc0: return uint32_t(q_.st_acc0);
     case RegSegAcc0 + 4: return uint32_t(q_.st_acc0 >> 32);
     case RegSegVel0: return get_word(q_.st_vel0, 0);
@@ -126,6 +133,7 @@ void AxiRegs::step(const AxiIn& in, const RegsSide& side, const CoreOutputs& cor
   d.flush = false;
   d.start = false;
   d.abort = false;
+  d.stop = false;
   bool set_reject = false, set_bad = false;
   const bool busy_eff = busy(core);
   const bool do_write = q.aw_full && q.w_full && !q.bvalid;
@@ -170,12 +178,12 @@ void AxiRegs::step(const AxiIn& in, const RegsSide& side, const CoreOutputs& cor
           break;
         case RegCmd:
           if (q.wstrb & 1) {
-            if ((wd & bit(CmdStopBit)) || (wd & bit(CmdEstopBit))) {
+            if (wd & bit(CmdEstopBit)) {
               d.abort = true;
-              if (wd & bit(CmdEstopBit)) {
-                d.en = false;
-                d.err_estop = true;
-              }
+              d.en = false;
+              d.err_estop = true;
+            } else if (wd & bit(CmdStopBit)) {
+              d.stop = true;
             } else if (wd & bit(CmdStartBit)) {
               if (busy_eff || q.err_estop || !q.en) {
                 d.bresp = kSlvErr;
@@ -232,6 +240,18 @@ void AxiRegs::step(const AxiIn& in, const RegsSide& side, const CoreOutputs& cor
           break;
         case RegSegJerk + 4:
           d.st_jerk = uint64_t(put_word(q.st_jerk, 32, wmerge(uint32_t(q.st_jerk >> 32), wd, wmask), JerkW));
+          break;
+        case RegStopJerk:
+          d.stop_jerk = uint64_t(put_word(q.stop_jerk, 0, wmerge(uint32_t(q.stop_jerk), wd, wmask), JerkW));
+          break;
+        case RegStopJerk + 4:
+          d.stop_jerk = uint64_t(put_word(q.stop_jerk, 32, wmerge(uint32_t(q.stop_jerk >> 32), wd, wmask), JerkW));
+          break;
+        case RegStopAcc:
+          d.stop_acc = uint64_t(put_word(q.stop_acc, 0, wmerge(uint32_t(q.stop_acc), wd, wmask), AccW));
+          break;
+        case RegStopAcc + 4:
+          d.stop_acc = uint64_t(put_word(q.stop_acc, 32, wmerge(uint32_t(q.stop_acc >> 32), wd, wmask), AccW));
           break;
         case RegSegAcc0:
           d.st_acc0 = uint64_t(put_word(q.st_acc0, 0, wmerge(uint32_t(q.st_acc0), wd, wmask), AccW));
@@ -334,6 +354,9 @@ CoreInputs AxiRegs::core_inputs() const {
   c.pos_frac0 = q_.frac0;
   c.start = q_.start;
   c.abort = q_.abort;
+  c.stop = q_.stop;
+  c.stop_jerk = q_.stop_jerk;
+  c.stop_acc = q_.stop_acc;
   return c;
 }
 
@@ -377,6 +400,9 @@ ServoInputs AxiServo::servo_inputs() const {
   si.pos_frac0 = ci.pos_frac0;
   si.start = ci.start;
   si.abort = ci.abort;
+  si.stop = ci.stop;
+  si.stop_jerk = ci.stop_jerk;
+  si.stop_acc = ci.stop_acc;
   return si;
 }
 
@@ -394,6 +420,8 @@ void AxiServo::step(const AxiIn& in, const RegsSide& side) {
   co.seg_idx = 0;
   co.underrun = so.underrun;
   co.discont = so.discont;
+  co.stopping = so.stopping;
+  co.overshoot = so.overshoot;
   co.move_done = so.move_done;
   co.move_idx = so.move_idx;
   co.boundary_pos = so.boundary_pos;

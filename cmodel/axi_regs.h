@@ -88,6 +88,9 @@ class AxiRegs {
     bool start = false;
     bool start_d1 = false;
     bool abort = false;
+    bool stop = false;                      // CMD.STOP pulse
+    uint64_t stop_jerk = StopJerkReset;     // STOP_JERK, JerkW bits
+    uint64_t stop_acc = StopAccReset;       // STOP_ACC, AccW bits
     bool err_reject = false;
     bool err_bad = false;
     bool err_estop = false;

@@ -76,7 +76,9 @@ module sc_axi_axis (
   logic signed [JerkW-1:0]     unused_ref_jerk;
   logic signed [PendW-1:0]     unused_pending;
   logic                        unused_exec_start, unused_abort, unused_ref_done, unused_step_busy;
-  logic                        unused_stopping, unused_overshoot;
+  logic                        stop, stopping, overshoot;
+  logic [sc_pkg::JerkW-1:0]    stop_jerk;
+  logic [sc_pkg::AccW-1:0]     stop_acc;
   logic                        unused_closed;
   logic [sc_pkg::CtlCfgW-1:0]  unused_ctl_cfg;
 
@@ -119,6 +121,9 @@ module sc_axi_axis (
     .pos_frac0_o     (pos_frac0),
     .start_o         (start),
     .abort_o         (abort),
+    .stop_o          (stop),
+    .stop_jerk_o     (stop_jerk),
+    .stop_acc_o      (stop_acc),
     .closed_loop_o   (unused_closed),
     .ctl_cfg_o       (unused_ctl_cfg),
     .busy_i          (core_busy),
@@ -135,6 +140,8 @@ module sc_axi_axis (
     .cl_stat_i       ({(sc_pkg::ClStatWords*32){1'b0}}),
     .underrun_i      (underrun),
     .discont_i       (discont),
+    .stopping_i      (stopping),
+    .overshoot_i     (overshoot),
     .move_done_i     (move_done),
     .move_idx_i      (move_idx),
     .boundary_pos_i  (boundary_pos),
@@ -163,11 +170,9 @@ module sc_axi_axis (
     .pos_frac0_i     (pos_frac0),
     .start_i         (start),
     .abort_i         (abort),
-    // CMD.STOP still aborts; the stop limits are their reset values until
-    // the register file has STOP_JERK / STOP_ACC.
-    .stop_i          (1'b0),
-    .stop_jerk_i     (sc_pkg::StopJerkReset),
-    .stop_acc_i      (sc_pkg::StopAccReset),
+    .stop_i          (stop),
+    .stop_jerk_i     (stop_jerk),
+    .stop_acc_i      (stop_acc),
     .ext_sel_i        (1'b0),
     .ext_req_i        (1'b0),
     .ext_fwd_i        (1'b0),
@@ -190,8 +195,8 @@ module sc_axi_axis (
     .fault_overrun_o (fault_overrun),
     .underrun_o      (underrun),
     .discont_o       (discont),
-    .stopping_o      (unused_stopping),
-    .overshoot_o     (unused_overshoot),
+    .stopping_o      (stopping),
+    .overshoot_o     (overshoot),
     .move_done_o     (move_done),
     .move_idx_o      (move_idx),
     .boundary_pos_o  (boundary_pos),

@@ -72,7 +72,10 @@ module sc_axi_regs #(
   output logic                                fifo_flush_o,
   output logic [sc_pkg::FracBits-1:0]         pos_frac0_o,
   output logic                                start_o,
-  output logic                                abort_o,
+  output logic                                abort_o,     // immediate stop (CMD.ESTOP, e-stop input)
+  output logic                                stop_o,      // controlled stop (CMD.STOP)
+  output logic [sc_pkg::JerkW-1:0]            stop_jerk_o, // STOP_JERK
+  output logic [sc_pkg::AccW-1:0]             stop_acc_o,  // STOP_ACC
   output logic                                closed_loop_o,
   output logic [sc_pkg::CtlCfgW-1:0]          ctl_cfg_o,   // controller configuration
 
@@ -88,6 +91,8 @@ module sc_axi_regs #(
   input  logic [sc_pkg::SegIdxW-1:0]          seg_idx_i,
   input  logic                                underrun_i,
   input  logic                                discont_i,
+  input  logic                                stopping_i,
+  input  logic                                overshoot_i,
   input  logic                                move_done_i,
   input  logic [sc_pkg::MoveIdxW-1:0]         move_idx_i,
   input  logic signed [sc_pkg::PosIntW-1:0]   boundary_pos_i,
@@ -134,6 +139,10 @@ module sc_axi_regs #(
   localparam logic [AW-1:0] ABoundPos  = AW'(sc_pkg::RegBoundaryPos);
   localparam logic [AW-1:0] AIrqStat   = AW'(sc_pkg::RegIrqStatus);
   localparam logic [AW-1:0] AIrqEn     = AW'(sc_pkg::RegIrqEnable);
+  localparam logic [AW-1:0] AStopJ0    = AW'(sc_pkg::RegStopJerk);
+  localparam logic [AW-1:0] AStopJ1    = AW'(sc_pkg::RegStopJerk + 4);
+  localparam logic [AW-1:0] AStopA0    = AW'(sc_pkg::RegStopAcc);
+  localparam logic [AW-1:0] AStopA1    = AW'(sc_pkg::RegStopAcc + 4);
   localparam logic [AW-1:0] APulseTime = AW'(sc_pkg::RegPulseTime);
   localparam logic [AW-1:0] ADirTime   = AW'(sc_pkg::RegDirTime);
   localparam logic [AW-1:0] AFrac0     = AW'(sc_pkg::RegPosFrac0);
@@ -207,6 +216,9 @@ module sc_axi_regs #(
   logic                      start_q, start_d;
   logic                      start_d1_q;           // START accepted, core not busy yet
   logic                      abort_q, abort_d;
+  logic                      stop_q, stop_d;
+  logic [JerkW-1:0]          stop_jerk_q, stop_jerk_d;
+  logic [AccW-1:0]           stop_acc_q, stop_acc_d;
   logic                      err_reject_q, err_reject_d;
   logic                      err_bad_q, err_bad_d;
   logic                      err_estop_q, err_estop_d;
@@ -259,7 +271,8 @@ module sc_axi_regs #(
 
   always_comb begin
     unique case (awaddr_q)
-      APulseTime, ADirTime, AFrac0, AFrac1, AFrac2: w_locked = 1'b1;
+      APulseTime, ADirTime, AFrac0, AFrac1, AFrac2,
+      AStopJ0, AStopJ1, AStopA0, AStopA1:           w_locked = 1'b1;
       default:                                      w_locked = w_cfg_hit;
     endcase
   end
@@ -280,6 +293,8 @@ module sc_axi_regs #(
     status_word[sc_pkg::StatusSegIdxLsb +: SegIdxW] = seg_idx_i;
     status_word[sc_pkg::StatusUnderrunBit]          = underrun_i;
     status_word[sc_pkg::StatusDiscontBit]           = discont_i;
+    status_word[sc_pkg::StatusStoppingBit]          = stopping_i;
+    status_word[sc_pkg::StatusOvershootBit]         = overshoot_i;
   end
 
   // interrupt causes: events of the core's status (edges of its levels)
@@ -335,6 +350,10 @@ module sc_axi_regs #(
       ASegClocks: rd_word = st_clocks_q;
       AJerk0:     rd_word = st_jerk_q[31:0];
       AJerk1:     rd_word = 32'(st_jerk_q[JerkW-1:32]);
+      AStopJ0:    rd_word = stop_jerk_q[31:0];
+      AStopJ1:    rd_word = 32'(stop_jerk_q[JerkW-1:32]);
+      AStopA0:    rd_word = stop_acc_q[31:0];
+      AStopA1:    rd_word = stop_acc_q[AccW-1:32];
       AAcc0:      rd_word = st_acc0_q[31:0];
       AAcc1:      rd_word = st_acc0_q[63:32];
       AVel0:      rd_word = st_vel0_q[31:0];
@@ -384,6 +403,9 @@ module sc_axi_regs #(
     flush_d      = 1'b0;
     start_d      = 1'b0;
     abort_d      = 1'b0;
+    stop_d       = 1'b0;
+    stop_jerk_d  = stop_jerk_q;
+    stop_acc_d   = stop_acc_q;
     err_reject_d = err_reject_q;
     err_bad_d    = err_bad_q;
     err_estop_d  = err_estop_q;
@@ -434,12 +456,12 @@ module sc_axi_regs #(
           end
           ACmd: begin
             if (wstrb_q[0]) begin
-              if (wd[CmdStopBit] || wd[CmdEstopBit]) begin
-                abort_d = 1'b1;
-                if (wd[CmdEstopBit]) begin
-                  en_d        = 1'b0;
-                  err_estop_d = 1'b1;
-                end
+              if (wd[CmdEstopBit]) begin
+                abort_d     = 1'b1;
+                en_d        = 1'b0;
+                err_estop_d = 1'b1;
+              end else if (wd[CmdStopBit]) begin
+                stop_d = 1'b1;
               end else if (wd[CmdStartBit]) begin
                 if (busy_eff || err_estop_q || !en_q) begin
                   bresp_d    = RespSlvErr;
@@ -495,6 +517,10 @@ module sc_axi_regs #(
           ASegClocks: st_clocks_d = wmerge(st_clocks_q, wd, wmask);
           AJerk0:     st_jerk_d[31:0] = wmerge(st_jerk_q[31:0], wd, wmask);
           AJerk1:     st_jerk_d[JerkW-1:32] = (JerkW-32)'(wmerge(32'(st_jerk_q[JerkW-1:32]), wd, wmask));
+          AStopJ0:    stop_jerk_d[31:0] = wmerge(stop_jerk_q[31:0], wd, wmask);
+          AStopJ1:    stop_jerk_d[JerkW-1:32] = (JerkW-32)'(wmerge(32'(stop_jerk_q[JerkW-1:32]), wd, wmask));
+          AStopA0:    stop_acc_d[31:0] = wmerge(stop_acc_q[31:0], wd, wmask);
+          AStopA1:    stop_acc_d[AccW-1:32] = wmerge(stop_acc_q[AccW-1:32], wd, wmask);
           AAcc0:      st_acc0_d[31:0]  = wmerge(st_acc0_q[31:0], wd, wmask);
           AAcc1:      st_acc0_d[63:32] = wmerge(st_acc0_q[63:32], wd, wmask);
           AVel0:      st_vel0_d[31:0]  = wmerge(st_vel0_q[31:0], wd, wmask);
@@ -600,6 +626,9 @@ module sc_axi_regs #(
       start_q      <= 1'b0;
       start_d1_q   <= 1'b0;
       abort_q      <= 1'b0;
+      stop_q       <= 1'b0;
+      stop_jerk_q  <= sc_pkg::StopJerkReset;
+      stop_acc_q   <= sc_pkg::StopAccReset;
       err_reject_q <= 1'b0;
       err_bad_q    <= 1'b0;
       err_estop_q  <= 1'b0;
@@ -645,6 +674,9 @@ module sc_axi_regs #(
       start_q      <= start_d;
       start_d1_q   <= start_q;
       abort_q      <= abort_d;
+      stop_q       <= stop_d;
+      stop_jerk_q  <= stop_jerk_d;
+      stop_acc_q   <= stop_acc_d;
       err_reject_q <= err_reject_d;
       err_bad_q    <= err_bad_d;
       err_estop_q  <= err_estop_d;
@@ -679,6 +711,9 @@ module sc_axi_regs #(
   assign pos_frac0_o = frac0_q;
   assign start_o     = start_q;
   assign abort_o     = abort_q;
+  assign stop_o      = stop_q;
+  assign stop_jerk_o = stop_jerk_q;
+  assign stop_acc_o  = stop_acc_q;
   assign closed_loop_o = closed_q;
   assign ctl_cfg_o   = sc_pkg::ctl_cfg_from_words(cl_q);
   assign busy_o      = busy_eff;

@@ -76,7 +76,9 @@ module sc_axi_servo (
   logic signed [VelW-1:0]      seg_vel0;
   logic [sc_pkg::RowFlagW-1:0] row_flags;
   logic                        underrun, discont, move_done, fifo_full;
-  logic                        unused_stopping, unused_overshoot;
+  logic                        stop, stopping, overshoot;
+  logic [sc_pkg::JerkW-1:0]    stop_jerk;
+  logic [sc_pkg::AccW-1:0]     stop_acc;
   logic [sc_pkg::MoveIdxW-1:0] move_idx;
   logic signed [sc_pkg::PosIntW-1:0] boundary_pos;
   logic [RowLevelW-1:0]        fifo_level;
@@ -167,6 +169,9 @@ module sc_axi_servo (
     .pos_frac0_o     (pos_frac0),
     .start_o         (start),
     .abort_o         (abort),
+    .stop_o          (stop),
+    .stop_jerk_o     (stop_jerk),
+    .stop_acc_o      (stop_acc),
     .closed_loop_o   (closed_loop),
     .ctl_cfg_o       (ctl_cfg),
     .busy_i          (core_busy),
@@ -183,6 +188,8 @@ module sc_axi_servo (
     .cl_stat_i       (cl_stat),
     .underrun_i      (underrun),
     .discont_i       (discont),
+    .stopping_i      (stopping),
+    .overshoot_i     (overshoot),
     .move_done_i     (move_done),
     .move_idx_i      (move_idx),
     .boundary_pos_i  (boundary_pos),
@@ -212,11 +219,9 @@ module sc_axi_servo (
     .pos_frac0_i       (pos_frac0),
     .start_i           (start),
     .abort_i           (abort),
-    // CMD.STOP still aborts; the stop limits are their reset values until
-    // the register file has STOP_JERK / STOP_ACC.
-    .stop_i            (1'b0),
-    .stop_jerk_i       (sc_pkg::StopJerkReset),
-    .stop_acc_i        (sc_pkg::StopAccReset),
+    .stop_i            (stop),
+    .stop_jerk_i       (stop_jerk),
+    .stop_acc_i        (stop_acc),
     .enc_a_i,
     .enc_b_i,
     .ctl_cfg_i         (ctl_cfg),
@@ -230,8 +235,8 @@ module sc_axi_servo (
     .fault_overrun_o   (fault_overrun),
     .underrun_o        (underrun),
     .discont_o         (discont),
-    .stopping_o        (unused_stopping),
-    .overshoot_o       (unused_overshoot),
+    .stopping_o        (stopping),
+    .overshoot_o       (overshoot),
     .move_done_o       (move_done),
     .move_idx_o        (move_idx),
     .boundary_pos_o    (boundary_pos),

@@ -193,11 +193,11 @@ package sc_pkg;
   localparam int CtrlClosedBit = 1;      //@field CTRL CLOSED_LOOP 1 "sc_axi_servo: 1 = closed loop (encoder feedback), 0 = open loop; a write changing it while busy is refused (ignored by sc_axi_axis)"
   localparam int RegCmd        = 32'h0000_0008;  //@reg CMD WO "commands: write 1 to act; reads 0"
   localparam int CmdStartBit   = 0;      //@field CMD START 1 "start the rows in the FIFO (refused with SLVERR + ERR.REJECT while busy, e-stopped or disabled)"
-  localparam int CmdStopBit    = 1;      //@field CMD STOP 1 "abort the stream: the profile stops at once, the FIFO is emptied, a STEP pulse in flight completes"
-  localparam int CmdEstopBit   = 2;      //@field CMD ESTOP 1 "STOP, clear CTRL.ENABLE and latch ERR.ESTOP"
+  localparam int CmdStopBit    = 1;      //@field CMD STOP 1 "controlled stop: jerk-limited to rest with STOP_JERK / STOP_ACC, the FIFO is emptied (ignored while idle)"
+  localparam int CmdEstopBit   = 2;      //@field CMD ESTOP 1 "immediate stop: the profile stops at once (a STEP pulse in flight completes), CTRL.ENABLE cleared, ERR.ESTOP latched"
   localparam int CmdFlushBit   = 3;      //@field CMD FLUSH 1 "empty the row FIFO (refused with SLVERR + ERR.REJECT while busy)"
   localparam int RegStatus     = 32'h0000_000C;  //@reg STATUS RO "axis status"
-  localparam int StatusPhaseLsb        = 0;   //@field STATUS PHASE PhaseW "phase code (0 idle .. 8 done, 9 abort, 10 fault)"
+  localparam int StatusPhaseLsb        = 0;   //@field STATUS PHASE PhaseW "phase code (0 idle .. 8 done, 9 abort, 10 fault, 11 controlled stop)"
   localparam int StatusBusyBit         = 4;   //@field STATUS BUSY 1 "a move is running or STEP pulses are owed (from the accepted START on)"
   localparam int StatusDoneBit         = 5;   //@field STATUS DONE 1 "the stream has ended and the last pulse has left the pin"
   localparam int StatusEnBit           = 6;   //@field STATUS EN 1 "level of the EN pin"
@@ -211,6 +211,8 @@ package sc_pkg;
   localparam int StatusUnderrunBit     = 15;  //@field STATUS UNDERRUN 1 "the FIFO ran dry while moving: the axis stopped (until the next START)"
   localparam int StatusSegIdxLsb       = 16;  //@field STATUS SEG_IDX SegIdxW "row of the current move being executed (modulo 16)"
   localparam int StatusDiscontBit      = 20;  //@field STATUS DISCONTINUITY 1 "a row did not continue the motion exactly: the axis stopped (until the next START)"
+  localparam int StatusStoppingBit     = 21;  //@field STATUS STOPPING 1 "a controlled stop runs (CMD.STOP, underrun, discontinuity)"
+  localparam int StatusOvershootBit    = 22;  //@field STATUS OVERSHOOT 1 "the last controlled stop could not avoid a velocity reversal within STOP_JERK (limits below the plan's)"
   localparam int RegErr        = 32'h0000_0010;  //@reg ERR W1C "sticky error flags: write 1 to clear"
   localparam int ErrRejectBit  = 0;      //@field ERR REJECT 1 "a table/config/START write was refused (busy, e-stopped or disabled): SLVERR, nothing changed"
   localparam int ErrBadAddrBit = 1;      //@field ERR BAD_ACCESS 1 "an access answered DECERR (no register) or SLVERR (write to a read-only register)"
@@ -370,7 +372,10 @@ package sc_pkg;
   localparam int IrqW           = 5;
   localparam int RegIrqEnable  = 32'h0000_00FC;  //@reg IRQ_ENABLE RW "interrupt enables, one per IRQ_STATUS bit"
   localparam int IrqEnableLsb  = 0;      //@field IRQ_ENABLE MASK IrqW "bit i enables IRQ_STATUS bit i"
-  // Writes to PULSE_TIME, DIR_TIME, POS_FRAC0, CMD.START and CMD.FLUSH
+  // Controlled-stop limits (motion control, from 0x100 on).
+  localparam int RegStopJerk   = 32'h0000_0100;  //@reg STOP_JERK RW wide=JerkW reset=StopJerkReset "controlled-stop jerk limit J, executor LSB (2^-80 pulse/clock^3, > 0), 2 words low first"
+  localparam int RegStopAcc    = 32'h0000_0108;  //@reg STOP_ACC RW wide=AccW reset=StopAccReset "controlled-stop deceleration limit D, executor LSB (2^-80 pulse/clock^2, > 0), 2 words low first"
+  // Writes to PULSE_TIME, DIR_TIME, POS_FRAC0, STOP_JERK, STOP_ACC, CMD.START and CMD.FLUSH
   // while STATUS.BUSY is set are refused (SLVERR, ERR.REJECT); so are writes
   // to the controller settings (CL_CFG .. SETTLE_RATE). The row staging
   // registers and ROW_PUSH stay open: the host streams while the axis runs.

@@ -18,9 +18,9 @@
 //   * row flagged STREAM_END: the stream ends (v, a, j to 0: the plan's end);
 //   * else the head row is loaded if it continues exactly;
 //   * else, with the FIFO empty and the end state at rest (v = a = 0), the
-//     stream ends; moving, it is an underrun: the axis stops.
-//   * else (the FIFO ran dry while moving, the head row does not continue,
-//     or it has no clocks): a controlled stop.
+//     stream ends;
+//   * else (the FIFO ran dry while moving: underrun; the head row does not
+//     continue: discontinuity; or it has no clocks): a controlled stop.
 // A row flagged MOVE_END closes a move: move_idx_o counts the moves done
 // since START and boundary_pos_o holds the integer position at that
 // boundary (after the step of its last clock).

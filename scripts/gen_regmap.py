@@ -21,7 +21,9 @@ import re
 import sys
 
 LP = re.compile(r"localparam\s+int\s+(\w+)\s*=\s*([0-9_]+|[0-9]+'h[0-9a-fA-F_]+)\s*;\s*(//.*)?$")
-REG = re.compile(r'//@reg\s+(\w+)\s+(RO|RW|WO|W1C)\s*(?:wide=(\w+))?\s*(servo)?\s*"([^"]*)"\s*$')
+REG = re.compile(r'//@reg\s+(\w+)\s+(RO|RW|WO|W1C)\s*(?:wide=(\w+))?\s*(?:reset=(\w+))?\s*(servo)?\s*"([^"]*)"\s*$')
+# Constants wider than an int (reset values of wide registers).
+WIDE_LP = re.compile(r"localparam\s+logic\s*\[(\d+):0\]\s*(\w+)\s*=\s*(\d+)'d([0-9_]+)\s*;")
 FIELD = re.compile(r'//@field\s+(\w+)\s+(\w+)\s+(\w+)((?:\s+[\w=/]+)*)\s*"([^"]*)"\s*$')
 FIELD_OPTS = re.compile(r"^(reset|cfg|q|unit)=([\w/]+)$|^(signed)$")
 ENUM = re.compile(r'^\s*//@enum\s+(\w+)\s+(\w+)\s+"([^"]*)"\s*$')
@@ -91,6 +93,10 @@ def parse_enums(path, params):
 def parse(path):
     params, regs = {}, []
     by_name = {}
+    for _, line in source_lines(path):
+        w = WIDE_LP.search(line)
+        if w:
+            params[w.group(2)] = int(w.group(4).replace("_", ""))
     for lineno, line in source_lines(path):
         m = LP.search(line)
         if not m:
@@ -103,8 +109,10 @@ def parse(path):
             r = REG.search(comment)
             if not r:
                 sys.exit(f"{path}:{lineno}: bad //@reg tag: {comment}")
-            reg = {"name": r.group(1), "access": r.group(2), "wide": r.group(3),
-                   "servo": bool(r.group(4)), "desc": r.group(5), "addr": value, "param": name, "fields": []}
+            reg = {"name": r.group(1), "access": r.group(2), "wide": r.group(3), "reset": r.group(4),
+                   "servo": bool(r.group(5)), "desc": r.group(6), "addr": value, "param": name, "fields": []}
+            if reg["reset"] and not reg["wide"]:
+                sys.exit(f"{path}:{lineno}: reset= on //@reg is for wide registers (fields carry their own)")
             if reg["name"] in by_name:
                 sys.exit(f"{path}:{lineno}: register {reg['name']} defined twice")
             by_name[reg["name"]] = reg
@@ -151,11 +159,17 @@ def parse(path):
             if width is None:
                 sys.exit(f"{path}: {reg['name']}: unknown width {reg['wide']}")
             n = (width + 31) // 32
+            reset = 0
+            if reg["reset"]:
+                reset = params.get(reg["reset"])
+                if reset is None or reset >= (1 << width):
+                    sys.exit(f"{path}: {reg['name']}: reset value {reg['reset']} unknown or wider than {width} bits")
             for i in range(n):
                 bits = min(32, width - 32 * i)
                 words.append({"name": f"{reg['name']}_{i}", "addr": reg["addr"] + 4 * i,
                               "access": reg["access"], "desc": f"{reg['desc']} (bits {32*i+bits-1}:{32*i})",
-                              "mask": (1 << bits) - 1, "reset": 0, "fields": [], "group": reg["name"],
+                              "mask": (1 << bits) - 1, "reset": (reset >> (32 * i)) & ((1 << bits) - 1),
+                              "fields": [], "group": reg["name"],
                               "servo": reg["servo"]})
         else:
             mask, reset = 0, 0

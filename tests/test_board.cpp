@@ -25,6 +25,13 @@ MoveRequest short_move(int64_t distance = 30000) {
   return scurve::test::move_request(distance, 0, 150000, 0, 2e6, 2e8);
 }
 
+// STOP_JERK / STOP_ACC for a stop at the move's own limits.
+void set_stop_limits(AxiBench& b, double stop_jerk, double stop_acc) {
+  const auto w = scurve::encode_stop_limits(stop_jerk, stop_acc);
+  ASSERT_TRUE(std::holds_alternative<std::vector<RegWrite>>(w));
+  for (const RegWrite& r : std::get<std::vector<RegWrite>>(w)) ASSERT_EQ(b.write(r.addr, r.data), kOkay);
+}
+
 void load(AxiBench& b, const Plan& p, const PulseTiming& t) {
   for (const RegWrite& w : encode_move(p, t, false)) {
     ASSERT_EQ(b.write(w.addr, w.data), kOkay) << reg_name(w.addr);
@@ -246,6 +253,7 @@ TEST(AxiRegs, RowNotContinuingTheMotionIsNotRunTheAxisStopsAndFlagsDiscontinuity
   ASSERT_GE(p.segments.size(), 3u);
   EXPECT_EQ(b.write(reg_addr("CTRL"), 1), kOkay);
   EXPECT_EQ(b.write(reg_addr("IRQ_ENABLE"), field_mask("IRQ_ENABLE", "MASK")), kOkay);
+  set_stop_limits(b, 2e8, 2e6);
   std::vector<Segment> rows = p.segments;
   rows[2].vel0 += 1;  // one LSB off: a lost or corrupted write
   const std::vector<scurve::RowFlags> flags = scurve::move_row_flags(to_host(p).segments);
@@ -271,6 +279,7 @@ TEST(AxiRegs, RowNotContinuingTheMotionIsNotRunTheAxisStopsAndFlagsDiscontinuity
   EXPECT_TRUE(irq & field_mask("IRQ_STATUS", "FAULT"));
   EXPECT_TRUE(irq & field_mask("IRQ_STATUS", "IDLE"));
   EXPECT_TRUE(b.out().irq);
+  EXPECT_LT(b.net_steps(), 6000) << "the rest of the stream is not run";
   EXPECT_EQ(b.net_steps(), int32_t(b.read(reg_addr("REF_POS")).first)) << "no position lost";
   EXPECT_EQ(b.write(reg_addr("IRQ_STATUS"), 0xff), kOkay);
   b.idle(4);
@@ -316,6 +325,7 @@ TEST(AxiRegs, FifoRunningDryWhileMovingIsAnUnderrunWithTheBoundaryKept) {
   ASSERT_EQ(moves.size(), 3u);
   EXPECT_EQ(b.write(reg_addr("CTRL"), 1), kOkay);
   EXPECT_EQ(b.write(reg_addr("POS_FRAC0_2"), uint32_t(1u << (FracBits - 65))), kOkay);
+  set_stop_limits(b, 2e8, 2e6);
   push_rows(b, moves[0].segments, scurve::move_row_flags(moves[0].segments, false));  // the host falls behind
   EXPECT_EQ(b.write(reg_addr("IRQ_STATUS"), 0xff), kOkay);
   EXPECT_EQ(b.write(reg_addr("IRQ_ENABLE"), field_mask("IRQ_STATUS", "UNDERRUN")), kOkay);
@@ -353,15 +363,23 @@ TEST(AxiRegs, StartRefusedWhenDisabledOrEstoppedStopAndEstopAbort) {
   EXPECT_EQ(b.write(reg_addr("CMD"), start), kSlvErr);
   EXPECT_TRUE(b.read(reg_addr("ERR")).first & field_mask("ERR", "REJECT"));
   EXPECT_EQ(b.write(reg_addr("ERR"), 0xff), kOkay);
-  // enabled: runs; STOP aborts
+  // enabled: runs; STOP stops under control (the move's own limits)
   EXPECT_EQ(b.write(reg_addr("CTRL"), 1), kOkay);
+  set_stop_limits(b, 2e8, 2e6);
   EXPECT_EQ(b.write(reg_addr("CMD"), start), kOkay);
   b.idle(200000);
   EXPECT_EQ(b.write(reg_addr("CMD"), field_mask("CMD", "STOP")), kOkay);
-  b.idle(1000);
+  b.idle(10);
   uint32_t st = b.read(reg_addr("STATUS")).first;
-  EXPECT_EQ(st & field_mask("STATUS", "PHASE"), uint32_t(Phase::PhAbort));
-  EXPECT_FALSE(st & field_mask("STATUS", "BUSY"));
+  EXPECT_TRUE(st & field_mask("STATUS", "STOPPING"));
+  EXPECT_EQ(st & field_mask("STATUS", "PHASE"), uint32_t(Phase::PhStop));
+  EXPECT_EQ(b.write(reg_addr("STOP_JERK_0"), 1), kSlvErr) << "stop limits are locked while busy";
+  EXPECT_EQ(b.write(reg_addr("ERR"), field_mask("ERR", "REJECT")), kOkay);
+  while ((b.read(reg_addr("STATUS")).first & field_mask("STATUS", "BUSY")) && !b.failed()) b.idle(1000);
+  st = b.read(reg_addr("STATUS")).first;
+  EXPECT_EQ(st & field_mask("STATUS", "PHASE"), uint32_t(Phase::PhStop));
+  EXPECT_FALSE(st & (field_mask("STATUS", "STOPPING") | field_mask("STATUS", "OVERSHOOT") | field_mask("STATUS", "DONE")));
+  EXPECT_EQ(b.read(reg_addr("ERR")).first, 0u) << "a controlled stop is no error";
   const int64_t after_stop = b.net_steps();
   EXPECT_GT(after_stop, 0);
   EXPECT_LT(after_stop, 6000);
@@ -468,18 +486,25 @@ TEST(BoardUart, IllegalAddressReservedBitsAndWriteWhileBusy) {
   EXPECT_FALSE(r.ok);
   EXPECT_NE(r.error.find("0x3FC"), std::string::npos) << r.error;
   // Words above the 2.x map (address bytes 0x40..0xFF) reach the bus as
-  // byte addresses 0x100..0x3FC: unmapped, DECERR, no alias of 0x000..0x0FC
-  // (0x100 is not ID, 0x104 not CTRL).
-  for (const uint32_t a : {0x100u, 0x104u, 0x1F8u, 0x200u, 0x2CCu, 0x3FCu}) {
+  // byte addresses 0x100..0x3FC: STOP_JERK / STOP_ACC at 0x100..0x10C (their
+  // reset values, not ID or CTRL), the rest unmapped, DECERR, no alias of
+  // 0x000..0x0FC.
+  r = bd.host.read(0x100);
+  ASSERT_TRUE(r.ok) << r.error;
+  EXPECT_EQ(r.status, kOkay);
+  EXPECT_EQ(r.data, uint32_t(StopJerkReset)) << "STOP_JERK_0 at its reset value";
+  r = bd.host.read(0x10C);
+  EXPECT_EQ(r.data, uint32_t(StopAccReset >> 32)) << "STOP_ACC_1 at its reset value";
+  for (const uint32_t a : {0x110u, 0x114u, 0x1F8u, 0x200u, 0x2CCu, 0x3FCu}) {
     r = bd.host.read(a);
     ASSERT_TRUE(r.ok) << r.error;
     EXPECT_EQ(r.status, kDecErr) << std::hex << a;
     EXPECT_EQ(r.data, 0u) << std::hex << a;
   }
-  r = bd.host.write(0x104, field_mask("CTRL", "ENABLE"));
+  r = bd.host.write(0x114, field_mask("CTRL", "ENABLE"));
   ASSERT_TRUE(r.ok) << r.error;
   EXPECT_EQ(r.status, kDecErr);
-  EXPECT_EQ(bd.host.read(reg_addr("CTRL")).data, 0u) << "0x104 wrote CTRL";
+  EXPECT_EQ(bd.host.read(reg_addr("CTRL")).data, 0u) << "0x114 wrote CTRL";
   r = bd.host.write(reg_addr("ID"), 0);
   EXPECT_EQ(r.status, kSlvErr);
   r = bd.host.write(reg_addr("SEG_PHASE"), 0xffffffffu);

@@ -2,6 +2,10 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
 #include "scurve/hw/regmap.h"
 
 namespace scurve {
@@ -47,6 +51,24 @@ std::vector<RegWrite> encode_row(const Segment& s, RowFlags flags) {
       {uint32_t(RegSegVel0 + 4), uint32_t(vel >> 32)},
       {uint32_t(RegSegVel0 + 8), uint32_t(vel >> 64)},
       {uint32_t(RegRowPush), flags.word()},
+  };
+}
+
+StopLimitsResult encode_stop_limits(double stop_jerk, double stop_acc, Clock clock) {
+  auto check = [](const char* name, double v, LimitRange r) -> std::optional<Error> {
+    if (std::isfinite(v) && v >= r.lo && v <= r.hi) return std::nullopt;
+    return Error{name, fmt::format("{}={}: needs a number in [{}, {}]", name, v, r.lo, r.hi)};
+  };
+  if (auto e = check("stop_jerk", stop_jerk, jerk_range(clock))) return *e;
+  if (auto e = check("stop_acc", stop_acc, accel_range(clock))) return *e;
+  // At least one LSB; below half the register range (the ranges guarantee it).
+  const uint64_t j = std::max<uint64_t>(1, uint64_t(stop_jerk * jerk_lsb_per_unit(clock)));
+  const uint64_t a = std::max<uint64_t>(1, uint64_t(stop_acc * acc_lsb_per_unit(clock)));
+  return std::vector<RegWrite>{
+      {uint32_t(RegStopJerk), uint32_t(j)},
+      {uint32_t(RegStopJerk + 4), uint32_t(j >> 32)},
+      {uint32_t(RegStopAcc), uint32_t(a)},
+      {uint32_t(RegStopAcc + 4), uint32_t(a >> 32)},
   };
 }
 

@@ -1,6 +1,7 @@
 // Controller settings in physical units -> register values, at a clock rate.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 #include <string>
 
@@ -108,5 +109,30 @@ TEST(RegEncode, UartFrameRefusesUnalignedAndOutOfWindowAddresses) {
     EXPECT_EQ(std::get<Error>(r).parameter, "addr");
     EXPECT_NE(std::get<Error>(r).message.find(hex_addr(a)), std::string::npos);
     EXPECT_NE(std::get<Error>(r).message.find("0x000..0x3FC"), std::string::npos) << std::get<Error>(r).message;
+  }
+}
+
+TEST(RegEncode, StopLimitsAreTheirRegistersInExecutorUnits) {
+  const scurve::Clock clk{20e6};
+  const auto r = scurve::encode_stop_limits(2e7, 2e5, clk);
+  ASSERT_TRUE(std::holds_alternative<std::vector<scurve::RegWrite>>(r));
+  const auto& w = std::get<std::vector<scurve::RegWrite>>(r);
+  ASSERT_EQ(w.size(), 4u);
+  EXPECT_EQ(w[0].addr, uint32_t(scurve::hw::RegStopJerk));
+  EXPECT_EQ(w[2].addr, uint32_t(scurve::hw::RegStopAcc));
+  // The register reset values are these limits at 20 MHz.
+  EXPECT_EQ((uint64_t(w[1].data) << 32) | w[0].data, scurve::hw::StopJerkReset);
+  EXPECT_EQ((uint64_t(w[3].data) << 32) | w[2].data, scurve::hw::StopAccReset);
+}
+
+TEST(RegEncode, StopLimitsOutOfRangeNameTheParameterAndTheBound) {
+  for (const double bad : {0.0, -1.0, std::nan(""), 1e30}) {
+    const auto j = scurve::encode_stop_limits(bad, 2e5);
+    ASSERT_TRUE(std::holds_alternative<scurve::Error>(j)) << bad;
+    EXPECT_EQ(std::get<scurve::Error>(j).parameter, "stop_jerk");
+    EXPECT_NE(std::get<scurve::Error>(j).message.find("needs a number in ["), std::string::npos);
+    const auto a = scurve::encode_stop_limits(2e7, bad);
+    ASSERT_TRUE(std::holds_alternative<scurve::Error>(a)) << bad;
+    EXPECT_EQ(std::get<scurve::Error>(a).parameter, "stop_acc");
   }
 }

@@ -44,6 +44,14 @@ std::vector<RowFlags> move_row_flags(const std::vector<Segment>& rows, bool stre
 // One row's staging writes and its ROW_PUSH.
 std::vector<RegWrite> encode_row(const Segment& s, RowFlags flags = {});
 
+// The controlled-stop limits (STOP_JERK, STOP_ACC) for a stop jerk
+// (pulses/s^3) and stop deceleration (pulses/s^2) at `clock`: the register
+// writes, or an Error naming "stop_jerk" / "stop_acc" when a value is not a
+// finite number inside jerk_range() / accel_range(). Written while idle
+// (refused while busy); CMD.STOP, an underrun or a discontinuity use them.
+using StopLimitsResult = std::variant<std::vector<RegWrite>, Error>;
+StopLimitsResult encode_stop_limits(double stop_jerk, double stop_acc, Clock clock = Clock{});
+
 // CRC-8, polynomial 0x07, initial 0x00, no reflection, no final XOR.
 uint8_t crc8(const uint8_t* data, size_t n, uint8_t crc = 0);
 // UART bridge request frames for the register at byte address `addr` (as in
