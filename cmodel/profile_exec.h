@@ -42,9 +42,9 @@ class ProfileExec {
     u128 pos_frac0 = 0;
     bool start = false;
     bool abort = false;
-    bool stop = false;         // controlled stop
-    uint64_t stop_jerk = 0;    // JerkW bits
-    uint64_t stop_acc = 0;     // AccW bits
+    bool stop = false;                    // controlled stop
+    uint64_t stop_jerk = StopJerkReset;   // JerkW bits (default: the register's reset value)
+    uint64_t stop_acc = StopAccReset;     // AccW bits
   };
   struct State {
     bool run = false;
@@ -113,7 +113,7 @@ class ProfileExec {
   StopGen stop_;
   // The stop limits of the last step() (inputs the RTL sees held while
   // fast_forward() runs without inputs).
-  uint64_t held_stop_jerk_ = 0, held_stop_acc_ = 0;
+  uint64_t held_stop_jerk_ = StopJerkReset, held_stop_acc_ = StopAccReset;
 };
 
 }  // namespace sc
