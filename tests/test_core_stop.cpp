@@ -135,7 +135,6 @@ bool run_case(std::mt19937_64& g, CampaignStats& st, int index) {
   stoptest::ClosedForm cf;
   ld pos0 = 0;
   int64_t prev_acc = 0;
-  uint64_t rest_clock = 0;
   const uint64_t limit = clock + plan.total_clocks + 20'000'000;
   bool held = false;
   while (clock < limit && !chk.should_stop()) {
@@ -173,7 +172,6 @@ bool run_case(std::mt19937_64& g, CampaignStats& st, int index) {
         prev_acc = o.ref_acc;
       } else {
         stop_ended = true;
-        rest_clock = clock;
         x.a = o.ref_acc;
         props->at_end(x);
         EXPECT_FALSE(o.busy) << what;
@@ -220,7 +218,6 @@ bool run_case(std::mt19937_64& g, CampaignStats& st, int index) {
   } else {
     EXPECT_TRUE(trig == Trigger::Stop) << what << ": an underrun or discontinuity must stop";
   }
-  (void)rest_clock;
   st.clocks += clock;
   return !::testing::Test::HasFailure();
 }
