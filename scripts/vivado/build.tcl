@@ -20,6 +20,7 @@ file mkdir $out
 # (scripts/rtl_deps.py rtl sc_board_top prints the same list).
 set rtl_files {
   sc_pkg.sv
+  sc_stop_gen.sv
   sc_row_fifo.sv
   sc_step_gen.sv
   sc_profile_exec.sv
