@@ -80,24 +80,37 @@ module sc_stop_gen (
   logic [KW-1:0]        k_ld;
   logic [KW:0]          inf_exp;
 
-  assign vel_x  = VW'(vel_i);
-  assign acc_x  = BW'(acc_i);
-  assign neg_ld = vel_i < 0 || (vel_i == '0 && acc_i < 0);
-  assign v_ld   = neg_ld ? -vel_x : vel_x;
-  assign b_ld   = neg_ld ? acc_x : -acc_x;
-
-  assign j_ld = stop_jerk_i == '0 ? JW'(1) : stop_jerk_i[JerkW-1] ? '1 : stop_jerk_i[JW-1:0];
-  assign d_ld = stop_acc_i == '0 ? AW'(1) : stop_acc_i[AccW-1] ? '1 : stop_acc_i[AW-1:0];
+  // Like the scan below, evaluated only in the start clock.
+  always_comb begin
+    vel_x  = '0;
+    acc_x  = '0;
+    neg_ld = 1'b0;
+    v_ld   = '0;
+    b_ld   = '0;
+    j_ld   = JW'(1);
+    d_ld   = AW'(1);
+    if (start_i) begin
+      vel_x  = VW'(vel_i);
+      acc_x  = BW'(acc_i);
+      neg_ld = vel_i < 0 || (vel_i == '0 && acc_i < 0);
+      v_ld   = neg_ld ? -vel_x : vel_x;
+      b_ld   = neg_ld ? acc_x : -acc_x;
+      j_ld   = stop_jerk_i == '0 ? JW'(1) : stop_jerk_i[JerkW-1] ? '1 : stop_jerk_i[JW-1:0];
+      d_ld   = stop_acc_i == '0 ? AW'(1) : stop_acc_i[AccW-1] ? '1 : stop_acc_i[AW-1:0];
+    end
+  end
 
   // Highest set bits of b (a braking start: 0 < J < b <= 2^63) and J.
   always_comb begin
     eb = '0;
-    for (int i = 0; i < 64; i++) begin
-      if (b_ld[i]) eb = 6'(i);
-    end
     ej = '0;
-    for (int i = 0; i < JW; i++) begin
-      if (j_ld[i]) ej = 6'(i);
+    if (start_i) begin
+      for (int i = 0; i < 64; i++) begin
+        if (b_ld[i]) eb = 6'(i);
+      end
+      for (int i = 0; i < JW; i++) begin
+        if (j_ld[i]) ej = 6'(i);
+      end
     end
   end
   assign k_ld    = KW'(eb) - KW'(ej);
@@ -108,9 +121,16 @@ module sc_stop_gen (
   logic [BW-1:0] sh_in;
   logic [5:0]    sh_amt;
   logic [DW-1:0] sh_out;
-  assign sh_in  = start_i ? b_ld : prep_q == 2'd1 ? BW'({1'b0, j_q}) : jk_q[BW-1:0];
-  assign sh_amt = start_i ? k_ld[5:0] : k_q[5:0];
-  assign sh_out = DW'(sh_in) << sh_amt;
+  always_comb begin
+    sh_in  = '0;
+    sh_amt = '0;
+    sh_out = '0;
+    if (start_i || (active_q && div_q && prep_q != 2'd0)) begin
+      sh_in  = start_i ? b_ld : prep_q == 2'd1 ? BW'({1'b0, j_q}) : jk_q[BW-1:0];
+      sh_amt = start_i ? k_ld[5:0] : k_q[5:0];
+      sh_out = DW'(sh_in) << sh_amt;
+    end
+  end
   assign inf_exp = {1'b0, eb, 1'b0} - (KW+1)'(ej);
 
   // ---- one clock of the stop (mirrored): pick the next level ---------------
@@ -124,46 +144,66 @@ module sc_stop_gen (
   logic                 take;
   logic [DW:0]          dec;
 
-  assign v1       = CW'(v_q) - CW'(b_q);
-  assign v1_small = v1[CW-1:JW] == '0;
-  assign v1_lo    = LW'({1'b0, v1[JW-1:0]});
-
+  // Evaluated only while the stop runs: idle, every term is zero, so the
+  // wide datapath costs a simulator nothing in the clocks of normal motion.
   always_comb begin
-    u        = CW'(u_q);
-    b        = LW'(b_q);
-    j        = LW'({1'b0, j_q});
-    dl       = LW'({1'b0, dlim_q});
-    bsum     = b + j;
-    clamp_up = bsum > dl;
-    bu       = clamp_up ? dl : bsum;
-    if (b <= 0) begin
-      uu = bu > 0 ? CW'(bu) : '0;
-    end else begin
-      uu = u + CW'(bu);
-    end
-    up_ok   = b < dl && !uinf_q && v1 >= uu;
-    land_ok = v1_small && v1_lo <= j && v1_lo <= dl && v1_lo <= bsum && v1_lo >= b - j;
-    hold_ok = b <= dl && !uinf_q && v1 >= u;
-    if (b > j) begin
-      bdn = clamp_q ? LW'(g_q) : b - j;
-    end else begin
-      bdn = b > 0 ? '0 : b;
-    end
-    if (up_ok) begin
-      b1 = bu;
-      u1 = UW'(uu);
-    end else if (land_ok) begin
-      b1 = v1_lo;
-      u1 = UW'(v1_lo);
-    end else if (hold_ok) begin
-      b1 = b;
-      u1 = u_q;
-    end else begin
-      b1 = bdn;
-      if (bdn <= j) begin
-        u1 = bdn > 0 ? UW'(bdn) : '0;
+    v1       = '0;
+    v1_small = 1'b0;
+    v1_lo    = '0;
+    u        = '0;
+    b        = '0;
+    j        = '0;
+    dl       = '0;
+    bsum     = '0;
+    clamp_up = 1'b0;
+    bu       = '0;
+    uu       = '0;
+    up_ok    = 1'b0;
+    land_ok  = 1'b0;
+    hold_ok  = 1'b0;
+    bdn      = '0;
+    b1       = '0;
+    u1       = '0;
+    if (active_q) begin
+      v1       = CW'(v_q) - CW'(b_q);
+      v1_small = v1[CW-1:JW] == '0;
+      v1_lo    = LW'({1'b0, v1[JW-1:0]});
+      u        = CW'(u_q);
+      b        = LW'(b_q);
+      j        = LW'({1'b0, j_q});
+      dl       = LW'({1'b0, dlim_q});
+      bsum     = b + j;
+      clamp_up = bsum > dl;
+      bu       = clamp_up ? dl : bsum;
+      if (b <= 0) begin
+        uu = bu > 0 ? CW'(bu) : '0;
       end else begin
-        u1 = UW'(u - CW'(b));
+        uu = u + CW'(bu);
+      end
+      up_ok   = b < dl && !uinf_q && v1 >= uu;
+      land_ok = v1_small && v1_lo <= j && v1_lo <= dl && v1_lo <= bsum && v1_lo >= b - j;
+      hold_ok = b <= dl && !uinf_q && v1 >= u;
+      if (b > j) begin
+        bdn = clamp_q ? LW'(g_q) : b - j;
+      end else begin
+        bdn = b > 0 ? '0 : b;
+      end
+      if (up_ok) begin
+        b1 = bu;
+        u1 = UW'(uu);
+      end else if (land_ok) begin
+        b1 = v1_lo;
+        u1 = UW'(v1_lo);
+      end else if (hold_ok) begin
+        b1 = b;
+        u1 = u_q;
+      end else begin
+        b1 = bdn;
+        if (bdn <= j) begin
+          u1 = bdn > 0 ? UW'(bdn) : '0;
+        end else begin
+          u1 = UW'(u - CW'(b));
+        end
       end
     end
   end
@@ -189,8 +229,8 @@ module sc_stop_gen (
     jk_d     = jk_q;
     j2k_d    = j2k_q;
     remk_d   = remk_q;
-    take     = rem_q >= BW'(jk_q);
-    dec      = take ? ((DW+1)'(j2k_q) + {j2k_q, 1'b0} - (DW+1)'(jk_q)) >> 1 : (DW+1)'(remk_q);
+    take     = 1'b0;
+    dec      = '0;
 
     if (start_i) begin
       active_d = 1'b0;
@@ -248,7 +288,9 @@ module sc_stop_gen (
         j2k_d  = sh_out;
         prep_d = 2'd0;
       end else if (div_q) begin
-        u_d = u1 - UW'(dec);
+        take = rem_q >= BW'(jk_q);
+        dec  = take ? ((DW+1)'(j2k_q) + {j2k_q, 1'b0} - (DW+1)'(jk_q)) >> 1 : (DW+1)'(remk_q);
+        u_d  = u1 - UW'(dec);
         if (take) begin
           rem_d  = rem_q - BW'(jk_q);
           remk_d = remk_q - j2k_q;
