@@ -4,6 +4,23 @@
 
 namespace sc {
 
+namespace {
+
+nlohmann::json stop_to_json(const StopReport& s) {
+  if (!s.requested) return nullptr;
+  return {{"at_clock", s.at_clock},
+          {"taken", s.taken},
+          {"v0", s.v0},
+          {"a0", s.a0},
+          {"clocks", s.clocks},
+          {"distance", s.distance},
+          {"closed_form_distance", s.closed_form_distance},
+          {"overshoot", s.overshoot},
+          {"end_position", s.end_position}};
+}
+
+}  // namespace
+
 nlohmann::json sim_to_json(const SimResult& r) {
   nlohmann::json runs = nlohmann::json::array();
   for (const PhaseRun& pr : r.phase_runs) {
@@ -39,6 +56,7 @@ nlohmann::json sim_to_json(const SimResult& r) {
       {"wall_s", r.wall_s},
       {"clocks_per_s", r.clocks_per_s},
       {"realtime_ratio", r.clocks_per_s / ClkHz},
+      {"stop", stop_to_json(r.stop)},
       {"pass", r.pass()},
       {"failures", r.failures},
   };
@@ -53,6 +71,17 @@ std::string sim_table(const std::vector<SimResult>& rs) {
                      r.name, engine_name(r.engine), r.clocks, r.pulses, r.duration_s, r.final_error,
                      r.peak_velocity, r.peak_acceleration, r.peak_jerk, r.mismatches, r.wall_s,
                      r.clocks_per_s / 1e6, r.clocks_per_s / ClkHz, r.pass() ? "PASS" : "FAIL");
+  }
+  for (const SimResult& r : rs) {
+    if (!r.stop.requested) continue;
+    if (!r.stop.taken) {
+      s += fmt::format("  {}: stop at clock {} not taken (the move had not started)\n", r.name, r.stop.at_clock);
+      continue;
+    }
+    s += fmt::format("  {}: stop at clock {} from v {:.2f} p/s, a {:.2f} p/s^2: {} clocks, {:.3f} pulses (closed form "
+                     "{:.3f}), at rest at {}{}\n",
+                     r.name, r.stop.at_clock, r.stop.v0, r.stop.a0, r.stop.clocks, r.stop.distance,
+                     r.stop.closed_form_distance, r.stop.end_position, r.stop.overshoot ? ", OVERSHOOT" : "");
   }
   for (const SimResult& r : rs) {
     for (const std::string& f : r.failures) s += fmt::format("  {}: {}\n", r.name, f);

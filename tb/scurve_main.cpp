@@ -1,6 +1,6 @@
 // scurve: plan S-curve moves and run them on the RTL and the bit-exact model.
 //   scurve plan --distance L --v-start VS --v-cruise VC --v-end VE --a-max A --j-max J [--clock-hz F] [--json]
-//   scurve sim  (same move flags | --group 1 2 3 4) [--engine ...] [--json]
+//   scurve sim  (same move flags | --group 1 2 3 4) [--engine ...] [--stop-at T] [--json]
 //   scurve regs (same move flags) [--uart] [--no-start] [--closed-loop] [--json]   register writes
 // plan and regs are the host commands (sw/, scurve::host_cli); sim, regress,
 // diff run the RTL and the model.
@@ -63,6 +63,8 @@ void to_board_clock(SimResult& s, scurve::Clock clock) {
   s.peak_velocity /= r;
   s.peak_acceleration /= r * r;
   s.peak_jerk /= r * r * r;
+  s.stop.v0 /= r;
+  s.stop.a0 /= r * r;
 }
 
 // One progress line on a terminal for long runs.
@@ -121,6 +123,8 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"lockstep", "rtl", "model", "model-fast"}));
   add_fst_flags(sim_cmd, fst, "the RTL (engines lockstep, rtl)");
   scurve::cli::int_flag(sim_cmd, "--jobs", jobs, 1, 64, "parallel runs (default: cores)");
+  scurve::cli::StopFlags stop_flags;  // --stop-at, --stop-jerk, --stop-acc
+  scurve::cli::add_stop_flags(sim_cmd, stop_flags);
   ClosedLoopCli closed_loop;  // --closed-loop and its plant/controller flags (tb/closed_loop_cli.h)
   add_closed_loop_flags(sim_cmd, closed_loop);
 
@@ -155,7 +159,11 @@ int main(int argc, char** argv) {
   if (clock != model_clock() && (closed_loop.enabled || closed_loop.compare)) {
     return bad_input(fmt::format("--clock-hz={}: the closed-loop bench runs at the model's {} Hz", sf.clock_hz, ClkHz));
   }
+  const bool stop_flag_given = stop_flags.at_given || stop_flags.jerk_given || stop_flags.acc_given;
   if (closed_loop.enabled || closed_loop.compare) {
+    if (stop_flag_given) {
+      return bad_input("--stop-at/--stop-jerk/--stop-acc: the closed-loop bench runs moves to their end (open loop only)");
+    }
     std::vector<std::pair<std::string, MoveRequest>> cl_jobs;
     for (const Job& j : jobs_list) cl_jobs.emplace_back(j.name, j.req);
     closed_loop.fst_path = fst.path;
@@ -164,10 +172,14 @@ int main(int argc, char** argv) {
     return run_closed_loop_cli(closed_loop, cl_jobs, timing, engine, jobs, sf.json, sf.json_out);
   }
   std::vector<Plan> plans;
+  std::vector<scurve::cli::StopRequest> stops;
   for (const Job& j : jobs_list) {
     const PlanResult r = plan_move(j.req, timing, clock);
     if (const auto* e = std::get_if<PlanError>(&r)) return bad_input(e->message);
     plans.push_back(std::get<Plan>(r));
+    const auto s = scurve::cli::resolve_stop_flags(stop_flags, j.req, plans.back());
+    if (const std::string* e = std::get_if<std::string>(&s)) return bad_input(*e);
+    stops.push_back(std::get<scurve::cli::StopRequest>(s));
   }
   SimOptions opt;
   opt.engine = engine == "rtl" ? SimEngine::RtlOnly
@@ -186,6 +198,9 @@ int main(int argc, char** argv) {
     for (size_t i = next++; i < jobs_list.size(); i = next++) {
       SimOptions o = opt;
       o.progress = [&, i](double f) { progress.set(i, f); };
+      o.stop_at = stops[i].at_clock;
+      o.stop_jerk = stops[i].codes.jerk;
+      o.stop_acc = stops[i].codes.acc;
       try {
         results[i] = run_move(plans[i], timing, at_model_clock(limits_of(jobs_list[i].req, plans[i].v_end_used), clock),
                               o);

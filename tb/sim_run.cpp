@@ -4,9 +4,11 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <memory>
 
 #include "rtl_core.h"
+#include "stop_check.h"
 #include "scurve/cli/user_input.h"
 
 namespace sc {
@@ -102,14 +104,18 @@ SimResult run_move(const Plan& plan, const PulseTiming& timing, const Limits4Che
   }
   AxisCore model;
   LockstepChecker checker(opt.max_mismatches);
-  PinMonitor pins(PinRules{timing, true, StepAccounting::ReferencePosition});
+  // A stop follows no planned duty phase: only its pulses are checked.
+  PinMonitor pins(PinRules{timing, !opt.stop_at, StepAccounting::ReferencePosition});
   PeakTracker peaks;
+  stopcheck::StopMonitor stop(opt.stop_jerk, opt.stop_acc);
 
   const auto t0 = std::chrono::steady_clock::now();
   uint64_t clock = 0;
   CoreInputs in;
   in.cfg = timing;
   in.enable = true;
+  in.stop_jerk = opt.stop_jerk;
+  in.stop_acc = opt.stop_acc;
   bool stopped = false;
   CoreOutputs out;
 
@@ -135,6 +141,7 @@ SimResult run_move(const Plan& plan, const PulseTiming& timing, const Limits4Che
       cur = &out;
     }
     pins.on_clock(clock, *cur);
+    stop.on_clock(*cur);
     ++clock;
   };
 
@@ -145,49 +152,82 @@ SimResult run_move(const Plan& plan, const PulseTiming& timing, const Limits4Che
   }
   in.start = false;
   const uint64_t start_clock = clock;
+  const uint64_t stop_clock = opt.stop_at ? start_clock + *opt.stop_at : UINT64_MAX;
+  CoreInputs stop_in = in;
+  stop_in.stop = true;
+  // The peaks are the plan's limits' business; a stop's own motion is the
+  // stop monitor's (jerk and deceleration within the stop limits, no reversal).
+  auto planned_motion = [](const CoreOutputs& o) { return o.busy && !o.done && !o.stopping; };
+  // The run is over: done, or at rest after the stop, or (a stop during the
+  // arming) idle without having moved.
+  auto over = [&]() {
+    return cur->done || stop.ended() || (opt.stop_at && clock > stop_clock + 1 && !cur->busy);
+  };
 
   // Run to done. A hang is caught by a limit well past the planned length.
-  const uint64_t limit = start_clock + plan.total_clocks + 1000 + 4ull * (timing.high + timing.low + timing.setup);
+  uint64_t limit = start_clock + plan.total_clocks + 1000 + 4ull * (timing.high + timing.low + timing.setup);
+  // A stop may outlast the plan (stop limits below the move's): once it
+  // starts, the limit is a generous multiple of its closed-form time.
+  bool stop_limit_set = false;
+  auto extend_limit = [&]() {
+    if (stop_limit_set || !stop.seen()) return;
+    stop_limit_set = true;
+    const stopcheck::ld ramp = std::fabs(stopcheck::ld(stop.start().a)) / stopcheck::ld(std::max<uint64_t>(1, opt.stop_jerk));
+    limit = std::max(limit, clock + uint64_t(4 * (stop.closed_form_time() + ramp)) + 100000);
+  };
   if (opt.engine == SimEngine::ModelFast) {
     // Closed form between pulses: only the clocks around each pulse are
     // stepped, so the pin monitor still sees every edge.
     while (!stopped && clock < limit) {
+      extend_limit();
       const CoreOutputs before = model.outputs();
-      if (before.done) break;
+      if (clock > start_clock && over()) break;
+      if (clock == stop_clock) {
+        tick(stop_in);
+        out = *cur;
+        peaks.on_clock(out, planned_motion(out));
+        continue;
+      }
       uint64_t n = 1;
       if (model.step_gen().idle() && !model.exec().state().step_req) {
         const uint64_t ev = model.exec().clocks_to_next_event();
         if (ev > 1) n = ev - 1;
       }
+      if (clock < stop_clock) n = std::min(n, stop_clock - clock);
       if (n > 1) {
         // The reference moves smoothly in between: sample its peaks at the
         // jump ends (the per-clock maxima are at row ends or pulses).
-        peaks.on_clock(before, true);
+        peaks.on_clock(before, planned_motion(before));
         model.fast_forward(in, n);
         clock += n;
         model.read_outputs(out);
         cur = &out;
         pins.on_clock(clock - 1, out);
         peaks.have_prev = false;
-        peaks.on_clock(out, out.busy && !out.done);
+        peaks.on_clock(out, planned_motion(out));
       } else {
         tick(in);
         out = *cur;
-        peaks.on_clock(out, out.busy && !out.done);
+        peaks.on_clock(out, planned_motion(out));
       }
     }
   } else {
     const double expected = double(plan.total_clocks) + 1.0;
-    if (!stopped) tick(in);  // drops start: from here on the inputs are held
-    while (!stopped && clock < limit && !cur->done) {
-      tick(in, true);
-      peaks.on_clock(*cur, !cur->done && cur->busy);
+    if (!stopped) tick(clock == stop_clock ? stop_in : in);  // drops start: from here on the inputs are held
+    while (!stopped && clock < limit && !over()) {
+      extend_limit();
+      if (clock == stop_clock) {
+        tick(stop_in);
+      } else {
+        tick(in, clock != stop_clock + 1);  // the clock after the stop clock drops it
+      }
+      peaks.on_clock(*cur, planned_motion(*cur));
       if ((clock & 0xffffff) == 0 && opt.progress) opt.progress(double(clock - start_clock) / expected);
     }
   }
   out = *cur;
   const uint64_t done_clock = clock;
-  const bool reached_done = out.done;
+  const bool reached_done = out.done || stop.ended();
   res.clocks = done_clock;
   res.duration_s = double(done_clock - start_clock) / ClkHz;
 
@@ -204,7 +244,21 @@ SimResult run_move(const Plan& plan, const PulseTiming& timing, const Limits4Che
 
   res.pulses = pins.net_steps();
   res.pulse_count_reg = out.pulse_count;
-  res.final_error = plan.distance - res.pulses;
+  res.stop.requested = opt.stop_at.has_value();
+  res.stop.taken = stop.seen();
+  res.stop.end_position = out.ref_pos_int;
+  if (opt.stop_at) {
+    res.stop.at_clock = *opt.stop_at;
+    res.stop.clocks = stop.clocks();
+    res.stop.v0 = vel_to_phys(stop.start().v);
+    res.stop.a0 = acc_to_phys(stop.start().a);
+    res.stop.distance = double(stop.distance());
+    res.stop.closed_form_distance = double(stop.closed_form_distance());
+    res.stop.overshoot = stop.overshoot();
+  }
+  // A move that stopped ends where the stop brought it; every reference step
+  // must still be on the pins.
+  res.final_error = (res.stop.taken ? int64_t(out.ref_pos_int) : plan.distance) - res.pulses;
   res.peak_velocity = vel_to_phys(peaks.v());
   res.peak_acceleration = acc_to_phys(peaks.a());
   res.peak_jerk = jerk_to_phys(peaks.j());
@@ -218,13 +272,21 @@ SimResult run_move(const Plan& plan, const PulseTiming& timing, const Limits4Che
   // ---- verdict ---------------------------------------------------------
   auto fail = [&](std::string s) { res.failures.push_back(std::move(s)); };
   if (res.mismatches) fail(fmt::format("{} lockstep mismatches: {}", res.mismatches, res.first_mismatch));
-  if (!reached_done) fail(fmt::format("no done within {} clocks (hang)", limit));
-  if (res.final_error != 0) fail(fmt::format("pulses {} != distance {}", res.pulses, plan.distance));
+  if (opt.stop_at && !res.stop.taken && !reached_done && res.pulses == 0 && !out.busy) {
+    // A stop in the arming clocks drops the start: nothing moved, as it must.
+  } else if (!reached_done) {
+    fail(fmt::format("no done within {} clocks (hang)", limit));
+  } else if (res.final_error != 0) {
+    fail(res.stop.taken ? fmt::format("pulses {} != reference position {} after the stop", res.pulses,
+                                      out.ref_pos_int)
+                        : fmt::format("pulses {} != distance {}", res.pulses, plan.distance));
+  }
+  for (const std::string& e : stop.errors()) fail("controlled stop: " + e);
   if (res.pulse_count_reg != res.pulses) {
     fail(fmt::format("pulse_count_o {} != pins {}", res.pulse_count_reg, res.pulses));
   }
   for (const std::string& e : res.pin_errors) fail(e);
-  if (res.trends != res.expected_trends) {
+  if (!opt.stop_at && res.trends != res.expected_trends) {
     auto join = [](const std::vector<DutyTrend>& v) {
       std::string s;
       for (DutyTrend t : v) s += std::string(s.empty() ? "" : ",") + trend_name(t);

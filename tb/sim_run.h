@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -30,6 +31,24 @@ struct SimOptions {
   uint64_t fst_from = 0, fst_to = kDefaultFstWindow;
   size_t max_mismatches = 1;
   std::function<void(double)> progress;  // fraction done, every ~16 M clocks
+  // A controlled stop (the core's stop input, CMD.STOP) this many clocks
+  // after the START clock. The run then ends at rest and is checked by the
+  // stop monitor (tb/stop_check.h) instead of against the move's endpoint.
+  std::optional<uint64_t> stop_at;
+  uint64_t stop_jerk = StopJerkReset, stop_acc = StopAccReset;  // executor LSBs
+};
+
+// What a controlled stop did (SimOptions::stop_at).
+struct StopReport {
+  bool requested = false;
+  bool taken = false;             // the core stopped (not: the move ended first)
+  uint64_t at_clock = 0;          // clocks after START
+  uint64_t clocks = 0;            // stopping time
+  double v0 = 0, a0 = 0;          // the state it stopped from, pulses/s and pulses/s^2
+  double distance = 0;            // stopping distance, pulses (in the direction of motion)
+  double closed_form_distance = 0;  // continuous minimum for the stop limits, pulses
+  bool overshoot = false;         // the start state could not stop without reversal
+  int64_t end_position = 0;       // reference position at rest, pulses
 };
 
 struct SimResult {
@@ -40,7 +59,7 @@ struct SimResult {
   uint64_t total_clocks = 0;    // including load and tail
   int64_t pulses = 0;           // net STEP pulses counted on the pins
   int64_t pulse_count_reg = 0;  // the core's own counter
-  int64_t final_error = 0;      // distance - pulses
+  int64_t final_error = 0;      // distance (a stopped run: its end position) - pulses
   double duration_s = 0;        // start to done
   double peak_velocity = 0, peak_acceleration = 0, peak_jerk = 0;  // from the reference every clock
   uint64_t mismatches = 0;
@@ -52,6 +71,7 @@ struct SimResult {
   std::vector<DutyTrend> expected_trends;
   double wall_s = 0;
   double clocks_per_s = 0;
+  StopReport stop;
   std::vector<std::string> failures;  // everything that makes the run fail
   bool pass() const { return failures.empty(); }
   // The failures, one a line (for a test's failure message).

@@ -83,4 +83,38 @@ for k in ("clocks", "pulses", "duration_s", "final_error", "peak_velocity", "pea
     assert k in r, k
 assert r["pulses"] == -300 and r["final_error"] == 0 and r["mismatches"] == 0 and r["pass"]
 PY
+# --stop-at: a controlled stop mid-move; every engine ends at the same
+# position short of the target, at rest, and the regs sequence ends in
+# CMD.STOP marked with its time.
+move="--distance 4000 --v-cruise 40000 --a-max 2e6 --j-max 4e8"
+for engine in lockstep model-fast; do
+  "$scurve" sim $move --stop-at 0.03 --engine $engine --json > "$tmp/stop_$engine.json"
+done
+python3 - "$tmp/stop_lockstep.json" "$tmp/stop_model-fast.json" <<'PY'
+import json, sys
+a, b = (json.load(open(f)) for f in sys.argv[1:3])
+for r in (a, b):
+    s = r["stop"]
+    assert r["pass"] and s["taken"] and not s["overshoot"], r
+    assert 0 < s["end_position"] < 4000 and r["pulses"] == s["end_position"] and r["final_error"] == 0, r
+    assert abs(s["distance"] - s["closed_form_distance"]) < 1, s
+    assert s["v0"] > 0 and s["at_clock"] == 600000, s
+assert a["stop"]["end_position"] == b["stop"]["end_position"], (a["stop"], b["stop"])
+assert a["mismatches"] == 0 and a["matched_clocks"] > 0
+PY
+"$scurve" regs $move --stop-at 0.03 --stop-jerk 1e9 --json > "$tmp/stop_regs.json"
+python3 - "$tmp/stop_regs.json" <<'PY'
+import json, sys
+w = json.load(open(sys.argv[1]))
+assert w[-1]["reg"] == "CMD" and w[-1]["data"] == 2 and w[-1]["at_clock"] == 600000, w[-1]
+assert w[-2]["reg"] == "CMD" and w[-2]["data"] == 1, w[-2]
+names = [x["reg"] for x in w]
+assert names.index("STOP_JERK_0") < names.index("ROW_PUSH"), names
+PY
+check_bad "stop-at=0.5: must be below the move's duration" sim $move --stop-at 0.5
+check_bad "stop-at=-1" sim $move --stop-at -1
+check_bad "stop-jerk" sim $move --stop-at 0.01 --stop-jerk 0
+check_bad "stop-acc" regs $move --stop-acc 1e300
+check_bad "stop-at" regs $move --stop-at 0.01 --no-start
+check_bad "stop-at" sim $move --stop-at 0.01 --closed-loop
 echo "cli ok"

@@ -1,7 +1,7 @@
 // Test harness of the controlled stop: random start states in physical
-// ranges, the continuous closed-form minimum stop (long double), a tiny
-// integrator that applies jerk_o exactly like the executor, and a property
-// checker that knows nothing of the generator's algorithm.
+// ranges and a tiny integrator that applies jerk_o exactly like the
+// executor; the closed form and the property checker, which know nothing of
+// the generator's algorithm, are tb/stop_check.h.
 #pragma once
 
 #include <algorithm>
@@ -12,77 +12,12 @@
 
 #include "fixed_point.h"
 #include "rtl_stop_gen.h"
+#include "stop_check.h"
 #include "stop_gen.h"
 
 namespace sc::stoptest {
 
-using ld = long double;
-
-inline constexpr ld kF = ClkHz;
-inline const ld kLsb = std::ldexp(ld(1), FracBits);
-
-struct StopCase {
-  i128 v = 0;       // VelW bits
-  int64_t a = 0;    // AccW bits
-  uint64_t j = 1;   // stop jerk
-  uint64_t d = 1;   // stop deceleration
-};
-
-// Continuous time-optimal stop from (v, a) with |jerk| <= J, |a| <= D, in
-// LSB units and clocks: ramp an accelerating a to 0, an |a| above D into D,
-// then the braking triangle or trapezoid that ends at v = a = 0.
-struct ClosedForm {
-  ld dist = 0;   // LSB of position
-  ld time = 0;   // clocks
-  bool feasible = true;
-};
-inline ClosedForm closed_form(ld v, ld a, ld J, ld D) {
-  if (v < 0 || (v == 0 && a < 0)) {
-    v = -v;
-    a = -a;
-  }
-  ClosedForm c;
-  auto seg = [&](ld jj, ld t) {
-    c.dist += v * t + a * t * t / 2 + jj * t * t * t / 6;
-    v += a * t + jj * t * t / 2;
-    a += jj * t;
-    c.time += t;
-  };
-  if (a > 0) seg(-J, a / J);
-  a = std::min<ld>(a, 0);
-  if (-a > D) seg(J, (-a - D) / J);
-  const ld b = -a;
-  if (v < b * b / (2 * J)) {
-    c.feasible = false;
-    return c;
-  }
-  const ld p = std::sqrt(J * v + b * b / 2);
-  if (p <= D) {
-    seg(-J, (p - b) / J);
-    seg(J, p / J);
-  } else {
-    seg(-J, (D - b) / J);
-    seg(0, (v - D * D / (2 * J)) / D);  // v is now what the ramp to D left
-    seg(J, D / J);
-  }
-  return c;
-}
-
-// Discrete feasibility, independent of the generator: ramping |a| to 0 at
-// J per clock (the least velocity any stop can use) keeps v >= 0.
-inline bool discrete_feasible(const StopCase& c) {
-  i128 v = c.v;
-  i128 b = -i128(c.a);
-  if (v < 0 || (v == 0 && c.a < 0)) {
-    v = -v;
-    b = -b;
-  }
-  if (b <= 0) return true;
-  const i128 J = std::max<i128>(1, c.j);
-  const i128 q = b / J, r = b % J;
-  const i128 R = (q + 1) * r + J * q * (q + 1) / 2;  // b + (b-J) + ... + r
-  return v >= R;
-}
+using namespace sc::stopcheck;  // closed form, feasibility, property checker (tb/stop_check.h)
 
 // Random start states: speeds up to 500 kHz, accelerations 1e3..1e7
 // pulses/s^2 (sometimes above the stop limit, sometimes 0), jerks
@@ -157,50 +92,6 @@ struct Integrator {
   }
 };
 
-// Properties of a stop, checked clock by clock from the motion alone.
-class StopChecker {
- public:
-  explicit StopChecker(const StopCase& c)
-      : c_(c), dir_(c.v > 0 || (c.v == 0 && c.a > 0) ? 1 : -1), feasible_(discrete_feasible(c)),
-        J_(std::clamp<i128>(c.j, 1, (i128(1) << (JerkW - 1)) - 1)),
-        D_(std::clamp<i128>(c.d, 1, (i128(1) << (AccW - 1)) - 1)) {}
-  // One clock while the stop runs: the state before it and the jerk applied.
-  void clock(const Integrator& s, int64_t jerk) {
-    if (i128(std::abs(jerk)) > J_) fail("|jerk| > J");
-    const i128 absa = s.a < 0 ? -i128(s.a) : i128(s.a);
-    if (absa <= D_) a_in_limit_ = true;
-    const i128 a1 = i128(s.a) + jerk;
-    if (a_in_limit_ && (a1 > D_ || a1 < -D_)) fail("|a| above D after reaching it");
-    ++clocks_;
-  }
-  void after_clock(const Integrator& s) {
-    if (feasible_ && s.v * dir_ < 0) fail("velocity reversal");
-  }
-  // At the end: at rest, nothing moves afterwards.
-  void at_end(const Integrator& s) {
-    if (s.v != 0 || s.a != 0) fail("not at rest at done");
-  }
-  void after_rest(const Integrator& s, int64_t jerk) {
-    if (jerk != 0 || s.last_step != 0 || s.v != 0 || s.a != 0) fail("motion after rest");
-  }
-  bool feasible() const { return feasible_; }
-  int dir() const { return dir_; }
-  uint64_t clocks() const { return clocks_; }
-  const std::vector<std::string>& errors() const { return errors_; }
-
- private:
-  void fail(const std::string& what) {
-    if (errors_.size() < 4) errors_.push_back("clock " + std::to_string(clocks_) + ": " + what);
-  }
-  StopCase c_;
-  int dir_;
-  bool feasible_;
-  i128 J_, D_;
-  bool a_in_limit_ = false;
-  uint64_t clocks_ = 0;
-  std::vector<std::string> errors_;
-};
-
 struct StopResult {
   uint64_t clocks = 0;
   ld distance = 0;      // pulses, in the start direction
@@ -244,21 +135,21 @@ inline StopResult run_stop(const StopCase& c, RtlStopGen* rtl, uint64_t max_cloc
   while (m.active() && clk < max_clocks) {
     compare(clk);
     const int64_t j = m.jerk();
-    chk.clock(s, j);
+    chk.clock(s.a, j);
     s.clock(j);
-    chk.after_clock(s);
+    chk.after_clock(s.v);
     m.step(quiet);
     if (rtl) rtl->step(quiet);
     ++clk;
   }
   r.clocks = clk;
   if (m.active()) r.errors.push_back("no rest within " + std::to_string(max_clocks) + " clocks");
-  chk.at_end(s);
+  chk.at_end(s.v, s.a);
   for (int i = 0; i < tail; ++i) {
     compare(clk + i);
     const int64_t j = m.jerk();
     s.clock(j);
-    chk.after_rest(s, j);
+    chk.after_rest(s.v, s.a, j, s.last_step != 0);
     m.step(quiet);
     if (rtl) rtl->step(quiet);
   }

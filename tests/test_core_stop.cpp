@@ -4,9 +4,9 @@
 // a discontinuity (a row that does not continue the motion), with random
 // stop limits. RTL and model in lockstep every clock; the pin monitor checks
 // every pulse against the reference position; the stop itself is checked
-// from the outputs by the property checker of the stop generator's tests
-// (tests/stop_harness.h, which knows nothing of the algorithm) and against
-// the continuous closed-form stopping distance.
+// from the outputs by the stop monitor (the property checker of the stop
+// generator's tests, which knows nothing of the algorithm) and against
+// the continuous closed-form stopping distance (tb/stop_check.h).
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
@@ -42,8 +42,6 @@ ld log_uniform(std::mt19937_64& g, ld lo, ld hi) {
 // Physical limits in executor LSBs at the model's clock.
 uint64_t jerk_lsb(ld j) { return uint64_t(j * stoptest::kLsb / (stoptest::kF * stoptest::kF * stoptest::kF)); }
 uint64_t acc_lsb(ld a) { return uint64_t(a * stoptest::kLsb / (stoptest::kF * stoptest::kF)); }
-
-ld position_lsb(const CoreOutputs& o) { return ld(o.ref_pos_int) * stoptest::kLsb + ld(o.ref_pos_frac); }
 
 struct CampaignStats {
   int stops = 0, infeasible = 0, by_trigger[3] = {0, 0, 0};
@@ -130,11 +128,7 @@ bool run_case(std::mt19937_64& g, CampaignStats& st, int index) {
 
   const std::string what = fmt::format("case {}: {} of a {}-pulse move at clock {}, J {:.3g}, D {:.3g}", index,
                                        trigger_name(trig), req.distance, stop_at, double(J), double(D));
-  bool stopping_seen = false, stop_ended = false;
-  std::unique_ptr<stoptest::StopChecker> props;
-  stoptest::ClosedForm cf;
-  ld pos0 = 0;
-  int64_t prev_acc = 0;
+  stopcheck::StopMonitor stop(in.stop_jerk, in.stop_acc);
   const uint64_t limit = clock + plan.total_clocks + 20'000'000;
   bool held = false;
   while (clock < limit && !chk.should_stop()) {
@@ -148,50 +142,21 @@ bool run_case(std::mt19937_64& g, CampaignStats& st, int index) {
       held = true;
     }
     const CoreOutputs& o = *cur;
-    if (o.stopping && !stopping_seen) {
-      // The first stop clock shows the state the stop starts from.
-      stopping_seen = true;
-      stoptest::StopCase c{o.ref_vel, o.ref_acc, in.stop_jerk, in.stop_acc};
-      props = std::make_unique<stoptest::StopChecker>(c);
-      cf = stoptest::closed_form(ld(o.ref_vel), ld(o.ref_acc), ld(in.stop_jerk), ld(in.stop_acc));
-      pos0 = position_lsb(o);
-      prev_acc = o.ref_acc;
-      EXPECT_EQ(o.phase, uint8_t(Phase::PhStop)) << what;
-      EXPECT_TRUE(o.fifo_full) << what << ": no row is taken while stopping";
+    const bool first = o.stopping && !stop.seen();
+    stop.on_clock(o);
+    if (first) {
       EXPECT_EQ(o.underrun, trig == Trigger::Underrun) << what;
       EXPECT_EQ(o.discont, trig == Trigger::Discontinuity) << what;
     }
-    if (stopping_seen && !stop_ended) {
-      stoptest::Integrator x;
-      x.v = o.ref_vel;
-      x.a = prev_acc;
-      props->after_clock(x);
-      if (o.stopping) {
-        x.a = o.ref_acc;
-        props->clock(x, o.ref_jerk);
-        prev_acc = o.ref_acc;
+    if (stop.ended()) {
+      if (stop.feasible()) {
+        st.worst_excess = std::max(st.worst_excess, stop.excess());
       } else {
-        stop_ended = true;
-        x.a = o.ref_acc;
-        props->at_end(x);
-        EXPECT_FALSE(o.busy) << what;
-        EXPECT_FALSE(o.done) << what << ": a stopped stream is not done";
-        EXPECT_EQ(o.phase, uint8_t(Phase::PhStop)) << what;
-        EXPECT_EQ(o.fifo_level, 0) << what;
-        EXPECT_EQ(o.overshoot, !props->feasible()) << what;
-        const ld dist = (position_lsb(o) - pos0) * props->dir() / stoptest::kLsb;
-        if (props->feasible()) {
-          const ld excess = dist - cf.dist / stoptest::kLsb;
-          EXPECT_LT(std::fabs(double(excess)), 1.0) << what << ": distance " << double(dist) << " vs closed form "
-                                                     << double(cf.dist / stoptest::kLsb);
-          st.worst_excess = std::max(st.worst_excess, excess);
-        } else {
-          ++st.infeasible;
-        }
-        break;
+        ++st.infeasible;
       }
+      break;
     }
-    if (!stopping_seen && !o.busy && clock > stop_at + 4) break;  // the move ended first
+    if (!stop.seen() && !o.busy && clock > stop_at + 4) break;  // the move ended first
   }
   // Nothing moves after the stop (or after the move, when it ended first).
   const int32_t pos_end = cur->ref_pos_int;
@@ -206,13 +171,11 @@ bool run_case(std::mt19937_64& g, CampaignStats& st, int index) {
   EXPECT_TRUE(chk.errors().empty()) << what << "\n" << chk.finish();
   for (const std::string& e : pins.errors()) ADD_FAILURE() << what << ": " << e;
   EXPECT_EQ(pins.net_steps(), int64_t(rtl.outputs().ref_pos_int)) << what << ": every reference step on the pins";
-  if (props) {
-    for (const std::string& e : props->errors()) ADD_FAILURE() << what << ": " << e;
-  }
+  for (const std::string& e : stop.errors()) ADD_FAILURE() << what << ": " << e;
   // A STOP after the move's end, or an underrun/discontinuity that the move
   // did not reach, stops nothing; every trigger that came while moving did.
-  if (stopping_seen) {
-    EXPECT_TRUE(stop_ended) << what << ": the stop did not end";
+  if (stop.seen()) {
+    EXPECT_TRUE(stop.ended()) << what << ": the stop did not end";
     ++st.stops;
     ++st.by_trigger[int(trig)];
   } else {

@@ -1,10 +1,12 @@
 // RTL (Verilated sc_axis_core) and the bit-exact model in lockstep, every
 // clock: random planned moves, random raw tables that reverse direction and
-// overrun the step queue, the paper's four groups, and proof that the
-// checker reports an injected difference.
+// overrun the step queue, controlled stops at random times on every engine,
+// the paper's four groups, and proof that the checker reports an injected
+// difference.
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <optional>
 #include <random>
 
 #include "lockstep.h"
@@ -12,6 +14,7 @@
 #include "planner.h"
 #include "rtl_core.h"
 #include "scenarios.h"
+#include "scurve/reg_encode.h"
 #include "sim_run.h"
 
 using namespace sc;
@@ -61,6 +64,71 @@ TEST(Lockstep, SixtyRandomPlannedMovesMatchEveryClockAndEmitExactlyL) {
     ++run;
   }
   RecordProperty("clocks", std::to_string(clocks));
+}
+
+// The run of `scurve sim --stop-at`: random planned moves stopped at a random
+// time with the move's own limits (the tools' default) or random ones. Every
+// engine passes its checks (the stop monitor: rest, no reversal, limits,
+// distance within a pulse of the closed form; every reference step on the
+// pins) and all four end at the same position, not beyond the target when
+// the stop limits are the move's own.
+TEST(Lockstep, StopAtRandomTimesEndsAtRestOnEveryEngine) {
+  std::mt19937_64 g(77);
+  int stops = 0, own_limits = 0, overshoots = 0;
+  for (int trial = 0; stops < 24; ++trial) {
+    ASSERT_LT(trial, 200) << "too few plannable moves";
+    MoveRequest r;
+    r.distance = int64_t(200 + g() % 6000) * ((g() & 1) ? -1 : 1);
+    r.v_cruise = 2000 + double(g() % 120000);
+    r.a_max = 5e4 + double(g() % 3000000);
+    r.j_max = 1e7 + double(g() % 2000000000);
+    r.kind = (g() % 5 == 0) ? ProfileKind::Trapezoid : ProfileKind::SCurve;
+    PulseTiming t;
+    t.high = uint16_t(2 + g() % 20);
+    t.low = uint16_t(2 + g() % 20);
+    t.setup = uint16_t(g() % 50);
+    t.hold = uint16_t(g() % 50);
+    const PlanResult pr = plan_move(r, t);
+    if (!std::holds_alternative<Plan>(pr)) continue;
+    const Plan& p = std::get<Plan>(pr);
+    if (p.total_clocks > 1'500'000 || p.total_clocks < 100) continue;
+    scurve::StopLimits lim = scurve::move_stop_limits(r);
+    const bool own = g() % 3 != 0;
+    if (!own) {
+      lim.jerk *= 0.2 + double(g() % 1000) / 200;
+      lim.acc *= 0.2 + double(g() % 1000) / 200;
+    }
+    const auto codes = scurve::stop_limit_codes(lim.jerk, lim.acc);
+    ASSERT_TRUE(std::holds_alternative<scurve::StopLimitCodes>(codes));
+    SimOptions opt;
+    opt.stop_at = t.setup + 3 + g() % (p.total_clocks - t.setup - 4);
+    opt.stop_jerk = std::get<scurve::StopLimitCodes>(codes).jerk;
+    opt.stop_acc = std::get<scurve::StopLimitCodes>(codes).acc;
+    const std::string what = fmt::format("move {} ({} pulses, {} clocks), stop at clock {}, J {:.4g}, D {:.4g}", trial,
+                                         r.distance, p.total_clocks, *opt.stop_at, lim.jerk, lim.acc);
+    std::optional<int64_t> end;
+    for (SimEngine e : {SimEngine::Lockstep, SimEngine::RtlOnly, SimEngine::ModelOnly, SimEngine::ModelFast}) {
+      opt.engine = e;
+      const SimResult s = run_move(p, t, limits_of(r, p), opt);
+      ASSERT_TRUE(s.pass()) << what << " on " << engine_name(e) << ": " << s.failure_lines();
+      ASSERT_TRUE(s.stop.taken) << what << " on " << engine_name(e);
+      EXPECT_EQ(s.pulses, s.stop.end_position) << what << " on " << engine_name(e);
+      if (end) EXPECT_EQ(s.stop.end_position, *end) << what << " on " << engine_name(e);
+      end = s.stop.end_position;
+      if (e == SimEngine::Lockstep) {
+        overshoots += s.stop.overshoot;
+        // With the move's own limits the stop brakes at least as hard as the
+        // rest of the plan: the axis ends short of the target, give or take
+        // the stop's pulse of discretisation.
+        if (own) EXPECT_LE(std::abs(s.stop.end_position), std::abs(r.distance) + 1) << what;
+      }
+    }
+    ++stops;
+    own_limits += own;
+  }
+  EXPECT_GT(own_limits, 8);
+  EXPECT_LT(own_limits, 24);
+  RecordProperty("overshoots", std::to_string(overshoots));
 }
 
 // Raw tables (not from the planner): velocity crossing zero, speeds far

@@ -146,9 +146,7 @@ void stream_through_model(size_t n_moves, uint64_t seed) {
 
 TEST(StreamModel, HundredThousandStreamedMovesEndExactlyOnTheRunningSum) { stream_through_model(100000, 11); }
 
-#ifdef SC_LONG_TESTS
 TEST(StreamModelLong, MillionStreamedMovesEndExactlyOnTheRunningSum) { stream_through_model(1000000, 12); }
-#endif
 
 namespace {
 
@@ -297,6 +295,4 @@ void lockstep_streams(int streams, size_t max_moves, uint64_t seed) {
 
 TEST(StreamLockstep, RandomStreamsWithRandomAppendTimingMatchEveryClock) { lockstep_streams(6, 80, 77); }
 
-#ifdef SC_LONG_TESTS
 TEST(StreamLockstepLong, TwoHundredStreamsOf20To200MovesMatchEveryClock) { lockstep_streams(200, 200, 78); }
-#endif

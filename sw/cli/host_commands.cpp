@@ -59,7 +59,7 @@ class HostCommandsImpl : public HostCommands {
     if (std::string e = check_clock_flag(rf_.clock_hz); !e.empty()) return bad_input(e);
     const PlanResult r = Planner(to_clock(rf_)).plan(to_request(rf_), to_timing(rf_));
     if (const auto* e = std::get_if<Error>(&r)) return bad_input(e->message);
-    return run_regs_cli(regs_flags_, std::get<Plan>(r), to_timing(rf_), rf_.json, rf_.json_out);
+    return run_regs_cli(regs_flags_, to_request(rf_), std::get<Plan>(r), to_timing(rf_), rf_.json, rf_.json_out);
   }
 
   CLI::App* plan_cmd_ = nullptr;

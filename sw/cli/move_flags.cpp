@@ -94,6 +94,43 @@ void add_output_flags(CLI::App* app, MoveFlags& f) {
   output_file_flag(app, "--json-out", f.json_out, "also write the JSON object to this file");
 }
 
+void add_stop_flags(CLI::App* app, StopFlags& f) {
+  real_flag(app, "--stop-at", f.at, "controlled stop (CMD.STOP) this many seconds after START", 0)
+      ->each([&f](const std::string&) { f.at_given = true; });
+  real_flag(app, "--stop-jerk", f.jerk, "stop jerk limit STOP_JERK, pulses/s^3 (default: the move's jerk limit)")
+      ->each([&f](const std::string&) { f.jerk_given = true; });
+  real_flag(app, "--stop-acc", f.acc, "stop deceleration limit STOP_ACC, pulses/s^2 (default: the move's a_max)")
+      ->each([&f](const std::string&) { f.acc_given = true; });
+}
+
+std::variant<StopRequest, std::string> resolve_stop_flags(const StopFlags& f, const MoveRequest& request,
+                                                          const Plan& plan) {
+  StopRequest s;
+  s.limits = move_stop_limits(request, plan.clock);
+  if (f.jerk_given) s.limits.jerk = f.jerk;
+  if (f.acc_given) s.limits.acc = f.acc;
+  const StopLimitCodesResult codes = stop_limit_codes(s.limits.jerk, s.limits.acc, plan.clock);
+  if (const Error* e = std::get_if<Error>(&codes)) {
+    const bool jerk = e->parameter == "stop_jerk";
+    const bool given = jerk ? f.jerk_given : f.acc_given;
+    return fmt::format("--{}: {}{}", jerk ? "stop-jerk" : "stop-acc", e->message,
+                       given ? "" : " (the move's own limit, the default)");
+  }
+  s.codes = std::get<StopLimitCodes>(codes);
+  if (f.at_given) {
+    // The stop must come while the move runs (a STOP in its last clock, or
+    // after it, stops nothing).
+    const double duration = double(plan.total_clocks) / plan.clock.hz;
+    const double clocks = std::round(f.at * plan.clock.hz);
+    if (!(clocks + 1 < double(plan.total_clocks))) {
+      return fmt::format("--stop-at={}: must be below the move's duration, {} s ({} clocks at {} Hz)", f.at,
+                         duration, plan.total_clocks, plan.clock.hz);
+    }
+    s.at_clock = uint64_t(clocks);
+  }
+  return s;
+}
+
 MoveRequest to_request(const MoveFlags& f) {
   MoveRequest r;
   r.distance = f.distance;

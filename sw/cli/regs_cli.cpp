@@ -2,7 +2,9 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <iostream>
+#include <optional>
 #include <nlohmann/json.hpp>
 
 #include "scurve/cli/move_flags.h"
@@ -20,11 +22,28 @@ void add_regs_flags(CLI::App* cmd, RegsCliFlags& f) {
   cmd->add_flag("--closed-loop", f.closed_loop,
                 "closed-loop axis (board top): write the controller settings (the closed-loop runner's "
                 "defaults for this pulse timing) and CTRL.CLOSED_LOOP before the table");
+  add_stop_flags(cmd, f.stop);
 }
 
-int run_regs_cli(const RegsCliFlags& f, const Plan& plan, const PulseTiming& timing, bool json,
-                 const std::string& json_out) {
+int run_regs_cli(const RegsCliFlags& f, const MoveRequest& request, const Plan& plan, const PulseTiming& timing,
+                 bool json, const std::string& json_out) {
+  const auto stop = resolve_stop_flags(f.stop, request, plan);
+  if (const std::string* e = std::get_if<std::string>(&stop)) return bad_input(*e);
+  const StopRequest& sr = std::get<StopRequest>(stop);
+  if (sr.at_clock && f.no_start) return bad_input("--stop-at: stops a started move; it cannot go with --no-start");
   std::vector<RegWrite> writes = encode_move(plan, timing, !f.no_start);
+  // The stop limits after the pulse timing, before the table: the move's own
+  // unless given, so CMD.STOP, an underrun or a discontinuity stop it as planned.
+  const std::vector<RegWrite> limits =
+      std::get<std::vector<RegWrite>>(encode_stop_limits(sr.limits.jerk, sr.limits.acc, plan.clock));
+  const auto after_timing = std::find_if(writes.begin(), writes.end(),
+                                         [](const RegWrite& w) { return w.addr == uint32_t(RegDirTime); });
+  writes.insert(after_timing + 1, limits.begin(), limits.end());
+  // The index of the CMD.STOP write that is due at *sr.at_clock, if any.
+  std::optional<size_t> stop_index;
+  if (sr.at_clock) {
+    writes.push_back(stop_command());
+  }
   if (f.closed_loop) {
     const double counts_per_step = 1.0;  // the closed-loop runner's default encoder
     const ServoConfigResult r = to_servo_config(ControllerParams{}, counts_per_step, timing, plan.clock);
@@ -37,6 +56,8 @@ int run_regs_cli(const RegsCliFlags& f, const Plan& plan, const PulseTiming& tim
     writes.erase(writes.begin());  // CTRL = enable: replaced by the closed-loop CTRL write
     writes.insert(writes.begin(), cl.begin(), cl.end());
   }
+  if (sr.at_clock) stop_index = writes.size() - 1;
+  const double stop_s = sr.at_clock ? double(*sr.at_clock) / plan.clock.hz : 0;
   // The UART frames (word address in the frame), each checked by the encoder.
   std::vector<std::vector<uint8_t>> frames;
   if (f.uart) {
@@ -54,6 +75,10 @@ int run_regs_cli(const RegsCliFlags& f, const Plan& plan, const PulseTiming& tim
     for (size_t i = 0; i < writes.size(); ++i) {
       const RegWrite& w = writes[i];
       nlohmann::json j = {{"addr", w.addr}, {"reg", reg_name(w.addr)}, {"data", w.data}};
+      if (stop_index == i) {
+        j["at_clock"] = *sr.at_clock;  // clocks after the START write takes effect
+        j["at_s"] = stop_s;
+      }
       if (f.uart) {
         std::string hex;
         for (uint8_t b : frames[i]) hex += fmt::format("{:02X}", b);
@@ -72,6 +97,7 @@ int run_regs_cli(const RegsCliFlags& f, const Plan& plan, const PulseTiming& tim
   }
   for (size_t i = 0; i < writes.size(); ++i) {
     const RegWrite& w = writes[i];
+    if (stop_index == i) std::cout << fmt::format("# {} s ({} clocks) after START:\n", stop_s, *sr.at_clock);
     if (f.uart) {
       std::string hex;
       for (uint8_t b : frames[i]) hex += fmt::format("{:02X} ", b);

@@ -54,7 +54,7 @@ std::vector<RegWrite> encode_row(const Segment& s, RowFlags flags) {
   };
 }
 
-StopLimitsResult encode_stop_limits(double stop_jerk, double stop_acc, Clock clock) {
+StopLimitCodesResult stop_limit_codes(double stop_jerk, double stop_acc, Clock clock) {
   auto check = [](const char* name, double v, LimitRange r) -> std::optional<Error> {
     if (std::isfinite(v) && v >= r.lo && v <= r.hi) return std::nullopt;
     return Error{name, fmt::format("{}={}: needs a number in [{}, {}]", name, v, r.lo, r.hi)};
@@ -62,15 +62,35 @@ StopLimitsResult encode_stop_limits(double stop_jerk, double stop_acc, Clock clo
   if (auto e = check("stop_jerk", stop_jerk, jerk_range(clock))) return *e;
   if (auto e = check("stop_acc", stop_acc, accel_range(clock))) return *e;
   // At least one LSB; below half the register range (the ranges guarantee it).
-  const uint64_t j = std::max<uint64_t>(1, uint64_t(stop_jerk * jerk_lsb_per_unit(clock)));
-  const uint64_t a = std::max<uint64_t>(1, uint64_t(stop_acc * acc_lsb_per_unit(clock)));
+  return StopLimitCodes{std::max<uint64_t>(1, uint64_t(stop_jerk * jerk_lsb_per_unit(clock))),
+                        std::max<uint64_t>(1, uint64_t(stop_acc * acc_lsb_per_unit(clock)))};
+}
+
+StopLimitsResult encode_stop_limits(double stop_jerk, double stop_acc, Clock clock) {
+  const StopLimitCodesResult r = stop_limit_codes(stop_jerk, stop_acc, clock);
+  if (const Error* e = std::get_if<Error>(&r)) return *e;
+  const StopLimitCodes c = std::get<StopLimitCodes>(r);
   return std::vector<RegWrite>{
-      {uint32_t(RegStopJerk), uint32_t(j)},
-      {uint32_t(RegStopJerk + 4), uint32_t(j >> 32)},
-      {uint32_t(RegStopAcc), uint32_t(a)},
-      {uint32_t(RegStopAcc + 4), uint32_t(a >> 32)},
+      {uint32_t(RegStopJerk), uint32_t(c.jerk)},
+      {uint32_t(RegStopJerk + 4), uint32_t(c.jerk >> 32)},
+      {uint32_t(RegStopAcc), uint32_t(c.acc)},
+      {uint32_t(RegStopAcc + 4), uint32_t(c.acc >> 32)},
   };
 }
+
+StopLimits move_stop_limits(const MoveRequest& r, Clock clock) {
+  StopLimits s;
+  s.acc = r.a_max;
+  if (r.kind == ProfileKind::SCurve) {
+    s.jerk = r.jerks ? std::max({(*r.jerks)[0], (*r.jerks)[1], (*r.jerks)[2], (*r.jerks)[3]}) : r.j_max;
+  } else {
+    const LimitRange jr = jerk_range(clock);
+    s.jerk = std::clamp(r.a_max / 1e-3, jr.lo, jr.hi);
+  }
+  return s;
+}
+
+RegWrite stop_command() { return {uint32_t(RegCmd), 1u << CmdStopBit}; }
 
 std::vector<RegWrite> encode_servo_config(const ServoConfig& c) {
   const std::array<uint32_t, hw::ClCfgWords> words = hw::ctl_cfg_to_words(c.ctl);

@@ -51,6 +51,25 @@ std::vector<RegWrite> encode_row(const Segment& s, RowFlags flags = {});
 // (refused while busy); CMD.STOP, an underrun or a discontinuity use them.
 using StopLimitsResult = std::variant<std::vector<RegWrite>, Error>;
 StopLimitsResult encode_stop_limits(double stop_jerk, double stop_acc, Clock clock = Clock{});
+// The same limits as the register values (executor LSBs at `clock`), with
+// the same errors.
+struct StopLimitCodes {
+  uint64_t jerk = 0;  // STOP_JERK
+  uint64_t acc = 0;   // STOP_ACC
+};
+using StopLimitCodesResult = std::variant<StopLimitCodes, Error>;
+StopLimitCodesResult stop_limit_codes(double stop_jerk, double stop_acc, Clock clock = Clock{});
+// The stop limits a move's own limits give, the default of the tools: its
+// acceleration limit and its jerk limit (the largest of asymmetric jerks).
+// A trapezoid has no jerk limit: it stops with the jerk that reaches its
+// acceleration limit in 1 ms (inside jerk_range(clock)).
+struct StopLimits {
+  double jerk = 0;  // pulses/s^3
+  double acc = 0;   // pulses/s^2
+};
+StopLimits move_stop_limits(const MoveRequest& request, Clock clock = Clock{});
+// CMD.STOP: the controlled stop with the limits in STOP_JERK / STOP_ACC.
+RegWrite stop_command();
 
 // CRC-8, polynomial 0x07, initial 0x00, no reflection, no final XOR.
 uint8_t crc8(const uint8_t* data, size_t n, uint8_t crc = 0);

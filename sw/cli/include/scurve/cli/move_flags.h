@@ -7,10 +7,12 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "scurve/cli/user_input.h"
 #include "scurve/planner.h"
+#include "scurve/reg_encode.h"
 
 namespace scurve::cli {
 
@@ -44,6 +46,25 @@ PulseTiming to_timing(const MoveFlags& f);
 Clock to_clock(const MoveFlags& f);
 // Empty if --clock-hz is usable, else one line naming the flag and the bound.
 std::string check_clock_flag(double hz);
+
+// --stop-at, --stop-jerk, --stop-acc: a controlled stop (CMD.STOP) during
+// the move, and the stop limits (STOP_JERK, STOP_ACC).
+struct StopFlags {
+  double at = 0, jerk = 0, acc = 0;
+  bool at_given = false, jerk_given = false, acc_given = false;
+};
+void add_stop_flags(CLI::App* app, StopFlags& f);
+// The stop the flags ask for against the planned move: the limits (the
+// move's own unless given, move_stop_limits) as register values, and the
+// clock of the stop counted from the START clock.
+struct StopRequest {
+  StopLimits limits;
+  StopLimitCodes codes;
+  std::optional<uint64_t> at_clock;
+};
+// The stop, or one line naming the flag, its value and the bound.
+std::variant<StopRequest, std::string> resolve_stop_flags(const StopFlags& f, const MoveRequest& request,
+                                                          const Plan& plan);
 
 // Number flags read through the validation layer (decimal notation, finite,
 // integer, range); CLI11 reports its message (exit 2).
