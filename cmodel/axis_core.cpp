@@ -164,24 +164,27 @@ bool AxisCore::outputs_equal(const CoreOutputs& o) const {
          o.fifo_full == exec_.fifo_full();
 }
 
+uint64_t AxisCore::clocks_to_next_event(const CoreInputs& in) const {
+  const ProfileExec::State& e = exec_.state();
+  const bool dir_settled = !(e.run && e.vel != 0) || (e.vel >= 0) == sg_.state().dir;
+  if (!sg_.idle() || !dir_settled || e.step_req || arm_ || !inputs_settled(in)) return 0;
+  const uint64_t ev = exec_.clocks_to_next_event();
+  return ev == 0 && !e.run ? UINT64_MAX : ev;  // idle: only counters move
+}
+
 void AxisCore::fast_forward(const CoreInputs& in, uint64_t n) {
   while (n > 0) {
-    const ProfileExec::State& e = exec_.state();
-    const bool dir_settled = !(e.run && e.vel != 0) || (e.vel >= 0) == sg_.state().dir;
-    if (sg_.idle() && dir_settled && !e.step_req && !arm_ && inputs_settled(in)) {
-      uint64_t ev = exec_.clocks_to_next_event();
-      if (ev == 0 && !exec_.state().run) ev = UINT64_MAX;  // idle: only counters move
-      if (ev > 1) {
-        const uint64_t k = std::min<uint64_t>(ev - 1, n);
-        if (exec_.state().run) {
-          exec_.advance(k);
-        } else {
-          exec_.idle_clocks();
-        }
-        sg_.jump_idle(k);
-        n -= k;
-        if (n == 0) break;
+    const uint64_t ev = clocks_to_next_event(in);
+    if (ev > 1) {
+      const uint64_t k = std::min<uint64_t>(ev - 1, n);
+      if (exec_.state().run) {
+        exec_.advance(k);
+      } else {
+        exec_.idle_clocks();
       }
+      sg_.jump_idle(k);
+      n -= k;
+      if (n == 0) break;
     }
     step(in);
     --n;

@@ -106,6 +106,10 @@ class AxisCore {
   // write); jumps in closed form while the step generator is idle and the
   // executor is between steps. Equal to n calls of step(in).
   void fast_forward(const CoreInputs& in, uint64_t n);
+  // With `in` held, the clocks until the next one that emits a step, ends a
+  // row or needs a per-clock step() (0: step() this clock): fast_forward()
+  // over one less is a jump in closed form with no pin edge inside.
+  uint64_t clocks_to_next_event(const CoreInputs& in) const;
   // True when holding `in` changes nothing in the input registers.
   bool inputs_settled(const CoreInputs& in) const;
 

@@ -177,7 +177,7 @@ int main(int argc, char** argv) {
     const PlanResult r = plan_move(j.req, timing, clock);
     if (const auto* e = std::get_if<PlanError>(&r)) return bad_input(e->message);
     plans.push_back(std::get<Plan>(r));
-    const auto s = scurve::cli::resolve_stop_flags(stop_flags, j.req, plans.back());
+    const auto s = scurve::cli::resolve_stop_flags(stop_flags, j.req, to_host(plans.back()));
     if (const std::string* e = std::get_if<std::string>(&s)) return bad_input(*e);
     stops.push_back(std::get<scurve::cli::StopRequest>(s));
   }

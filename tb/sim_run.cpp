@@ -189,11 +189,9 @@ SimResult run_move(const Plan& plan, const PulseTiming& timing, const Limits4Che
         continue;
       }
       uint64_t n = 1;
-      if (model.step_gen().idle() && !model.exec().state().step_req) {
-        const uint64_t ev = model.exec().clocks_to_next_event();
-        if (ev > 1) n = ev - 1;
-      }
+      if (const uint64_t ev = model.clocks_to_next_event(in); ev > 1) n = ev - 1;
       if (clock < stop_clock) n = std::min(n, stop_clock - clock);
+      n = std::min(n, limit - clock);
       if (n > 1) {
         // The reference moves smoothly in between: sample its peaks at the
         // jump ends (the per-clock maxima are at row ends or pulses).

@@ -102,9 +102,9 @@ int run_regs_cli(const RegsCliFlags& f, const MoveRequest& request, const Plan& 
       std::string hex;
       for (uint8_t b : frames[i]) hex += fmt::format("{:02X} ", b);
       // the frame holds the word address; the comment names the byte address
-      std::cout << fmt::format("{} # {} (0x{:02X}) = 0x{:08X}\n", hex, reg_name(w.addr), w.addr, w.data);
+      std::cout << fmt::format("{} # {} (0x{:03X}) = 0x{:08X}\n", hex, reg_name(w.addr), w.addr, w.data);
     } else {
-      std::cout << fmt::format("0x{:02X} {:<12} 0x{:08X}\n", w.addr, reg_name(w.addr), w.data);
+      std::cout << fmt::format("0x{:03X} {:<12} 0x{:08X}\n", w.addr, reg_name(w.addr), w.data);
     }
   }
   return 0;

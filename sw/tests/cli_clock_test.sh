@@ -33,6 +33,6 @@ c=$("$exe" plan $move --json --clock-hz 25e6) || { echo "FAIL: plan 25e6"; fail=
 [ "$a" = "$b" ] || { echo "FAIL: --clock-hz 20e6 differs from the default"; fail=1; }
 [ "$a" != "$c" ] || { echo "FAIL: --clock-hz 25e6 gives the 20 MHz table"; fail=1; }
 printf '%s' "$c" | grep -q '"clock_hz": 25000000' || { echo "FAIL: clock_hz not in plan JSON"; fail=1; }
-"$exe" regs $move --clock-hz 50e6 --closed-loop | grep -q '^0x04 CTRL' || { echo "FAIL: regs at 50 MHz"; fail=1; }
+"$exe" regs $move --clock-hz 50e6 --closed-loop | grep -q '^0x004 CTRL' || { echo "FAIL: regs at 50 MHz"; fail=1; }
 [ $fail -eq 0 ] && echo "cli clock checks passed"
 exit $fail
