@@ -357,7 +357,7 @@ def doc(params, words, enums=None):
            "a write to a read-only register "
            "answers SLVERR. Both set ERR.BAD_ACCESS and change nothing else. Reserved bits read 0 "
            "and ignore writes. WSTRB selects bytes (CMD, ERR, IRQ_STATUS and ROW_PUSH act on byte 0).", "",
-           "Writes to PULSE_TIME, DIR_TIME, POS_FRAC0_*, CMD.START and CMD.FLUSH while "
+           "Writes to PULSE_TIME, DIR_TIME, POS_FRAC0_*, STOP_JERK_*, STOP_ACC_*, CMD.START and CMD.FLUSH while "
            "STATUS.BUSY is set are refused: SLVERR, ERR.REJECT set, the running move is not touched. "
            "CMD.START is also refused while ERR.ESTOP is set or CTRL.ENABLE is 0. The row staging "
            "registers (SEG_*) and ROW_PUSH stay open while busy: the host appends rows to the "
