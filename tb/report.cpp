@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
+
 namespace sc {
 
 namespace {
@@ -86,6 +88,57 @@ std::string sim_table(const std::vector<SimResult>& rs) {
   for (const SimResult& r : rs) {
     for (const std::string& f : r.failures) s += fmt::format("  {}: {}\n", r.name, f);
   }
+  return s;
+}
+
+nlohmann::json stream_to_json(const StreamRunResult& r) {
+  nlohmann::json moves = nlohmann::json::array();
+  for (const StreamMoveReport& m : r.moves) {
+    moves.push_back({{"index", m.index},
+                     {"distance", m.distance},
+                     {"v_in", m.v_in},
+                     {"v_out", m.v_out},
+                     {"planned_start_clock", m.planned_start},
+                     {"planned_end_clock", m.planned_end},
+                     {"end_clock", m.reached ? nlohmann::json(m.end_clock) : nlohmann::json(nullptr)},
+                     {"end_position", m.reached ? nlohmann::json(m.end_position) : nlohmann::json(nullptr)},
+                     {"expected_end_position", m.expected_end_position}});
+  }
+  return {
+      {"engine", engine_name(r.engine)},
+      {"moves", moves},
+      {"move_count", r.moves.size()},
+      {"rows", r.rows},
+      {"pulses", r.pulses},
+      {"clocks", r.clocks},
+      {"duration_s", r.duration_s},
+      {"planned_duration_s", r.planned_s},
+      {"stop_at_every_junction_s", std::isfinite(r.stop_each_s) ? nlohmann::json(r.stop_each_s) : nlohmann::json(nullptr)},
+      {"mismatches", r.mismatches},
+      {"matched_clocks", r.matched_clocks},
+      {"first_mismatch", r.first_mismatch},
+      {"wall_s", r.wall_s},
+      {"clocks_per_s", r.clocks_per_s},
+      {"realtime_ratio", r.clocks_per_s / ClkHz},
+      {"pass", r.pass()},
+      {"failures", r.failures},
+  };
+}
+
+std::string stream_table(const StreamRunResult& r) {
+  std::string s = fmt::format("{:>5} {:>9} {:>10} {:>10} {:>12} {:>12} {:>10} {:>10}\n", "move", "distance", "v_in",
+                              "v_out", "start_clk", "end_clk", "end_pos", "planned");
+  for (const StreamMoveReport& m : r.moves) {
+    s += fmt::format("{:>5} {:>9} {:>10.2f} {:>10.2f} {:>12} {:>12} {:>10} {:>10}\n", m.index, m.distance, m.v_in,
+                     m.v_out, m.planned_start, m.reached ? fmt::format("{}", m.end_clock) : "-",
+                     m.reached ? fmt::format("{}", m.end_position) : "-", m.expected_end_position);
+  }
+  s += fmt::format(
+      "{} moves, {} rows, {} pulses, {:.4f} s ({:.4f} s stopping at every junction), {} mismatches, engine {}, "
+      "{:.2f} s wall, {:.2f} M clocks/s ({:.2f}x real time): {}\n",
+      r.moves.size(), r.rows, r.pulses, r.duration_s, r.stop_each_s, r.mismatches, engine_name(r.engine), r.wall_s,
+      r.clocks_per_s / 1e6, r.clocks_per_s / ClkHz, r.pass() ? "PASS" : "FAIL");
+  for (const std::string& f : r.failures) s += "  " + f + "\n";
   return s;
 }
 

@@ -8,10 +8,13 @@
 
 #include "planner.h"
 #include "sim_run.h"
+#include "stream_run.h"
 
 namespace sc {
 
 nlohmann::json sim_to_json(const SimResult& r);
 std::string sim_table(const std::vector<SimResult>& rs);
+nlohmann::json stream_to_json(const StreamRunResult& r);
+std::string stream_table(const StreamRunResult& r);
 
 }  // namespace sc

@@ -2,6 +2,7 @@
 //   scurve plan --distance L --v-start VS --v-cruise VC --v-end VE --a-max A --j-max J [--clock-hz F] [--json]
 //   scurve sim  (same move flags | --group 1 2 3 4) [--engine ...] [--stop-at T] [--json]
 //   scurve regs (same move flags) [--uart] [--no-start] [--closed-loop] [--json]   register writes
+//   scurve stream FILE [--engine ...] [--json]   a stream of moves with look-ahead junctions
 // plan and regs are the host commands (sw/, scurve::host_cli); sim, regress,
 // diff run the RTL and the model.
 // Exit codes: 0 ok, 1 a check failed, 2 bad input (one line on stderr).
@@ -11,6 +12,9 @@
 #include <CLI/CLI.hpp>
 #include <atomic>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <iostream>
 #include <mutex>
 #include <nlohmann/json.hpp>
@@ -24,6 +28,8 @@
 #include "scurve/cli/move_flags.h"
 #include "scenarios.h"
 #include "sim_run.h"
+#include "stream_run.h"
+#include "scurve/reg_encode.h"
 #include "tool_commands.h"
 
 namespace {
@@ -90,6 +96,46 @@ class Progress {
   bool on_;
 };
 
+// scurve stream FILE: exit 0 pass, 1 a check failed, 2 bad input.
+int run_stream_cli(const std::string& file, const std::string& engine, bool closed_loop, const MoveFlags& f) {
+  if (closed_loop) {
+    return bad_input("--closed-loop: streams run on the open-loop core only (the closed-loop stream is not built yet)");
+  }
+  std::ifstream in(file);
+  if (!std::filesystem::is_regular_file(file) || !in) return bad_input(fmt::format("FILE={}: cannot read", file));
+  std::stringstream ss;
+  ss << in.rdbuf();
+  StreamRequest req;
+  try {
+    req = parse_stream_json(ss.str());
+  } catch (const input::Error& e) {
+    return bad_input(fmt::format("{}: {}", file, e.what()));
+  }
+  const PulseTiming timing = to_model(scurve::cli::to_timing(f));
+  auto planned = plan_stream(req, timing);
+  if (const scurve::Error* e = std::get_if<scurve::Error>(&planned)) return bad_input(e->message);
+  const auto codes = scurve::stop_limit_codes(req.limits.j_max, req.limits.a_max);
+  if (const scurve::Error* e = std::get_if<scurve::Error>(&codes)) return bad_input("limits: " + e->message);
+  const SimEngine eng = engine == "rtl" ? SimEngine::RtlOnly
+                        : engine == "model" ? SimEngine::ModelOnly
+                        : engine == "model-fast" ? SimEngine::ModelFast
+                                                 : SimEngine::Lockstep;
+  Progress progress(1);
+  const StreamRunResult r = run_stream(std::get<PlannedStream>(planned), req, timing, eng,
+                                       std::get<scurve::StopLimitCodes>(codes).jerk,
+                                       std::get<scurve::StopLimitCodes>(codes).acc,
+                                       [&](double x) { progress.set(0, x); });
+  progress.done();
+  const nlohmann::json out = stream_to_json(r);
+  if (f.json) {
+    std::cout << out.dump(2) << "\n";
+  } else {
+    std::cout << stream_table(r);
+  }
+  if (!write_json_file(f.json_out, out)) return bad_input("--json-out: cannot write " + f.json_out);
+  return r.pass() ? 0 : 1;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -128,6 +174,20 @@ int main(int argc, char** argv) {
   ClosedLoopCli closed_loop;  // --closed-loop and its plant/controller flags (tb/closed_loop_cli.h)
   add_closed_loop_flags(sim_cmd, closed_loop);
 
+  // ---- stream: a stream file planned with look-ahead and run -----------------
+  MoveFlags tf;
+  std::string stream_file;
+  std::string stream_engine = "lockstep";
+  bool stream_closed_loop = false;
+  CLI::App* stream_cmd = app.add_subcommand("stream", "plan a stream of moves (look-ahead junctions) and run it");
+  stream_cmd->add_option("FILE", stream_file, "stream JSON: {\"limits\": {a_max, j_max, v_max}, \"moves\": [...]}")
+      ->required();
+  stream_cmd->add_option("--engine", stream_engine, "lockstep | rtl | model | model-fast")
+      ->check(CLI::IsMember({"lockstep", "rtl", "model", "model-fast"}));
+  stream_cmd->add_flag("--closed-loop", stream_closed_loop, "the closed-loop axis (not available for streams yet)");
+  scurve::cli::add_timing_flags(stream_cmd, tf);
+  scurve::cli::add_output_flags(stream_cmd, tf);
+
   auto tools = add_tool_commands(app);  // diff, regress (tb/tools/tool_commands.h)
 
   if (const auto rc = scurve::cli::parse_command_line(app, argc, argv)) return *rc;
@@ -135,6 +195,8 @@ int main(int argc, char** argv) {
   if (int rc = 0; run_tool_command(*tools, &rc)) return rc;
 
   if (int rc = 0; host->run(&rc)) return rc;
+
+  if (*stream_cmd) return run_stream_cli(stream_file, stream_engine, stream_closed_loop, tf);
 
   // ---- sim ----------------------------------------------------------------
   struct Job {

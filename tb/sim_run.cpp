@@ -24,8 +24,12 @@ const char* engine_name(SimEngine e) {
 }
 
 std::vector<CoreInputs> load_sequence(const std::vector<Segment>& rows, u128 pos_frac0, const CoreInputs& base) {
+  return load_sequence(move_rows(rows), pos_frac0, base);
+}
+
+std::vector<CoreInputs> load_sequence(const std::vector<Row>& rows, u128 pos_frac0, const CoreInputs& base) {
   std::vector<CoreInputs> seq;
-  for (const Row& r : move_rows(rows)) {
+  for (const Row& r : rows) {
     CoreInputs w = base;
     w.row_push = true;
     w.row = r;

@@ -93,5 +93,7 @@ SimResult run_move(const Plan& plan, const PulseTiming& timing, const Limits4Che
 // per clock, then one clock with start; `base` supplies enable, timing.
 // The last element's inputs, with start dropped, are what a run then holds.
 std::vector<CoreInputs> load_sequence(const std::vector<Segment>& rows, u128 pos_frac0, const CoreInputs& base);
+// The same for rows as pushed (a test may drop or alter some).
+std::vector<CoreInputs> load_sequence(const std::vector<Row>& rows, u128 pos_frac0, const CoreInputs& base);
 
 }  // namespace sc

@@ -117,4 +117,37 @@ check_bad "stop-jerk" sim $move --stop-at 0.01 --stop-jerk 0
 check_bad "stop-acc" regs $move --stop-acc 1e300
 check_bad "stop-at" regs $move --stop-at 0.01 --no-start
 check_bad "stop-at" sim $move --stop-at 0.01 --closed-loop
+# scurve stream: the example stream (a junction limit, a direction change)
+# ends every move on the running sum, faster than stopping at every
+# junction, with the same boundaries on lockstep and model-fast; bad stream
+# files are exit 2 naming the place.
+example="$(dirname "$0")/streams/example.json"
+"$scurve" stream "$example" --json > "$tmp/stream_lockstep.json"
+"$scurve" stream "$example" --engine model-fast --json > "$tmp/stream_fast.json"
+python3 - "$tmp/stream_lockstep.json" "$tmp/stream_fast.json" <<'PY'
+import json, sys
+a, b = (json.load(open(f)) for f in sys.argv[1:3])
+for r in (a, b):
+    assert r["pass"] and r["move_count"] == 4 and r["pulses"] == 2700, r
+    ends = [m["end_position"] for m in r["moves"]]
+    assert ends == [1000, 1500, 3500, 2700] == [m["expected_end_position"] for m in r["moves"]], ends
+    assert r["moves"][0]["v_out"] > 0, "a nonzero junction speed"
+    assert r["moves"][2]["v_out"] == 0, "zero at the direction change"
+    assert 0 < r["moves"][1]["v_out"] <= 5000, "the junction limit of the third move"
+    assert r["duration_s"] < r["stop_at_every_junction_s"], r
+assert a["mismatches"] == 0 and a["matched_clocks"] > 0
+assert [m["end_clock"] for m in a["moves"]] == [m["end_clock"] for m in b["moves"]]
+PY
+printf '{"limits": {"a_max": 2e5, "j_max": 2e7, "v_max": 2e4}, "moves": [{"distance": 5, "v_cruise": 100}, {"distance": 5, "v_cruise": "fast"}]}' > "$tmp/s1.json"
+check_bad "moves\[1\].v_cruise" stream "$tmp/s1.json"
+printf '{"limits": {"a_max": 2e5, "j_max": 2e7, "v_max": 2e4}, "moves": [{"distance": 5, "v_cruse": 100}]}' > "$tmp/s2.json"
+check_bad "v_cruse" stream "$tmp/s2.json"
+printf '{"limits": {"a_max": 2e5, "v_max": 2e4}, "moves": [{"distance": 5, "v_cruise": 100}]}' > "$tmp/s3.json"
+check_bad "limits.j_max" stream "$tmp/s3.json"
+printf '{"limits": {"a_max": 2e5, "j_max": 2e7, "v_max": 2e4}, "moves": [{"distance": 5, "v_cruise": 5e4}]}' > "$tmp/s4.json"
+check_bad "moves\[0\]" stream "$tmp/s4.json"
+printf '{"limits": {"a_max": 2e5, "j_max": 2e7, "v_max": 2e4}, "moves": [' > "$tmp/s5.json"
+check_bad "not JSON" stream "$tmp/s5.json"
+check_bad "FILE=$tmp/none.json: cannot read" stream "$tmp/none.json"
+check_bad "closed-loop" stream "$example" --closed-loop
 echo "cli ok"

@@ -16,6 +16,7 @@
 #include "pin_monitor.h"
 #include "planner.h"
 #include "rtl_core.h"
+#include "sim_run.h"
 #include "stop_harness.h"
 
 using namespace sc;
@@ -115,15 +116,7 @@ bool run_case(std::mt19937_64& g, CampaignStats& st, int index) {
     cur = &o;
     ++clock;
   };
-  for (const Row& r : rows) {
-    CoreInputs w = in;
-    w.row_push = true;
-    w.row = r;
-    tick(w);
-  }
-  CoreInputs s = in;
-  s.start = true;
-  tick(s);
+  for (const CoreInputs& ci : load_sequence(rows, plan.pos_frac0, in)) tick(ci);
   const uint64_t stop_at = clock + t.setup + 3 + g() % std::max<uint64_t>(1, plan.total_clocks - 2);
 
   const std::string what = fmt::format("case {}: {} of a {}-pulse move at clock {}, J {:.3g}, D {:.3g}", index,
@@ -373,15 +366,7 @@ TEST(CoreStop, LowLimitsStopAMoveFromItsAccelerationUnderControl) {
     model.step(ci);
     chk.compare(clock++, rtl.outputs(), model.outputs());
   };
-  for (const Row& r : rows) {
-    CoreInputs w = in;
-    w.row_push = true;
-    w.row = r;
-    tick(w);
-  }
-  CoreInputs s = in;
-  s.start = true;
-  tick(s);
+  for (const CoreInputs& ci : load_sequence(rows, in.pos_frac0, in)) tick(ci);
   bool stopped = false;
   while (clock < 40'000'000 && !chk.should_stop()) {
     tick(in);

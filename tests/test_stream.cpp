@@ -15,6 +15,7 @@
 #include "planner.h"
 #include "rtl_core.h"
 #include "scurve/stream_planner.h"
+#include "stream_run.h"
 
 using namespace sc;
 
@@ -36,35 +37,16 @@ std::vector<scurve::StreamMove> random_moves(std::mt19937_64& g, size_t n, doubl
   return moves;
 }
 
-// The rows of planned moves as FIFO words, and each move's end position
-// (the running sum of distances, from the planner).
-struct RowQueue {
-  std::deque<Row> rows;
-  std::deque<int64_t> move_ends;  // expected BOUNDARY_POS after each move, in order
-  void add(const scurve::StreamedMove& m, bool last_of_stream) {
-    std::vector<Segment> segs;
-    for (const scurve::Segment& s : m.segments) segs.push_back(to_model(s));
-    for (const Row& r : move_rows(segs, last_of_stream)) rows.push_back(r);
-    move_ends.push_back(m.end_position);
+// Plans `moves` (tb/stream_run.h): their rows, the last move ending the
+// stream, and each move's end position (the running sum, from the planner).
+PlannedStream plan_moves(const std::vector<scurve::StreamMove>& moves, const scurve::StreamLimits& limits) {
+  auto r = plan_stream(StreamRequest{limits, moves}, PulseTiming{});
+  if (const scurve::Error* e = std::get_if<scurve::Error>(&r)) {
+    ADD_FAILURE() << e->message;
+    return {};
   }
-};
-
-// Plans `moves` and queues their rows; the last move ends the stream.
-RowQueue plan_stream(const std::vector<scurve::StreamMove>& moves, const scurve::StreamLimits& limits) {
-  scurve::StreamPlanner sp(scurve::Clock{}, scurve::PulseTiming{}, limits);
-  std::vector<scurve::StreamedMove> planned;
-  for (const scurve::StreamMove& m : moves) {
-    auto e = sp.append(m);
-    EXPECT_FALSE(e) << e->message;
-    for (scurve::StreamedMove& r : sp.take_ready()) planned.push_back(std::move(r));
-  }
-  auto e = sp.flush();
-  EXPECT_FALSE(e) << e->message;
-  for (scurve::StreamedMove& r : sp.take_ready()) planned.push_back(std::move(r));
-  EXPECT_EQ(planned.size(), moves.size());
-  RowQueue q;
-  for (size_t i = 0; i < planned.size(); ++i) q.add(planned[i], i + 1 == planned.size());
-  return q;
+  EXPECT_EQ(std::get<PlannedStream>(r).moves.size(), moves.size());
+  return std::get<PlannedStream>(std::move(r));
 }
 
 // Streams a planner's output through the executor model, keeping the FIFO
@@ -75,7 +57,7 @@ void stream_through_model(size_t n_moves, uint64_t seed) {
   const auto moves = random_moves(g, n_moves, limits.v_max, 100000);
   scurve::StreamPlanner sp(scurve::Clock{}, scurve::PulseTiming{}, limits);
   ProfileExec ex;
-  RowQueue q;  // rows not yet pushed, move ends not yet reached
+  PlannedStream q;  // rows not yet pushed, move ends not yet reached
   std::deque<Row>& pending = q.rows;
   std::deque<int64_t>& ends = q.move_ends;
   uint64_t moves_done = 0, clocks = 0;
@@ -197,7 +179,7 @@ StreamRunStats lockstep_stream(std::mt19937_64& g, size_t n_moves, double push_r
   while (next_move < moves.size() && !chk.should_stop()) {
     // A new stream from rest: the remaining moves.
     std::vector<scurve::StreamMove> rest(moves.begin() + long(next_move), moves.end());
-    RowQueue q = plan_stream(rest, limits);
+    PlannedStream q = plan_moves(rest, limits);
     if (::testing::Test::HasFatalFailure()) return st;
     origin = model.outputs().ref_pos_int;
     // Preload a few rows, then START.
@@ -294,5 +276,42 @@ void lockstep_streams(int streams, size_t max_moves, uint64_t seed) {
 }  // namespace
 
 TEST(StreamLockstep, RandomStreamsWithRandomAppendTimingMatchEveryClock) { lockstep_streams(6, 80, 77); }
+
+// The runner of `scurve stream` (tb/stream_run.h) on random streams with
+// random pulse timing: every engine passes (boundaries on the running sum
+// and at their planned clocks, pins, no underrun with a host that pushes
+// whenever there is room) and all four see every MOVE_DONE at the same clock.
+TEST(StreamRun, RandomStreamsPassOnEveryEngineWithTheSameBoundaries) {
+  std::mt19937_64 g(5);
+  for (int i = 0; i < 4; ++i) {
+    StreamRequest req;
+    req.limits = {2e6, 5e9, 150000};
+    req.moves = random_moves(g, 8 + g() % 16, req.limits.v_max, 600);
+    PulseTiming t;
+    t.high = uint16_t(2 + g() % 20);
+    t.low = uint16_t(2 + g() % 20);
+    t.setup = uint16_t(g() % 60);
+    t.hold = uint16_t(g() % 60);
+    auto planned = plan_stream(req, t);
+    ASSERT_TRUE(std::holds_alternative<PlannedStream>(planned)) << std::get<scurve::Error>(planned).message;
+    const auto& ps = std::get<PlannedStream>(planned);
+    const uint64_t j = uint64_t(req.limits.j_max * kTwoPowFrac / (double(ClkHz) * ClkHz * ClkHz));
+    const uint64_t a = uint64_t(req.limits.a_max * kTwoPowFrac / (double(ClkHz) * ClkHz));
+    std::vector<uint64_t> ends;
+    for (SimEngine e : {SimEngine::Lockstep, SimEngine::RtlOnly, SimEngine::ModelOnly, SimEngine::ModelFast}) {
+      const StreamRunResult r = run_stream(ps, req, t, e, j, a);
+      std::string failures;
+      for (const std::string& f : r.failures) failures += f + "\n";
+      ASSERT_TRUE(r.pass()) << "stream " << i << " (" << req.moves.size() << " moves) on " << engine_name(e) << ":\n"
+                            << failures;
+      EXPECT_EQ(r.pulses, ps.move_ends.back());
+      std::vector<uint64_t> e_ends;
+      for (const StreamMoveReport& m : r.moves) e_ends.push_back(m.end_clock);
+      if (ends.empty()) ends = e_ends;
+      EXPECT_EQ(e_ends, ends) << "stream " << i << " on " << engine_name(e);
+      if (e == SimEngine::Lockstep) EXPECT_GT(r.matched_clocks, 0u);
+    }
+  }
+}
 
 TEST(StreamLockstepLong, TwoHundredStreamsOf20To200MovesMatchEveryClock) { lockstep_streams(200, 200, 78); }

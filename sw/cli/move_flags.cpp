@@ -76,6 +76,10 @@ void add_move_flags(CLI::App* app, MoveFlags& f, std::vector<CLI::Option*>* move
   opts.push_back(app->add_flag("--adjust-end-speed", f.adjust_end_speed,
                                "use the closest reachable end speed instead of failing"));
   if (move_opts) move_opts->insert(move_opts->end(), opts.begin(), opts.end());
+  add_timing_flags(app, f);
+}
+
+void add_timing_flags(CLI::App* app, MoveFlags& f) {
   int_flag(app, "--pulse-high", f.pulse_high, 1, 65535, "STEP high time, clocks (1..65535)");
   int_flag(app, "--pulse-low", f.pulse_low, 1, 65535, "minimum STEP low time, clocks (1..65535)");
   int_flag(app, "--dir-setup", f.dir_setup, 0, 65535, "DIR setup before STEP rise, clocks (0..65535)");

@@ -33,6 +33,8 @@ struct MoveFlags {
 // --distance .. --adjust-end-speed (collected in *move_opts if given) and the
 // pulse timing (--pulse-high, --pulse-low, --dir-setup, --dir-hold).
 void add_move_flags(CLI::App* app, MoveFlags& f, std::vector<CLI::Option*>* move_opts = nullptr);
+// The pulse timing alone (--pulse-high, --pulse-low, --dir-setup, --dir-hold).
+void add_timing_flags(CLI::App* app, MoveFlags& f);
 // --clock-hz: the board's system clock.
 void add_clock_flag(CLI::App* app, MoveFlags& f);
 // --json, --json-out.

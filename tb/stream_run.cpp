@@ -1,0 +1,275 @@
+#include "stream_run.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <nlohmann/json.hpp>
+
+#include "lockstep.h"
+#include "pin_monitor.h"
+#include "rtl_core.h"
+#include "scurve/cli/user_input.h"
+
+namespace sc {
+
+StreamRequest parse_stream_json(const std::string& text) {
+  nlohmann::json j;
+  try {
+    j = nlohmann::json::parse(text);
+  } catch (const std::exception& e) {
+    throw input::Error("stream", "file", "not JSON: " + std::string(e.what()));
+  }
+  using namespace input;
+  constexpr double kAny = 1e300;  // the planner checks the ranges and names them
+  StreamRequest r;
+  json_object("stream", j);
+  json_known_keys("stream", j, {"_comment", "limits", "moves"});
+  if (!j.contains("limits")) throw Error("limits", "missing", "needs {\"a_max\", \"j_max\", \"v_max\"}");
+  if (!j.contains("moves")) throw Error("moves", "missing", "needs an array of moves");
+  const nlohmann::json& l = json_object("limits", j["limits"]);
+  json_known_keys("limits", l, {"a_max", "j_max", "v_max"});
+  for (const char* k : {"a_max", "j_max", "v_max"}) {
+    if (!l.contains(k)) throw Error(std::string("limits.") + k, "missing", "required");
+  }
+  r.limits.a_max = json_real("limits.a_max", l["a_max"], 0, kAny);
+  r.limits.j_max = json_real("limits.j_max", l["j_max"], 0, kAny);
+  r.limits.v_max = json_real("limits.v_max", l["v_max"], 0, kAny);
+  const nlohmann::json& ms = json_array("moves", j["moves"]);
+  if (ms.empty()) throw Error("moves", "[]", "needs at least one move");
+  for (size_t i = 0; i < ms.size(); ++i) {
+    const std::string at = fmt::format("moves[{}]", i);
+    const nlohmann::json& m = json_object(at, ms[i]);
+    json_known_keys(at, m, {"distance", "v_cruise", "v_junction_max"});
+    if (!m.contains("distance")) throw Error(at + ".distance", "missing", "required");
+    if (!m.contains("v_cruise")) throw Error(at + ".v_cruise", "missing", "required");
+    scurve::StreamMove mv;
+    mv.distance = json_int(at + ".distance", m["distance"], -scurve::PlannerLimits::kMaxDistance,
+                           scurve::PlannerLimits::kMaxDistance);
+    mv.v_cruise = json_real(at + ".v_cruise", m["v_cruise"], 0, kAny);
+    mv.v_junction_max =
+        m.contains("v_junction_max") ? json_real(at + ".v_junction_max", m["v_junction_max"], 0, kAny) : r.limits.v_max;
+    r.moves.push_back(mv);
+  }
+  return r;
+}
+
+void PlannedStream::add(const scurve::StreamedMove& m, bool last_of_stream) {
+  std::vector<Segment> segs;
+  for (const scurve::Segment& s : m.segments) segs.push_back(to_model(s));
+  for (const Row& r : move_rows(segs, last_of_stream)) rows.push_back(r);
+  move_ends.push_back(m.end_position);
+}
+
+std::variant<PlannedStream, scurve::Error> plan_stream(const StreamRequest& request, const PulseTiming& timing) {
+  scurve::StreamPlanner sp(model_clock(), to_host(timing), request.limits);
+  std::vector<scurve::StreamedMove> planned;
+  for (size_t i = 0; i < request.moves.size(); ++i) {
+    if (auto e = sp.append(request.moves[i])) {
+      return scurve::Error{e->parameter, fmt::format("moves[{}]: {}", i, e->message)};
+    }
+    for (scurve::StreamedMove& m : sp.take_ready()) planned.push_back(std::move(m));
+  }
+  if (auto e = sp.flush()) return *e;
+  for (scurve::StreamedMove& m : sp.take_ready()) planned.push_back(std::move(m));
+  PlannedStream s;
+  for (size_t i = 0; i < planned.size(); ++i) s.add(planned[i], i + 1 == planned.size());
+  s.moves = std::move(planned);
+  return s;
+}
+
+namespace {
+
+// The same moves each alone from rest to rest: the reference the junction
+// speeds are measured against (NaN when one does not plan).
+double stop_at_every_junction_s(const StreamRequest& request, const PulseTiming& timing) {
+  uint64_t clocks = 0;
+  for (const scurve::StreamMove& m : request.moves) {
+    MoveRequest r;
+    r.distance = m.distance;
+    r.v_cruise = m.v_cruise;
+    r.a_max = request.limits.a_max;
+    r.j_max = request.limits.j_max;
+    const PlanResult p = plan_move(r, timing);
+    if (!std::holds_alternative<Plan>(p)) return std::numeric_limits<double>::quiet_NaN();
+    clocks += std::get<Plan>(p).total_clocks;
+  }
+  return double(clocks) / ClkHz;
+}
+
+}  // namespace
+
+StreamRunResult run_stream(const PlannedStream& stream, const StreamRequest& request, const PulseTiming& timing,
+                           SimEngine engine, uint64_t stop_jerk, uint64_t stop_acc,
+                           const std::function<void(double)>& progress) {
+  StreamRunResult res;
+  res.engine = engine;
+  for (const scurve::StreamedMove& m : stream.moves) {
+    StreamMoveReport r;
+    r.index = m.index;
+    r.distance = m.distance;
+    r.v_in = m.v_in;
+    r.v_out = m.v_out;
+    r.planned_start = m.start_clock;
+    r.planned_end = m.end_clock;
+    r.expected_end_position = m.end_position;
+    res.moves.push_back(r);
+  }
+  const uint64_t planned_clocks = stream.moves.empty() ? 0 : stream.moves.back().end_clock;
+  res.planned_s = double(planned_clocks) / ClkHz;
+  res.stop_each_s = stop_at_every_junction_s(request, timing);
+
+  const bool use_rtl = engine == SimEngine::Lockstep || engine == SimEngine::RtlOnly;
+  const bool use_model = engine != SimEngine::RtlOnly;
+  const bool lockstep = engine == SimEngine::Lockstep;
+  std::unique_ptr<RtlCore> rtl;
+  if (use_rtl) {
+    rtl = std::make_unique<RtlCore>();
+    rtl->reset(4);
+  }
+  AxisCore model;
+  LockstepChecker checker(1);
+  PinRules rules{timing};
+  rules.profile_phases = false;  // several moves: no single-move duty contract
+  rules.accounting = StepAccounting::ReferencePosition;
+  PinMonitor pins(rules);
+
+  CoreInputs in;
+  in.enable = true;
+  in.cfg = timing;
+  in.pos_frac0 = kOne / 2;  // the stream planner's start fraction
+  in.stop_jerk = stop_jerk;
+  in.stop_acc = stop_acc;
+  uint64_t clock = 0;
+  bool stopped = false;
+  CoreOutputs out;
+  const CoreOutputs* cur = &out;
+  const auto t0 = std::chrono::steady_clock::now();
+  auto tick = [&](const CoreInputs& ci, bool held) {
+    if (held) {
+      if (rtl) rtl->tick();
+      if (use_model) model.tick();
+    } else {
+      if (rtl) rtl->step(ci);
+      if (use_model) model.step(ci);
+    }
+    if (lockstep) {
+      CoreOutputs& o = checker.slot(clock);
+      rtl->read_outputs(o);
+      if (!checker.check(clock, model) && checker.should_stop()) stopped = true;
+      cur = &o;
+    } else {
+      if (rtl) rtl->read_outputs(out); else model.read_outputs(out);
+      cur = &out;
+    }
+    pins.on_clock(clock, *cur);
+    ++clock;
+  };
+
+  std::deque<Row> rows = stream.rows;
+  auto push = [&]() {
+    CoreInputs w = in;
+    w.row_push = true;
+    w.row = rows.front();
+    rows.pop_front();
+    ++res.rows;
+    tick(w, false);
+  };
+  // The first rows, then START.
+  for (size_t i = 0; i < RowFifoDepth && !rows.empty() && !stopped; ++i) push();
+  CoreInputs st = in;
+  st.start = true;
+  if (!stopped) tick(st, false);
+  const uint64_t start_clock = clock;
+  const uint64_t slack = 100000 + 8 * (uint64_t(timing.high) + timing.low + timing.setup + timing.hold) *
+                                      (stream.moves.size() + 1);
+  const uint64_t limit = start_clock + planned_clocks + slack;
+  bool inputs_changed = true;  // the last clock's inputs differ from `in`
+  size_t next_move = 0;
+  while (!stopped && clock < limit) {
+    if (!rows.empty() && !cur->fifo_full) {
+      push();
+      inputs_changed = true;
+    } else {
+      uint64_t n = 0;
+      if (engine == SimEngine::ModelFast) {
+        // Nothing to push until a row ends: jump to the clock before the
+        // next event (a step, a row end), stepping that one.
+        if (const uint64_t ev = model.clocks_to_next_event(in); ev > 1) n = std::min(ev - 1, limit - clock);
+      }
+      if (n > 1) {
+        model.fast_forward(in, n);
+        clock += n;
+        model.read_outputs(out);
+        cur = &out;
+        pins.on_clock(clock - 1, out);
+      } else {
+        tick(in, !inputs_changed && engine != SimEngine::ModelFast);
+      }
+      inputs_changed = false;
+    }
+    if (cur->move_done) {
+      if (next_move < res.moves.size()) {
+        StreamMoveReport& m = res.moves[next_move];
+        m.reached = true;
+        m.end_clock = clock - 1 - start_clock;
+        m.end_position = cur->boundary_pos;
+      }
+      ++next_move;
+    }
+    if (cur->done || (!cur->busy && clock > start_clock + 4)) break;
+    if (progress && (clock & 0xffffff) == 0) progress(double(clock - start_clock) / double(planned_clocks + 1));
+  }
+  const CoreOutputs end = *cur;
+  const uint64_t done_clock = clock;
+  // Quiet tail: nothing may move after done.
+  const uint64_t tail = 4ull * (uint64_t(timing.high) + timing.low + timing.setup + timing.hold) + 1000;
+  for (uint64_t i = 0; i < tail && !stopped; ++i) tick(in, i > 0 || !inputs_changed);
+  pins.finish(clock);
+  res.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  res.clocks_per_s = res.wall_s > 0 ? double(clock) / res.wall_s : 0;
+  res.clocks = done_clock - start_clock;
+  res.duration_s = double(res.clocks) / ClkHz;
+  res.pulses = pins.net_steps();
+  res.mismatches = checker.mismatches();
+  res.matched_clocks = checker.matched();
+  if (!checker.errors().empty()) res.first_mismatch = checker.errors().front().to_string();
+  res.pin_errors = pins.errors();
+
+  auto fail = [&](std::string s) { res.failures.push_back(std::move(s)); };
+  if (res.mismatches) fail(fmt::format("{} lockstep mismatches: {}", res.mismatches, res.first_mismatch));
+  if (end.underrun) fail(fmt::format("underrun after {} moves (the host pushes a row in every clock with room)",
+                                     next_move));
+  if (end.discont) fail(fmt::format("discontinuity after {} moves: the planner's rows must continue", next_move));
+  if (end.fault_table) fail("table fault");
+  if (!end.done && !end.underrun && !end.discont) fail(fmt::format("not done within {} clocks (hang)", limit));
+  if (next_move != res.moves.size()) fail(fmt::format("{} MOVE_DONE for {} moves", next_move, res.moves.size()));
+  // Every boundary at its planned clock: the same offset (the arming after
+  // START) for every move, so no row was stretched or cut.
+  const StreamMoveReport* first = nullptr;
+  for (const StreamMoveReport& m : res.moves) {
+    if (!m.reached) continue;
+    if (m.end_position != m.expected_end_position) {
+      fail(fmt::format("move {} ended at {}, planned {}", m.index, m.end_position, m.expected_end_position));
+    }
+    if (!first) first = &m;
+    if (m.end_clock - m.planned_end != first->end_clock - first->planned_end) {
+      fail(fmt::format("move {} ended at clock {} (planned {}), move {} at {} (planned {}): not the same offset",
+                       m.index, m.end_clock, m.planned_end, first->index, first->end_clock, first->planned_end));
+    }
+  }
+  const int64_t target = stream.move_ends.empty() ? 0 : stream.move_ends.back();
+  if (end.done && res.pulses != target) fail(fmt::format("pulses {} != the sum of the distances {}", res.pulses, target));
+  if (res.pulses != int64_t(cur->ref_pos_int)) {
+    fail(fmt::format("pulses {} != reference position {}", res.pulses, cur->ref_pos_int));
+  }
+  if (int64_t(cur->pulse_count) != res.pulses) fail(fmt::format("pulse_count_o {} != pins {}", cur->pulse_count, res.pulses));
+  for (const std::string& e : res.pin_errors) fail(e);
+  if (lockstep && res.matched_clocks == 0) fail("lockstep compared nothing");
+  return res;
+}
+
+}  // namespace sc
