@@ -42,6 +42,56 @@ std::vector<CoreInputs> load_sequence(const std::vector<Row>& rows, u128 pos_fra
   return seq;
 }
 
+CoreDriver::CoreDriver(SimEngine engine, const PinRules& rules, size_t max_mismatches, const std::string& fst_path,
+                       uint64_t fst_from, uint64_t fst_to)
+    : engine_(engine), checker_(max_mismatches), pins_(rules) {
+  const bool use_rtl = engine == SimEngine::Lockstep || engine == SimEngine::RtlOnly;
+  if (!fst_path.empty() && !use_rtl) {
+    throw input::Error("fst", fst_path, fmt::format("engine {} runs no RTL to trace", engine_name(engine)));
+  }
+  if (use_rtl) {
+    rtl_ = std::make_unique<RtlCore>();
+    if (!fst_path.empty()) rtl_->trace_open(fst_path, fst_from, fst_to);
+    rtl_->reset(4);
+  }
+}
+
+CoreDriver::~CoreDriver() = default;
+
+void CoreDriver::tick(const CoreInputs& ci, bool held) {
+  const bool use_model = engine_ != SimEngine::RtlOnly;
+  if (held) {
+    if (rtl_) rtl_->tick();
+    if (use_model) model_.tick();
+  } else {
+    if (rtl_) rtl_->step(ci);
+    if (use_model) model_.step(ci);
+  }
+  if (engine_ == SimEngine::Lockstep) {
+    CoreOutputs& o = checker_.slot(clock_);
+    rtl_->read_outputs(o);
+    if (!checker_.check(clock_, model_) && checker_.should_stop()) stopped_ = true;
+    cur_ = &o;
+  } else {
+    if (rtl_) rtl_->read_outputs(out_); else model_.read_outputs(out_);
+    cur_ = &out_;
+  }
+  pins_.on_clock(clock_, *cur_);
+  ++clock_;
+}
+
+void CoreDriver::jump(const CoreInputs& in, uint64_t n) {
+  model_.fast_forward(in, n);
+  clock_ += n;
+  model_.read_outputs(out_);
+  cur_ = &out_;
+  pins_.on_clock(clock_ - 1, out_);
+}
+
+void CoreDriver::close_trace() {
+  if (rtl_) rtl_->trace_close();
+}
+
 namespace {
 
 // Peak tracking on the reference outputs, every clock: register values and
@@ -94,68 +144,33 @@ SimResult run_move(const Plan& plan, const PulseTiming& timing, const Limits4Che
   res.engine = opt.engine;
   res.distance = plan.distance;
   res.expected_trends = expected_trends(plan.segments);
-  const bool use_rtl = opt.engine == SimEngine::Lockstep || opt.engine == SimEngine::RtlOnly;
-  const bool use_model = opt.engine != SimEngine::RtlOnly;
-
-  std::unique_ptr<RtlCore> rtl;
-  if (!opt.fst_path.empty() && !use_rtl) {
-    throw input::Error("fst", opt.fst_path, fmt::format("engine {} runs no RTL to trace", engine_name(opt.engine)));
-  }
-  if (use_rtl) {
-    rtl = std::make_unique<RtlCore>();
-    if (!opt.fst_path.empty()) rtl->trace_open(opt.fst_path, opt.fst_from, opt.fst_to);
-    rtl->reset(4);
-  }
-  AxisCore model;
-  LockstepChecker checker(opt.max_mismatches);
   // A stop follows no planned duty phase: only its pulses are checked.
-  PinMonitor pins(PinRules{timing, !opt.stop_at, StepAccounting::ReferencePosition});
+  CoreDriver drv(opt.engine, PinRules{timing, !opt.stop_at, StepAccounting::ReferencePosition}, opt.max_mismatches,
+                 opt.fst_path, opt.fst_from, opt.fst_to);
+  AxisCore& model = drv.model();
+  PinMonitor& pins = drv.pins();
   PeakTracker peaks;
   stopcheck::StopMonitor stop(opt.stop_jerk, opt.stop_acc);
 
   const auto t0 = std::chrono::steady_clock::now();
-  uint64_t clock = 0;
   CoreInputs in;
   in.cfg = timing;
   in.enable = true;
   in.stop_jerk = opt.stop_jerk;
   in.stop_acc = opt.stop_acc;
-  bool stopped = false;
   CoreOutputs out;
-
-  const bool lockstep = opt.engine == SimEngine::Lockstep;
-  const CoreOutputs* cur = &out;
-  // held: `ci` equals the previous clock's inputs and writes no table row,
-  // so both sides can take the cheaper hold-the-inputs path.
+  // One clock on the driver; the stop monitor sees every stepped clock.
   auto tick = [&](const CoreInputs& ci, bool held = false) {
-    if (held) {
-      if (rtl) rtl->tick();
-      if (use_model) model.tick();
-    } else {
-      if (rtl) rtl->step(ci);
-      if (use_model) model.step(ci);
-    }
-    if (lockstep) {
-      CoreOutputs& o = checker.slot(clock);
-      rtl->read_outputs(o);
-      if (!checker.check(clock, model) && checker.should_stop()) stopped = true;
-      cur = &o;
-    } else {
-      if (rtl) rtl->read_outputs(out); else model.read_outputs(out);
-      cur = &out;
-    }
-    pins.on_clock(clock, *cur);
-    stop.on_clock(*cur);
-    ++clock;
+    drv.tick(ci, held);
+    stop.on_clock(drv.out());
   };
-
   // Load the table one row per clock, then start.
   for (const CoreInputs& ci : load_sequence(plan.segments, plan.pos_frac0, in)) {
-    if (!stopped) tick(ci);
+    if (!drv.stopped()) tick(ci);
     in = ci;
   }
   in.start = false;
-  const uint64_t start_clock = clock;
+  const uint64_t start_clock = drv.clock();
   const uint64_t stop_clock = opt.stop_at ? start_clock + *opt.stop_at : UINT64_MAX;
   CoreInputs stop_in = in;
   stop_in.stop = true;
@@ -165,7 +180,7 @@ SimResult run_move(const Plan& plan, const PulseTiming& timing, const Limits4Che
   // The run is over: done, or at rest after the stop, or (a stop during the
   // arming) idle without having moved.
   auto over = [&]() {
-    return cur->done || stop.ended() || (opt.stop_at && clock > stop_clock + 1 && !cur->busy);
+    return drv.out().done || stop.ended() || (opt.stop_at && drv.clock() > stop_clock + 1 && !drv.out().busy);
   };
 
   // Run to done. A hang is caught by a limit well past the planned length.
@@ -177,58 +192,55 @@ SimResult run_move(const Plan& plan, const PulseTiming& timing, const Limits4Che
     if (stop_limit_set || !stop.seen()) return;
     stop_limit_set = true;
     const stopcheck::ld ramp = std::fabs(stopcheck::ld(stop.start().a)) / stopcheck::ld(std::max<uint64_t>(1, opt.stop_jerk));
-    limit = std::max(limit, clock + uint64_t(4 * (stop.closed_form_time() + ramp)) + 100000);
+    limit = std::max(limit, drv.clock() + uint64_t(4 * (stop.closed_form_time() + ramp)) + 100000);
   };
   if (opt.engine == SimEngine::ModelFast) {
     // Closed form between pulses: only the clocks around each pulse are
     // stepped, so the pin monitor still sees every edge.
-    while (!stopped && clock < limit) {
+    while (!drv.stopped() && drv.clock() < limit) {
       extend_limit();
       const CoreOutputs before = model.outputs();
-      if (clock > start_clock && over()) break;
-      if (clock == stop_clock) {
+      if (drv.clock() > start_clock && over()) break;
+      if (drv.clock() == stop_clock) {
         tick(stop_in);
-        out = *cur;
+        out = drv.out();
         peaks.on_clock(out, planned_motion(out));
         continue;
       }
       uint64_t n = 1;
       if (const uint64_t ev = model.clocks_to_next_event(in); ev > 1) n = ev - 1;
-      if (clock < stop_clock) n = std::min(n, stop_clock - clock);
-      n = std::min(n, limit - clock);
+      if (drv.clock() < stop_clock) n = std::min(n, stop_clock - drv.clock());
+      n = std::min(n, limit - drv.clock());
       if (n > 1) {
         // The reference moves smoothly in between: sample its peaks at the
         // jump ends (the per-clock maxima are at row ends or pulses).
         peaks.on_clock(before, planned_motion(before));
-        model.fast_forward(in, n);
-        clock += n;
-        model.read_outputs(out);
-        cur = &out;
-        pins.on_clock(clock - 1, out);
+        drv.jump(in, n);
+        out = drv.out();
         peaks.have_prev = false;
         peaks.on_clock(out, planned_motion(out));
       } else {
         tick(in);
-        out = *cur;
+        out = drv.out();
         peaks.on_clock(out, planned_motion(out));
       }
     }
   } else {
     const double expected = double(plan.total_clocks) + 1.0;
-    if (!stopped) tick(clock == stop_clock ? stop_in : in);  // drops start: from here on the inputs are held
-    while (!stopped && clock < limit && !over()) {
+    if (!drv.stopped()) tick(drv.clock() == stop_clock ? stop_in : in);  // drops start: from here on the inputs are held
+    while (!drv.stopped() && drv.clock() < limit && !over()) {
       extend_limit();
-      if (clock == stop_clock) {
+      if (drv.clock() == stop_clock) {
         tick(stop_in);
       } else {
-        tick(in, clock != stop_clock + 1);  // the clock after the stop clock drops it
+        tick(in, drv.clock() != stop_clock + 1);  // the clock after the stop clock drops it
       }
-      peaks.on_clock(*cur, planned_motion(*cur));
-      if ((clock & 0xffffff) == 0 && opt.progress) opt.progress(double(clock - start_clock) / expected);
+      peaks.on_clock(drv.out(), planned_motion(drv.out()));
+      if ((drv.clock() & 0xffffff) == 0 && opt.progress) opt.progress(double(drv.clock() - start_clock) / expected);
     }
   }
-  out = *cur;
-  const uint64_t done_clock = clock;
+  out = drv.out();
+  const uint64_t done_clock = drv.clock();
   const bool reached_done = out.done || stop.ended();
   res.clocks = done_clock;
   res.duration_s = double(done_clock - start_clock) / ClkHz;
@@ -236,13 +248,13 @@ SimResult run_move(const Plan& plan, const PulseTiming& timing, const Limits4Che
   // Quiet tail: nothing may move after done.
   const uint64_t tail = opt.tail_clocks ? opt.tail_clocks
                                         : 4ull * (uint64_t(timing.high) + timing.low + timing.setup + timing.hold) + 1000;
-  for (uint64_t i = 0; i < tail && !stopped; ++i) tick(in, true);
-  out = *cur;
-  pins.finish(clock);
-  if (rtl) rtl->trace_close();
-  res.total_clocks = clock;
+  for (uint64_t i = 0; i < tail && !drv.stopped(); ++i) tick(in, true);
+  out = drv.out();
+  pins.finish(drv.clock());
+  drv.close_trace();
+  res.total_clocks = drv.clock();
   res.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  res.clocks_per_s = res.wall_s > 0 ? double(clock) / res.wall_s : 0;
+  res.clocks_per_s = res.wall_s > 0 ? double(drv.clock()) / res.wall_s : 0;
 
   res.pulses = pins.net_steps();
   res.pulse_count_reg = out.pulse_count;
@@ -264,9 +276,9 @@ SimResult run_move(const Plan& plan, const PulseTiming& timing, const Limits4Che
   res.peak_velocity = vel_to_phys(peaks.v());
   res.peak_acceleration = acc_to_phys(peaks.a());
   res.peak_jerk = jerk_to_phys(peaks.j());
-  res.mismatches = checker.mismatches();
-  res.matched_clocks = checker.matched();
-  if (!checker.errors().empty()) res.first_mismatch = checker.errors().front().to_string();
+  res.mismatches = drv.checker().mismatches();
+  res.matched_clocks = drv.checker().matched();
+  if (!drv.checker().errors().empty()) res.first_mismatch = drv.checker().errors().front().to_string();
   res.pin_errors = pins.errors();
   res.phase_runs = pins.runs();
   res.trends = pins.trend_sequence();

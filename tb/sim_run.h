@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -23,6 +24,48 @@ enum class SimEngine {
   ModelFast,  // model fast_forward(): closed form between pulses
 };
 const char* engine_name(SimEngine e);
+
+class RtlCore;
+
+// One open-loop core run by one engine: the Verilated RTL and/or the model
+// stepped together, compared every clock in lockstep, the pin monitor on
+// every clock the outputs are read. The adapter of run_move and run_stream.
+class CoreDriver {
+ public:
+  // fst_path: the RTL's waveform (opened before reset; input::Error when the
+  // engine runs no RTL or the file cannot be written).
+  CoreDriver(SimEngine engine, const PinRules& rules, size_t max_mismatches = 1, const std::string& fst_path = {},
+             uint64_t fst_from = 0, uint64_t fst_to = 0);
+  ~CoreDriver();
+  // One clock with `ci`. held: ci equals the previous clock's inputs and
+  // pushes no row, so both sides take the cheaper hold-the-inputs path.
+  void tick(const CoreInputs& ci, bool held = false);
+  // The model alone (ModelFast): n clocks with `in` held in closed form; the
+  // pin monitor sees the last (AxisCore::clocks_to_next_event() says how far
+  // no pin moves).
+  void jump(const CoreInputs& in, uint64_t n);
+  // The outputs of the last clock (the RTL's when it runs).
+  const CoreOutputs& out() const { return *cur_; }
+  uint64_t clock() const { return clock_; }
+  // The comparer reached its mismatch limit: the run stops.
+  bool stopped() const { return stopped_; }
+  AxisCore& model() { return model_; }
+  LockstepChecker& checker() { return checker_; }
+  PinMonitor& pins() { return pins_; }
+  // Closes the RTL's waveform (no-op without one).
+  void close_trace();
+
+ private:
+  SimEngine engine_;
+  std::unique_ptr<RtlCore> rtl_;
+  AxisCore model_;
+  LockstepChecker checker_;
+  PinMonitor pins_;
+  CoreOutputs out_;
+  const CoreOutputs* cur_ = &out_;
+  uint64_t clock_ = 0;
+  bool stopped_ = false;
+};
 
 struct SimOptions {
   SimEngine engine = SimEngine::Lockstep;

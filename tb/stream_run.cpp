@@ -11,7 +11,6 @@
 
 #include "lockstep.h"
 #include "pin_monitor.h"
-#include "rtl_core.h"
 #include "scurve/cli/user_input.h"
 
 namespace sc {
@@ -122,20 +121,10 @@ StreamRunResult run_stream(const PlannedStream& stream, const StreamRequest& req
   res.planned_s = double(planned_clocks) / ClkHz;
   res.stop_each_s = stop_at_every_junction_s(request, timing);
 
-  const bool use_rtl = engine == SimEngine::Lockstep || engine == SimEngine::RtlOnly;
-  const bool use_model = engine != SimEngine::RtlOnly;
-  const bool lockstep = engine == SimEngine::Lockstep;
-  std::unique_ptr<RtlCore> rtl;
-  if (use_rtl) {
-    rtl = std::make_unique<RtlCore>();
-    rtl->reset(4);
-  }
-  AxisCore model;
-  LockstepChecker checker(1);
   PinRules rules{timing};
   rules.profile_phases = false;  // several moves: no single-move duty contract
   rules.accounting = StepAccounting::ReferencePosition;
-  PinMonitor pins(rules);
+  CoreDriver drv(engine, rules);
 
   CoreInputs in;
   in.enable = true;
@@ -143,31 +132,8 @@ StreamRunResult run_stream(const PlannedStream& stream, const StreamRequest& req
   in.pos_frac0 = kOne / 2;  // the stream planner's start fraction
   in.stop_jerk = stop_jerk;
   in.stop_acc = stop_acc;
-  uint64_t clock = 0;
-  bool stopped = false;
-  CoreOutputs out;
-  const CoreOutputs* cur = &out;
   const auto t0 = std::chrono::steady_clock::now();
-  auto tick = [&](const CoreInputs& ci, bool held) {
-    if (held) {
-      if (rtl) rtl->tick();
-      if (use_model) model.tick();
-    } else {
-      if (rtl) rtl->step(ci);
-      if (use_model) model.step(ci);
-    }
-    if (lockstep) {
-      CoreOutputs& o = checker.slot(clock);
-      rtl->read_outputs(o);
-      if (!checker.check(clock, model) && checker.should_stop()) stopped = true;
-      cur = &o;
-    } else {
-      if (rtl) rtl->read_outputs(out); else model.read_outputs(out);
-      cur = &out;
-    }
-    pins.on_clock(clock, *cur);
-    ++clock;
-  };
+  auto tick = [&](const CoreInputs& ci, bool held) { drv.tick(ci, held); };
 
   std::deque<Row> rows = stream.rows;
   auto push = [&]() {
@@ -179,18 +145,18 @@ StreamRunResult run_stream(const PlannedStream& stream, const StreamRequest& req
     tick(w, false);
   };
   // The first rows, then START.
-  for (size_t i = 0; i < RowFifoDepth && !rows.empty() && !stopped; ++i) push();
+  for (size_t i = 0; i < RowFifoDepth && !rows.empty() && !drv.stopped(); ++i) push();
   CoreInputs st = in;
   st.start = true;
-  if (!stopped) tick(st, false);
-  const uint64_t start_clock = clock;
+  if (!drv.stopped()) tick(st, false);
+  const uint64_t start_clock = drv.clock();
   const uint64_t slack = 100000 + 8 * (uint64_t(timing.high) + timing.low + timing.setup + timing.hold) *
                                       (stream.moves.size() + 1);
   const uint64_t limit = start_clock + planned_clocks + slack;
   bool inputs_changed = true;  // the last clock's inputs differ from `in`
   size_t next_move = 0;
-  while (!stopped && clock < limit) {
-    if (!rows.empty() && !cur->fifo_full) {
+  while (!drv.stopped() && drv.clock() < limit) {
+    if (!rows.empty() && !drv.out().fifo_full) {
       push();
       inputs_changed = true;
     } else {
@@ -198,46 +164,45 @@ StreamRunResult run_stream(const PlannedStream& stream, const StreamRequest& req
       if (engine == SimEngine::ModelFast) {
         // Nothing to push until a row ends: jump to the clock before the
         // next event (a step, a row end), stepping that one.
-        if (const uint64_t ev = model.clocks_to_next_event(in); ev > 1) n = std::min(ev - 1, limit - clock);
+        const uint64_t ev = drv.model().clocks_to_next_event(in);
+        if (ev > 1) n = std::min(ev - 1, limit - drv.clock());
       }
       if (n > 1) {
-        model.fast_forward(in, n);
-        clock += n;
-        model.read_outputs(out);
-        cur = &out;
-        pins.on_clock(clock - 1, out);
+        drv.jump(in, n);
       } else {
         tick(in, !inputs_changed && engine != SimEngine::ModelFast);
       }
       inputs_changed = false;
     }
-    if (cur->move_done) {
+    if (drv.out().move_done) {
       if (next_move < res.moves.size()) {
         StreamMoveReport& m = res.moves[next_move];
         m.reached = true;
-        m.end_clock = clock - 1 - start_clock;
-        m.end_position = cur->boundary_pos;
+        m.end_clock = drv.clock() - 1 - start_clock;
+        m.end_position = drv.out().boundary_pos;
       }
       ++next_move;
     }
-    if (cur->done || (!cur->busy && clock > start_clock + 4)) break;
-    if (progress && (clock & 0xffffff) == 0) progress(double(clock - start_clock) / double(planned_clocks + 1));
+    if (drv.out().done || (!drv.out().busy && drv.clock() > start_clock + 4)) break;
+    if (progress && (drv.clock() & 0xffffff) == 0) {
+      progress(double(drv.clock() - start_clock) / double(planned_clocks + 1));
+    }
   }
-  const CoreOutputs end = *cur;
-  const uint64_t done_clock = clock;
+  const CoreOutputs end = drv.out();
+  const uint64_t done_clock = drv.clock();
   // Quiet tail: nothing may move after done.
   const uint64_t tail = 4ull * (uint64_t(timing.high) + timing.low + timing.setup + timing.hold) + 1000;
-  for (uint64_t i = 0; i < tail && !stopped; ++i) tick(in, i > 0 || !inputs_changed);
-  pins.finish(clock);
+  for (uint64_t i = 0; i < tail && !drv.stopped(); ++i) tick(in, i > 0 || !inputs_changed);
+  drv.pins().finish(drv.clock());
   res.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  res.clocks_per_s = res.wall_s > 0 ? double(clock) / res.wall_s : 0;
+  res.clocks_per_s = res.wall_s > 0 ? double(drv.clock()) / res.wall_s : 0;
   res.clocks = done_clock - start_clock;
   res.duration_s = double(res.clocks) / ClkHz;
-  res.pulses = pins.net_steps();
-  res.mismatches = checker.mismatches();
-  res.matched_clocks = checker.matched();
-  if (!checker.errors().empty()) res.first_mismatch = checker.errors().front().to_string();
-  res.pin_errors = pins.errors();
+  res.pulses = drv.pins().net_steps();
+  res.mismatches = drv.checker().mismatches();
+  res.matched_clocks = drv.checker().matched();
+  if (!drv.checker().errors().empty()) res.first_mismatch = drv.checker().errors().front().to_string();
+  res.pin_errors = drv.pins().errors();
 
   auto fail = [&](std::string s) { res.failures.push_back(std::move(s)); };
   if (res.mismatches) fail(fmt::format("{} lockstep mismatches: {}", res.mismatches, res.first_mismatch));
@@ -257,18 +222,18 @@ StreamRunResult run_stream(const PlannedStream& stream, const StreamRequest& req
     }
     if (!first) first = &m;
     if (m.end_clock - m.planned_end != first->end_clock - first->planned_end) {
-      fail(fmt::format("move {} ended at clock {} (planned {}), move {} at {} (planned {}): not the same offset",
+      fail(fmt::format("move {} ended at drv.clock() {} (planned {}), move {} at {} (planned {}): not the same offset",
                        m.index, m.end_clock, m.planned_end, first->index, first->end_clock, first->planned_end));
     }
   }
   const int64_t target = stream.move_ends.empty() ? 0 : stream.move_ends.back();
   if (end.done && res.pulses != target) fail(fmt::format("pulses {} != the sum of the distances {}", res.pulses, target));
-  if (res.pulses != int64_t(cur->ref_pos_int)) {
-    fail(fmt::format("pulses {} != reference position {}", res.pulses, cur->ref_pos_int));
+  if (res.pulses != int64_t(drv.out().ref_pos_int)) {
+    fail(fmt::format("pulses {} != reference position {}", res.pulses, drv.out().ref_pos_int));
   }
-  if (int64_t(cur->pulse_count) != res.pulses) fail(fmt::format("pulse_count_o {} != pins {}", cur->pulse_count, res.pulses));
+  if (int64_t(drv.out().pulse_count) != res.pulses) fail(fmt::format("pulse_count_o {} != pins {}", drv.out().pulse_count, res.pulses));
   for (const std::string& e : res.pin_errors) fail(e);
-  if (lockstep && res.matched_clocks == 0) fail("lockstep compared nothing");
+  if (engine == SimEngine::Lockstep && res.matched_clocks == 0) fail("lockstep compared nothing");
   return res;
 }
 
