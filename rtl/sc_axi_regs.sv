@@ -197,7 +197,8 @@ module sc_axi_regs #(
 
   logic                      en_q, en_d;
   logic                      closed_q, closed_d;
-  logic [NCfg*32-1:0]        cl_q, cl_d;
+  logic [NCfg*32-1:0]        cl_q;                 // the closed-loop words, one register each
+  logic                      cl_we;                // write the word at w_cfg_idx
   logic [RowLevelW-1:0]      low_water_q, low_water_d;
   logic [IrqW-1:0]           irq_st_q, irq_st_d, irq_en_q, irq_en_d;
   logic                      irq_q;
@@ -384,7 +385,7 @@ module sc_axi_regs #(
     rdata_d      = rdata_q;
     en_d         = en_q;
     closed_d     = closed_q;
-    cl_d         = cl_q;
+    cl_we        = 1'b0;
     low_water_d  = low_water_q;
     irq_en_d     = irq_en_q;
     irq_st_d     = irq_st_q;
@@ -540,11 +541,7 @@ module sc_axi_regs #(
           end
           default: begin
             if (w_cfg_hit) begin
-              for (int i = 0; i < NCfg; i++) begin
-                if (w_cfg_idx == (AW-2)'(i)) begin
-                  cl_d[32*i +: 32] = wmerge(cl_q[32*i +: 32], wd, wmask) & ClMask[32*i +: 32];
-                end
-              end
+              cl_we = 1'b1;
             end else if (w_st_hit) begin
               bresp_d = RespSlvErr;
               set_bad = 1'b1;
@@ -600,7 +597,6 @@ module sc_axi_regs #(
       rdata_q      <= '0;
       en_q         <= 1'b0;
       closed_q     <= 1'b0;
-      cl_q         <= ClReset;
       low_water_q  <= RowLevelW'(sc_pkg::RstFifoLow);
       irq_en_q     <= '0;
       irq_st_q     <= '0;
@@ -648,7 +644,6 @@ module sc_axi_regs #(
       rdata_q      <= rdata_d;
       en_q         <= en_d;
       closed_q     <= closed_d;
-      cl_q         <= cl_d;
       low_water_q  <= low_water_d;
       irq_en_q     <= irq_en_d;
       irq_st_q     <= irq_st_d;
@@ -694,6 +689,21 @@ module sc_axi_regs #(
   assign s_axi_rvalid_o  = rvalid_q;
   assign s_axi_rresp_o   = rresp_q;
   assign s_axi_rdata_o   = rdata_q;
+
+  // One register per closed-loop word, written through its own enable: a
+  // single wide vector written by a part-select loop made Verilator emit a
+  // 44,000-line update function for the servo top.
+  for (genvar i = 0; i < NCfg; i++) begin : g_cl_word
+    logic [31:0] word_q;
+    always_ff @(posedge clk_i) begin
+      if (!rst_ni) begin
+        word_q <= ClReset[32*i +: 32];
+      end else if (cl_we && w_cfg_idx == (AW-2)'(i)) begin
+        word_q <= wmerge(word_q, wd, wmask) & ClMask[32*i +: 32];
+      end
+    end
+    assign cl_q[32*i +: 32] = word_q;
+  end
 
   assign enable_o    = en_q;
   assign cfg_high_o  = high_q;
