@@ -29,7 +29,7 @@ CoreExtInputs ServoAxis::ext_inputs() const {
   x.hint = c.u >= 0;
   x.busy = c.active || n.req;
   x.abort = c.ferr;
-  x.done = c.in_pos;
+  x.done = c.in_pos && core_.exec().state().finished;  // a stopped stream is not done
   return x;
 }
 
@@ -70,7 +70,7 @@ void ServoAxis::step(const ServoInputs& in) {
   ci.ref_int = e.pint;
   ci.ref_frac = uint32_t(e.frac >> (FracBits - CtlFrac));
   ci.ref_vel = int32_t(e.vel >> (VelW - MulAW));
-  ci.ref_done = e.finished;
+  ci.ref_done = !e.run;  // finished, or at rest after a controlled stop
   ci.enc_pos = dec_.state().count;
   ci.cmd_busy = n.req || core_.step_gen().busy();
   ci.nco_req = n.req;

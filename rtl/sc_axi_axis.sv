@@ -75,7 +75,8 @@ module sc_axi_axis (
   logic signed [AccW-1:0]      unused_ref_acc;
   logic signed [JerkW-1:0]     unused_ref_jerk;
   logic signed [PendW-1:0]     unused_pending;
-  logic                        unused_exec_start, unused_abort, unused_ref_done, unused_step_busy;
+  logic                        unused_exec_start, unused_abort, unused_ref_done, unused_ref_running,
+                               unused_step_busy;
   logic                        stop, stopping, overshoot;
   logic [sc_pkg::JerkW-1:0]    stop_jerk;
   logic [sc_pkg::AccW-1:0]     stop_acc;
@@ -184,6 +185,7 @@ module sc_axi_axis (
     .exec_start_o     (unused_exec_start),
     .abort_o          (unused_abort),
     .ref_done_o       (unused_ref_done),
+    .ref_running_o    (unused_ref_running),
     .step_busy_o      (unused_step_busy),
     .step_o,
     .dir_o,

@@ -67,6 +67,7 @@ module sc_axis_core #(
   output logic                        exec_start_o,      // the executor starts this clock
   output logic                        abort_o,           // abort_i as registered here
   output logic                        ref_done_o,        // the executor has finished the stream
+  output logic                        ref_running_o,     // the executor runs (a stream or its controlled stop)
   output logic                        step_busy_o,       // a step is owed or STEP is high
 
   output logic                        step_o,
@@ -264,6 +265,7 @@ module sc_axis_core #(
   assign exec_start_o  = exec_start;
   assign abort_o       = abort_q;
   assign ref_done_o    = exec_finished;
+  assign ref_running_o = exec_running;
   assign step_busy_o   = sg_busy;
 
 endmodule

@@ -110,7 +110,7 @@ module sc_servo_axis (
   logic [sc_pkg::CtlCfgW-1:0] ctl_cfg_q;
 
   // ---- internal ------------------------------------------------------------
-  logic                   exec_start, exec_finished, core_abort, sg_busy;
+  logic                   exec_start, exec_finished, exec_running, core_abort, sg_busy;
   logic [sc_pkg::PhaseW-1:0] core_phase;
   logic [FracBits-1:0]    exec_frac;
   logic signed [VelW-1:0] exec_vel;
@@ -168,10 +168,14 @@ module sc_servo_axis (
     .ext_hint_i       (!ctl_u[CtlW-1]),
     .ext_busy_i       (ctl_active || nco_req),
     .ext_abort_i      (ctl_ferr),
-    .ext_done_i       (ctl_in_pos),
+    // A stream that ended in a controlled stop (STOP, underrun,
+    // discontinuity) is not done, as on the open-loop core: in position,
+    // the axis is idle with its stop flags.
+    .ext_done_i       (ctl_in_pos && exec_finished),
     .exec_start_o     (exec_start),
     .abort_o          (core_abort),
     .ref_done_o       (exec_finished),
+    .ref_running_o    (exec_running),
     .step_busy_o      (sg_busy),
     .step_o,
     .dir_o,
@@ -223,7 +227,10 @@ module sc_servo_axis (
     .ref_int_i         (ref_pos_int_o),
     .ref_frac_i        (exec_frac[FracBits-1 -: CtlFrac]),
     .ref_vel_i         (ref_vel_q31),
-    .ref_done_i        (exec_finished),
+    // The reference moves no more once the executor stops running: the
+    // stream finished, or a controlled stop brought it to rest. Either way
+    // the controller settles on the integer reference position.
+    .ref_done_i        (!exec_running),
     .enc_pos_i         (enc_pos_o),
     .cmd_busy_i        (nco_req || sg_busy),
     .nco_req_i         (nco_req),

@@ -16,6 +16,7 @@
 #include <sstream>
 #include <thread>
 
+#include "report.h"
 #include "scenarios.h"
 #include "scurve/cli/move_flags.h"
 #include "scurve/cli/user_input.h"
@@ -142,6 +143,8 @@ nlohmann::json result_json(const ClosedLoopResult& r) {
   j["rmse"] = r.rmse;
   j["relative_error"] = r.relative_error;
   j["final_error"] = r.final_error;
+  j["target"] = r.target;
+  j["stop"] = stop_to_json(r.stop);
   j["positioning_accuracy"] = r.final_error == 0 ? 1.0 : 0.0;
   j["pulses"] = r.pulses;
   j["peak_jerk_encoder"] = r.peak_jerk_enc;
@@ -222,6 +225,7 @@ std::string closed_loop_table(const std::vector<ClosedLoopResult>& rs) {
                      r.name, r.clocks, r.duration_s, r.max_error, r.rmse, 100 * r.relative_error, r.final_error,
                      r.settle_time_s, r.peak_jerk_enc, r.residual_vib, r.mismatches, r.pass() ? "yes" : "NO",
                      r.clocks_per_s / 1e6);
+    s += stop_line(r.name, r.stop);
     for (const std::string& f : r.failures) s += "    FAIL: " + f + "\n";
   }
   return s;
@@ -263,7 +267,7 @@ std::string comparison_table(const std::vector<ClosedLoopResult>& rs) {
 
 int run_closed_loop_cli(ClosedLoopCli f, const std::vector<std::pair<std::string, MoveRequest>>& jobs,
                         const PulseTiming& timing, const std::string& engine, unsigned n_threads, bool json,
-                        const std::string& json_out) {
+                        const std::string& json_out, const scurve::cli::StopFlags& stop) {
   if (!f.scenario.empty()) {
     std::ifstream in(f.scenario);
     if (!std::filesystem::is_regular_file(f.scenario) || !in) {
@@ -337,7 +341,14 @@ int run_closed_loop_cli(ClosedLoopCli f, const std::vector<std::pair<std::string
       }
     }
   }
+  const bool stop_given = stop.at_given || stop.jerk_given || stop.acc_given;
+  if (stop_given && eng == ClEngine::RtlOnly) {
+    std::fprintf(stderr, "error: --stop-at/--stop-jerk/--stop-acc with --closed-loop --engine rtl: the stop is "
+                         "checked on the model's executor (use lockstep or model)\n");
+    return 2;
+  }
   std::vector<Plan> plans;
+  std::vector<scurve::cli::StopRequest> stops;
   for (const Job& j : list) {
     const PlanResult r = plan_move(j.req, timing);
     if (const auto* e = std::get_if<PlanError>(&r)) {
@@ -345,6 +356,12 @@ int run_closed_loop_cli(ClosedLoopCli f, const std::vector<std::pair<std::string
       return 2;
     }
     plans.push_back(std::get<Plan>(r));
+    const auto s = scurve::cli::resolve_stop_flags(stop, j.req, to_host(plans.back()));
+    if (const std::string* e = std::get_if<std::string>(&s)) {
+      std::fprintf(stderr, "error: %s\n", e->c_str());
+      return 2;
+    }
+    stops.push_back(std::get<scurve::cli::StopRequest>(s));
   }
   if (!f.fst_path.empty() && list.size() != 1) {
     std::fprintf(stderr, "error: --fst: trace one run at a time (one --group, no --compare)\n");
@@ -369,6 +386,9 @@ int run_closed_loop_cli(ClosedLoopCli f, const std::vector<std::pair<std::string
       o.fst_path = f.fst_path;
       o.fst_from = f.fst_from;
       o.fst_to = f.fst_to;
+      o.stop_at = stops[i].at_clock;
+      o.stop_jerk = stops[i].codes.jerk;
+      o.stop_acc = stops[i].codes.acc;
       try {
         results[i] = run_closed_loop(plans[i], o);
       } catch (const input::Error& e) {

@@ -7,8 +7,9 @@
 #include <vector>
 
 #include "closed_loop_run.h"
-#include "scenario_json.h"
 #include "planner.h"
+#include "scenario_json.h"
+#include "scurve/cli/move_flags.h"
 
 namespace CLI {
 class App;
@@ -33,11 +34,12 @@ void add_closed_loop_flags(CLI::App* sim, ClosedLoopCli& f);
 
 // Runs every job (name, request) in closed loop; prints the results table,
 // the paper's Table 3 layout for paper groups, and with compare the
-// controller comparison; json_out: also write the JSON result to this file.
+// controller comparison; json_out: also write the JSON result to this file;
+// stop: `--stop-at` and the stop limits, resolved against each planned move.
 // Returns the exit code (0 pass, 1 fail, 2 bad input).
 int run_closed_loop_cli(ClosedLoopCli f, const std::vector<std::pair<std::string, MoveRequest>>& jobs,
                         const PulseTiming& timing, const std::string& engine, unsigned n_threads, bool json,
-                        const std::string& json_out = {});
+                        const std::string& json_out = {}, const scurve::cli::StopFlags& stop = {});
 
 // Paper 000 Table 3 (hardware): max error, RMSE, relative error (%), per group.
 struct PaperRow {

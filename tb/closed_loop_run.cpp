@@ -217,6 +217,8 @@ ClosedLoopResult run_closed_loop(const Plan& plan, const ClosedLoopOptions& opt)
 
   ServoInputs in;
   in.cfg = cfg;
+  in.stop_jerk = opt.stop_jerk;
+  in.stop_acc = opt.stop_acc;
   ServoOutputs out;
   uint64_t clock = 0;
   bool stopped = false;
@@ -225,13 +227,19 @@ ClosedLoopResult run_closed_loop(const Plan& plan, const ClosedLoopOptions& opt)
   // against the step generator's counter (the controller has no exact
   // reference to count against).
   const bool closed = cfg.closed_loop;
-  PinMonitor pins(PinRules{opt.timing, !closed,
+  // A stop follows no planned duty phase: only its pulses are checked.
+  PinMonitor pins(PinRules{opt.timing, !closed && !opt.stop_at,
                            closed ? StepAccounting::PulseCounter : StepAccounting::ReferencePosition});
+  // The stop's reference, on the model's executor (RTL = model every clock in
+  // lockstep; the RTL alone shows no executor state to check).
+  stopcheck::StopMonitor stop(opt.stop_jerk, opt.stop_acc, /*reference_only=*/closed);
+  const bool watch_stop = opt.stop_at && use_model;
 
   auto tick = [&](const ServoInputs& si) {
     if (opt.inject) opt.inject(clock, model);
     if (rtl) rtl->step(si);
     if (use_model) model.step(si);
+    if (watch_stop) stop.on_clock(model.core().outputs());
     out = rtl ? rtl->outputs() : model.outputs();
     if (lockstep && !checker.compare(clock, out, model.outputs()) && checker.should_stop()) stopped = true;
     if (closed) {
@@ -260,7 +268,23 @@ ClosedLoopResult run_closed_loop(const Plan& plan, const ClosedLoopOptions& opt)
     if (!stopped) tick(st);
   }
   const uint64_t start_clock = clock;
-  const uint64_t limit = start_clock + plan.total_clocks + uint64_t(2.0 * ClkHz);
+  uint64_t limit = start_clock + plan.total_clocks + uint64_t(2.0 * ClkHz);
+  const uint64_t stop_clock = opt.stop_at ? start_clock + *opt.stop_at : UINT64_MAX;
+  ServoInputs stop_in = in;
+  stop_in.stop = true;
+  // A stop may outlast the plan (stop limits below the move's): once it
+  // starts, the limit is a generous multiple of its closed-form time.
+  bool stop_limit_set = false;
+  auto extend_limit = [&]() {
+    if (stop_limit_set || !stop.seen()) return;
+    stop_limit_set = true;
+    const stopcheck::ld ramp =
+        std::fabs(stopcheck::ld(stop.start().a)) / stopcheck::ld(std::max<uint64_t>(1, opt.stop_jerk));
+    limit = std::max(limit, clock + uint64_t(4 * (stop.closed_form_time() + ramp)) + uint64_t(2.0 * ClkHz));
+  };
+  // Stopped: the stop was requested and the axis is idle again (in position
+  // after the reference came to rest, or the start dropped in the arming).
+  auto stopped_idle = [&]() { return opt.stop_at && clock > stop_clock + 1 && !out.busy; };
 
   // metrics
   const double L = double(plan.distance);
@@ -281,8 +305,9 @@ ClosedLoopResult run_closed_loop(const Plan& plan, const ClosedLoopOptions& opt)
     return o.ref_done ? double(o.ref_pos_int) : double(o.ref_pos_int) + double(o.ref_frac_hi) * frac_scale - 0.5;
   };
 
-  while (!stopped && clock < limit && !out.done && !out.fault_ferr) {
-    tick(in);
+  while (!stopped && clock < limit && !out.done && !out.fault_ferr && !stopped_idle()) {
+    extend_limit();
+    tick(clock == stop_clock ? stop_in : in);
     const double e = ref_pos(out) - double(out.enc_pos) * inv_cps;
     const double ae = std::fabs(e);
     if (ae > max_err) max_err = ae;
@@ -310,6 +335,13 @@ ClosedLoopResult run_closed_loop(const Plan& plan, const ClosedLoopOptions& opt)
     if ((clock & 0xffffff) == 0 && opt.progress) opt.progress(double(clock - start_clock) / expected);
   }
   const uint64_t done_clock = clock;
+  // Where the axis must end: the move's distance, or where the stop left the
+  // reference (the controller settles on its integer position).
+  // (A stop in the arming clocks drops the start: the target is where the
+  // axis stands.)
+  const bool stop_taken = opt.stop_at && !out.done;
+  res.target = stop_taken ? int64_t(out.ref_pos_int) : plan.distance;
+  const double target = double(res.target);
   res.in_pos = out.in_pos;
   res.fault_ferr = out.fault_ferr;
   res.clocks = done_clock - start_clock;
@@ -325,7 +357,7 @@ ClosedLoopResult run_closed_loop(const Plan& plan, const ClosedLoopOptions& opt)
     tick(in);
     th_min = std::min(th_min, plant.theta());
     th_max = std::max(th_max, plant.theta());
-    enc_dev = std::max(enc_dev, std::fabs(double(out.enc_pos) - L * cps));
+    enc_dev = std::max(enc_dev, std::fabs(double(out.enc_pos) - target * cps));
   }
   pins.finish(clock);
   if (rtl) rtl->trace_close();
@@ -336,7 +368,10 @@ ClosedLoopResult run_closed_loop(const Plan& plan, const ClosedLoopOptions& opt)
   res.max_error = max_err;
   res.rmse = n_err ? std::sqrt(sum_sq / double(n_err)) : 0;
   res.relative_error = L != 0 ? res.rmse / std::fabs(L) : 0;
-  res.final_error = plan.distance - int64_t(std::llround(double(out.enc_pos) * inv_cps));
+  res.final_error = res.target - int64_t(std::llround(double(out.enc_pos) * inv_cps));
+  if (opt.stop_at) {
+    res.stop = stop_report(stop, *opt.stop_at, out.ref_pos_int);
+  }
   res.pulses = plant.commanded();
   res.peak_acc_enc = kin_enc.peak_a;
   res.peak_jerk_enc = kin_enc.peak_j;
@@ -357,8 +392,13 @@ ClosedLoopResult run_closed_loop(const Plan& plan, const ClosedLoopOptions& opt)
   if (res.mismatches) fail(fmt::format("{} lockstep mismatches: {}", res.mismatches, res.first_mismatch));
   if (lockstep && checker.compared_nothing()) fail("lockstep compared nothing");
   for (const std::string& e : res.pin_errors) fail("pins: " + e);
+  for (const std::string& e : stop.errors()) fail("controlled stop: " + e);
+  if (stop.seen() && out.done) fail("a stopped move reads done");
+  if (opt.stop_at && out.busy) fail("busy at the end of the run after the stop");
   if (res.fault_ferr) fail("following-error fault");
-  if (!stopped && !res.in_pos && opt.ctl.closed_loop) fail(fmt::format("not in position within {} clocks", limit));
+  // A stop in the arming clocks drops the start: the controller never ran.
+  const bool start_dropped = opt.stop_at && !out.done && !stop.seen() && res.pulses == 0;
+  if (!stopped && !res.in_pos && opt.ctl.closed_loop && !start_dropped) fail(fmt::format("not in position within {} clocks", limit));
   if (res.final_error != 0) fail(fmt::format("final error {} pulses", res.final_error));
   if (res.fault_overrun) fail("step queue overrun");
   return res;

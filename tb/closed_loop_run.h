@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -14,6 +15,7 @@
 #include "planner.h"
 #include "scurve/servo_config.h"
 #include "servo_axis.h"
+#include "stop_check.h"
 
 namespace sc {
 
@@ -40,6 +42,12 @@ struct ClosedLoopOptions {
   std::string fst_path;
   uint64_t fst_from = 0, fst_to = kDefaultFstWindow;  // input::Error when the FST cannot be written
   std::function<void(double)> progress;
+  // A controlled stop (CMD.STOP) this many clocks after the START clock: the
+  // reference stops under the stop limits (checked on the model's executor
+  // by the stop monitor), the controller settles on the integer position
+  // where it came to rest, and the axis ends in position and not done.
+  std::optional<uint64_t> stop_at;
+  uint64_t stop_jerk = StopJerkReset, stop_acc = StopAccReset;  // executor LSBs
   // Test hook: called with the model before every clock (fault injection).
   std::function<void(uint64_t, ServoAxis&)> inject;
 };
@@ -73,6 +81,8 @@ struct ClosedLoopResult {
   uint64_t mismatches = 0, matched_clocks = 0;
   std::string first_mismatch;
   std::vector<std::string> pin_errors;  // pulse timing and step accounting
+  StopReport stop;                      // ClosedLoopOptions::stop_at
+  int64_t target = 0;                   // where the axis must end: the distance, or where the stop left it
   std::vector<WeightSample> weights;
   double wall_s = 0, clocks_per_s = 0;
   std::vector<std::string> failures;

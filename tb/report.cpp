@@ -6,8 +6,6 @@
 
 namespace sc {
 
-namespace {
-
 nlohmann::json stop_to_json(const StopReport& s) {
   if (!s.requested) return nullptr;
   return {{"at_clock", s.at_clock},
@@ -21,7 +19,14 @@ nlohmann::json stop_to_json(const StopReport& s) {
           {"end_position", s.end_position}};
 }
 
-}  // namespace
+std::string stop_line(const std::string& name, const StopReport& s) {
+  if (!s.requested) return {};
+  if (!s.taken) return fmt::format("  {}: stop at clock {} not taken (the move had not started)\n", name, s.at_clock);
+  return fmt::format("  {}: stop at clock {} from v {:.2f} p/s, a {:.2f} p/s^2: {} clocks, {:.3f} pulses (closed form "
+                     "{:.3f}), at rest at {}{}\n",
+                     name, s.at_clock, s.v0, s.a0, s.clocks, s.distance, s.closed_form_distance, s.end_position,
+                     s.overshoot ? ", OVERSHOOT" : "");
+}
 
 nlohmann::json sim_to_json(const SimResult& r) {
   nlohmann::json runs = nlohmann::json::array();
@@ -74,17 +79,7 @@ std::string sim_table(const std::vector<SimResult>& rs) {
                      r.peak_velocity, r.peak_acceleration, r.peak_jerk, r.mismatches, r.wall_s,
                      r.clocks_per_s / 1e6, r.clocks_per_s / ClkHz, r.pass() ? "PASS" : "FAIL");
   }
-  for (const SimResult& r : rs) {
-    if (!r.stop.requested) continue;
-    if (!r.stop.taken) {
-      s += fmt::format("  {}: stop at clock {} not taken (the move had not started)\n", r.name, r.stop.at_clock);
-      continue;
-    }
-    s += fmt::format("  {}: stop at clock {} from v {:.2f} p/s, a {:.2f} p/s^2: {} clocks, {:.3f} pulses (closed form "
-                     "{:.3f}), at rest at {}{}\n",
-                     r.name, r.stop.at_clock, r.stop.v0, r.stop.a0, r.stop.clocks, r.stop.distance,
-                     r.stop.closed_form_distance, r.stop.end_position, r.stop.overshoot ? ", OVERSHOOT" : "");
-  }
+  for (const SimResult& r : rs) s += stop_line(r.name, r.stop);
   for (const SimResult& r : rs) {
     for (const std::string& f : r.failures) s += fmt::format("  {}: {}\n", r.name, f);
   }

@@ -221,17 +221,13 @@ int main(int argc, char** argv) {
   if (clock != model_clock() && (closed_loop.enabled || closed_loop.compare)) {
     return bad_input(fmt::format("--clock-hz={}: the closed-loop bench runs at the model's {} Hz", sf.clock_hz, ClkHz));
   }
-  const bool stop_flag_given = stop_flags.at_given || stop_flags.jerk_given || stop_flags.acc_given;
   if (closed_loop.enabled || closed_loop.compare) {
-    if (stop_flag_given) {
-      return bad_input("--stop-at/--stop-jerk/--stop-acc: the closed-loop bench runs moves to their end (open loop only)");
-    }
     std::vector<std::pair<std::string, MoveRequest>> cl_jobs;
     for (const Job& j : jobs_list) cl_jobs.emplace_back(j.name, j.req);
     closed_loop.fst_path = fst.path;
     closed_loop.fst_from = fst.from;
     closed_loop.fst_to = fst.to;
-    return run_closed_loop_cli(closed_loop, cl_jobs, timing, engine, jobs, sf.json, sf.json_out);
+    return run_closed_loop_cli(closed_loop, cl_jobs, timing, engine, jobs, sf.json, sf.json_out, stop_flags);
   }
   std::vector<Plan> plans;
   std::vector<scurve::cli::StopRequest> stops;

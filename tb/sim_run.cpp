@@ -258,21 +258,10 @@ SimResult run_move(const Plan& plan, const PulseTiming& timing, const Limits4Che
 
   res.pulses = pins.net_steps();
   res.pulse_count_reg = out.pulse_count;
-  res.stop.requested = opt.stop_at.has_value();
-  res.stop.taken = stop.seen();
-  res.stop.end_position = out.ref_pos_int;
-  if (opt.stop_at) {
-    res.stop.at_clock = *opt.stop_at;
-    res.stop.clocks = stop.clocks();
-    res.stop.v0 = vel_to_phys(stop.start().v);
-    res.stop.a0 = acc_to_phys(stop.start().a);
-    res.stop.distance = double(stop.distance());
-    res.stop.closed_form_distance = double(stop.closed_form_distance());
-    res.stop.overshoot = stop.overshoot();
-  }
-  // A move that stopped ends where the stop brought it; every reference step
-  // must still be on the pins.
-  res.final_error = (res.stop.taken ? int64_t(out.ref_pos_int) : plan.distance) - res.pulses;
+  if (opt.stop_at) res.stop = stop_report(stop, *opt.stop_at, out.ref_pos_int);
+  // A move that stopped ends where the stop brought it (a start dropped in
+  // the arming: where it stood); every reference step must be on the pins.
+  res.final_error = (opt.stop_at && !out.done ? int64_t(out.ref_pos_int) : plan.distance) - res.pulses;
   res.peak_velocity = vel_to_phys(peaks.v());
   res.peak_acceleration = acc_to_phys(peaks.a());
   res.peak_jerk = jerk_to_phys(peaks.j());

@@ -13,6 +13,7 @@
 #include "fst_output.h"
 #include "lockstep.h"
 #include "pin_monitor.h"
+#include "stop_check.h"
 #include "planner.h"
 
 namespace sc {
@@ -81,18 +82,6 @@ struct SimOptions {
   uint64_t stop_jerk = StopJerkReset, stop_acc = StopAccReset;  // executor LSBs
 };
 
-// What a controlled stop did (SimOptions::stop_at).
-struct StopReport {
-  bool requested = false;
-  bool taken = false;             // the core stopped (not: the move ended first)
-  uint64_t at_clock = 0;          // clocks after START
-  uint64_t clocks = 0;            // stopping time
-  double v0 = 0, a0 = 0;          // the state it stopped from, pulses/s and pulses/s^2
-  double distance = 0;            // stopping distance, pulses (in the direction of motion)
-  double closed_form_distance = 0;  // continuous minimum for the stop limits, pulses
-  bool overshoot = false;         // the start state could not stop without reversal
-  int64_t end_position = 0;       // reference position at rest, pulses
-};
 
 struct SimResult {
   std::string name;

@@ -111,12 +111,24 @@ assert w[-2]["reg"] == "CMD" and w[-2]["data"] == 1, w[-2]
 names = [x["reg"] for x in w]
 assert names.index("STOP_JERK_0") < names.index("ROW_PUSH"), names
 PY
+# --stop-at on the closed-loop axis: the reference stops under control, the
+# controller settles where it came to rest, in position, RTL = model.
+"$scurve" sim --distance 1200 --v-cruise 3000 --a-max 20000 --j-max 400000 --closed-loop --stop-at 0.2 \
+  --json > "$tmp/stop_closed_loop.json"
+python3 - "$tmp/stop_closed_loop.json" <<'PY'
+import json, sys
+r = json.load(open(sys.argv[1]))["runs"][0]
+s = r["stop"]
+assert r["pass"] and r["in_position"] and r["mismatches"] == 0, r
+assert s["taken"] and 0 < s["end_position"] < 1200 and r["target"] == s["end_position"], s
+assert r["final_error"] == 0 and abs(s["distance"] - s["closed_form_distance"]) < 1, (r["final_error"], s)
+PY
 check_bad "stop-at=0.5: must be below the move's duration" sim $move --stop-at 0.5
 check_bad "stop-at=-1" sim $move --stop-at -1
 check_bad "stop-jerk" sim $move --stop-at 0.01 --stop-jerk 0
 check_bad "stop-acc" regs $move --stop-acc 1e300
 check_bad "stop-at" regs $move --stop-at 0.01 --no-start
-check_bad "stop-at" sim $move --stop-at 0.01 --closed-loop
+check_bad "checked on the model" sim $move --stop-at 0.01 --closed-loop --engine rtl
 # scurve stream: the example stream (a junction limit, a direction change)
 # ends every move on the running sum, faster than stopping at every
 # junction, with the same boundaries on lockstep and model-fast; bad stream

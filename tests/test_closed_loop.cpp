@@ -2,15 +2,18 @@
 // outside the DUT (short moves, several plants and controller settings,
 // noisy/glitchy encoder), the checker proven able to fail, the following-
 // error fault, and weight boundedness/convergence over a paper group.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <random>
 
 #include "closed_loop_run.h"
 #include "plant.h"
 #include "scenarios.h"
+#include "scurve/reg_encode.h"
 
 namespace sc {
 namespace {
@@ -380,6 +383,50 @@ TEST(ClosedLoopWeights, BoundedAndConvergingOverPaperGroup1) {
               r.weights.back().wn[3]);
   EXPECT_GT(early_rate, 1e-3) << "the weights never adapted";
   EXPECT_LT(mid_rate, 0.1 * early_rate);
+}
+
+// CMD.STOP on the closed-loop axis at random times (arming, acceleration,
+// cruise, deceleration; both directions; the closed loop and the servo's
+// open-loop mode): the reference stops under the stop limits within one
+// pulse of the closed-form distance (stop monitor on the model's executor),
+// the controller settles on the integer position where the reference came
+// to rest, the axis ends in position, idle and not done, and RTL = model
+// every clock on the lockstep runs.
+TEST(ClosedLoopStop, StopsAtRandomTimesSettleInPositionWhereTheReferenceRested) {
+  std::mt19937_64 g(21);
+  int taken = 0;
+  const int runs = 10;
+  for (int i = 0; i < runs; ++i) {
+    const int64_t L = (i % 2 ? -1 : 1) * int64_t(300 + g() % 900);
+    const MoveRequest req = short_move(L, 0, 1500 + double(g() % 1500), 0);
+    const Plan plan = plan_or_die(req);
+    ClosedLoopOptions o;
+    o.engine = i < 3 ? ClEngine::Lockstep : ClEngine::ModelOnly;
+    o.ctl.closed_loop = i % 5 != 4;
+    o.tail_s = 0.01;
+    o.stop_at = i == 0 ? 3 : g() % plan.total_clocks;
+    const auto codes = scurve::stop_limit_codes(req.j_max * (1 + double(g() % 3)), req.a_max);
+    ASSERT_TRUE(std::holds_alternative<scurve::StopLimitCodes>(codes));
+    o.stop_jerk = std::get<scurve::StopLimitCodes>(codes).jerk;
+    o.stop_acc = std::get<scurve::StopLimitCodes>(codes).acc;
+    const ClosedLoopResult r = run_closed_loop(plan, o);
+    const std::string what = fmt::format("run {} ({} pulses, stop at clock {} of {}, {}, {})", i, L, *o.stop_at,
+                                         plan.total_clocks, cl_engine_name(o.engine),
+                                         o.ctl.closed_loop ? "closed loop" : "open-loop mode");
+    EXPECT_TRUE(r.pass()) << what << ": " << (r.failures.empty() ? "" : r.failures.front());
+    EXPECT_EQ(r.mismatches, 0u) << what;
+    ASSERT_TRUE(r.stop.requested) << what;
+    EXPECT_EQ(r.final_error, 0) << what;
+    EXPECT_EQ(r.target, r.stop.taken ? r.stop.end_position : int64_t(0)) << what;
+    if (!r.stop.taken) continue;
+    ++taken;
+    EXPECT_LT(std::fabs(r.stop.distance - r.stop.closed_form_distance), 1.0) << what;
+    EXPECT_TRUE(L > 0 ? r.stop.end_position <= L : r.stop.end_position >= L) << what;
+    if (o.ctl.closed_loop) {
+      EXPECT_TRUE(r.in_pos) << what;
+    }
+  }
+  EXPECT_GE(taken, runs - 2) << "most stops must land inside the moves";
 }
 
 }  // namespace

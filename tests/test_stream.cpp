@@ -134,13 +134,15 @@ namespace {
 
 struct StreamRunStats {
   uint64_t clocks = 0, moves_done = 0, underruns = 0, rows = 0;
+  uint64_t rest_ends = 0;  // the FIFO ran dry at a junction at rest: the stream ended there
 };
 
 // RTL and model in lockstep over one stream of random moves; the host
 // appends rows at random times (a push every `push_gap` clocks on average)
 // and now and then stalls for `stall` clocks: a stall while moving
 // underruns, the axis stops, and the host starts the rest of the moves as a
-// new stream from rest.
+// new stream from rest; a stall over a junction at rest ends the stream
+// there, and the host starts the rest the same way.
 StreamRunStats lockstep_stream(std::mt19937_64& g, size_t n_moves, double push_rate, uint64_t stall) {
   const scurve::StreamLimits limits{2e6, 5e9, 150000};
   PulseTiming t;
@@ -196,6 +198,7 @@ StreamRunStats lockstep_stream(std::mt19937_64& g, size_t n_moves, double push_r
     s.start = true;
     tick(s);
     uint64_t moves_in_stream = 0;
+    int64_t last_end = 0;  // the last move done, from the stream's origin
     uint64_t stall_left = 0;
     uint64_t guard = 0;
     while (!chk.should_stop() && ++guard < 50'000'000) {
@@ -213,6 +216,7 @@ StreamRunStats lockstep_stream(std::mt19937_64& g, size_t n_moves, double push_r
       const CoreOutputs& o = model.outputs();
       if (o.move_done) {
         EXPECT_EQ(int64_t(o.boundary_pos), origin + q.move_ends.front()) << "move " << next_move + moves_in_stream;
+        last_end = q.move_ends.front();
         EXPECT_EQ(o.move_idx, uint32_t(moves_in_stream + 1));
         q.move_ends.pop_front();
         ++moves_in_stream;
@@ -222,16 +226,31 @@ StreamRunStats lockstep_stream(std::mt19937_64& g, size_t n_moves, double push_r
     }
     const CoreOutputs& o = model.outputs();
     EXPECT_FALSE(o.discont) << "the planner's rows continue exactly";
+    const bool owed = !q.rows.empty() || !q.move_ends.empty();
+    next_move += moves_in_stream;
     if (o.underrun) {
       ++st.underruns;
-      EXPECT_TRUE(q.move_ends.size() > 0 || !q.rows.empty()) << "an underrun needs rows still owed";
+      EXPECT_TRUE(owed) << "an underrun needs rows still owed";
       EXPECT_EQ(o.fifo_level, 0);
+    } else if (owed) {
+      // The FIFO ran dry at a boundary where the plan is at rest (a junction
+      // at speed zero): the stream ends there as planned, exactly on the
+      // boundary of the last move done, and the host starts the rest anew.
+      ++st.rest_ends;
+      if (moves_in_stream == 0) {
+        ADD_FAILURE() << "the stream ended at rest before its first move was done";
+        return st;
+      }
+      EXPECT_TRUE(o.done);
+      EXPECT_TRUE(o.ref_vel == 0);
+      EXPECT_EQ(o.fifo_level, 0);
+      EXPECT_EQ(int64_t(o.ref_pos_int), origin + (moves_in_stream ? last_end : 0))
+          << "a stream that runs dry at rest ends on a move boundary";
+      continue;
     } else {
       EXPECT_TRUE(o.done);
-      EXPECT_TRUE(q.rows.empty() && q.move_ends.empty());
+      break;
     }
-    next_move += moves_in_stream;
-    if (!o.underrun) break;
     // The interrupted move is planned again, whole, from where the stop left
     // the axis (the next stream's origin).
     CoreInputs flush = in;
@@ -263,14 +282,17 @@ void lockstep_streams(int streams, size_t max_moves, uint64_t seed) {
     total.moves_done += s.moves_done;
     total.underruns += s.underruns;
     total.rows += s.rows;
+    total.rest_ends += s.rest_ends;
   }
   EXPECT_GT(total.underruns, 0u) << "the campaign must underrun at least once";
   ::testing::Test::RecordProperty("clocks", std::to_string(total.clocks));
   ::testing::Test::RecordProperty("moves", std::to_string(total.moves_done));
   ::testing::Test::RecordProperty("underruns", std::to_string(total.underruns));
-  std::printf("[stream] %d streams, %llu moves, %llu rows, %llu underruns, %llu clocks in lockstep\n", streams,
-              (unsigned long long)total.moves_done, (unsigned long long)total.rows,
-              (unsigned long long)total.underruns, (unsigned long long)total.clocks);
+  ::testing::Test::RecordProperty("rest_ends", std::to_string(total.rest_ends));
+  std::printf("[stream] %d streams, %llu moves, %llu rows, %llu underruns, %llu ends at rest, %llu clocks in lockstep\n",
+              streams, (unsigned long long)total.moves_done, (unsigned long long)total.rows,
+              (unsigned long long)total.underruns, (unsigned long long)total.rest_ends,
+              (unsigned long long)total.clocks);
 }
 
 }  // namespace

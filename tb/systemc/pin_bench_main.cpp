@@ -232,7 +232,8 @@ int sc_main(int argc, char** argv) {
   // No external step source on the plain core (ExtStep = 0): one constant
   // low signal for every ext_* input; the extra outputs are not observed.
   sc_signal<bool> ext_off("ext_off");
-  sc_signal<bool> exec_start("exec_start"), abort_q("abort_q"), ref_done("ref_done"), step_busy("step_busy");
+  sc_signal<bool> exec_start("exec_start"), abort_q("abort_q"), ref_done("ref_done"), ref_running("ref_running"),
+      step_busy("step_busy");
   dut.ext_sel_i(ext_off);
   dut.ext_req_i(ext_off);
   dut.ext_fwd_i(ext_off);
@@ -244,6 +245,7 @@ int sc_main(int argc, char** argv) {
   dut.exec_start_o(exec_start);
   dut.abort_o(abort_q);
   dut.ref_done_o(ref_done);
+  dut.ref_running_o(ref_running);
   dut.step_busy_o(step_busy);
   dut.step_o(step);
   dut.dir_o(dir);
