@@ -191,10 +191,25 @@ class KinEstimator {
 
 }  // namespace
 
-ClosedLoopResult run_closed_loop(const Plan& plan, const ClosedLoopOptions& opt) {
+namespace {
+
+// What the host feeds the axis: the rows of one move or of a stream, each
+// move's end position (the running sum of the distances), the planned
+// length and the position fraction the executor starts from.
+struct RowJob {
+  std::deque<Row> rows;
+  std::deque<int64_t> move_ends;
+  uint64_t planned_clocks = 0;
+  u128 pos_frac0 = 0;
+};
+
+// The rows through sc_servo_axis: the first ones (up to the FIFO depth)
+// before START, the rest pushed in every clock the FIFO has room; every
+// MOVE_DONE's boundary checked against the running sum.
+ClosedLoopResult run_rows(RowJob job, const ClosedLoopOptions& opt) {
   ClosedLoopResult res;
   res.engine = opt.engine;
-  res.distance = plan.distance;
+  res.distance = job.move_ends.empty() ? 0 : job.move_ends.back();
   ServoConfig cfg;
   if (std::string err = to_servo_config(opt.ctl, opt.plant, opt.timing, cfg); !err.empty()) {
     res.failures.push_back(err);
@@ -254,21 +269,21 @@ ClosedLoopResult run_closed_loop(const Plan& plan, const ClosedLoopOptions& opt)
   };
 
   const auto t0 = std::chrono::steady_clock::now();
-  for (const Row& r : move_rows(plan.segments)) {
-    if (stopped) break;
+  for (size_t i = 0; i < RowFifoDepth && !job.rows.empty() && !stopped; ++i) {
     ServoInputs w = in;
     w.row_push = true;
-    w.row = r;
+    w.row = job.rows.front();
+    job.rows.pop_front();
     tick(w);
   }
-  in.pos_frac0 = plan.pos_frac0;
+  in.pos_frac0 = job.pos_frac0;
   {
     ServoInputs st = in;
     st.start = true;
     if (!stopped) tick(st);
   }
   const uint64_t start_clock = clock;
-  uint64_t limit = start_clock + plan.total_clocks + uint64_t(2.0 * ClkHz);
+  uint64_t limit = start_clock + job.planned_clocks + uint64_t(2.0 * ClkHz);
   const uint64_t stop_clock = opt.stop_at ? start_clock + *opt.stop_at : UINT64_MAX;
   ServoInputs stop_in = in;
   stop_in.stop = true;
@@ -287,7 +302,7 @@ ClosedLoopResult run_closed_loop(const Plan& plan, const ClosedLoopOptions& opt)
   auto stopped_idle = [&]() { return opt.stop_at && clock > stop_clock + 1 && !out.busy; };
 
   // metrics
-  const double L = double(plan.distance);
+  const double L = double(res.distance);
   double max_err = 0, sum_sq = 0;
   uint64_t n_err = 0;
   uint64_t ref_done_clock = 0;
@@ -300,14 +315,35 @@ ClosedLoopResult run_closed_loop(const Plan& plan, const ClosedLoopOptions& opt)
   uint64_t wcnt = 0;
   const double wscale = 1.0 / double(1 << WgtFrac), nscale = 1.0 / double(1 << NWgtFrac);
   const double frac_scale = std::ldexp(1.0, -MulAW);
-  const double expected = double(plan.total_clocks) + 1.0;
+  const double expected = double(job.planned_clocks) + 1.0;
+  // The host: a row in every clock the FIFO has room.
+  ServoInputs push_in;
+  auto host_inputs = [&]() -> const ServoInputs& {
+    if (job.rows.empty() || out.fifo_full) [[likely]] return in;
+    push_in = in;
+    push_in.row_push = true;
+    push_in.row = job.rows.front();
+    job.rows.pop_front();
+    return push_in;
+  };
+  size_t moves_done = 0;
   auto ref_pos = [&](const ServoOutputs& o) {
     return o.ref_done ? double(o.ref_pos_int) : double(o.ref_pos_int) + double(o.ref_frac_hi) * frac_scale - 0.5;
   };
 
   while (!stopped && clock < limit && !out.done && !out.fault_ferr && !stopped_idle()) {
     extend_limit();
-    tick(clock == stop_clock ? stop_in : in);
+    tick(clock == stop_clock ? stop_in : host_inputs());
+    if (out.move_done) [[unlikely]] {
+      StreamMoveReport m;
+      m.index = moves_done;
+      m.reached = true;
+      m.end_clock = clock - 1 - start_clock;
+      m.end_position = out.boundary_pos;
+      m.expected_end_position = moves_done < job.move_ends.size() ? job.move_ends[moves_done] : 0;
+      res.moves.push_back(m);
+      ++moves_done;
+    }
     const double e = ref_pos(out) - double(out.enc_pos) * inv_cps;
     const double ae = std::fabs(e);
     if (ae > max_err) max_err = ae;
@@ -340,7 +376,7 @@ ClosedLoopResult run_closed_loop(const Plan& plan, const ClosedLoopOptions& opt)
   // (A stop in the arming clocks drops the start: the target is where the
   // axis stands.)
   const bool stop_taken = opt.stop_at && !out.done;
-  res.target = stop_taken ? int64_t(out.ref_pos_int) : plan.distance;
+  res.target = stop_taken ? int64_t(out.ref_pos_int) : res.distance;
   const double target = double(res.target);
   res.in_pos = out.in_pos;
   res.fault_ferr = out.fault_ferr;
@@ -368,6 +404,7 @@ ClosedLoopResult run_closed_loop(const Plan& plan, const ClosedLoopOptions& opt)
   res.max_error = max_err;
   res.rmse = n_err ? std::sqrt(sum_sq / double(n_err)) : 0;
   res.relative_error = L != 0 ? res.rmse / std::fabs(L) : 0;
+  res.rows_left = job.rows.size();
   res.final_error = res.target - int64_t(std::llround(double(out.enc_pos) * inv_cps));
   if (opt.stop_at) {
     res.stop = stop_report(stop, *opt.stop_at, out.ref_pos_int);
@@ -400,8 +437,68 @@ ClosedLoopResult run_closed_loop(const Plan& plan, const ClosedLoopOptions& opt)
   const bool start_dropped = opt.stop_at && !out.done && !stop.seen() && res.pulses == 0;
   if (!stopped && !res.in_pos && opt.ctl.closed_loop && !start_dropped) fail(fmt::format("not in position within {} clocks", limit));
   if (res.final_error != 0) fail(fmt::format("final error {} pulses", res.final_error));
+  for (const StreamMoveReport& m : res.moves) {
+    if (m.end_position != m.expected_end_position) {
+      fail(fmt::format("move {} ended at {}, planned {}", m.index, m.end_position, m.expected_end_position));
+    }
+  }
+  if (!stop_taken && !stopped && res.moves.size() != job.move_ends.size()) {
+    fail(fmt::format("{} MOVE_DONE for {} moves", res.moves.size(), job.move_ends.size()));
+  }
+  if (!stop_taken && (out.underrun || out.discont)) {
+    fail(fmt::format("{} after {} moves", out.underrun ? "underrun" : "discontinuity", res.moves.size()));
+  }
   if (res.fault_overrun) fail("step queue overrun");
   return res;
+}
+
+}  // namespace
+
+ClosedLoopResult run_closed_loop(const Plan& plan, const ClosedLoopOptions& opt) {
+  RowJob job;
+  for (const Row& r : move_rows(plan.segments)) job.rows.push_back(r);
+  job.move_ends = {plan.distance};
+  job.planned_clocks = plan.total_clocks;
+  job.pos_frac0 = plan.pos_frac0;
+  return run_rows(std::move(job), opt);
+}
+
+StreamRunResult run_closed_loop_stream(const PlannedStream& stream, const StreamRequest& request,
+                                       const ClosedLoopOptions& opt) {
+  RowJob job;
+  job.rows = stream.rows;
+  job.move_ends = stream.move_ends;
+  job.planned_clocks = stream.moves.empty() ? 0 : stream.moves.back().end_clock;
+  job.pos_frac0 = kOne / 2;  // the stream planner's start fraction
+  const ClosedLoopResult c = run_rows(std::move(job), opt);
+
+  StreamRunResult r = stream_report(stream, request, opt.timing);
+  r.engine = opt.engine == ClEngine::RtlOnly    ? SimEngine::RtlOnly
+             : opt.engine == ClEngine::ModelOnly ? SimEngine::ModelOnly
+                                                 : SimEngine::Lockstep;
+  r.rows = stream.rows.size() - c.rows_left;
+  r.clocks = c.clocks;
+  r.duration_s = c.duration_s;
+  r.pulses = c.pulses;
+  r.mismatches = c.mismatches;
+  r.matched_clocks = c.matched_clocks;
+  r.first_mismatch = c.first_mismatch;
+  r.pin_errors = c.pin_errors;
+  r.wall_s = c.wall_s;
+  r.clocks_per_s = c.clocks_per_s;
+  r.closed_loop = true;
+  r.max_error = c.max_error;
+  r.rmse = c.rmse;
+  r.final_error = c.final_error;
+  r.in_position = c.in_pos;
+  r.failures = c.failures;
+  for (size_t i = 0; i < c.moves.size() && i < r.moves.size(); ++i) {
+    r.moves[i].reached = true;
+    r.moves[i].end_clock = c.moves[i].end_clock;
+    r.moves[i].end_position = c.moves[i].end_position;
+  }
+  check_boundary_clocks(r);
+  return r;
 }
 
 }  // namespace sc

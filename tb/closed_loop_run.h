@@ -16,6 +16,7 @@
 #include "scurve/servo_config.h"
 #include "servo_axis.h"
 #include "stop_check.h"
+#include "stream_run.h"
 
 namespace sc {
 
@@ -82,6 +83,8 @@ struct ClosedLoopResult {
   std::string first_mismatch;
   std::vector<std::string> pin_errors;  // pulse timing and step accounting
   StopReport stop;                      // ClosedLoopOptions::stop_at
+  std::vector<StreamMoveReport> moves;  // every MOVE_DONE: its clock from START and boundary position
+  uint64_t rows_left = 0;               // rows the host still held at the end
   int64_t target = 0;                   // where the axis must end: the distance, or where the stop left it
   std::vector<WeightSample> weights;
   double wall_s = 0, clocks_per_s = 0;
@@ -90,6 +93,14 @@ struct ClosedLoopResult {
 };
 
 ClosedLoopResult run_closed_loop(const Plan& plan, const ClosedLoopOptions& opt);
+// A planned stream on the closed-loop axis (`scurve stream --closed-loop`):
+// the first rows before START, the rest pushed in every clock the FIFO has
+// room; every boundary checked against the running sum and its planned
+// clock (the same offset for every move), the axis in position at the sum
+// at the end. Reported as the open-loop stream runner reports, with the
+// tracking figures.
+StreamRunResult run_closed_loop_stream(const PlannedStream& stream, const StreamRequest& request,
+                                       const ClosedLoopOptions& opt);
 
 // Field-by-field rendering of the outputs (mismatch reports).
 SignalValues render_servo(const ServoOutputs& o);

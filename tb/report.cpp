@@ -87,6 +87,13 @@ std::string sim_table(const std::vector<SimResult>& rs) {
 }
 
 nlohmann::json stream_to_json(const StreamRunResult& r) {
+  nlohmann::json closed = nullptr;
+  if (r.closed_loop) {
+    closed = {{"max_tracking_error", r.max_error},
+              {"rmse", r.rmse},
+              {"final_error", r.final_error},
+              {"in_position", r.in_position}};
+  }
   nlohmann::json moves = nlohmann::json::array();
   for (const StreamMoveReport& m : r.moves) {
     moves.push_back({{"index", m.index},
@@ -101,6 +108,7 @@ nlohmann::json stream_to_json(const StreamRunResult& r) {
   }
   return {
       {"engine", engine_name(r.engine)},
+      {"closed_loop", closed},
       {"moves", moves},
       {"move_count", r.moves.size()},
       {"rows", r.rows},
@@ -133,6 +141,10 @@ std::string stream_table(const StreamRunResult& r) {
       "{:.2f} s wall, {:.2f} M clocks/s ({:.2f}x real time): {}\n",
       r.moves.size(), r.rows, r.pulses, r.duration_s, r.stop_each_s, r.mismatches, engine_name(r.engine), r.wall_s,
       r.clocks_per_s / 1e6, r.clocks_per_s / ClkHz, r.pass() ? "PASS" : "FAIL");
+  if (r.closed_loop) {
+    s += fmt::format("closed loop: max tracking error {:.3f} pulses, RMSE {:.4f}, final error {}, {}\n", r.max_error,
+                     r.rmse, r.final_error, r.in_position ? "in position" : "NOT in position");
+  }
   for (const std::string& f : r.failures) s += "  " + f + "\n";
   return s;
 }

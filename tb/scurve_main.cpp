@@ -98,8 +98,8 @@ class Progress {
 
 // scurve stream FILE: exit 0 pass, 1 a check failed, 2 bad input.
 int run_stream_cli(const std::string& file, const std::string& engine, bool closed_loop, const MoveFlags& f) {
-  if (closed_loop) {
-    return bad_input("--closed-loop: streams run on the open-loop core only (the closed-loop stream is not built yet)");
+  if (closed_loop && engine == "model-fast") {
+    return bad_input("--engine model-fast: the closed-loop axis has no fast-forward (use lockstep, rtl or model)");
   }
   std::ifstream in(file);
   if (!std::filesystem::is_regular_file(file) || !in) return bad_input(fmt::format("FILE={}: cannot read", file));
@@ -121,10 +121,24 @@ int run_stream_cli(const std::string& file, const std::string& engine, bool clos
                         : engine == "model-fast" ? SimEngine::ModelFast
                                                  : SimEngine::Lockstep;
   Progress progress(1);
-  const StreamRunResult r = run_stream(std::get<PlannedStream>(planned), req, timing, eng,
-                                       std::get<scurve::StopLimitCodes>(codes).jerk,
-                                       std::get<scurve::StopLimitCodes>(codes).acc,
-                                       [&](double x) { progress.set(0, x); });
+  StreamRunResult r;
+  if (closed_loop) {
+    // The closed-loop axis with the default controller (for the control
+    // rate) and plant of `scurve sim --closed-loop`.
+    ClosedLoopOptions o;
+    o.engine = eng == SimEngine::RtlOnly ? ClEngine::RtlOnly : eng == SimEngine::ModelOnly ? ClEngine::ModelOnly
+                                                                                        : ClEngine::Lockstep;
+    o.ctl = ControllerInput{}.resolve();
+    o.timing = timing;
+    o.tail_s = 0.01;
+    o.stop_jerk = std::get<scurve::StopLimitCodes>(codes).jerk;
+    o.stop_acc = std::get<scurve::StopLimitCodes>(codes).acc;
+    o.progress = [&](double x) { progress.set(0, x); };
+    r = run_closed_loop_stream(std::get<PlannedStream>(planned), req, o);
+  } else {
+    r = run_stream(std::get<PlannedStream>(planned), req, timing, eng, std::get<scurve::StopLimitCodes>(codes).jerk,
+                   std::get<scurve::StopLimitCodes>(codes).acc, [&](double x) { progress.set(0, x); });
+  }
   progress.done();
   const nlohmann::json out = stream_to_json(r);
   if (f.json) {
@@ -184,7 +198,8 @@ int main(int argc, char** argv) {
       ->required();
   stream_cmd->add_option("--engine", stream_engine, "lockstep | rtl | model | model-fast")
       ->check(CLI::IsMember({"lockstep", "rtl", "model", "model-fast"}));
-  stream_cmd->add_flag("--closed-loop", stream_closed_loop, "the closed-loop axis (not available for streams yet)");
+  stream_cmd->add_flag("--closed-loop", stream_closed_loop,
+                       "the closed-loop axis (default controller and plant of sim --closed-loop; not model-fast)");
   scurve::cli::add_timing_flags(stream_cmd, tf);
   scurve::cli::add_output_flags(stream_cmd, tf);
 

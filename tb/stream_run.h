@@ -65,9 +65,24 @@ struct StreamRunResult {
   std::string first_mismatch;
   std::vector<std::string> pin_errors;
   double wall_s = 0, clocks_per_s = 0;
+  // The closed-loop axis (`scurve stream --closed-loop`): the encoder's
+  // tracking of the reference and where it ended.
+  bool closed_loop = false;
+  double max_error = 0, rmse = 0;  // pulses
+  int64_t final_error = 0;         // sum of the distances - encoder position, pulses
+  bool in_position = false;
   std::vector<std::string> failures;
   bool pass() const { return failures.empty(); }
 };
+
+// The report of a planned stream before it runs: each move's planned
+// junction speeds, clocks and end position, the planned duration and that
+// of the same moves stopping at every junction.
+StreamRunResult stream_report(const PlannedStream& stream, const StreamRequest& request, const PulseTiming& timing);
+// Every boundary at its planned clock: the same offset (the arming after
+// START) for every move reached, so no row was stretched or cut; a failure
+// per move that is off.
+void check_boundary_clocks(StreamRunResult& r);
 
 // Runs `stream` with the stop limits of an underrun (executor LSBs).
 StreamRunResult run_stream(const PlannedStream& stream, const StreamRequest& request, const PulseTiming& timing,

@@ -161,5 +161,20 @@ check_bad "moves\[0\]" stream "$tmp/s4.json"
 printf '{"limits": {"a_max": 2e5, "j_max": 2e7, "v_max": 2e4}, "moves": [' > "$tmp/s5.json"
 check_bad "not JSON" stream "$tmp/s5.json"
 check_bad "FILE=$tmp/none.json: cannot read" stream "$tmp/none.json"
-check_bad "closed-loop" stream "$example" --closed-loop
+check_bad "no fast-forward" stream "$example" --closed-loop --engine model-fast
+# scurve stream --closed-loop: the closed-loop example ends every move on the
+# running sum, in position; its reference reaches every boundary at the same
+# clock as the open-loop core's (the reference does not depend on the loop).
+cl_example="$(dirname "$0")/streams/closed_loop.json"
+"$scurve" stream "$cl_example" --closed-loop --engine model --json > "$tmp/stream_cl.json"
+"$scurve" stream "$cl_example" --engine model-fast --json > "$tmp/stream_ol.json"
+python3 - "$tmp/stream_cl.json" "$tmp/stream_ol.json" <<'PY'
+import json, sys
+c, o = (json.load(open(f)) for f in sys.argv[1:3])
+assert c["pass"] and c["closed_loop"]["in_position"] and c["closed_loop"]["final_error"] == 0, c
+assert o["closed_loop"] is None
+ends = [m["end_position"] for m in c["moves"]]
+assert ends == [800, 1400, 2900, 2000] == [m["expected_end_position"] for m in c["moves"]], ends
+assert [m["end_clock"] for m in c["moves"]] == [m["end_clock"] for m in o["moves"]], (c["moves"], o["moves"])
+PY
 echo "cli ok"

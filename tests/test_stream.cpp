@@ -10,10 +10,12 @@
 #include <deque>
 #include <random>
 
+#include "closed_loop_run.h"
 #include "lockstep.h"
 #include "pin_monitor.h"
 #include "planner.h"
 #include "rtl_core.h"
+#include "scurve/reg_encode.h"
 #include "scurve/stream_planner.h"
 #include "stream_run.h"
 
@@ -296,6 +298,44 @@ void lockstep_streams(int streams, size_t max_moves, uint64_t seed) {
 }
 
 }  // namespace
+
+// Streams on the closed-loop axis (sc_servo_axis, the default controller and
+// stepper plant): every move ends on the running sum at the clock the
+// open-loop core reaches it (the reference is the same executor), the
+// encoder ends on the sum in position; the first stream in lockstep.
+TEST(ClosedLoopStream, RandomStreamsEndOnTheRunningSumInPositionAtTheOpenLoopBoundaries) {
+  std::mt19937_64 g(31);
+  const scurve::StreamLimits limits{20000, 400000, 4000};
+  for (int i = 0; i < 3; ++i) {
+    const std::vector<scurve::StreamMove> moves = random_moves(g, 3 + g() % 3, limits.v_max, 600);
+    const StreamRequest req{limits, moves};
+    const PlannedStream ps = plan_moves(moves, limits);
+    if (::testing::Test::HasFatalFailure()) return;
+    const auto codes = std::get<scurve::StopLimitCodes>(scurve::stop_limit_codes(limits.j_max, limits.a_max));
+    const StreamRunResult open = run_stream(ps, req, PulseTiming{}, SimEngine::ModelFast, codes.jerk, codes.acc);
+    ClosedLoopOptions o;
+    o.engine = i == 0 ? ClEngine::Lockstep : ClEngine::ModelOnly;
+    o.tail_s = 0.01;
+    o.stop_jerk = codes.jerk;
+    o.stop_acc = codes.acc;
+    const StreamRunResult closed = run_closed_loop_stream(ps, req, o);
+    std::string failures;
+    for (const std::string& f : closed.failures) failures += f + "\n";
+    ASSERT_TRUE(open.pass());
+    ASSERT_TRUE(closed.pass()) << "stream " << i << " (" << moves.size() << " moves):\n" << failures;
+    EXPECT_TRUE(closed.in_position);
+    EXPECT_EQ(closed.final_error, 0);
+    ASSERT_EQ(closed.moves.size(), open.moves.size());
+    for (size_t k = 0; k < closed.moves.size(); ++k) {
+      EXPECT_TRUE(closed.moves[k].reached) << "move " << k;
+      EXPECT_EQ(closed.moves[k].end_position, closed.moves[k].expected_end_position) << "move " << k;
+      EXPECT_EQ(closed.moves[k].end_clock, open.moves[k].end_clock) << "move " << k;
+    }
+    if (o.engine == ClEngine::Lockstep) {
+      EXPECT_GT(closed.matched_clocks, 0u);
+    }
+  }
+}
 
 TEST(StreamLockstep, RandomStreamsWithRandomAppendTimingMatchEveryClock) { lockstep_streams(6, 80, 77); }
 
