@@ -340,9 +340,11 @@ void NeuronPi::step(const NeuronConfig& cfg, const Inputs& in) {
     case UpcFerr:
       if (!q.sel && !alu_n && !alu_z) {
         d.ferr = true;
-        d.active = false;
-        d.u = 0;
-        d.upc = UpcIdle;
+        if (!cfg.ferr_stop) {  // controlled: the loop keeps tracking the stopping reference
+          d.active = false;
+          d.u = 0;
+          d.upc = UpcIdle;
+        }
       }
       break;
     case UpcWin:

@@ -28,7 +28,7 @@ CoreExtInputs ServoAxis::ext_inputs() const {
   x.hint_valid = c.active && c.u != 0;
   x.hint = c.u >= 0;
   x.busy = c.active || n.req;
-  x.abort = c.ferr;
+  x.abort = c.ferr && !in_q_.cfg.ctl.ferr_stop;
   x.done = c.in_pos && core_.exec().state().finished;  // a stopped stream is not done
   return x;
 }
@@ -61,7 +61,9 @@ void ServoAxis::step(const ServoInputs& in) {
   ki.pos_frac0 = in.pos_frac0;
   ki.start = in.start;
   ki.abort = in.abort;
-  ki.stop = in.stop;
+  // A following-error fault with FERR_STOP stops the reference under control
+  // while the loop runs.
+  ki.stop = in.stop || (c.ferr && cq.ctl.ferr_stop && c.active);
   ki.stop_jerk = in.stop_jerk;
   ki.stop_acc = in.stop_acc;
 

@@ -22,7 +22,9 @@
 // speed:    r = out_p + FF*V*, y = P - P_prev, b = FF*V*, lim = u_lim;
 // u = out_speed drives the step NCO. Every product is rounded half up
 // ((p + 2^(s-1)) >>> s) and saturated to the CtlW word.
-// Following-error fault: |e_p| > ferr_lim stops (u = 0) and latches.
+// Following-error fault: |e_p| > ferr_lim latches; it stops the loop (u = 0)
+// unless CL_CFG.FERR_STOP asks for a controlled stop of the reference, which
+// the loop then keeps tracking to rest.
 // Settling (after the reference is done): the PI accumulators are held at 0
 // and u = 0 until, for `hold` consecutive periods, no step has been commanded
 // (cmd_busy_i low) and the encoder has not moved (the rotor has stopped
@@ -123,6 +125,7 @@ module sc_neuron_pi (
   logic [sc_pkg::CtlCfgDivW-1:0] cfg_div;
   logic [sc_pkg::CtlCfgShiftW-1:0] cfg_shift;
   logic cfg_ff_en;
+  logic cfg_ferr_stop;
   logic [sc_pkg::CtlCfgLearnShiftW-1:0] cfg_learn_shift;
   logic [sc_pkg::CtlCfgLearnDzPW-1:0] cfg_learn_dz_p;
   logic [sc_pkg::CtlCfgLearnDzVW-1:0] cfg_learn_dz_v;
@@ -151,6 +154,7 @@ module sc_neuron_pi (
   assign cfg_div = ctl_cfg_i[sc_pkg::CtlCfgDivLsb +: sc_pkg::CtlCfgDivW];
   assign cfg_shift = ctl_cfg_i[sc_pkg::CtlCfgShiftLsb +: sc_pkg::CtlCfgShiftW];
   assign cfg_ff_en = ctl_cfg_i[sc_pkg::CtlCfgFfEnLsb];
+  assign cfg_ferr_stop = ctl_cfg_i[sc_pkg::CtlCfgFerrStopLsb];
   assign cfg_learn_shift = ctl_cfg_i[sc_pkg::CtlCfgLearnShiftLsb +: sc_pkg::CtlCfgLearnShiftW];
   assign cfg_learn_dz_p = ctl_cfg_i[sc_pkg::CtlCfgLearnDzPLsb +: sc_pkg::CtlCfgLearnDzPW];
   assign cfg_learn_dz_v = ctl_cfg_i[sc_pkg::CtlCfgLearnDzVLsb +: sc_pkg::CtlCfgLearnDzVW];
@@ -764,10 +768,14 @@ module sc_neuron_pi (
       sc_pkg::UpcLearn: learn_d = !hush_now && !alu_n && !alu_z;
       sc_pkg::UpcFerr: begin
         if (!sel_q && !alu_n && !alu_z) begin
-          ferr_d   = 1'b1;
-          active_d = 1'b0;
-          u_d      = '0;
-          upc_d    = sc_pkg::UpcIdle;
+          ferr_d = 1'b1;
+          // Immediate: the loop stops here. Controlled: the axis stops the
+          // reference (sc_servo_axis) and the loop keeps tracking it.
+          if (!cfg_ferr_stop) begin
+            active_d = 1'b0;
+            u_d      = '0;
+            upc_d    = sc_pkg::UpcIdle;
+          end
         end
       end
       sc_pkg::UpcWin: begin

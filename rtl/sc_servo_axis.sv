@@ -115,6 +115,10 @@ module sc_servo_axis (
   logic [FracBits-1:0]    exec_frac;
   logic signed [VelW-1:0] exec_vel;
   logic                   ctl_active, ctl_in_pos, ctl_ferr;
+  // A following-error fault with CL_CFG.FERR_STOP: a controlled stop of the
+  // reference, held while the loop runs (the executor takes it once; gone
+  // once in position, so the next START is not dropped), else an abort.
+  logic                   cfg_ferr_stop, ferr_stop;
   logic signed [CtlW-1:0] ctl_u;
   logic                   nco_req, nco_fwd, nco_run, queue_near_full;
   logic signed [MulAW-1:0] ref_vel_q31;
@@ -133,6 +137,8 @@ module sc_servo_axis (
                            step_pending_o <= (PendMin + sc_pkg::PendW'(1));
   assign nco_run         = ctl_active && !queue_near_full;
   assign ref_vel_q31    = exec_vel[VelW-1 -: MulAW];
+  assign cfg_ferr_stop  = ctl_cfg_q[sc_pkg::CtlCfgFerrStopLsb];
+  assign ferr_stop      = ctl_ferr && cfg_ferr_stop && ctl_active;
   assign unused_frac_lo = exec_frac[FracBits-MulAW-1:0];
   assign unused_vel_lo  = exec_vel[VelW-MulAW-1:0];
 
@@ -157,7 +163,7 @@ module sc_servo_axis (
     .pos_frac0_i,
     .start_i,
     .abort_i,
-    .stop_i,
+    .stop_i           (stop_i || ferr_stop),
     .stop_jerk_i,
     .stop_acc_i,
     .ext_sel_i        (closed_q),
@@ -167,7 +173,7 @@ module sc_servo_axis (
     .ext_hint_valid_i (ctl_active && ctl_u != '0),
     .ext_hint_i       (!ctl_u[CtlW-1]),
     .ext_busy_i       (ctl_active || nco_req),
-    .ext_abort_i      (ctl_ferr),
+    .ext_abort_i      (ctl_ferr && !cfg_ferr_stop),
     // A stream that ended in a controlled stop (STOP, underrun,
     // discontinuity) is not done, as on the open-loop core: in position,
     // the axis is idle with its stop flags.

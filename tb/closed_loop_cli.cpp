@@ -115,6 +115,11 @@ void add_closed_loop_flags(CLI::App* sim, ClosedLoopCli& f) {
   sim->add_flag_callback("--fixed-gain", [&c] { c.adaptive = false; }, "learning rates 0: fixed-gain PI cascade")
       ->disable_flag_override()
       ->group(cg);
+  sim->add_flag_callback("--ferr-stop", [&c] { c.ferr_stop = true; },
+                         "a following-error fault stops the reference under control (the stop limits) and the loop "
+                         "keeps tracking it; default: the loop stops at once")
+      ->disable_flag_override()
+      ->group(cg);
   sim->add_flag_callback("--open-loop", [&c] { c.closed_loop = false; }, "same top, open-loop step path (baseline)")
       ->disable_flag_override()
       ->group(cg);
@@ -201,6 +206,7 @@ nlohmann::json controller_json(const ControllerParams& c) {
   }
   j["ff"] = c.ff;
   j["adaptive"] = c.adaptive;
+  j["ferr_stop"] = c.ferr_stop;
   j["closed_loop"] = c.closed_loop;
   return j;
 }

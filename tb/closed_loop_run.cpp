@@ -248,7 +248,9 @@ ClosedLoopResult run_rows(RowJob job, const ClosedLoopOptions& opt) {
   // The stop's reference, on the model's executor (RTL = model every clock in
   // lockstep; the RTL alone shows no executor state to check).
   stopcheck::StopMonitor stop(opt.stop_jerk, opt.stop_acc, /*reference_only=*/closed);
-  const bool watch_stop = opt.stop_at && use_model;
+  // A following-error fault with ferr_stop is a controlled stop too.
+  const bool ferr_stop = opt.ctl.closed_loop && opt.ctl.ferr_stop;
+  const bool watch_stop = (opt.stop_at || ferr_stop) && use_model;
 
   auto tick = [&](const ServoInputs& si) {
     if (opt.inject) opt.inject(clock, model);
@@ -299,7 +301,9 @@ ClosedLoopResult run_rows(RowJob job, const ClosedLoopOptions& opt) {
   };
   // Stopped: the stop was requested and the axis is idle again (in position
   // after the reference came to rest, or the start dropped in the arming).
-  auto stopped_idle = [&]() { return opt.stop_at && clock > stop_clock + 1 && !out.busy; };
+  auto stopped_idle = [&]() {
+    return ((opt.stop_at && clock > stop_clock + 1) || (ferr_stop && out.fault_ferr)) && !out.busy;
+  };
 
   // metrics
   const double L = double(res.distance);
@@ -331,7 +335,7 @@ ClosedLoopResult run_rows(RowJob job, const ClosedLoopOptions& opt) {
     return o.ref_done ? double(o.ref_pos_int) : double(o.ref_pos_int) + double(o.ref_frac_hi) * frac_scale - 0.5;
   };
 
-  while (!stopped && clock < limit && !out.done && !out.fault_ferr && !stopped_idle()) {
+  while (!stopped && clock < limit && !out.done && !(out.fault_ferr && !ferr_stop) && !stopped_idle()) {
     extend_limit();
     tick(clock == stop_clock ? stop_in : host_inputs());
     if (out.move_done) [[unlikely]] {
@@ -375,7 +379,7 @@ ClosedLoopResult run_rows(RowJob job, const ClosedLoopOptions& opt) {
   // reference (the controller settles on its integer position).
   // (A stop in the arming clocks drops the start: the target is where the
   // axis stands.)
-  const bool stop_taken = opt.stop_at && !out.done;
+  const bool stop_taken = (opt.stop_at || (ferr_stop && out.fault_ferr)) && !out.done;
   res.target = stop_taken ? int64_t(out.ref_pos_int) : res.distance;
   const double target = double(res.target);
   res.in_pos = out.in_pos;
@@ -406,8 +410,9 @@ ClosedLoopResult run_rows(RowJob job, const ClosedLoopOptions& opt) {
   res.relative_error = L != 0 ? res.rmse / std::fabs(L) : 0;
   res.rows_left = job.rows.size();
   res.final_error = res.target - int64_t(std::llround(double(out.enc_pos) * inv_cps));
-  if (opt.stop_at) {
-    res.stop = stop_report(stop, *opt.stop_at, out.ref_pos_int);
+  if (opt.stop_at || stop.seen()) {
+    res.stop = stop_report(stop, opt.stop_at.value_or(0), out.ref_pos_int);
+    res.stop.by_fault = !opt.stop_at;
   }
   res.pulses = plant.commanded();
   res.peak_acc_enc = kin_enc.peak_a;
@@ -431,7 +436,7 @@ ClosedLoopResult run_rows(RowJob job, const ClosedLoopOptions& opt) {
   for (const std::string& e : res.pin_errors) fail("pins: " + e);
   for (const std::string& e : stop.errors()) fail("controlled stop: " + e);
   if (stop.seen() && out.done) fail("a stopped move reads done");
-  if (opt.stop_at && out.busy) fail("busy at the end of the run after the stop");
+  if (stop_taken && out.busy) fail("busy at the end of the run after the stop");
   if (res.fault_ferr) fail("following-error fault");
   // A stop in the arming clocks drops the start: the controller never ran.
   const bool start_dropped = opt.stop_at && !out.done && !stop.seen() && res.pulses == 0;

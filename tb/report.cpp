@@ -8,7 +8,8 @@ namespace sc {
 
 nlohmann::json stop_to_json(const StopReport& s) {
   if (!s.requested) return nullptr;
-  return {{"at_clock", s.at_clock},
+  return {{"cause", s.by_fault ? "fault" : "stop"},
+          {"at_clock", s.by_fault ? nlohmann::json(nullptr) : nlohmann::json(s.at_clock)},
           {"taken", s.taken},
           {"v0", s.v0},
           {"a0", s.a0},
@@ -22,9 +23,10 @@ nlohmann::json stop_to_json(const StopReport& s) {
 std::string stop_line(const std::string& name, const StopReport& s) {
   if (!s.requested) return {};
   if (!s.taken) return fmt::format("  {}: stop at clock {} not taken (the move had not started)\n", name, s.at_clock);
-  return fmt::format("  {}: stop at clock {} from v {:.2f} p/s, a {:.2f} p/s^2: {} clocks, {:.3f} pulses (closed form "
+  const std::string what = s.by_fault ? std::string("controlled stop on a fault") : fmt::format("stop at clock {}", s.at_clock);
+  return fmt::format("  {}: {} from v {:.2f} p/s, a {:.2f} p/s^2: {} clocks, {:.3f} pulses (closed form "
                      "{:.3f}), at rest at {}{}\n",
-                     name, s.at_clock, s.v0, s.a0, s.clocks, s.distance, s.closed_form_distance, s.end_position,
+                     name, what, s.v0, s.a0, s.clocks, s.distance, s.closed_form_distance, s.end_position,
                      s.overshoot ? ", OVERSHOOT" : "");
 }
 

@@ -156,11 +156,12 @@ std::string apply_scenario_json(const std::string& text, ControllerInput& c, Pla
     }
     if (j.contains("controller")) {
       const auto& q = json_object("scenario.controller", j["controller"]);
-      std::vector<std::string_view> keys = {"ff", "adaptive"};
+      std::vector<std::string_view> keys = {"ff", "adaptive", "ferr_stop"};
       for (const ControllerParam& prm : controller_params()) keys.push_back(prm.key);
       json_known_keys("scenario.controller", q, keys);
       if (q.contains("ff")) c.values.ff = json_bool("scenario.controller.ff", q["ff"]);
       if (q.contains("adaptive")) c.values.adaptive = json_bool("scenario.controller.adaptive", q["adaptive"]);
+      if (q.contains("ferr_stop")) c.values.ferr_stop = json_bool("scenario.controller.ferr_stop", q["ferr_stop"]);
       apply_scenario_numbers("scenario.controller", q, controller_params(), [&c](size_t i, double v) { c.set(i, v); });
     }
   } catch (const std::exception& e) {

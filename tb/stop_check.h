@@ -233,6 +233,7 @@ struct StopReport {
   double closed_form_distance = 0;  // continuous minimum for the stop limits, pulses
   bool overshoot = false;         // the start state could not stop without reversal
   int64_t end_position = 0;       // reference position at rest, pulses
+  bool by_fault = false;          // started by a fault (following error), not by CMD.STOP at at_clock
 };
 
 // The report of a stop requested `at_clock` clocks after START, from the

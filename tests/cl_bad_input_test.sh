@@ -49,7 +49,7 @@ for a in k-p=-1 k-p=16 k-v=-1 kb=-1 eta-p1=-1 eta-v2=16 learn-dz-p=-1 learn-dz-p
 done
 # Switches take no value (the message shows the value as given); of repeated
 # numbers the last counts, each checked.
-for a in no-ff=false no-ff=true fixed-gain=0 open-loop=no missed-steps=false compare=1; do
+for a in no-ff=false no-ff=true fixed-gain=0 open-loop=no missed-steps=false compare=1 ferr-stop=0; do
   expect2 "$a: a switch takes no value" "--$a"
 done
 expect2 "no-ff='': a switch takes no value" --no-ff=

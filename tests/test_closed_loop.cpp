@@ -155,6 +155,40 @@ TEST(ClosedLoopLockstep, FollowingErrorFault) {
   EXPECT_LT(r.max_error, 60.0);  // stopped promptly (one control period after)
 }
 
+// CL_CFG.FERR_STOP: the same fault (a following-error limit below what the
+// loop lags on this move) stops the reference under control instead, the
+// loop keeps tracking it and settles in position where it rested, RTL =
+// model every clock; without it the loop stops at once, out of position.
+TEST(ClosedLoopLockstep, FollowingErrorFaultWithFerrStopStopsUnderControlAndSettles) {
+  const Plan plan = plan_or_die(short_move(1500, 0, 3000, 0));
+  for (const bool controlled : {true, false}) {
+    ClosedLoopOptions o;
+    o.engine = ClEngine::Lockstep;
+    o.tail_s = 0.01;
+    o.ctl.ferr_lim = 1.0;
+    o.ctl.ferr_stop = controlled;
+    const ClosedLoopResult r = run_closed_loop(plan, o);
+    const char* mode = controlled ? "controlled" : "immediate";
+    EXPECT_EQ(r.mismatches, 0u) << mode << ": " << r.first_mismatch;
+    EXPECT_TRUE(r.fault_ferr) << mode;
+    ASSERT_FALSE(r.failures.empty()) << mode;
+    EXPECT_EQ(r.failures.front(), "following-error fault") << mode;
+    if (controlled) {
+      EXPECT_EQ(r.failures.size(), 1u) << r.failures.back();
+      EXPECT_TRUE(r.stop.taken);
+      EXPECT_LT(std::fabs(r.stop.distance - r.stop.closed_form_distance), 1.0);
+      EXPECT_TRUE(r.in_pos);
+      EXPECT_EQ(r.target, r.stop.end_position);
+      EXPECT_GT(r.target, 0);
+      EXPECT_LT(r.target, 1500);
+      EXPECT_EQ(r.final_error, 0);
+    } else {
+      EXPECT_FALSE(r.in_pos);
+      EXPECT_FALSE(r.stop.taken);
+    }
+  }
+}
+
 // A DIR setup time (65535 clocks, 3.3 ms) far longer than a step period at
 // 200k pulses/s, on a backward move (DIR starts forward): the core arms
 // first (DIR turned and held for the setup time) and only then starts the

@@ -2,6 +2,7 @@
 // parameter tables (one range per setting, shared by the flags and the
 // scenario keys, every number through the validation layer), and the ranges
 // against what the register words can hold.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <CLI/CLI.hpp>
@@ -141,15 +142,33 @@ TEST(ClosedLoopCliParams, RepeatedFlagsAreEachCheckedAndTheLastCounts) {
 // double negation ("--no-ff=false").
 TEST(ClosedLoopCliParams, SwitchesTakeNoValue) {
   for (const char* sw : {"--no-ff=false", "--fixed-gain=0", "--open-loop=no", "--missed-steps=false",
-                         "--closed-loop=false", "--compare=0"}) {
+                         "--closed-loop=false", "--compare=0", "--ferr-stop=1"}) {
     ClosedLoopCli f;
     EXPECT_NE(parse_flags({sw}, f), "") << sw;
   }
   ClosedLoopCli f;
-  ASSERT_EQ(parse_flags({"--no-ff", "--fixed-gain", "--open-loop"}, f), "");
+  ASSERT_EQ(parse_flags({"--no-ff", "--fixed-gain", "--open-loop", "--ferr-stop"}, f), "");
+  EXPECT_TRUE(f.ctl.values.ferr_stop);
   EXPECT_FALSE(f.ctl.values.ff);
   EXPECT_FALSE(f.ctl.values.adaptive);
   EXPECT_FALSE(f.ctl.values.closed_loop);
+}
+
+// The switches' scenario keys take JSON booleans only; the flag and the key
+// set the same field.
+TEST(ClosedLoopCliParams, ScenarioSwitchKeysAreBooleans) {
+  for (const char* key : {"ff", "adaptive", "ferr_stop"}) {
+    for (const char* bad : {"1", "\"true\"", "null", "[]"}) {
+      ControllerInput c;
+      PlantConfig plant;
+      const std::string err = apply_scenario_json(fmt::format(R"({{"controller": {{"{}": {}}}}})", key, bad), c, plant);
+      EXPECT_NE(err.find(std::string("scenario.controller.") + key), std::string::npos) << key << "=" << bad << ": " << err;
+    }
+  }
+  ControllerInput c;
+  PlantConfig plant;
+  ASSERT_EQ(apply_scenario_json(R"({"controller": {"ferr_stop": true}})", c, plant), "");
+  EXPECT_TRUE(c.values.ferr_stop);
 }
 
 TEST(ClosedLoopCliParams, EmptyFilePathsAreRefused) {

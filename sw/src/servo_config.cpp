@@ -85,6 +85,7 @@ ServoConfigResult to_servo_config(const ControllerParams& p, double counts_per_s
     if (auto e = in_range(name, v, lo, hi, unit)) return *e;
   }
   n.ff_en = p.ff;
+  n.ferr_stop = p.ferr_stop;
   if (p.learn_shift < 0 || p.learn_shift > kMaxLearnShift) {
     return Error{"learn_shift", fmt::format("learn-shift={} outside 0..{}", p.learn_shift, kMaxLearnShift)};
   }

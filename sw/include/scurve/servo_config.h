@@ -69,6 +69,7 @@ struct ControllerParams {
   double v_lim = 5000;          // |position-loop output|, pulses/s
   double u_lim = 0;             // |u|, pulses/s (0: 90 % of the step-rate limit)
   double ferr_lim = 500;        // following-error fault, pulses
+  bool ferr_stop = false;       // the fault stops the reference under control (else at once)
   double inpos_win = 0;         // in-position window, pulses
   double inpos_hold_s = 0.005;  // in-position hold time
   double settle_rate = 500;     // pulses/s: corrective steps after the reference is done
