@@ -2,7 +2,7 @@
 # The long fuzz campaign: each harness of build-san/ (scripts/build.sh
 # --sanitize) for RUNS executions from its committed corpus, one after the
 # other, at low priority so it only takes idle CPU.
-#   scripts/fuzz_long.sh [RUNS] [harness ...]     (default 10000000, all six)
+#   scripts/fuzz_long.sh [RUNS] [harness ...]     (default 10000000, every harness)
 # New inputs go to build-san/fuzz-long/<harness>/new (never into the
 # committed corpus: merge them with -merge=1, docs/verification.md); a
 # finding stops that harness and leaves build-san/fuzz-long/<harness>/crash-*.
@@ -14,8 +14,8 @@ runs=${1:-10000000}
 shift || true
 harnesses=("$@")
 if [ ${#harnesses[@]} -eq 0 ]; then
-  harnesses=(fuzz_uart_response fuzz_fst_trace fuzz_scenario_json fuzz_regress_results fuzz_kin_trace
-             fuzz_regress_list)
+  harnesses=(fuzz_uart_response fuzz_fst_trace fuzz_scenario_json fuzz_stream_json fuzz_regress_results
+             fuzz_kin_trace fuzz_regress_list)
 fi
 case "$runs" in
   ''|*[!0-9]*) echo "error: RUNS must be a positive decimal integer, got '$runs'" >&2; exit 2 ;;

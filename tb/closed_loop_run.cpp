@@ -242,8 +242,9 @@ ClosedLoopResult run_rows(RowJob job, const ClosedLoopOptions& opt) {
   // against the step generator's counter (the controller has no exact
   // reference to count against).
   const bool closed = cfg.closed_loop;
-  // A stop follows no planned duty phase: only its pulses are checked.
-  PinMonitor pins(PinRules{opt.timing, !closed && !opt.stop_at,
+  // The duty-phase contract is one move's (open loop): a stream or a stop
+  // follows no single planned phase order, only its pulses are checked.
+  PinMonitor pins(PinRules{opt.timing, !closed && !opt.stop_at && job.move_ends.size() == 1,
                            closed ? StepAccounting::PulseCounter : StepAccounting::ReferencePosition});
   // The stop's reference, on the model's executor (RTL = model every clock in
   // lockstep; the RTL alone shows no executor state to check).

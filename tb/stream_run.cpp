@@ -7,54 +7,11 @@
 #include <cmath>
 #include <limits>
 #include <memory>
-#include <nlohmann/json.hpp>
 
 #include "lockstep.h"
 #include "pin_monitor.h"
-#include "scurve/cli/user_input.h"
 
 namespace sc {
-
-StreamRequest parse_stream_json(const std::string& text) {
-  nlohmann::json j;
-  try {
-    j = nlohmann::json::parse(text);
-  } catch (const std::exception& e) {
-    throw input::Error("stream", "file", "not JSON: " + std::string(e.what()));
-  }
-  using namespace input;
-  constexpr double kAny = 1e300;  // the planner checks the ranges and names them
-  StreamRequest r;
-  json_object("stream", j);
-  json_known_keys("stream", j, {"_comment", "limits", "moves"});
-  if (!j.contains("limits")) throw Error("limits", "missing", "needs {\"a_max\", \"j_max\", \"v_max\"}");
-  if (!j.contains("moves")) throw Error("moves", "missing", "needs an array of moves");
-  const nlohmann::json& l = json_object("limits", j["limits"]);
-  json_known_keys("limits", l, {"a_max", "j_max", "v_max"});
-  for (const char* k : {"a_max", "j_max", "v_max"}) {
-    if (!l.contains(k)) throw Error(std::string("limits.") + k, "missing", "required");
-  }
-  r.limits.a_max = json_real("limits.a_max", l["a_max"], 0, kAny);
-  r.limits.j_max = json_real("limits.j_max", l["j_max"], 0, kAny);
-  r.limits.v_max = json_real("limits.v_max", l["v_max"], 0, kAny);
-  const nlohmann::json& ms = json_array("moves", j["moves"]);
-  if (ms.empty()) throw Error("moves", "[]", "needs at least one move");
-  for (size_t i = 0; i < ms.size(); ++i) {
-    const std::string at = fmt::format("moves[{}]", i);
-    const nlohmann::json& m = json_object(at, ms[i]);
-    json_known_keys(at, m, {"distance", "v_cruise", "v_junction_max"});
-    if (!m.contains("distance")) throw Error(at + ".distance", "missing", "required");
-    if (!m.contains("v_cruise")) throw Error(at + ".v_cruise", "missing", "required");
-    scurve::StreamMove mv;
-    mv.distance = json_int(at + ".distance", m["distance"], -scurve::PlannerLimits::kMaxDistance,
-                           scurve::PlannerLimits::kMaxDistance);
-    mv.v_cruise = json_real(at + ".v_cruise", m["v_cruise"], 0, kAny);
-    mv.v_junction_max =
-        m.contains("v_junction_max") ? json_real(at + ".v_junction_max", m["v_junction_max"], 0, kAny) : r.limits.v_max;
-    r.moves.push_back(mv);
-  }
-  return r;
-}
 
 void PlannedStream::add(const scurve::StreamedMove& m, bool last_of_stream) {
   std::vector<Segment> segs;

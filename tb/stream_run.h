@@ -16,18 +16,10 @@
 #include "planner.h"
 #include "scurve/stream_planner.h"
 #include "sim_run.h"
+#include "stream_json.h"
 
 namespace sc {
 
-// The stream file of `scurve stream`: {"limits": {"a_max", "j_max", "v_max"},
-// "moves": [{"distance", "v_cruise", "v_junction_max"}, ...]} (the junction
-// limit optional: v_max). Unknown keys, wrong types and values out of range
-// throw input::Error naming the place ("moves[3].v_cruise").
-struct StreamRequest {
-  scurve::StreamLimits limits;
-  std::vector<scurve::StreamMove> moves;
-};
-StreamRequest parse_stream_json(const std::string& text);
 
 // Planned moves, their rows as FIFO words (the last row of the last move
 // ends the stream) and each move's end position (the running sum).

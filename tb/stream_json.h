@@ -1,0 +1,23 @@
+// Stream files of `scurve stream FILE`: parsed through the validation layer
+// (every number checked in one place, errors naming the place). Links
+// without Verilator or SystemC (the sanitizer build and the fuzz harness).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "scurve/stream_planner.h"
+
+namespace sc {
+
+// The stream file of `scurve stream`: {"limits": {"a_max", "j_max", "v_max"},
+// "moves": [{"distance", "v_cruise", "v_junction_max"}, ...]} (the junction
+// limit optional: v_max). Unknown keys, wrong types and values out of range
+// throw input::Error naming the place ("moves[3].v_cruise").
+struct StreamRequest {
+  scurve::StreamLimits limits;
+  std::vector<scurve::StreamMove> moves;
+};
+StreamRequest parse_stream_json(const std::string& text);
+
+}  // namespace sc
