@@ -43,6 +43,16 @@ function(sc_verilate target)
   if(NOT A_OPT)
     set(A_OPT -O3)
   endif()
+  # The sanitizer build: the generated code and the Verilator runtime are not
+  # ours to check and dominate its build time; compiled quickly and left
+  # uninstrumented (the wrappers around them are instrumented).
+  set(fast ${A_OPT} -fno-tree-slp-vectorize)
+  set(slow -O1)
+  if(SC_SANITIZE)
+    set(A_OPT -O1 -fno-sanitize=all)
+    set(fast ${A_OPT})
+    set(slow ${A_OPT})
+  endif()
   set(flags)
   if(A_TRACE)
     list(APPEND flags TRACE_FST)
@@ -56,8 +66,8 @@ function(sc_verilate target)
     TOP_MODULE ${A_TOP}
     PREFIX ${A_PREFIX}
     VERILATOR_ARGS -Wall ${SC_VERILATOR_WAIVER} --x-assign fast --x-initial fast
-    OPT_FAST ${A_OPT} -fno-tree-slp-vectorize
-    OPT_SLOW -O1
+    OPT_FAST ${fast}
+    OPT_SLOW ${slow}
     OPT_GLOBAL ${A_OPT})
 endfunction()
 

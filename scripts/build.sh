@@ -2,7 +2,8 @@
 # Configure and build (Release, LTO) into build/. Binaries land in build/bin/.
 #   scripts/build.sh --sanitize   the sanitizer build instead, into build-san/:
 #                                 clang, ASan + UBSan (-fno-sanitize-recover),
-#                                 the libFuzzer harnesses; no Verilated RTL
+#                                 the libFuzzer harnesses, the CLI and the
+#                                 benches on the uninstrumented Verilated RTL
 #                                 (docs/verification.md "Sanitizers")
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
@@ -13,7 +14,7 @@ if [ "${1:-}" = "--sanitize" ]; then
     -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g" -DSC_SANITIZE=ON -DSC_FUZZ=ON -DSCURVE_HOST_EXECUTABLE=ON >/dev/null
   # Only what its tests run (not the benchmarks or the nightly-size tests).
   cmake --build "$here/build-san" -j"$jobs" --target scurve_host_tests scurve_host_main plan_digest san_model_tests \
-    san_parser_tests fuzz_scenario_json fuzz_stream_json fuzz_regress_list fuzz_regress_results fuzz_kin_trace fuzz_fst_trace \
+    parser_tests tools_tests scurve sc_bench fuzz_scenario_json fuzz_stream_json fuzz_regress_list fuzz_regress_results fuzz_kin_trace fuzz_fst_trace \
     fuzz_uart_response
   exit 0
 fi

@@ -13,7 +13,7 @@ fails=0
 expect2() {  # expect2 <substring> <args...>
   local want=$1; shift
   set +e
-  timeout 60 "$scurve" sim $move "$@" > "$tmp/out" 2> "$tmp/err"
+  timeout 300 "$scurve" sim $move "$@" > "$tmp/out" 2> "$tmp/err"  # the --compare runs take a minute under ASan
   local rc=$?
   set -e
   local lines; lines=$(wc -l < "$tmp/err")

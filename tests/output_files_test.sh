@@ -6,7 +6,11 @@
 # neither the file nor its .part behind; a waveform has a bounded default
 # window; a good run writes whole files that read back.
 set -euo pipefail
-scurve=$(realpath "$1") bench=$(realpath "$2") pin_bench=$(realpath "$3")
+scurve=$(realpath "$1") bench=$(realpath "$2")
+# The pin-accurate bench is optional: the sanitizer build leaves it out (a
+# short move takes a minute there).
+pin_bench=
+if [ -n "${3:-}" ]; then pin_bench=$(realpath "$3"); else echo "note: no sc_bench_pin given, its cases not run"; fi
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 cd "$tmp"
@@ -27,6 +31,9 @@ expect2() {
   fi
   local rc=$?
   set -e
+  # The sanitizer build: ASan's three-line note on SystemC's coroutine stacks
+  # (an exception thrown in an SC_THREAD) is not the tool's output.
+  sed -i '/^==[0-9]*==WARNING: ASan is ignoring requested __asan_handle_no_return/,+2d' stderr
   local lines; lines=$(wc -l < stderr)
   if [ "$rc" -ne 2 ] || [ "$lines" -ne 1 ] || ! grep -qF -- "$want" stderr; then
     fail "$* -> rc=$rc, $lines stderr lines: $(head -c 600 stderr)"
@@ -54,7 +61,7 @@ expect2 - "fst=out/w.fst: --engine model runs no RTL" "$scurve" sim $cl $move --
 expect2 1 "fst=out/w.fst: writing the waveform failed" "$scurve" sim $cl $move --fst out/w.fst
 expect2 - "fst-model=out: is a directory" "$bench" $move --fst-model out
 expect2 1 "fst-model=out/m.fst: writing the waveform failed" "$bench" $move --fst-model out/m.fst
-for tool in "$bench" "$pin_bench"; do
+for tool in "$bench" ${pin_bench:+"$pin_bench"}; do
   expect2 - "trace-rtl=/nonexistent/r.csv" "$tool" $move --trace-rtl /nonexistent/r.csv
   expect2 - "trace-model=out" "$tool" $move --trace-model out
   expect2 1 "trace-rtl=out/r.csv" "$tool" $move --trace-rtl out/r.csv --trace-decimate 1

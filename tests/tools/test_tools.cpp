@@ -29,6 +29,12 @@
 #include "trace_diff.h"
 
 using namespace sc;
+#if defined(__has_feature)
+#define SC_HAS_FEATURE_ASAN __has_feature(address_sanitizer)
+#else
+#define SC_HAS_FEATURE_ASAN 0
+#endif
+
 namespace fs = std::filesystem;
 
 namespace {
@@ -537,18 +543,29 @@ TEST(TraceDiff, NonNumericValuesAndBadHeadersAreUnreadableNotDifferent) {
 
 TEST(TraceDiff, LongTracesAreStreamedInBoundedMemory) {
   const TempDir d("stream");
+#if !defined(__SANITIZE_ADDRESS__) && !SC_HAS_FEATURE_ASAN
   // ~73 MB each: loaded whole (as rows of strings) this took over 1 GB.
-  write_trace(d / "a.csv", kHeader, 1'000'000, UINT64_MAX, "");
-  write_trace(d / "b.csv", kHeader, 1'000'000, 777'777, "1");
+  constexpr uint64_t kRows = 1'000'000, kBadRow = 777'777;
+  constexpr bool kCheckRss = true;
+#else
+  // Under ASan its shadow memory and quarantine are part of the RSS: the
+  // bound is checked in the default build, the diff itself here, shorter.
+  constexpr uint64_t kRows = 100'000, kBadRow = 77'777;
+  constexpr bool kCheckRss = false;
+#endif
+  write_trace(d / "a.csv", kHeader, kRows, UINT64_MAX, "");
+  write_trace(d / "b.csv", kHeader, kRows, kBadRow, "1");
   const Outcome o = run_capture(std::string(SCURVE) + " diff " + (d / "a.csv").string() + " " +
                                     (d / "b.csv").string(), (d / "err.txt").string());
   EXPECT_EQ(o.rc, 1);
-  rusage ru{};
-  getrusage(RUSAGE_CHILDREN, &ru);
-  EXPECT_LT(ru.ru_maxrss, 64 * 1024) << "max RSS of a child, KiB";
+  if (kCheckRss) {
+    rusage ru{};
+    getrusage(RUSAGE_CHILDREN, &ru);
+    EXPECT_LT(ru.ru_maxrss, 64 * 1024) << "max RSS of a child, KiB";
+  }
   const DiffReport r = diff_traces((d / "a.csv").string(), (d / "b.csv").string());
   ASSERT_EQ(r.signals.size(), 1u) << r.to_text();
   EXPECT_EQ(r.signals[0].signal, "ref_pos_frac");
-  EXPECT_EQ(r.signals[0].first_clock, 777'777u * 3);
-  EXPECT_NE(r.context.find("A clock     2333331 >"), std::string::npos) << r.context;
+  EXPECT_EQ(r.signals[0].first_clock, kBadRow * 3);
+  EXPECT_TRUE(std::regex_search(r.context, std::regex("A clock +" + std::to_string(kBadRow * 3) + " >"))) << r.context;
 }
