@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
-# Installs every Debian package the project needs, when missing (Debian 12).
-# Idempotent and quiet when everything is present.
+# Installs every Debian package the project needs, when missing (Debian 12),
+# and the pinned Python tools from PyPI (scripts/python/requirements.txt:
+# FuseSoC) into .venv/ at the top of the tree. Idempotent and quiet when
+# everything is present.
 set -euo pipefail
 pkgs=(
   build-essential cmake python3
@@ -12,6 +14,7 @@ pkgs=(
   python3-matplotlib
   tcl procps
   clang-14 libclang-rt-14-dev
+  python3-venv
 )
 missing=()
 for p in "${pkgs[@]}"; do
@@ -24,4 +27,18 @@ if [ ${#missing[@]} -gt 0 ]; then
   export DEBIAN_FRONTEND=noninteractive
   $SUDO apt-get update -qq
   $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi
+
+# The Python tools: a virtual environment of Debian's python3, re-created
+# when the requirements change (their hash is kept in the environment).
+here=$(cd "$(dirname "$0")/.." && pwd)
+req=$here/scripts/python/requirements.txt
+venv=$here/.venv
+want=$(sha256sum "$req" | cut -d' ' -f1)
+if [ "$(cat "$venv/requirements.sha256" 2>/dev/null)" != "$want" ]; then
+  echo "setup: installing the Python tools into $venv (scripts/python/requirements.txt)"
+  rm -rf "$venv"
+  /usr/bin/python3 -m venv "$venv"
+  "$venv/bin/pip" install --quiet --disable-pip-version-check --no-deps -r "$req"
+  echo "$want" > "$venv/requirements.sha256"
 fi
