@@ -15,6 +15,7 @@ pkgs=(
   tcl procps
   clang-14 libclang-rt-14-dev
   python3-venv
+  gtkwave
 )
 missing=()
 for p in "${pkgs[@]}"; do
