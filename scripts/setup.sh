@@ -16,6 +16,7 @@ pkgs=(
   clang-14 libclang-rt-14-dev
   python3-venv
   gtkwave
+  pybind11-dev python3-dev
 )
 missing=()
 for p in "${pkgs[@]}"; do

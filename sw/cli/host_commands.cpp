@@ -39,9 +39,7 @@ class HostCommandsImpl : public HostCommands {
 
  private:
   int run_plan() const {
-    if (std::string e = check_move_flags(pf_); !e.empty()) return bad_input(e);
-    if (std::string e = check_clock_flag(pf_.clock_hz); !e.empty()) return bad_input(e);
-    const PlanResult r = Planner(to_clock(pf_)).plan(to_request(pf_), to_timing(pf_));
+    const auto r = plan_flags(pf_);
     if (const auto* e = std::get_if<Error>(&r)) return bad_input(e->message);
     const Plan& p = std::get<Plan>(r);
     const nlohmann::json j = plan_to_json(p);
@@ -55,9 +53,7 @@ class HostCommandsImpl : public HostCommands {
   }
 
   int run_regs() const {
-    if (std::string e = check_move_flags(rf_); !e.empty()) return bad_input(e);
-    if (std::string e = check_clock_flag(rf_.clock_hz); !e.empty()) return bad_input(e);
-    const PlanResult r = Planner(to_clock(rf_)).plan(to_request(rf_), to_timing(rf_));
+    const auto r = plan_flags(rf_);
     if (const auto* e = std::get_if<Error>(&r)) return bad_input(e->message);
     return run_regs_cli(regs_flags_, to_request(rf_), std::get<Plan>(r), to_timing(rf_), rf_.json, rf_.json_out);
   }

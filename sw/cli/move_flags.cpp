@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <csignal>
 #include <cstdio>
@@ -257,6 +258,25 @@ std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv) {
     return bad_input(e.what());
   }
   return std::nullopt;
+}
+
+std::string parse_flags(CLI::App& app, std::vector<std::string> args) {
+  if (std::string e = settle_equals_forms(app, args); !e.empty()) return e;
+  std::reverse(args.begin(), args.end());  // CLI11 takes the vector last argument first
+  try {
+    app.parse(args);
+  } catch (const CLI::ParseError& e) {
+    return e.what();
+  }
+  return {};
+}
+
+std::variant<Plan, Error> plan_flags(const MoveFlags& f) {
+  if (std::string e = check_move_flags(f); !e.empty()) return Error{"", e};
+  if (std::string e = check_clock_flag(f.clock_hz); !e.empty()) return Error{"", e};
+  PlanResult r = Planner(to_clock(f)).plan(to_request(f), to_timing(f));
+  if (auto* e = std::get_if<Error>(&r)) return std::move(*e);
+  return std::move(std::get<Plan>(r));
 }
 
 bool write_json_file(const std::string& path, const nlohmann::json& j) {

@@ -25,12 +25,12 @@ void add_regs_flags(CLI::App* cmd, RegsCliFlags& f) {
   add_stop_flags(cmd, f.stop);
 }
 
-int run_regs_cli(const RegsCliFlags& f, const MoveRequest& request, const Plan& plan, const PulseTiming& timing,
-                 bool json, const std::string& json_out) {
+std::variant<nlohmann::json, Error> regs_to_json(const RegsCliFlags& f, const MoveRequest& request, const Plan& plan,
+                                                 const PulseTiming& timing) {
   const auto stop = resolve_stop_flags(f.stop, request, plan);
-  if (const std::string* e = std::get_if<std::string>(&stop)) return bad_input(*e);
+  if (const std::string* e = std::get_if<std::string>(&stop)) return Error{"stop", *e};
   const StopRequest& sr = std::get<StopRequest>(stop);
-  if (sr.at_clock && f.no_start) return bad_input("--stop-at: stops a started move; it cannot go with --no-start");
+  if (sr.at_clock && f.no_start) return Error{"stop_at", "--stop-at: stops a started move; it cannot go with --no-start"};
   std::vector<RegWrite> writes = encode_move(plan, timing, !f.no_start);
   // The stop limits after the pulse timing, before the table: the move's own
   // unless given, so CMD.STOP, an underrun or a discontinuity stop it as planned.
@@ -39,72 +39,64 @@ int run_regs_cli(const RegsCliFlags& f, const MoveRequest& request, const Plan& 
   const auto after_timing = std::find_if(writes.begin(), writes.end(),
                                          [](const RegWrite& w) { return w.addr == uint32_t(RegDirTime); });
   writes.insert(after_timing + 1, limits.begin(), limits.end());
-  // The index of the CMD.STOP write that is due at *sr.at_clock, if any.
-  std::optional<size_t> stop_index;
-  if (sr.at_clock) {
-    writes.push_back(stop_command());
-  }
+  if (sr.at_clock) writes.push_back(stop_command());
   if (f.closed_loop) {
     const double counts_per_step = 1.0;  // the closed-loop runner's default encoder
     const ServoConfigResult r = to_servo_config(ControllerParams{}, counts_per_step, timing, plan.clock);
-    if (const Error* err = std::get_if<Error>(&r)) {
-      std::cerr << "scurve regs --closed-loop: " << err->message << "\n";
-      return 2;
-    }
+    if (const Error* err = std::get_if<Error>(&r)) return Error{err->parameter, "--closed-loop: " + err->message};
     std::vector<RegWrite> cl = encode_servo_config(std::get<ServoConfig>(r));
     cl.insert(cl.begin(), RegWrite{uint32_t(RegCtrl), (1u << CtrlEnableBit) | (1u << CtrlClosedBit)});
     writes.erase(writes.begin());  // CTRL = enable: replaced by the closed-loop CTRL write
     writes.insert(writes.begin(), cl.begin(), cl.end());
   }
-  if (sr.at_clock) stop_index = writes.size() - 1;
-  const double stop_s = sr.at_clock ? double(*sr.at_clock) / plan.clock.hz : 0;
-  // The UART frames (word address in the frame), each checked by the encoder.
-  std::vector<std::vector<uint8_t>> frames;
-  if (f.uart) {
-    for (const RegWrite& w : writes) {
-      FrameResult fr = uart_write_frame(w.addr, w.data);
-      if (const Error* err = std::get_if<Error>(&fr)) {
-        std::cerr << "scurve regs --uart: " << reg_name(w.addr) << ": " << err->message << "\n";
-        return 2;
-      }
-      frames.push_back(std::move(std::get<std::vector<uint8_t>>(fr)));
-    }
-  }
-  if (json || !json_out.empty()) {
-    nlohmann::json out = nlohmann::json::array();
-    for (size_t i = 0; i < writes.size(); ++i) {
-      const RegWrite& w = writes[i];
-      nlohmann::json j = {{"addr", w.addr}, {"reg", reg_name(w.addr)}, {"data", w.data}};
-      if (stop_index == i) {
-        j["at_clock"] = *sr.at_clock;  // clocks after the START write takes effect
-        j["at_s"] = stop_s;
-      }
-      if (f.uart) {
-        std::string hex;
-        for (uint8_t b : frames[i]) hex += fmt::format("{:02X}", b);
-        j["frame"] = hex;
-      }
-      out.push_back(j);
-    }
-    if (!write_json_file(json_out, out)) {
-      std::cerr << "error: --json-out: cannot write " << json_out << "\n";
-      return 2;
-    }
-    if (json) {
-      std::cout << out.dump(2) << "\n";
-      return 0;
-    }
-  }
+  nlohmann::json out = nlohmann::json::array();
   for (size_t i = 0; i < writes.size(); ++i) {
     const RegWrite& w = writes[i];
-    if (stop_index == i) std::cout << fmt::format("# {} s ({} clocks) after START:\n", stop_s, *sr.at_clock);
+    nlohmann::json j = {{"addr", w.addr}, {"reg", reg_name(w.addr)}, {"data", w.data}};
+    if (sr.at_clock && i + 1 == writes.size()) {
+      j["at_clock"] = *sr.at_clock;  // clocks after the START write takes effect
+      j["at_s"] = double(*sr.at_clock) / plan.clock.hz;
+    }
     if (f.uart) {
+      // The UART frame (word address in the frame), checked by the encoder.
+      FrameResult fr = uart_write_frame(w.addr, w.data);
+      if (const Error* err = std::get_if<Error>(&fr)) {
+        return Error{err->parameter, "--uart: " + reg_name(w.addr) + ": " + err->message};
+      }
       std::string hex;
-      for (uint8_t b : frames[i]) hex += fmt::format("{:02X} ", b);
-      // the frame holds the word address; the comment names the byte address
-      std::cout << fmt::format("{} # {} (0x{:03X}) = 0x{:08X}\n", hex, reg_name(w.addr), w.addr, w.data);
+      for (uint8_t b : std::get<std::vector<uint8_t>>(fr)) hex += fmt::format("{:02X}", b);
+      j["frame"] = hex;
+    }
+    out.push_back(j);
+  }
+  return out;
+}
+
+int run_regs_cli(const RegsCliFlags& f, const MoveRequest& request, const Plan& plan, const PulseTiming& timing,
+                 bool json, const std::string& json_out) {
+  const auto r = regs_to_json(f, request, plan, timing);
+  if (const Error* e = std::get_if<Error>(&r)) return bad_input(e->message);
+  const nlohmann::json& out = std::get<nlohmann::json>(r);
+  if (!write_json_file(json_out, out)) return bad_input("--json-out: cannot write " + json_out);
+  if (json) {
+    std::cout << out.dump(2) << "\n";
+    return 0;
+  }
+  for (const nlohmann::json& j : out) {
+    const auto addr = j["addr"].get<uint32_t>();
+    const auto data = j["data"].get<uint32_t>();
+    const std::string reg = j["reg"].get<std::string>();
+    if (j.contains("at_clock")) {
+      std::cout << fmt::format("# {} s ({} clocks) after START:\n", j["at_s"].get<double>(), j["at_clock"].get<uint64_t>());
+    }
+    if (f.uart) {
+      // The frame holds the word address; the comment names the byte address.
+      const std::string hex = j["frame"].get<std::string>();
+      std::string spaced;
+      for (size_t i = 0; i < hex.size(); i += 2) spaced += hex.substr(i, 2) + " ";
+      std::cout << fmt::format("{} # {} (0x{:03X}) = 0x{:08X}\n", spaced, reg, addr, data);
     } else {
-      std::cout << fmt::format("0x{:03X} {:<12} 0x{:08X}\n", w.addr, reg_name(w.addr), w.data);
+      std::cout << fmt::format("0x{:03X} {:<12} 0x{:08X}\n", addr, reg, data);
     }
   }
   return 0;

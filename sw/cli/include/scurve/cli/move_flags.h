@@ -96,6 +96,13 @@ int bad_input(const std::string& msg);
 // error reported by bad_input) returns its exit code; empty when the
 // command is to run.
 std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv);
+// Parses flags alone (no program name, no subcommand: the Python bindings'
+// keyword arguments) as a command line is parsed; empty when parsed, else
+// the one-line error.
+std::string parse_flags(CLI::App& app, std::vector<std::string> args);
+// The move the flags ask for, planned: the flag checks (check_move_flags,
+// check_clock_flag; parameter empty) or the planner's error, or the plan.
+std::variant<Plan, Error> plan_flags(const MoveFlags& f);
 // Writes j (indented) to path; true if path is empty or the write worked.
 bool write_json_file(const std::string& path, const nlohmann::json& j);
 

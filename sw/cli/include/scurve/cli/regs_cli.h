@@ -3,6 +3,9 @@
 #pragma once
 
 #include <string>
+#include <variant>
+
+#include <nlohmann/json.hpp>
 
 #include <CLI/CLI.hpp>
 
@@ -19,6 +22,11 @@ struct RegsCliFlags {
 };
 
 void add_regs_flags(CLI::App* cmd, RegsCliFlags& f);
+// The writes for `plan` of `request` as the JSON array `scurve regs --json`
+// prints ({addr, reg, data}, "frame" with --uart, "at_clock"/"at_s" on a
+// CMD.STOP due at --stop-at), or one line naming the flag.
+std::variant<nlohmann::json, Error> regs_to_json(const RegsCliFlags& f, const MoveRequest& request, const Plan& plan,
+                                                 const PulseTiming& timing);
 // Prints the writes for `plan` of `request` (the plan's clock sets the
 // controller's period, the request the default stop limits). With
 // --stop-at the last write is CMD.STOP, marked with the time it is due.

@@ -1,0 +1,136 @@
+// Python bindings of the host library: `import scurve`.
+//
+// The keyword arguments are the CLI's flags (distance=..., v_cruise=...,
+// clock_hz=...: --distance, --v-cruise, --clock-hz) and go through the same
+// parser and validation layer as a command line, so a request means the same
+// and fails with the same one-line message from Python as from `scurve plan`.
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "scurve/cli/move_flags.h"
+#include "scurve/cli/plan_report.h"
+#include "scurve/cli/regs_cli.h"
+#include "scurve/reg_encode.h"
+
+namespace py = pybind11;
+using namespace scurve;
+
+namespace {
+
+// A number as the command line would carry it: ints as digits, floats in
+// the shortest form that reads back to the same value (repr).
+std::string flag_value(const py::handle& v) {
+  if (py::isinstance<py::bool_>(v)) throw py::type_error("a switch takes True or False, not a value list");
+  if (py::isinstance<py::str>(v)) return v.cast<std::string>();
+  return py::repr(v).cast<std::string>();
+}
+
+// Keyword arguments -> flags of `app`: name_with_underscores ->
+// --name-with-dashes; True gives the switch, False leaves it out; a list or
+// tuple gives several values (jerks=[...]). An unknown name is a TypeError,
+// as for any Python function.
+std::vector<std::string> flag_args(const CLI::App& app, const char* fn, const py::kwargs& kw) {
+  std::vector<std::string> args;
+  for (const auto& [key, value] : kw) {
+    std::string name = key.cast<std::string>();
+    std::string flag = "--" + name;
+    for (char& c : flag) c = c == '_' ? '-' : c;
+    if (!app.get_option_no_throw(flag)) {
+      throw py::type_error(std::string(fn) + "() got an unexpected keyword argument '" + name + "'");
+    }
+    if (py::isinstance<py::bool_>(value)) {
+      if (value.cast<bool>()) args.push_back(flag);
+      continue;
+    }
+    args.push_back(flag);
+    if (py::isinstance<py::list>(value) || py::isinstance<py::tuple>(value)) {
+      for (const py::handle& item : value) args.push_back(flag_value(item));
+    } else {
+      args.push_back(flag_value(value));
+    }
+  }
+  return args;
+}
+
+py::object to_python(const nlohmann::json& j) { return py::module_::import("json").attr("loads")(j.dump()); }
+
+py::object g_error;  // scurve.Error
+
+[[noreturn]] void raise(const std::string& parameter, const std::string& message) {
+  py::object e = g_error(message);
+  e.attr("parameter") = parameter;
+  PyErr_SetObject(g_error.ptr(), e.ptr());
+  throw py::error_already_set();
+}
+
+// The move of the keyword arguments, planned (or scurve.Error); with `regs`
+// also the flags of `scurve regs`.
+Plan plan_kwargs(const char* fn, const py::kwargs& kw, cli::MoveFlags& f, cli::RegsCliFlags* regs = nullptr) {
+  CLI::App app;
+  cli::add_move_flags(&app, f);
+  cli::add_clock_flag(&app, f);
+  if (regs) cli::add_regs_flags(&app, *regs);
+  if (std::string e = cli::parse_flags(app, flag_args(app, fn, kw)); !e.empty()) raise("", e);
+  auto r = cli::plan_flags(f);
+  if (auto* e = std::get_if<Error>(&r)) raise(e->parameter, e->message);
+  return std::get<Plan>(std::move(r));
+}
+
+}  // namespace
+
+PYBIND11_MODULE(scurve, m) {
+  m.doc() = "S-curve servo core host library: plan moves, encode registers and UART frames";
+  g_error = py::reinterpret_borrow<py::object>(PyErr_NewExceptionWithDoc(
+      "scurve.Error",
+      "A request the planner or the validation layer refuses; str() is the CLI's one-line message, "
+      ".parameter the request field when the planner names one.",
+      PyExc_ValueError, nullptr));
+  m.attr("Error") = g_error;
+
+  m.def(
+      "plan",
+      [](const py::kwargs& kw) {
+        cli::MoveFlags f;
+        return to_python(cli::plan_to_json(plan_kwargs("plan", kw, f)));
+      },
+      "Plan a move: keyword arguments as the flags of `scurve plan` (distance, v_start, v_cruise, v_end, "
+      "a_max, j_max, profile, jerks, adjust_end_speed, pulse_high, pulse_low, dir_setup, dir_hold, clock_hz). "
+      "Returns the dict `scurve plan --json` prints; raises scurve.Error.");
+
+  m.def(
+      "regs",
+      [](const py::kwargs& kw) {
+        cli::MoveFlags f;
+        cli::RegsCliFlags rf;
+        const Plan p = plan_kwargs("regs", kw, f, &rf);
+        auto r = cli::regs_to_json(rf, cli::to_request(f), p, cli::to_timing(f));
+        if (auto* e = std::get_if<Error>(&r)) raise(e->parameter, e->message);
+        return to_python(std::get<nlohmann::json>(r));
+      },
+      "Plan a move and return its register writes as `scurve regs --json` prints them: "
+      "[{'addr', 'reg', 'data'}] (and 'frame' with uart=True); keyword arguments as for plan plus "
+      "uart, no_start, closed_loop, stop_at, stop_jerk, stop_acc.");
+
+  m.def(
+      "uart_write_frame",
+      [](uint32_t addr, uint32_t data) {
+        FrameResult r = uart_write_frame(addr, data);
+        if (auto* e = std::get_if<Error>(&r)) raise(e->parameter, e->message);
+        const auto& bytes = std::get<std::vector<uint8_t>>(r);
+        return py::bytes(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+      },
+      py::arg("addr"), py::arg("data"), "The UART bridge's frame that writes data to addr.");
+  m.def(
+      "uart_read_frame",
+      [](uint32_t addr) {
+        FrameResult r = uart_read_frame(addr);
+        if (auto* e = std::get_if<Error>(&r)) raise(e->parameter, e->message);
+        const auto& bytes = std::get<std::vector<uint8_t>>(r);
+        return py::bytes(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+      },
+      py::arg("addr"), "The UART bridge's frame that reads addr.");
+}
