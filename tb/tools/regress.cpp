@@ -44,11 +44,23 @@ double range_hi(const nlohmann::json& r, const char* key) { return r.at(key).at(
 
 namespace {
 
-// The move of a seed from ranges already checked (checked_ranges).
-std::vector<std::string> random_move_from(uint64_t seed, const nlohmann::json& ranges) {
+// Planner draws a list may still make, of `total`.
+struct DrawBudget {
+  int64_t left, total;
+};
+// The move of a seed from ranges already checked (checked_ranges), drawn at
+// most kDrawsPerSeed times and from the list's budget (both bound the
+// planner work a list can ask for); `at` names the entry.
+std::vector<std::string> random_move_from(uint64_t seed, const nlohmann::json& ranges, DrawBudget& draws,
+                                          const std::string& at) {
   std::mt19937_64 rng(seed);
   const double max_clocks = ranges.at("max_clocks").get<double>();  // keep each run short
-  for (int attempt = 0; attempt < 1000; ++attempt) {
+  for (int attempt = 0; attempt < kDrawsPerSeed; ++attempt) {
+    if (draws.left-- <= 0) {
+      throw input::Error(at, fmt::format("seed {}", seed),
+                         fmt::format("the random entries need more than {} planner draws in all: fewer seeds, "
+                                     "or ranges whose moves fit max_clocks more often", draws.total));
+    }
     MoveRequest r;
     const double dist = uniform(rng, range_lo(ranges, "distance"), range_hi(ranges, "distance"));
     r.distance = int64_t(dist) * ((rng() & 1) ? 1 : -1);
@@ -65,13 +77,16 @@ std::vector<std::string> random_move_from(uint64_t seed, const nlohmann::json& r
             "--v-end", num(r.v_end), "--a-max", num(r.a_max), "--j-max", num(r.j_max), "--profile",
             r.kind == ProfileKind::Trapezoid ? "trapezoid" : "scurve"};
   }
-  throw std::runtime_error(fmt::format("seed {}: no plannable random move in 1000 draws", seed));
+  throw input::Error(at + ".ranges", input::shown(ranges),
+                     fmt::format("seed {}: no plannable move of at most max_clocks in {} draws: widen the ranges or "
+                                 "raise max_clocks", seed, kDrawsPerSeed));
 }
 
 }  // namespace
 
 std::vector<std::string> random_move_args(uint64_t seed, const nlohmann::json& ranges) {
-  return random_move_from(seed, checked_ranges("ranges", ranges));
+  DrawBudget draws{kDrawsPerSeed, kDrawsPerSeed};
+  return random_move_from(seed, checked_ranges("ranges", ranges), draws, "ranges");
 }
 
 namespace {
@@ -139,7 +154,8 @@ nlohmann::json checked_ranges(const std::string& param, const nlohmann::json& ra
 }
 
 std::vector<TestCase> expand_list(const nlohmann::json& list, const std::vector<std::string>& only,
-                                  const std::vector<std::string>& exclude) {
+                                  const std::vector<std::string>& exclude, int64_t max_random_draws) {
+  DrawBudget draws{max_random_draws, max_random_draws};
   input::json_known_keys("list", list, {"description", "defaults", "tests"});
   const nlohmann::json defaults = list.value("defaults", nlohmann::json::object());
   input::json_known_keys("defaults", defaults, {"bench", "timeout_s"});
@@ -230,7 +246,7 @@ std::vector<TestCase> expand_list(const nlohmann::json& list, const std::vector<
         TestCase t = base;
         t.seed = s;
         t.name = fmt::format("{}.s{}", base.entry, s);
-        t.argv = bench_cmd(t.name, random_move_from(s, ranges));  // ranges checked once above
+        t.argv = bench_cmd(t.name, random_move_from(s, ranges, draws, at));  // ranges checked once above
         expanded.push_back(t);
       }
     } else if (base.kind == "command") {

@@ -36,10 +36,16 @@ struct TestResult {
   std::string command;    // argv as run ({bin} resolved), for a rerun by hand
 };
 
+// A random entry's seed draws a move at most kDrawsPerSeed times (until one
+// plans within its max_clocks); a list's random entries draw at most
+// max_random_draws times in all. Either bound exceeded: the list is refused.
+constexpr int kDrawsPerSeed = 100;
+constexpr int64_t kMaxRandomDraws = 200000;
 // Expands a list (see tests/regress_list.json) into test cases. Labels:
 // keep a test when it has any of `only` (if given) and none of `exclude`.
 std::vector<TestCase> expand_list(const nlohmann::json& list, const std::vector<std::string>& only,
-                                  const std::vector<std::string>& exclude);
+                                  const std::vector<std::string>& exclude,
+                                  int64_t max_random_draws = kMaxRandomDraws);
 // Test k (0-based, in list order) belongs to shard i (1-based) of n when k % n == i - 1.
 std::vector<TestCase> select_shard(const std::vector<TestCase>& tests, int index, int count);
 // Parses "i/n"; throws std::invalid_argument naming the flag.

@@ -14,6 +14,7 @@
 #include "fst_check.h"
 #include "regress.h"
 #include "scenario_json.h"
+#include "scurve/cli/user_input.h"
 #include "scurve/reg_encode.h"
 #include "trace_diff.h"
 
@@ -141,6 +142,36 @@ TEST(ParserFindings, KinTraceErrorShowsControlCharactersEscaped) {
     FAIL() << "accepted";
   } catch (const std::runtime_error& e) {
     expect_printable_line(e.what());
+  }
+}
+
+// A random entry whose moves never fit its max_clocks made every seed draw
+// the planner 1,000 times (a libFuzzer timeout); a list could make any
+// number of seeds do so. Now each seed draws at most kDrawsPerSeed times
+// and a list at most its budget, and either is a refusal naming the field.
+TEST(ParserFindings, RandomEntriesDrawThePlannerABoundedNumberOfTimes) {
+  using regress::expand_list;
+  const nlohmann::json never_fits = nlohmann::json::parse(R"({"tests": [
+    {"name": "r", "kind": "random", "count": 2,
+     "ranges": {"distance": [60, 400], "v_cruise": [500, 3000], "max_clocks": 2e5}}]})");
+  try {
+    expand_list(never_fits, {}, {});
+    FAIL() << "accepted";
+  } catch (const scurve::input::Error& e) {
+    expect_printable_line(e.what());
+    EXPECT_EQ(std::string(e.what()).rfind("tests[0].ranges=", 0), 0u) << e.what();
+    EXPECT_NE(std::string(e.what()).find("no plannable move of at most max_clocks in 100 draws"), std::string::npos)
+        << e.what();
+  }
+  const nlohmann::json many = nlohmann::json::parse(R"({"tests": [
+    {"name": "r", "kind": "random", "count": 300}]})");
+  EXPECT_EQ(expand_list(many, {}, {}).size(), 300u);
+  try {
+    expand_list(many, {}, {}, 150);
+    FAIL() << "accepted with a budget of 150 draws";
+  } catch (const scurve::input::Error& e) {
+    expect_printable_line(e.what());
+    EXPECT_NE(std::string(e.what()).find("more than 150 planner draws in all"), std::string::npos) << e.what();
   }
 }
 
