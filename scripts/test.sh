@@ -1,12 +1,13 @@
 #!/usr/bin/env bash
 # The test command: install what is missing, build, run the default ctest
 # suite (every area except the nightly-size `long` campaigns). Writes
-# build/test-results.xml (JUnit). With SC_SANITIZE=1 it then builds the
-# sanitizer configuration (build-san/: clang, ASan + UBSan, no Verilated RTL)
-# and runs its suite: the host library, model and parser unit tests, the host
-# CLI test, the fuzz corpora and a 10 s fuzz run per harness
+# build/test-results.xml (JUnit). With SC_SANITIZE=1 (CI) it then runs the
+# `extended` tests of build/ (build/test-results-extended.xml), builds the
+# sanitizer configuration (build-san/: clang, ASan + UBSan; the Verilated
+# RTL compiled uninstrumented) and runs its suite: the unit tests, the tool
+# tests, the fuzz corpora and a 10 s fuzz run per harness
 # (build-san/test-results.xml). Arguments replace the default selection and
-# go to the first ctest only (no sanitizer build), e.g.
+# go to the first ctest only (no further stage), e.g.
 #   scripts/test.sh -L long  or  scripts/test.sh -L core
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
@@ -16,8 +17,9 @@ if [ $# -gt 0 ]; then
   exec ctest --output-on-failure -j"$(nproc)" --output-junit test-results.xml "$@"
 fi
 rc=0
-ctest --output-on-failure -j"$(nproc)" --output-junit test-results.xml -LE long || rc=$?
+ctest --output-on-failure -j"$(nproc)" --output-junit test-results.xml -LE '^(long|extended)$' || rc=$?
 if [ "${SC_SANITIZE:-0}" = "1" ]; then
+  ctest --output-on-failure -j"$(nproc)" --output-junit test-results-extended.xml -L '^extended$' || rc=$?
   "$here/scripts/build.sh" --sanitize
   cd "$here/build-san"
   # Stop at the first report; leaks count (LeakSanitizer).

@@ -48,5 +48,10 @@ add_test(NAME tools.regress_shards_cover_list
 set_tests_properties(tools.cli_contract tools.cli_contract_closed_loop tools.cli_bad_input_closed_loop tools.cli_clock_hz
                      tools.regs_cli_uart_frames tools.regs_cli_closed_loop tools.output_files_whole_or_refused
                      tools.regress_shards_cover_list PROPERTIES LABELS tools TIMEOUT 600)
-# Under the sanitizers its bench runs take minutes (about 250 s in all).
+# Under the sanitizers its bench runs take minutes (about 250 s in all). In
+# the default build it is an `extended` test (CI's stage after the default
+# suite), since it runs there anyway, instrumented.
 set_tests_properties(tools.output_files_whole_or_refused PROPERTIES TIMEOUT 1800)
+if(NOT SC_SANITIZE)
+  set_tests_properties(tools.output_files_whole_or_refused PROPERTIES LABELS "tools;extended")
+endif()
