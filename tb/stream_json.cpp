@@ -19,7 +19,7 @@ StreamRequest parse_stream_json(const std::string& text) {
   constexpr double kAny = 1e300;  // the planner checks the ranges and names them
   StreamRequest r;
   json_object("stream", j);
-  json_known_keys("stream", j, {"_comment", "limits", "moves"});
+  json_known_keys("stream", j, {"_comment", "limits", "moves", "soft_limits", "start_position"});
   if (!j.contains("limits")) throw Error("limits", "missing", "needs {\"a_max\", \"j_max\", \"v_max\"}");
   if (!j.contains("moves")) throw Error("moves", "missing", "needs an array of moves");
   const nlohmann::json& l = json_object("limits", j["limits"]);
@@ -30,6 +30,27 @@ StreamRequest parse_stream_json(const std::string& text) {
   r.limits.a_max = json_real("limits.a_max", l["a_max"], 0, kAny);
   r.limits.j_max = json_real("limits.j_max", l["j_max"], 0, kAny);
   r.limits.v_max = json_real("limits.v_max", l["v_max"], 0, kAny);
+  constexpr int64_t kPos = scurve::PlannerLimits::kMaxPosition;
+  if (j.contains("start_position")) {
+    r.limits.start_position = json_int("start_position", j["start_position"], -kPos, kPos);
+  }
+  if (j.contains("soft_limits")) {
+    const nlohmann::json& w = json_object("soft_limits", j["soft_limits"]);
+    json_known_keys("soft_limits", w, {"min", "max", "axis"});
+    if (!w.contains("min") && !w.contains("max")) throw Error("soft_limits", shown(w), "needs \"min\" and/or \"max\"");
+    scurve::SoftLimits sl;
+    if (w.contains("min")) sl.min_pos = json_int("soft_limits.min", w["min"], -kPos, kPos);
+    if (w.contains("max")) sl.max_pos = json_int("soft_limits.max", w["max"], -kPos, kPos);
+    if (w.contains("axis")) {
+      sl.axis = parse_name("soft_limits.axis", json_string("soft_limits.axis", w["axis"]),
+                           scurve::SoftLimits::kMaxAxisName);
+    }
+    if (sl.min_pos && sl.max_pos && *sl.min_pos > *sl.max_pos) {
+      throw Error("soft_limits.min", std::to_string(*sl.min_pos),
+                  fmt::format("must be <= soft_limits.max={}", *sl.max_pos));
+    }
+    r.limits.soft_limits = sl;
+  }
   const nlohmann::json& ms = json_array("moves", j["moves"]);
   if (ms.empty()) throw Error("moves", "[]", "needs at least one move");
   for (size_t i = 0; i < ms.size(); ++i) {

@@ -59,6 +59,28 @@ check_bad "json-out=$tmp: is a directory" plan --distance 100 --v-cruise 100 --a
 check_bad "distance=''" plan --distance= --v-cruise 100 --a-max 500 --j-max 2500
 check_bad "distance=''" plan --distance= 100 --v-cruise 100 --a-max 500 --j-max 2500
 check_bad "json=false: a switch takes no value" plan --distance 100 --v-cruise 100 --a-max 500 --j-max 2500 --json=false
+# Soft limits: the window flags are decimal integers, min <= max; a target
+# beyond the window is refused naming the axis, the target and the limit
+# (sim plans through the same flags); a target on the limit is planned and
+# the JSON reports the window and the target.
+check_bad "soft-max=abc: must be an integer in" plan --distance 100 --v-cruise 100 --a-max 500 --j-max 2500 --soft-max abc
+check_bad "soft-min=5: must be <= soft-max=1" plan --distance 100 --v-cruise 100 --a-max 500 --j-max 2500 \
+  --soft-min 5 --soft-max 1
+check_bad "start-pos=0x10" plan --distance 100 --v-cruise 100 --a-max 500 --j-max 2500 --start-pos 0x10
+check_bad "axis=a b: must be 1 to 32 characters" plan --distance 100 --v-cruise 100 --a-max 500 --j-max 2500 \
+  --soft-max 10 --axis "a b"
+check_bad "axis x: target position 1200 is beyond soft limit max=1000 pulses (start 200, distance +1000)" \
+  plan --distance 1000 --v-cruise 3000 --a-max 500 --j-max 2500 --start-pos 200 --soft-max 1000
+check_bad "axis z: target position -1 is beyond soft limit min=0 pulses" \
+  sim --distance -11 --v-cruise 3000 --a-max 500 --j-max 2500 --start-pos 10 --soft-min 0 --axis z
+"$scurve" plan --distance 1000 --v-cruise 3000 --a-max 500 --j-max 2500 --start-pos 200 --soft-max 1200 --json \
+  > "$tmp/plan_window.json"
+python3 - "$tmp/plan_window.json" <<'PY'
+import json, sys
+p = json.load(open(sys.argv[1]))
+assert p["pulses"] == 1000 and p["start_position"] == 200 and p["target_position"] == 1200, p
+assert p["soft_limits"] == {"axis": "x", "min": None, "max": 1200}, p["soft_limits"]
+PY
 
 # --json-out: regs writes its JSON too; a failed write (file-size limit) is
 # exit 2 and leaves no partial file.
@@ -162,6 +184,16 @@ printf '{"limits": {"a_max": 2e5, "j_max": 2e7, "v_max": 2e4}, "moves": [' > "$t
 check_bad "not JSON" stream "$tmp/s5.json"
 check_bad "FILE=$tmp/none.json: cannot read" stream "$tmp/none.json"
 check_bad "no fast-forward" stream "$example" --closed-loop --engine model-fast
+# A stream's window: the running sum from start_position must stay inside.
+window='"start_position": 100, "soft_limits": {"min": 0, "max": MAX, "axis": "y"}'
+printf '{"limits": {"a_max": 2e5, "j_max": 2e7, "v_max": 2e4}, %s, "moves": [{"distance": 1000, "v_cruise": 2e4}, {"distance": 2500, "v_cruise": 2e4}, {"distance": -3600, "v_cruise": 2e4}]}' \
+  "${window/MAX/3600}" > "$tmp/s6.json"
+"$scurve" stream "$tmp/s6.json" --engine model-fast > /dev/null || fail "a stream inside its window was refused"
+printf '{"limits": {"a_max": 2e5, "j_max": 2e7, "v_max": 2e4}, %s, "moves": [{"distance": 1000, "v_cruise": 2e4}, {"distance": 2500, "v_cruise": 2e4}]}' \
+  "${window/MAX/3599}" > "$tmp/s7.json"
+check_bad "moves\[1\]: axis y: move 1: target position 3600 is beyond soft limit max=3599" stream "$tmp/s7.json"
+printf '{"limits": {"a_max": 2e5, "j_max": 2e7, "v_max": 2e4}, "soft_limits": {"min": 5, "max": 1}, "moves": [{"distance": 5, "v_cruise": 100}]}' > "$tmp/s8.json"
+check_bad "soft_limits.min=5: must be <= soft_limits.max=1" stream "$tmp/s8.json"
 # scurve stream --closed-loop: the closed-loop example ends every move on the
 # running sum, in position; its reference reaches every boundary at the same
 # clock as the open-loop core's (the reference does not depend on the loop).

@@ -42,11 +42,12 @@ class HostCommandsImpl : public HostCommands {
     const auto r = plan_flags(pf_);
     if (const auto* e = std::get_if<Error>(&r)) return bad_input(e->message);
     const Plan& p = std::get<Plan>(r);
-    const nlohmann::json j = plan_to_json(p);
+    const MoveRequest request = to_request(pf_);
+    const nlohmann::json j = plan_to_json(p, request);
     if (pf_.json) {
       std::cout << j.dump(2) << "\n";
     } else {
-      std::cout << plan_to_table(p);
+      std::cout << plan_to_table(p, request);
     }
     if (!write_json_file(pf_.json_out, j)) return bad_input("--json-out: cannot write " + pf_.json_out);
     return 0;

@@ -1,5 +1,6 @@
 // scurve (host build): plan S-curve moves and encode them for the board.
 //   scurve plan --distance L --v-start VS --v-cruise VC --v-end VE --a-max A --j-max J [--clock-hz F] [--json]
+//               [--start-pos P] [--soft-min P] [--soft-max P] [--axis NAME]
 //   scurve regs (same move flags) [--uart] [--no-start] [--closed-loop] [--json]
 // Exit codes: 0 ok, 2 bad input (one line on stderr).
 #include <CLI/CLI.hpp>

@@ -76,6 +76,24 @@ void add_move_flags(CLI::App* app, MoveFlags& f, std::vector<CLI::Option*>* move
                      ->expected(4));
   opts.push_back(app->add_flag("--adjust-end-speed", f.adjust_end_speed,
                                "use the closest reachable end speed instead of failing"));
+  const int64_t max_pos = PlannerLimits::kMaxPosition;
+  opts.push_back(int_flag(app, "--start-pos", f.start_pos, -max_pos, max_pos,
+                          "position the move starts at, pulses (default 0; the window's reference)"));
+  opts.push_back(int_flag(app, "--soft-min", f.soft_min, -max_pos, max_pos,
+                          "soft limit: lowest position the move may reach, pulses (default: unbounded)"));
+  opts.push_back(int_flag(app, "--soft-max", f.soft_max, -max_pos, max_pos,
+                          "soft limit: highest position the move may reach, pulses (default: unbounded)"));
+  opts.push_back(app->add_option_function<std::string>(
+                        "--axis",
+                        [&f](const std::string& v) {
+                          try {
+                            f.axis = input::parse_name("axis", v, SoftLimits::kMaxAxisName);
+                          } catch (const input::Error& e) {
+                            throw CLI::ValidationError(e.what());
+                          }
+                        },
+                        "axis name in soft-limit errors (default x)")
+                     ->multi_option_policy(CLI::MultiOptionPolicy::TakeLast));
   if (move_opts) move_opts->insert(move_opts->end(), opts.begin(), opts.end());
   add_timing_flags(app, f);
 }
@@ -147,6 +165,8 @@ MoveRequest to_request(const MoveFlags& f) {
   r.kind = f.profile == "trapezoid" ? ProfileKind::Trapezoid : ProfileKind::SCurve;
   if (f.jerks.size() == 4) r.jerks = std::array<double, 4>{f.jerks[0], f.jerks[1], f.jerks[2], f.jerks[3]};
   r.adjust_end_speed = f.adjust_end_speed;
+  r.start_position = f.start_pos;
+  if (f.soft_min || f.soft_max) r.soft_limits = SoftLimits{f.axis, f.soft_min, f.soft_max};
   return r;
 }
 
@@ -165,6 +185,11 @@ std::string check_move_flags(const MoveFlags& f) {
   if (!f.distance_given) return "--distance: required (the move length in pulses, sign = direction)";
   if (!f.jerks.empty() && f.profile != "scurve") {
     return fmt::format("--jerks: the four jerks shape an S-curve; --profile={} has none", f.profile);
+  }
+  if (f.soft_min && f.soft_max && *f.soft_min > *f.soft_max) {
+    return input::Error("soft-min", std::to_string(*f.soft_min),
+                        fmt::format("must be <= soft-max={} (the window is [soft-min, soft-max])", *f.soft_max))
+        .what();
   }
   return {};
 }

@@ -64,4 +64,33 @@ std::string plan_to_table(const Plan& p) {
   return s;
 }
 
+namespace {
+
+bool has_window(const MoveRequest& r) { return r.soft_limits || r.start_position != 0; }
+
+}  // namespace
+
+nlohmann::json plan_to_json(const Plan& p, const MoveRequest& request) {
+  nlohmann::json j = plan_to_json(p);
+  if (!has_window(request)) return j;
+  j["start_position"] = request.start_position;
+  j["target_position"] = request.start_position + p.distance;
+  if (const auto& w = request.soft_limits) {
+    const auto bound = [](const std::optional<int64_t>& b) { return b ? nlohmann::json(*b) : nlohmann::json(nullptr); };
+    j["soft_limits"] = {{"axis", w->axis}, {"min", bound(w->min_pos)}, {"max", bound(w->max_pos)}};
+  }
+  return j;
+}
+
+std::string plan_to_table(const Plan& p, const MoveRequest& request) {
+  std::string s = plan_to_table(p);
+  if (!has_window(request)) return s;
+  s += fmt::format("start position {}  target {}", request.start_position, request.start_position + p.distance);
+  if (const auto& w = request.soft_limits) {
+    const auto bound = [](const std::optional<int64_t>& b) { return b ? std::to_string(*b) : std::string("none"); };
+    s += fmt::format("  axis {} soft limits min {} max {}", w->axis, bound(w->min_pos), bound(w->max_pos));
+  }
+  return s + " (pulses)\n";
+}
+
 }  // namespace scurve::cli

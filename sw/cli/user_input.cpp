@@ -106,6 +106,18 @@ double parse_real(const std::string& param, std::string_view text, double lo, do
   return v;
 }
 
+std::string parse_name(const std::string& param, std::string_view text, size_t max_len) {
+  const std::string given(text);
+  const std::string rule = fmt::format("1 to {} characters of A-Z a-z 0-9 _ - .", max_len);
+  if (text.empty()) throw Error(param, "''", "required, " + rule);
+  const bool chars_ok = std::all_of(text.begin(), text.end(), [](char c) {
+    return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_' || c == '-' ||
+           c == '.';
+  });
+  if (!chars_ok || text.size() > max_len) throw Error(param, given, "must be " + rule);
+  return given;
+}
+
 std::string shown(const nlohmann::json& v) {
   std::string s = v.dump();
   if (s.size() > 60) s = s.substr(0, 57) + "...";

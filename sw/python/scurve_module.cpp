@@ -95,10 +95,12 @@ PYBIND11_MODULE(scurve, m) {
       "plan",
       [](const py::kwargs& kw) {
         cli::MoveFlags f;
-        return to_python(cli::plan_to_json(plan_kwargs("plan", kw, f)));
+        const Plan p = plan_kwargs("plan", kw, f);
+        return to_python(cli::plan_to_json(p, cli::to_request(f)));
       },
       "Plan a move: keyword arguments as the flags of `scurve plan` (distance, v_start, v_cruise, v_end, "
-      "a_max, j_max, profile, jerks, adjust_end_speed, pulse_high, pulse_low, dir_setup, dir_hold, clock_hz). "
+      "a_max, j_max, profile, jerks, adjust_end_speed, start_pos, soft_min, soft_max, axis, pulse_high, pulse_low, "
+      "dir_setup, dir_hold, clock_hz). "
       "Returns the dict `scurve plan --json` prints; raises scurve.Error.");
 
   m.def(

@@ -515,9 +515,90 @@ const char* phase_name(Phase p) {
   return "?";
 }
 
+namespace detail {
+
 namespace {
 
-// Limits checked before solving (clock, timing, distance, speeds, a_max, jerks).
+bool axis_name_ok(const std::string& name) {
+  if (name.empty() || name.size() > SoftLimits::kMaxAxisName) return false;
+  for (const char c : name) {
+    const bool ok = (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_' ||
+                    c == '-' || c == '.';
+    if (!ok) return false;
+  }
+  return true;
+}
+
+// A name as given, control and non-ASCII bytes as \xNN (the message stays one line).
+std::string shown_name(const std::string& name) {
+  std::string out;
+  for (const char c : name.substr(0, 64)) {
+    const auto u = static_cast<unsigned char>(c);
+    out += (u < 0x20 || u >= 0x7f) ? fmt::format("\\x{:02x}", u) : std::string(1, c);
+  }
+  return name.size() > 64 ? out + "..." : out;
+}
+
+std::optional<Error> check_position(const char* name, int64_t v) {
+  if (v >= -PlannerLimits::kMaxPosition && v <= PlannerLimits::kMaxPosition) return std::nullopt;
+  return Error{name, fmt::format("{}={}: exceeds the limit +-{} pulses", name, v, PlannerLimits::kMaxPosition)};
+}
+
+}  // namespace
+
+std::optional<Error> check_window_fields(const std::optional<SoftLimits>& window, int64_t start_position) {
+  if (auto e = check_position("start_position", start_position)) return e;
+  if (!window) return std::nullopt;
+  const SoftLimits& w = *window;
+  if (!axis_name_ok(w.axis)) {
+    return Error{"soft_limits.axis",
+                 fmt::format("soft_limits.axis='{}': must be 1 to {} characters of A-Z a-z 0-9 _ - .",
+                             shown_name(w.axis), SoftLimits::kMaxAxisName)};
+  }
+  if (w.min_pos) {
+    if (auto e = check_position("soft_limits.min_pos", *w.min_pos)) return e;
+  }
+  if (w.max_pos) {
+    if (auto e = check_position("soft_limits.max_pos", *w.max_pos)) return e;
+  }
+  if (w.min_pos && w.max_pos && *w.min_pos > *w.max_pos) {
+    return Error{"soft_limits.min_pos",
+                 fmt::format("axis {}: soft limit min={} is above max={} pulses: needs min <= max", w.axis,
+                             *w.min_pos, *w.max_pos)};
+  }
+  return std::nullopt;
+}
+
+std::optional<Error> check_window(const SoftLimits& w, i128 start, int64_t distance, std::string_view label) {
+  const i128 target = start + distance;
+  const bool above = w.max_pos && target > *w.max_pos;
+  const bool below = w.min_pos && target < *w.min_pos;
+  if (!above && !below) return std::nullopt;
+  const char* side = above ? "max" : "min";
+  const int64_t limit = above ? *w.max_pos : *w.min_pos;
+  // From a start beyond the same limit, a move back toward the window is
+  // accepted; one further out is refused naming the start.
+  const bool start_beyond = above ? start > limit : start < limit;
+  if (start_beyond) {
+    const bool closer = above ? target < start : target > start;
+    if (closer) return std::nullopt;
+    return Error{"start_position",
+                 fmt::format("axis {}: {}start position {} is already beyond soft limit {}={} pulses and target "
+                             "position {} is further out (distance {:+}): from there only moves back toward the "
+                             "window are accepted",
+                             w.axis, label, to_string_i128(start), side, limit, to_string_i128(target), distance)};
+  }
+  return Error{above ? "soft_limits.max_pos" : "soft_limits.min_pos",
+               fmt::format("axis {}: {}target position {} is beyond soft limit {}={} pulses (start {}, distance {:+})",
+                           w.axis, label, to_string_i128(target), side, limit, to_string_i128(start), distance)};
+}
+
+}  // namespace detail
+
+namespace {
+
+// Limits checked before solving (clock, timing, distance, speeds, a_max,
+// jerks, the soft limits).
 std::optional<PlanError> check_request(const MoveRequest& req, const PulseTiming& timing, Clock clock) {
   if (std::string e = check_clock(clock); !e.empty()) return PlanError{"clock_hz", e};
   if (timing.high < 1) return PlanError{"pulse_high", "pulse_high=0: must be >= 1 clock"};
@@ -558,7 +639,8 @@ std::optional<PlanError> check_request(const MoveRequest& req, const PulseTiming
       return *e;
     }
   }
-
+  if (auto e = check_window_fields(req.soft_limits, req.start_position)) return *e;
+  if (req.soft_limits) return check_window(*req.soft_limits, req.start_position, req.distance);
   return std::nullopt;
 }
 

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <variant>
 #include <vector>
 
@@ -153,5 +154,13 @@ double closed_form_travel(double x, double y, double a, double j);
 // error names the parameter only (for searches that discard it).
 PlanResult plan_continuation(const JunctionState& start, int64_t distance, double v_cruise, i128 ve,
                              const Limits& lim, Clock clock, bool messages = true);
+
+// The fields of a window (axis name, bounds within +-kMaxPosition, min <=
+// max) and a start position, before any move is checked against them.
+std::optional<Error> check_window_fields(const std::optional<SoftLimits>& window, int64_t start_position);
+// The window rule of MoveRequest::soft_limits for a move of `distance`
+// pulses from `start` (a move never reverses, so its target is its extreme
+// position); `label` ("move 3: ") follows the axis in the message.
+std::optional<Error> check_window(const SoftLimits& window, i128 start, int64_t distance, std::string_view label = {});
 
 }  // namespace scurve::detail

@@ -46,8 +46,11 @@ std::optional<Error> check_stream_config(Clock clock, const PulseTiming& timing,
   };
   if (auto e = range("a_max", l.a_max, accel_range(clock), "pulses/s^2")) return e;
   if (auto e = range("j_max", l.j_max, jerk_range(clock), "pulses/s^3")) return e;
-  return check_speed("v_max", l.v_max, PlannerLimits::kMinCruise, step_rate_limit(timing, clock),
-                     "step-rate limit");
+  if (auto e = check_speed("v_max", l.v_max, PlannerLimits::kMinCruise, step_rate_limit(timing, clock),
+                           "step-rate limit")) {
+    return e;
+  }
+  return detail::check_window_fields(l.soft_limits, l.start_position);
 }
 
 // Largest dv in [0, dv_max] whose closed-form travel from speed v is <= budget.
@@ -114,6 +117,7 @@ StreamPlanner::StreamPlanner(Clock clock, PulseTiming timing, StreamLimits limit
                                                     to_hex_u128(start_frac, 128), hw::FracBits)};
   }
   state_.frac = start_frac;
+  appended_end_ = limits.start_position;
   if (config_error_) return;
   MoveRequest req;
   req.a_max = limits.a_max;
@@ -132,7 +136,10 @@ std::optional<Error> StreamPlanner::check_move(const StreamMove& m) const {
                  fmt::format("distance={}: exceeds the limit +-{} pulses", m.distance, PlannerLimits::kMaxDistance)};
   }
   if (auto e = check_speed("v_cruise", m.v_cruise, PlannerLimits::kMinCruise, limits_.v_max, "v_max")) return e;
-  return check_speed("v_junction_max", m.v_junction_max, 0, limits_.v_max, "v_max");
+  if (auto e = check_speed("v_junction_max", m.v_junction_max, 0, limits_.v_max, "v_max")) return e;
+  if (!limits_.soft_limits) return std::nullopt;
+  const uint64_t index = next_index_ + queue_.size();  // the index this move gets
+  return detail::check_window(*limits_.soft_limits, appended_end_, m.distance, fmt::format("move {}: ", index));
 }
 
 // Junction speeds found by search below `top` are multiples of this: the
@@ -236,6 +243,7 @@ bool StreamPlanner::forward_pass(size_t from) {
 
 std::optional<Error> StreamPlanner::append(const StreamMove& move) {
   if (auto e = check_move(move)) return e;
+  appended_end_ += move.distance;
   const Limits& lim = solver_->lim;
   Queued q;
   q.move = move;

@@ -2,10 +2,14 @@
 // moves, trapezoid, asymmetric jerks, and the errors for bad requests.
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
+#include <cstdio>
+#include <random>
 #include <set>
 
 #include "paper_moves.h"
+#include "random_moves.h"
 #include "scurve/planner.h"
 
 using namespace scurve;
@@ -305,4 +309,216 @@ TEST(PlannerErrors, RaisingTheEndSpeedWhenBrakingIsTooShortIsExplicitOnly) {
   EXPECT_TRUE(p.end_speed_adjusted);
   EXPECT_GT(p.v_end_used, 0.0);
   expect_exact_and_within(p, r);
+}
+
+// ---- soft limits (the travel window) -------------------------------------
+
+namespace {
+
+MoveRequest windowed(int64_t start, int64_t distance, std::optional<int64_t> min_pos, std::optional<int64_t> max_pos,
+                     const std::string& axis = "x") {
+  MoveRequest r = move(distance, 0, 3000, 0);
+  r.start_position = start;
+  r.soft_limits = SoftLimits{axis, min_pos, max_pos};
+  return r;
+}
+
+// The table never reverses, so the target is the move's extreme position:
+// executed, it moves exactly `distance` steps with a speed >= 0 in the move
+// direction on every clock.
+void expect_monotone_to_target(const Plan& p, const MoveRequest& r) {
+  const TableReport rep = run_table(p.segments, p.pos_frac0, r.distance < 0 ? -1 : 1);
+  ASSERT_TRUE(rep.ok) << rep.error;
+  EXPECT_EQ(rep.steps, r.distance);
+  EXPECT_GE(rep.min_signed_vel, 0) << "the move reverses: its target is not its extreme position";
+}
+
+}  // namespace
+
+TEST(SoftLimits, TargetBeyondMaxIsRefusedNamingAxisTargetAndLimit) {
+  const PlanError e = plan_err(windowed(200, 1000, 0, 1000));
+  EXPECT_EQ(e.parameter, "soft_limits.max_pos");
+  EXPECT_EQ(e.message, "axis x: target position 1200 is beyond soft limit max=1000 pulses (start 200, distance +1000)");
+}
+
+TEST(SoftLimits, TargetBeyondMinIsRefusedNamingAxisTargetAndLimit) {
+  const PlanError e = plan_err(windowed(200, -250, -49, 1000, "z"));
+  EXPECT_EQ(e.parameter, "soft_limits.min_pos");
+  EXPECT_EQ(e.message, "axis z: target position -50 is beyond soft limit min=-49 pulses (start 200, distance -250)");
+}
+
+TEST(SoftLimits, TargetExactlyOnEitherLimitIsAcceptedAndTheTableIsUnchanged) {
+  for (const MoveRequest& r : {windowed(200, 800, 0, 1000), windowed(200, -200, 0, 1000), windowed(0, 1, 0, 1),
+                               windowed(-5, -1, -6, -6)}) {
+    const Plan p = plan_ok(r);
+    expect_monotone_to_target(p, r);
+    MoveRequest plain = r;
+    plain.soft_limits.reset();
+    EXPECT_EQ(p.segments, plan_ok(plain).segments) << "the window only accepts or refuses";
+  }
+  // One pulse further is refused on either side.
+  EXPECT_EQ(plan_err(windowed(200, 801, 0, 1000)).parameter, "soft_limits.max_pos");
+  EXPECT_EQ(plan_err(windowed(200, -201, 0, 1000)).parameter, "soft_limits.min_pos");
+}
+
+TEST(SoftLimits, EitherSideAloneLeavesTheOtherUnbounded) {
+  plan_ok(windowed(0, -2000000, std::nullopt, 10));
+  plan_ok(windowed(0, 2000000, -10, std::nullopt));
+  EXPECT_EQ(plan_err(windowed(0, 11, std::nullopt, 10)).parameter, "soft_limits.max_pos");
+  EXPECT_EQ(plan_err(windowed(0, -11, -10, std::nullopt)).parameter, "soft_limits.min_pos");
+  plan_ok(windowed(0, 5000, std::nullopt, std::nullopt));  // a window without bounds
+}
+
+TEST(SoftLimits, FromBeyondALimitOnlyMovesBackTowardTheWindowAreAccepted) {
+  // Start 1100 beyond max=1000: back toward the window (still beyond, or
+  // into it) is accepted; further out is refused naming the start.
+  plan_ok(windowed(1100, -50, 0, 1000));
+  plan_ok(windowed(1100, -600, 0, 1000));
+  PlanError e = plan_err(windowed(1100, 100, 0, 1000));
+  EXPECT_EQ(e.parameter, "start_position");
+  EXPECT_EQ(e.message,
+            "axis x: start position 1100 is already beyond soft limit max=1000 pulses and target position 1200 is "
+            "further out (distance +100): from there only moves back toward the window are accepted");
+  // Back across the whole window and out the other side: the target is refused.
+  e = plan_err(windowed(1100, -1200, 0, 1000));
+  EXPECT_EQ(e.parameter, "soft_limits.min_pos");
+  EXPECT_NE(e.message.find("target position -100 is beyond soft limit min=0"), std::string::npos) << e.message;
+  // The same below min.
+  plan_ok(windowed(-30, 20, 0, 1000));
+  e = plan_err(windowed(-30, -1, 0, 1000));
+  EXPECT_EQ(e.parameter, "start_position");
+  EXPECT_NE(e.message.find("start position -30 is already beyond soft limit min=0"), std::string::npos) << e.message;
+}
+
+TEST(SoftLimits, PlanFromAppliesTheSameWindow) {
+  const Planner planner;
+  JunctionState start;
+  start.velocity = i128(std::floor(100 * vel_lsb_per_unit(Clock{})));
+  start.frac = kOne / 2;
+  MoveRequest r = windowed(200, 1000, 0, 1000);
+  PlanResult res = planner.plan_from(start, r, PulseTiming{});
+  ASSERT_TRUE(std::holds_alternative<Error>(res));
+  EXPECT_EQ(std::get<Error>(res).parameter, "soft_limits.max_pos");
+  r.distance = 800;
+  res = planner.plan_from(start, r, PulseTiming{});
+  ASSERT_TRUE(std::holds_alternative<Plan>(res)) << std::get<Error>(res).message;
+  const Plan& p = std::get<Plan>(res);
+  const TableReport rep = run_table(p.segments, start.frac, 1);
+  EXPECT_EQ(rep.steps, 800);
+  EXPECT_GE(rep.min_signed_vel, 0);
+}
+
+TEST(SoftLimits, BadWindowFieldsAreNamedBeforeSolving) {
+  struct Case {
+    MoveRequest r;
+    const char* param;
+    const char* text;
+  };
+  const int64_t too_far = PlannerLimits::kMaxPosition + 1;
+  MoveRequest far_start = move(100, 0, 3000, 0);
+  far_start.start_position = -too_far;  // checked without a window too
+  const Case cases[] = {
+      {windowed(0, 100, 5, 1), "soft_limits.min_pos",
+       "axis x: soft limit min=5 is above max=1 pulses: needs min <= max"},
+      {windowed(0, 100, std::nullopt, too_far), "soft_limits.max_pos",
+       "soft_limits.max_pos=4611686018427387905: exceeds the limit +-4611686018427387904 pulses"},
+      {windowed(0, 100, -too_far, 10), "soft_limits.min_pos", "exceeds the limit"},
+      {far_start, "start_position", "start_position=-4611686018427387905: exceeds the limit"},
+      {windowed(0, 100, 0, 10, ""), "soft_limits.axis", "soft_limits.axis='': must be 1 to 32 characters"},
+      {windowed(0, 100, 0, 10, "x y"), "soft_limits.axis", "soft_limits.axis='x y'"},
+      {windowed(0, 100, 0, 10, "a\nb"), "soft_limits.axis", "soft_limits.axis='a\\x0ab'"},
+      {windowed(0, 100, 0, 10, std::string(33, 'a')), "soft_limits.axis", "must be 1 to 32"},
+  };
+  for (const Case& c : cases) {
+    const PlanError e = plan_err(c.r);
+    EXPECT_EQ(e.parameter, c.param) << e.message;
+    EXPECT_NE(e.message.find(c.text), std::string::npos) << e.message;
+    EXPECT_EQ(e.message.find('\n'), std::string::npos) << "one line";
+  }
+  plan_ok(windowed(0, 100, 0, 1000, "spindle_2.A-1"));
+  plan_ok(windowed(PlannerLimits::kMaxPosition - 100, 100, std::nullopt, PlannerLimits::kMaxPosition));
+}
+
+// The independent rule: a move is accepted iff its target is inside the
+// window, or it starts beyond a limit and ends closer to it without crossing
+// the other - whenever it is plannable without the window; the window never
+// changes an accepted table.
+TEST(SoftLimits, RandomMovesAreAcceptedIffTheTargetRuleHolds) {
+  std::mt19937_64 g(20261203);
+  const Clock clock{};
+  const Planner planner(clock);
+  std::uniform_int_distribution<int> coin(0, 99);
+  std::uniform_int_distribution<int64_t> start_pos(-1000000000, 1000000000);
+  std::uniform_int_distribution<int64_t> near(-2, 2);
+  const int kMoves = 3000;
+  int plannable = 0, accepted = 0, refused_target = 0, refused_start = 0, from_outside = 0;
+  const auto t0 = std::chrono::steady_clock::now();
+  for (int i = 0; i < kMoves; ++i) {
+    test::RandomRequest rr = test::random_request(g, clock);
+    MoveRequest r = rr.req;
+    r.start_position = start_pos(g);
+    const int64_t target = r.start_position + r.distance;
+    const int64_t span = std::max<int64_t>(4, 2 * (r.distance < 0 ? -r.distance : r.distance));
+    // A bound near the target (on it, a pulse or two off) or anywhere
+    // within twice the distance of it (the start can end up outside).
+    const auto bound = [&]() -> std::optional<int64_t> {
+      const int c = coin(g);
+      if (c < 15) return std::nullopt;
+      if (c < 45) return target + near(g);
+      return target + std::uniform_int_distribution<int64_t>(-span, span)(g);
+    };
+    SoftLimits w{"x", bound(), bound()};
+    if (w.min_pos && w.max_pos && *w.min_pos > *w.max_pos) std::swap(w.min_pos, w.max_pos);
+    r.soft_limits = w;
+
+    const auto inside = [&](int64_t p) { return (!w.min_pos || p >= *w.min_pos) && (!w.max_pos || p <= *w.max_pos); };
+    const bool back_from_above = w.max_pos && r.start_position > *w.max_pos && target < r.start_position &&
+                                 (!w.min_pos || target >= *w.min_pos);
+    const bool back_from_below = w.min_pos && r.start_position < *w.min_pos && target > r.start_position &&
+                                 (!w.max_pos || target <= *w.max_pos);
+    const bool rule = inside(target) || back_from_above || back_from_below;
+    from_outside += !inside(r.start_position);
+
+    MoveRequest plain = r;
+    plain.soft_limits.reset();
+    const PlanResult base = planner.plan(plain, rr.timing);
+    const PlanResult res = planner.plan(r, rr.timing);
+    if (!std::holds_alternative<Plan>(base)) {
+      EXPECT_TRUE(std::holds_alternative<Error>(res)) << "move " << i << ": accepted only with a window";
+      continue;
+    }
+    ++plannable;
+    const Plan& b = std::get<Plan>(base);
+    const TableReport rep = run_table(b.segments, b.pos_frac0, r.distance < 0 ? -1 : 1);
+    ASSERT_TRUE(rep.ok) << rep.error;
+    ASSERT_EQ(rep.steps, r.distance) << "move " << i;
+    ASSERT_GE(rep.min_signed_vel, 0) << "move " << i << " reverses: the target is not its extreme position";
+    if (rule) {
+      ASSERT_TRUE(std::holds_alternative<Plan>(res)) << "move " << i << ": " << std::get<Error>(res).message;
+      EXPECT_EQ(std::get<Plan>(res).segments, b.segments) << "move " << i;
+      ++accepted;
+      continue;
+    }
+    ASSERT_TRUE(std::holds_alternative<Error>(res)) << "move " << i << ": target " << target << " accepted";
+    const Error& e = std::get<Error>(res);
+    const bool by_start = e.parameter == "start_position";
+    (by_start ? refused_start : refused_target)++;
+    const bool above = w.max_pos && target > *w.max_pos;
+    const int64_t limit = above ? *w.max_pos : *w.min_pos;
+    if (!by_start) {
+      EXPECT_EQ(e.parameter, above ? "soft_limits.max_pos" : "soft_limits.min_pos") << e.message;
+    }
+    EXPECT_EQ(e.message.rfind("axis x: ", 0), 0u) << e.message;
+    EXPECT_NE(e.message.find("target position " + std::to_string(target) + " "), std::string::npos) << e.message;
+    EXPECT_NE(e.message.find(std::string(above ? "max=" : "min=") + std::to_string(limit) + " pulses"),
+              std::string::npos)
+        << e.message;
+  }
+  const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  std::printf("[soft limits] %d random moves in %.1f s: %d plannable, %d accepted, %d refused by the target, %d by "
+              "the start (%d started outside the window)\n",
+              kMoves, secs, plannable, accepted, refused_target, refused_start, from_outside);
+  EXPECT_GT(accepted, plannable / 5);
+  EXPECT_GT(refused_target, plannable / 10);
+  EXPECT_GT(refused_start, 10);
 }

@@ -309,6 +309,150 @@ TEST(StreamPlannerErrors, EachBadParameterIsNamedWithValueAndBound) {
   EXPECT_NE(e->message.find("exceeds the limit step-rate limit=200000"), std::string::npos) << e->message;
 }
 
+// ---- soft limits (the travel window) of a stream ---------------------------
+
+namespace {
+
+StreamLimits windowed_limits(int64_t start, std::optional<int64_t> min_pos, std::optional<int64_t> max_pos) {
+  StreamLimits l = kLimits;
+  l.soft_limits = SoftLimits{"x", min_pos, max_pos};
+  l.start_position = start;
+  return l;
+}
+
+// Every row a stream hands out from here on, to compare two streams.
+std::vector<Segment> flushed_rows(StreamPlanner sp) {
+  std::vector<Segment> rows;
+  EXPECT_FALSE(sp.flush());
+  for (const StreamedMove& m : sp.take_ready()) rows.insert(rows.end(), m.segments.begin(), m.segments.end());
+  return rows;
+}
+
+}  // namespace
+
+TEST(StreamSoftLimits, RefusedAppendNamesTheMoveAndLeavesTheStreamUnchanged) {
+  const Clock clock{};
+  const StreamLimits limits = windowed_limits(200, 0, 10000);
+  StreamPlanner sp(clock, PulseTiming{}, limits);
+  ASSERT_FALSE(sp.append({5000, 3000, 3000}));
+  ASSERT_FALSE(sp.append({3000, 3000, 3000}));
+  const StreamPlanner before = sp;
+  const auto junctions = sp.queued_junctions();
+  const size_t queued = sp.queued();
+
+  auto e = sp.append({2000, 3000, 3000});  // 200 + 5000 + 3000 + 2000 = 10200
+  ASSERT_TRUE(e);
+  EXPECT_EQ(e->parameter, "soft_limits.max_pos");
+  EXPECT_EQ(e->message,
+            "axis x: move 2: target position 10200 is beyond soft limit max=10000 pulses (start 8200, distance +2000)");
+  e = sp.append({-8201, 3000, 3000});
+  ASSERT_TRUE(e);
+  EXPECT_EQ(e->parameter, "soft_limits.min_pos");
+  EXPECT_EQ(e->message,
+            "axis x: move 2: target position -1 is beyond soft limit min=0 pulses (start 8200, distance -8201)");
+  EXPECT_EQ(sp.queued(), queued);
+  EXPECT_EQ(sp.queued_junctions(), junctions);
+  EXPECT_EQ(sp.position(), before.position());
+  EXPECT_EQ(flushed_rows(sp), flushed_rows(before)) << "a refused append changed the stream";
+
+  // Later appends still work, up to the limit exactly, and take the next index.
+  ASSERT_FALSE(sp.append({1800, 3000, 3000}));   // 10000: on the limit
+  ASSERT_FALSE(sp.append({-10000, 3000, 3000}));  // 0: on the other limit
+  ASSERT_FALSE(sp.flush());
+  StreamExecution ex(clock, limits);
+  for (const StreamedMove& m : sp.take_ready()) ex.run(m);
+  ASSERT_FALSE(HasFatalFailure());
+  EXPECT_EQ(ex.moves(), 4u);
+  EXPECT_EQ(ex.position(), -200) << "positions count from the stream's start";
+  ex.expect_at_rest();
+}
+
+TEST(StreamSoftLimits, StreamStartingBeyondALimitMayOnlyComeBack) {
+  StreamPlanner sp(Clock{}, PulseTiming{}, windowed_limits(-500, 0, 10000));
+  auto e = sp.append({-1, 3000, 3000});
+  ASSERT_TRUE(e);
+  EXPECT_EQ(e->parameter, "start_position");
+  EXPECT_NE(e->message.find("axis x: move 0: start position -500 is already beyond soft limit min=0"),
+            std::string::npos)
+      << e->message;
+  ASSERT_FALSE(sp.append({300, 3000, 3000}));  // -200: closer, still outside
+  ASSERT_FALSE(sp.append({300, 3000, 3000}));  // 100: inside
+  e = sp.append({-101, 3000, 3000});           // back out: refused
+  ASSERT_TRUE(e);
+  EXPECT_EQ(e->parameter, "soft_limits.min_pos");
+  ASSERT_FALSE(sp.flush());
+  EXPECT_EQ(sp.take_ready().size(), 2u);
+}
+
+TEST(StreamSoftLimits, BadWindowIsRefusedByEveryAppendNamingTheField) {
+  StreamPlanner sp(Clock{}, PulseTiming{}, windowed_limits(0, 5, 1));
+  auto e = sp.append({10, 1000, 1000});
+  ASSERT_TRUE(e);
+  EXPECT_EQ(e->parameter, "soft_limits.min_pos");
+  EXPECT_NE(e->message.find("min=5 is above max=1"), std::string::npos) << e->message;
+  StreamLimits far = kLimits;
+  far.start_position = PlannerLimits::kMaxPosition + 1;
+  StreamPlanner sp2(Clock{}, PulseTiming{}, far);
+  e = sp2.append({10, 1000, 1000});
+  ASSERT_TRUE(e);
+  EXPECT_EQ(e->parameter, "start_position");
+}
+
+TEST(StreamSoftLimits, RunningSumNeverLeavesTheWindowOverRandomStreams) {
+  // Random streams inside random windows: each append is accepted iff its
+  // end (start + running sum) is inside the window; the accepted moves are
+  // planned and executed as one stream, exact and without reversal inside a
+  // move (so the ends are the extremes).
+  const Clock clock{};
+  std::mt19937_64 g(20261204);
+  std::uniform_int_distribution<int64_t> width(2000, 400000);
+  uint64_t appended = 0, refused = 0;
+  for (int stream = 0; stream < 20; ++stream) {
+    const int64_t lo = std::uniform_int_distribution<int64_t>(-1000000, 1000000)(g);
+    const int64_t hi = lo + width(g);
+    const int64_t start = std::uniform_int_distribution<int64_t>(lo, hi)(g);
+    StreamLimits limits{2000, 20000, 20000};
+    limits.soft_limits = SoftLimits{"y", lo, hi};
+    limits.start_position = start;
+    StreamPlanner sp(clock, PulseTiming{}, limits);
+    StreamExecution ex(clock, limits);
+    int64_t pos = start;  // absolute, of the accepted moves
+    for (const StreamMove& m : random_moves(g, 300, limits.v_max)) {
+      const int64_t target = pos + m.distance;
+      const bool inside = target >= lo && target <= hi;
+      auto e = sp.append(m);
+      ASSERT_EQ(!e, inside) << "stream " << stream << ": target " << target << " in [" << lo << ", " << hi
+                            << "]: " << (e ? e->message : "accepted");
+      if (e) {
+        ++refused;
+        EXPECT_NE(e->message.find("axis y: move " + std::to_string(sp.queued() + ex.moves())), std::string::npos)
+            << e->message;
+        continue;
+      }
+      ++appended;
+      pos = target;
+      for (const StreamedMove& r : sp.take_ready()) {
+        ex.run(r);
+        ASSERT_FALSE(HasFatalFailure());
+        const int64_t at = start + r.end_position;
+        ASSERT_TRUE(at >= lo && at <= hi) << "move " << r.index << " ends at " << at;
+      }
+    }
+    ASSERT_FALSE(sp.flush());
+    for (const StreamedMove& r : sp.take_ready()) {
+      ex.run(r);
+      ASSERT_FALSE(HasFatalFailure());
+      const int64_t at = start + r.end_position;
+      ASSERT_TRUE(at >= lo && at <= hi) << "move " << r.index << " ends at " << at;
+    }
+    ex.expect_at_rest();
+    EXPECT_EQ(start + ex.position(), pos);
+  }
+  std::printf("[stream soft limits] 20 random streams: %llu moves appended, %llu refused\n",
+              (unsigned long long)appended, (unsigned long long)refused);
+  EXPECT_GT(refused, appended / 20);
+}
+
 TEST(PlanFrom, ContinuesAnExactStateIntoTheEndWindow) {
   const Planner planner;
   MoveRequest req;

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -19,6 +20,18 @@
 namespace scurve {
 
 enum class ProfileKind { SCurve, Trapezoid };
+
+// The travel window of one axis (soft limits), inclusive, in pulses; an
+// empty side is unbounded. Checked before solving: the axis name (quoted in
+// messages) is 1 to kMaxAxisName characters of A-Z a-z 0-9 _ - ., each
+// bound within +-PlannerLimits::kMaxPosition, min_pos <= max_pos; an error
+// names the field ("soft_limits.min_pos", ...).
+struct SoftLimits {
+  static constexpr size_t kMaxAxisName = 32;
+  std::string axis = "x";
+  std::optional<int64_t> min_pos;
+  std::optional<int64_t> max_pos;
+};
 
 struct MoveRequest {
   int64_t distance = 0;   // pulses; the sign is the direction
@@ -34,6 +47,23 @@ struct MoveRequest {
   // Paper 000's rule: when v_end cannot be reached within the distance, use
   // the closest reachable end speed instead of failing. Off by default.
   bool adjust_end_speed = false;
+  // The window the move must stay in, and where the move starts (pulses,
+  // within +-PlannerLimits::kMaxPosition; the table does not depend on it). A
+  // planned move never reverses (its speed is >= 0 in the move direction
+  // throughout: run_table's min_signed_vel >= 0), so its extreme position is
+  // its target start_position + distance and the window check needs only
+  // the target:
+  //   * a target inside [min_pos, max_pos] is accepted (also from a start
+  //     outside the window: the move goes into it);
+  //   * a target beyond a limit is refused (parameter "soft_limits.max_pos"
+  //     or "soft_limits.min_pos"), naming the axis, the target and the limit:
+  //     "axis x: target position 1200 is beyond soft limit max=1000 pulses
+  //     (start 200, distance +1000)";
+  //   * except from a start already beyond that limit: a move back toward
+  //     the window is accepted (leaving an active limit is allowed), one
+  //     further out is refused naming the start (parameter "start_position").
+  std::optional<SoftLimits> soft_limits;
+  int64_t start_position = 0;
 };
 
 // Accepted bounds (besides the step-rate limit set by the pulse timing, and
@@ -45,6 +75,8 @@ struct PlannerLimits {
   static constexpr double kMinJerk = 10.0, kMaxJerk = 1e11;
   // Slower cruises cannot cover a pulse within the table's 16 rows of 214 s.
   static constexpr double kMinCruise = 1e-3;
+  // Positions (start_position, soft limits): start + distance never overflows.
+  static constexpr int64_t kMaxPosition = int64_t(1) << 62;
 };
 
 // The executor's exact state where one move hands over to the next (the
@@ -90,7 +122,8 @@ class Planner {
  public:
   explicit Planner(Clock clock = Clock{}) : clock_(clock) {}
   // Limits are checked before solving (clock, timing, distance, speeds,
-  // a_max, jerks); the table is re-executed and checked after solving.
+  // a_max, jerks, the soft limits); the table is re-executed and checked
+  // after solving.
   PlanResult plan(const MoveRequest& req, const PulseTiming& timing) const;
 
   // Plans a move that continues an exact executor state (a row stream):
@@ -104,7 +137,7 @@ class Planner {
   // target speed, so end_state.velocity is the requested end speed (in LSB,
   // floored). A start velocity against the move's direction is an error
   // (a reversal needs junction speed 0). No table-size limit is applied
-  // (the stream has no 16-row table).
+  // (the stream has no 16-row table). The soft limits apply as in plan().
   PlanResult plan_from(const JunctionState& start, const MoveRequest& req, const PulseTiming& timing) const;
   Clock clock() const { return clock_; }
 

@@ -35,9 +35,26 @@ namespace scurve {
 
 // Limits of the whole stream (S-curve, symmetric jerk).
 struct StreamLimits {
+  // {a_max, j_max, v_max}: the three limits, the window left out (a
+  // constructor, so that form stays free of missing-initializer warnings).
+  StreamLimits() = default;
+  StreamLimits(double a, double j, double v) : a_max(a), j_max(j), v_max(v) {}
   double a_max = 0;  // pulses/s^2
   double j_max = 0;  // pulses/s^3
   double v_max = 0;  // pulses/s, <= the step-rate limit
+  // The travel window (optional) and the position the stream starts at,
+  // pulses. append() refuses a move whose end, start_position plus the
+  // running sum of the distances, leaves the window, by the rule of
+  // MoveRequest::soft_limits (moves never reverse inside themselves, so
+  // the ends are the extremes; from a start beyond a limit, moves back
+  // toward the window are accepted), naming the move index:
+  //   "axis x: move 3: target position 1200 is beyond soft limit max=1000
+  //    pulses (start 200, distance +1000)"
+  // The positions the stream reports (position(), end_position) count from
+  // the start as the hardware's reference position does: start_position is
+  // not added to them.
+  std::optional<SoftLimits> soft_limits;
+  int64_t start_position = 0;
 };
 
 struct StreamMove {
@@ -53,7 +70,7 @@ struct StreamedMove {
   double v_in = 0, v_out = 0;      // junction speeds, pulses/s
   JunctionState start, end;        // exact executor states
   uint64_t start_clock = 0, end_clock = 0;  // offsets from the stream's start
-  int64_t end_position = 0;        // pulses: the running sum of the distances
+  int64_t end_position = 0;        // pulses: the running sum of the distances (from the start)
 };
 
 class StreamPlanner {
@@ -68,7 +85,8 @@ class StreamPlanner {
                 size_t lookahead = kDefaultLookahead);
 
   // Queues a move and re-plans the junctions it changes. An error (invalid
-  // move or stream limits) leaves the stream unchanged.
+  // move or stream limits, a move that leaves the window) leaves the stream
+  // unchanged.
   std::optional<Error> append(const StreamMove& move);
   // Planned moves whose rows can no longer change, in order (moved out).
   std::vector<StreamedMove> take_ready();
@@ -119,6 +137,7 @@ class StreamPlanner {
   int64_t position_ = 0;
   uint64_t clock_offset_ = 0;
   uint64_t next_index_ = 0;
+  i128 appended_end_ = 0;  // start_position + the distances appended so far
 };
 
 }  // namespace scurve

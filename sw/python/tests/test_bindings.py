@@ -45,6 +45,12 @@ def random_request(rng):
     if rng.random() < 0.1:
         kw["pulse_high"] = rng.randint(1, 100)
         kw["pulse_low"] = rng.randint(1, 100)
+    if rng.random() < 0.1:  # a window: the target inside, on a limit or beyond it
+        kw["start_pos"] = rng.randint(-10**6, 10**6)
+        target = kw["start_pos"] + kw["distance"]
+        kw["soft_max" if rng.random() < 0.5 else "soft_min"] = target + rng.randint(-2, 2)
+        if rng.random() < 0.3:
+            kw["axis"] = rng.choice(["x", "y2", "spindle"])
     # Refused ones: a bad value in one place.
     r = rng.random()
     if r < 0.04:
@@ -117,6 +123,19 @@ class Bindings(unittest.TestCase):
             scurve.plan(distanc=1000)
         with self.assertRaises(scurve.Error):
             scurve.uart_write_frame(3, 0)
+
+    def test_soft_limits_refuse_a_target_beyond_the_window(self):
+        move = dict(distance=1000, v_cruise=3000, a_max=500, j_max=2500)
+        p = scurve.plan(**move, start_pos=200, soft_max=1200)
+        self.assertEqual((p["target_position"], p["soft_limits"]), (1200, {"axis": "x", "min": None, "max": 1200}))
+        with self.assertRaises(scurve.Error) as c:
+            scurve.plan(**move, start_pos=200, soft_max=1000)
+        self.assertEqual(c.exception.parameter, "soft_limits.max_pos")
+        self.assertEqual(str(c.exception),
+                         "axis x: target position 1200 is beyond soft limit max=1000 pulses (start 200, distance +1000)")
+        with self.assertRaises(scurve.Error) as c:
+            scurve.plan(**move, soft_min=5, soft_max=1)
+        self.assertTrue(str(c.exception).startswith("soft-min=5: must be <= soft-max=1"), str(c.exception))
 
     def test_uart_frames_match_the_cli(self):
         out = subprocess.run([SCURVE, "regs", "--distance", "1000", "--v-cruise", "20000", "--a-max", "1e6",

@@ -26,12 +26,18 @@ struct MoveFlags {
   int pulse_high = PulseTiming{}.high, pulse_low = PulseTiming{}.low;
   int dir_setup = PulseTiming{}.setup, dir_hold = PulseTiming{}.hold;
   double clock_hz = Clock::kDefaultHz;
+  // The travel window (MoveRequest::soft_limits): either side alone leaves
+  // the other unbounded; neither: no window.
+  int64_t start_pos = 0;
+  std::optional<int64_t> soft_min, soft_max;
+  std::string axis = "x";
   bool json = false;
   std::string json_out;
 };
 
-// --distance .. --adjust-end-speed (collected in *move_opts if given) and the
-// pulse timing (--pulse-high, --pulse-low, --dir-setup, --dir-hold).
+// --distance .. --adjust-end-speed and the window (--start-pos, --soft-min,
+// --soft-max, --axis), collected in *move_opts if given, and the pulse
+// timing (--pulse-high, --pulse-low, --dir-setup, --dir-hold).
 void add_move_flags(CLI::App* app, MoveFlags& f, std::vector<CLI::Option*>* move_opts = nullptr);
 // The pulse timing alone (--pulse-high, --pulse-low, --dir-setup, --dir-hold).
 void add_timing_flags(CLI::App* app, MoveFlags& f);
@@ -41,7 +47,7 @@ void add_clock_flag(CLI::App* app, MoveFlags& f);
 void add_output_flags(CLI::App* app, MoveFlags& f);
 
 // Empty when the flags make a move; else one line naming the flag: a missing
-// --distance, --jerks without an S-curve.
+// --distance, --jerks without an S-curve, --soft-min above --soft-max.
 std::string check_move_flags(const MoveFlags& f);
 MoveRequest to_request(const MoveFlags& f);
 PulseTiming to_timing(const MoveFlags& f);

@@ -38,6 +38,8 @@ bool is_decimal_integer(std::string_view text);
 int64_t parse_int(const std::string& param, std::string_view text, int64_t lo, int64_t hi);
 // Decimal text of a finite real within [lo, hi] (no hex floats, inf or nan).
 double parse_real(const std::string& param, std::string_view text, double lo, double hi);
+// A name (an axis): 1 to max_len characters of A-Z a-z 0-9 _ - .
+std::string parse_name(const std::string& param, std::string_view text, size_t max_len);
 
 // JSON values. `param` names the place ("tests[3].count").
 int64_t json_int(const std::string& param, const nlohmann::json& v, int64_t lo, int64_t hi);
