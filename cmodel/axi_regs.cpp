@@ -27,6 +27,7 @@ bool locked_addr(uint16_t a) {
     case RegPulseTime: case RegDirTime:
     case RegPosFrac0: case RegPosFrac0 + 4: case RegPosFrac0 + 8:
     case RegStopJerk: case RegStopJerk + 4: case RegStopAcc: case RegStopAcc + 4:
+    case RegSwCfg:
       return true;
     default:
       return false;
@@ -72,7 +73,7 @@ uint32_t AxiRegs::read_word(uint16_t a, const RegsSide& side, const CoreOutputs&
       if (core.fault_table) s |= bit(StatusFaultTableBit);
       if (core.fault_overrun) s |= bit(StatusFaultOverrunBit);
       if (q_.err_estop) s |= bit(StatusEstopBit);
-      if (q_.err_reject || q_.err_bad || q_.err_estop) s |= bit(StatusErrBit);
+      if (q_.err_reject || q_.err_bad || q_.err_estop || q_.err_lim_neg || q_.err_lim_pos) s |= bit(StatusErrBit);
       if (st.fault_ferr) s |= bit(StatusFaultFerrBit);
       if (st.in_pos) s |= bit(StatusInPosBit);
       s |= uint32_t(side.enc_ab & 3) << StatusEncALsb;
@@ -81,12 +82,15 @@ uint32_t AxiRegs::read_word(uint16_t a, const RegsSide& side, const CoreOutputs&
       if (core.discont) s |= bit(StatusDiscontBit);
       if (core.stopping) s |= bit(StatusStoppingBit);
       if (core.overshoot) s |= bit(StatusOvershootBit);
+      s |= uint32_t(side.sw_level & ((1u << SwW) - 1)) << StatusSwLevelLsb;
       return s;
     }
     case RegErr:
       return (q_.err_reject ? bit(ErrRejectBit) : 0) | (q_.err_bad ? bit(ErrBadAddrBit) : 0) |
              (q_.err_estop ? bit(ErrEstopBit) : 0) | (q_.err_full ? bit(ErrFifoFullBit) : 0) |
-             (q_.err_disc ? bit(ErrDiscontBit) : 0) | (q_.err_under ? bit(ErrUnderrunBit) : 0);
+             (q_.err_disc ? bit(ErrDiscontBit) : 0) | (q_.err_under ? bit(ErrUnderrunBit) : 0) |
+             (q_.err_lim_neg ? bit(ErrLimNegBit) : 0) | (q_.err_lim_pos ? bit(ErrLimPosBit) : 0);
+    case RegSwCfg: return sw_cfg_word();
     case RegPulseCount: return uint32_t(core.pulse_count);
     case RegRefPos: return uint32_t(core.ref_pos_int);
     case RegEncPos: return uint32_t(side.enc_pos);
@@ -209,6 +213,8 @@ void AxiRegs::step(const AxiIn& in, const RegsSide& side, const CoreOutputs& cor
             if (wd & bit(ErrFifoFullBit)) d.err_full = false;
             if (wd & bit(ErrDiscontBit)) d.err_disc = false;
             if (wd & bit(ErrUnderrunBit)) d.err_under = false;
+            if (wd & bit(ErrLimNegBit)) d.err_lim_neg = false;
+            if (wd & bit(ErrLimPosBit)) d.err_lim_pos = false;
           }
           break;
         case RegIrqStatus:
@@ -217,6 +223,14 @@ void AxiRegs::step(const AxiIn& in, const RegsSide& side, const CoreOutputs& cor
         case RegIrqEnable:
           d.irq_en = uint8_t(field(wmerge(uint32_t(q.irq_en) << IrqEnableLsb, wd, wmask), IrqEnableLsb, IrqW));
           break;
+        case RegSwCfg: {
+          const uint32_t w = wmerge(sw_cfg_word(), wd, wmask);
+          d.sw_invert = uint8_t(field(w, SwInvertLsb, SwW));
+          d.lim_en = (w >> SwLimEnBit) & 1;
+          d.lim_hard = (w >> SwLimHardBit) & 1;
+          d.sw_debounce = uint16_t(field(w, SwDebounceLsb, DebounceW));
+          break;
+        }
         case RegFifoLow:
           d.low_water = uint8_t(field(wmerge(uint32_t(q.low_water) << FifoLowLsb, wd, wmask), FifoLowLsb, RowLevelW));
           break;
@@ -308,9 +322,13 @@ void AxiRegs::step(const AxiIn& in, const RegsSide& side, const CoreOutputs& cor
   if (set_bad) d.err_bad = true;
   // interrupt causes: events of the core's status
   const bool below = core.fifo_level < q.low_water;
-  const bool fault_any = core.fault_table || core.fault_overrun || st.fault_ferr || q.err_estop;
+  const bool lim_trip = core.lim_trip_fwd || core.lim_trip_rev;
+  const bool fault_any = core.fault_table || core.fault_overrun || st.fault_ferr || q.err_estop || lim_trip;
   if (core.discont && !q.discont_prev) d.err_disc = true;
   if (core.underrun && !q.underrun_prev) d.err_under = true;
+  if (core.lim_trip_rev) d.err_lim_neg = true;
+  if (core.lim_trip_fwd) d.err_lim_pos = true;
+  if (side.sw_edge != 0) d.irq_st |= uint8_t(bit(IrqSwitchBit));
   if (below && !q.below) d.irq_st |= uint8_t(bit(IrqLowWaterBit));
   if (core.move_done) d.irq_st |= uint8_t(bit(IrqMoveDoneBit));
   if (q.busy_prev && !busy_eff) d.irq_st |= uint8_t(bit(IrqIdleBit));
@@ -339,8 +357,16 @@ AxiOut AxiRegs::axi_outputs() const {
   return o;
 }
 
-CoreInputs AxiRegs::core_inputs() const {
+uint32_t AxiRegs::sw_cfg_word() const {
+  return (uint32_t(q_.sw_invert) << SwInvertLsb) | (q_.lim_en ? bit(SwLimEnBit) : 0) |
+         (q_.lim_hard ? bit(SwLimHardBit) : 0) | (uint32_t(q_.sw_debounce) << SwDebounceLsb);
+}
+
+CoreInputs AxiRegs::core_inputs(uint32_t sw_level) const {
   CoreInputs c;
+  c.lim_fwd = q_.lim_en && ((sw_level >> SwLimPos) & 1);
+  c.lim_rev = q_.lim_en && ((sw_level >> SwLimNeg) & 1);
+  c.lim_hard = q_.lim_hard;
   c.enable = q_.en;
   c.cfg = q_.cfg;
   c.row_push = q_.push;
@@ -390,7 +416,7 @@ ServoConfig AxiServo::decode_config(bool enable, bool closed, const PulseTiming&
 }
 
 ServoInputs AxiServo::servo_inputs() const {
-  const CoreInputs ci = regs_.core_inputs();
+  const CoreInputs ci = regs_.core_inputs(sw_.level());
   const AxiRegs::State& q = regs_.state();
   ServoInputs si;
   si.cfg = decode_config(ci.enable, q.closed, ci.cfg, q.cl);
@@ -403,6 +429,9 @@ ServoInputs AxiServo::servo_inputs() const {
   si.stop = ci.stop;
   si.stop_jerk = ci.stop_jerk;
   si.stop_acc = ci.stop_acc;
+  si.lim_fwd = ci.lim_fwd;
+  si.lim_rev = ci.lim_rev;
+  si.lim_hard = ci.lim_hard;
   return si;
 }
 
@@ -427,6 +456,8 @@ void AxiServo::step(const AxiIn& in, const RegsSide& side) {
   co.boundary_pos = so.boundary_pos;
   co.fifo_level = so.fifo_level;
   co.fifo_full = so.fifo_full;
+  co.lim_trip_fwd = so.lim_trip_fwd;
+  co.lim_trip_rev = so.lim_trip_rev;
   ServoStatus st;
   st.in_pos = so.in_pos;
   st.fault_ferr = so.fault_ferr;
@@ -447,9 +478,13 @@ void AxiServo::step(const AxiIn& in, const RegsSide& side) {
   RegsSide rs = side;
   rs.enc_ab = uint8_t(enc_sync_.q());
   rs.enc_pos = so.enc_pos;
+  rs.sw_level = uint8_t(sw_.level());
+  rs.sw_edge = uint8_t(sw_.edge());
+  const uint32_t invert = regs_.state().sw_invert, debounce = regs_.state().sw_debounce;
   regs_.step(in, rs, co, st);
   servo_.step(si);
   enc_sync_.step(side.enc_ab & 3u);
+  sw_.step(side.sw_pins, invert, debounce);
 }
 
 AxiServoOutputs AxiServo::outputs() const {

@@ -8,6 +8,7 @@
 
 #include "axis_core.h"
 #include "servo_axis.h"
+#include "switch_filter.h"
 #include "sync.h"
 
 namespace sc {
@@ -44,6 +45,9 @@ struct RegsSide {
   bool estop = false;
   uint8_t enc_ab = 0;  // bit 0 = A, bit 1 = B
   int32_t enc_pos = 0;
+  uint8_t sw_pins = 0;   // switch pins (bit SwLimNeg, SwLimPos, SwHome): AxiAxis / AxiServo filter them
+  uint8_t sw_level = 0;  // the filter's outputs as the register file sees them (set by AxiAxis / AxiServo)
+  uint8_t sw_edge = 0;
 };
 
 // Closed-loop inputs of the register file (sc_axi_servo): STATUS bits and
@@ -97,6 +101,12 @@ class AxiRegs {
     bool err_full = false;
     bool err_disc = false;
     bool err_under = false;
+    bool err_lim_neg = false;
+    bool err_lim_pos = false;
+    uint8_t sw_invert = 0;                  // SW_CFG
+    bool lim_en = true;
+    bool lim_hard = false;
+    uint16_t sw_debounce = uint16_t(RstDebounce);
     bool operator==(const State&) const = default;
   };
 
@@ -110,7 +120,9 @@ class AxiRegs {
   static uint32_t cl_reset(int i);
 
   AxiOut axi_outputs() const;
-  CoreInputs core_inputs() const;
+  // The core's inputs from the register file; the limit inputs from the
+  // filtered levels `sw_level` (bit SwLimNeg, SwLimPos) and SW_CFG.
+  CoreInputs core_inputs(uint32_t sw_level = 0) const;
   // STATUS.BUSY: the core is busy or an accepted START has not reached it yet.
   bool busy(const CoreOutputs& core) const { return core.busy || q_.start || q_.start_d1; }
   const State& state() const { return q_; }
@@ -120,6 +132,7 @@ class AxiRegs {
                      uint8_t& resp) const;
   int cfg_index(uint16_t addr) const;   // -1: not a controller-settings word
   int stat_index(uint16_t addr) const;  // -1: not a closed-loop status word
+  uint32_t sw_cfg_word() const;         // SW_CFG as read
   bool servo_;
   State q_;
 };
@@ -142,19 +155,28 @@ class AxiAxis {
   void reset() {
     regs_.reset();
     core_.reset();
+    sw_.reset();
   }
   void step(const AxiIn& in, const RegsSide& side) {
-    const CoreInputs ci = regs_.core_inputs();
-    regs_.step(in, side, core_.outputs());
+    const CoreInputs ci = regs_.core_inputs(sw_.level());
+    RegsSide rs = side;
+    rs.sw_level = uint8_t(sw_.level());
+    rs.sw_edge = uint8_t(sw_.edge());
+    const AxiRegs::State& q = regs_.state();
+    const uint32_t invert = q.sw_invert, debounce = q.sw_debounce;
+    regs_.step(in, rs, core_.outputs());
     core_.step(ci);
+    sw_.step(side.sw_pins, invert, debounce);
   }
   AxiAxisOutputs outputs() const;
   const AxiRegs& regs() const { return regs_; }
   const AxisCore& core() const { return core_; }
+  const SwitchFilter& switches() const { return sw_; }
 
  private:
   AxiRegs regs_;
   AxisCore core_;
+  SwitchFilter sw_;  // u_sw
 };
 
 // Outputs of sc_axi_servo compared by the lockstep checker.
@@ -181,11 +203,13 @@ class AxiServo {
     regs_.reset();
     servo_.reset();
     enc_sync_.reset();
+    sw_.reset();
   }
   void step(const AxiIn& in, const RegsSide& side);
   AxiServoOutputs outputs() const;
   const AxiRegs& regs() const { return regs_; }
   const ServoAxis& servo() const { return servo_; }
+  const SwitchFilter& switches() const { return sw_; }
   ServoAxis& mutable_servo() { return servo_; }
   // The sc_servo_axis inputs the register file drives (encoder pins aside).
   ServoInputs servo_inputs() const;
@@ -197,6 +221,7 @@ class AxiServo {
   AxiRegs regs_;
   ServoAxis servo_;
   Sync enc_sync_{2, false};  // u_sync_enc: STATUS.ENC_AB
+  SwitchFilter sw_;          // u_sw
 };
 
 }  // namespace sc

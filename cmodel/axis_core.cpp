@@ -50,10 +50,27 @@ void AxisCore::latch_inputs(const CoreInputs& in) {
   in_q_.start = in.start;
   in_q_.abort = in.abort;
   in_q_.stop = in.stop;
+  in_q_.lim_fwd = in.lim_fwd;
+  in_q_.lim_rev = in.lim_rev;
+  in_q_.lim_hard = in.lim_hard;
   in_q_.stop_jerk = in.stop_jerk & ((uint64_t(1) << JerkW) - 1);
   in_q_.stop_acc = in.stop_acc;
   in_q_.cfg = in.cfg;
   in_q_.pos_frac0 = mask_bits(in.pos_frac0, FracBits);
+}
+
+unsigned AxisCore::into_limit() const {
+  const ProfileExec::State& e = exec_.state();
+  const bool ref_moving = e.run && e.vel != 0;
+  const bool into_fwd = in_q_.lim_fwd && (arm_ ? arm_fwd_ : (ref_moving && e.vel > 0));
+  const bool into_rev = in_q_.lim_rev && (arm_ ? !arm_fwd_ : (ref_moving && e.vel < 0));
+  return unsigned(into_fwd) | (unsigned(into_rev) << 1);
+}
+
+unsigned AxisCore::start_into_limit() const {
+  if (exec_.fifo_level() == 0) return 0;  // an empty FIFO is the table fault
+  const bool fwd = exec_.head_forward();
+  return fwd ? (in_q_.lim_fwd ? 4u : 0u) : (in_q_.lim_rev ? 8u : 0u);
 }
 
 template <bool kExt>
@@ -62,7 +79,9 @@ void AxisCore::clock_edge(const CoreExtInputs& x) {
   // stage, the arming state, the executor's step request or, with kExt,
   // the external source's registers), as in the RTL.
   const ProfileExec::State& e = exec_.state();
-  const bool start_ok = in_q_.start && !(kExt ? busy(x) : busy()) && in_q_.enable;
+  const bool start_req = in_q_.start && !(kExt ? busy(x) : busy()) && in_q_.enable;
+  const bool start_ok = start_req && start_into_limit() == 0;
+  const bool lim_act = into_limit() != 0;
   bool arm_d = arm_, arm_fwd_d = arm_fwd_, exec_start = false;
   uint16_t arm_cnt_d = arm_cnt_;
   if (start_ok) {
@@ -70,7 +89,7 @@ void AxisCore::clock_edge(const CoreExtInputs& x) {
     arm_fwd_d = exec_.head_forward();
     arm_cnt_d = 0;
   } else if (arm_) {
-    if (in_q_.abort || in_q_.stop) {
+    if (in_q_.abort || in_q_.stop || lim_act) {
       arm_d = false;
     } else if (sg_.state().dir != arm_fwd_) {
       arm_cnt_d = 0;
@@ -93,8 +112,8 @@ void AxisCore::clock_edge(const CoreExtInputs& x) {
   ProfileExec::Inputs& ei = exec_in_;
   ei.pos_frac0 = in_q_.pos_frac0;
   ei.start = exec_start;
-  ei.abort = in_q_.abort || (kExt && x.abort);
-  ei.stop = in_q_.stop;
+  ei.abort = in_q_.abort || (lim_act && in_q_.lim_hard) || (kExt && x.abort);
+  ei.stop = in_q_.stop || (lim_act && !in_q_.lim_hard);
   ei.stop_jerk = in_q_.stop_jerk;
   ei.stop_acc = in_q_.stop_acc;
   sg_.step(si);  // uses the executor's current (registered) outputs
@@ -106,8 +125,10 @@ void AxisCore::clock_edge(const CoreExtInputs& x) {
 }
 
 bool AxisCore::inputs_settled(const CoreInputs& in) const {
+  // An active limit is never jumped over: it acts on the clock motion turns into it.
   return !in.start && !in.abort && !in.stop && !in.row_push && !in.fifo_flush && !in_q_.start && !in_q_.abort &&
-         !in_q_.stop && in_q_.enable == in.enable && in_q_.cfg == in.cfg &&
+         !in_q_.stop && !in.lim_fwd && !in.lim_rev && !in_q_.lim_fwd && !in_q_.lim_rev &&
+         in_q_.lim_hard == in.lim_hard && in_q_.enable == in.enable && in_q_.cfg == in.cfg &&
          in_q_.stop_jerk == (in.stop_jerk & ((uint64_t(1) << JerkW) - 1)) && in_q_.stop_acc == in.stop_acc &&
          in_q_.pos_frac0 == mask_bits(in.pos_frac0, FracBits);
 }
@@ -145,6 +166,8 @@ void AxisCore::read_outputs(CoreOutputs& o) const {
   o.ref_jerk = exec_.jerk();
   o.seg_idx = e.idx;
   o.step_pending = s.pend;
+  o.lim_trip_fwd = lim_trip(true, o.busy);
+  o.lim_trip_rev = lim_trip(false, o.busy);
 }
 
 void AxisCore::tick() { clock_edge<false>(kNoExt); }
@@ -161,7 +184,14 @@ bool AxisCore::outputs_equal(const CoreOutputs& o) const {
          o.underrun == e.underrun && o.discont == e.discont && o.stopping == e.stop &&
          o.overshoot == exec_.overshoot() && o.move_done == e.move_done &&
          o.move_idx == e.move_idx && o.boundary_pos == e.bpos && o.fifo_level == exec_.fifo_level() &&
-         o.fifo_full == exec_.fifo_full();
+         o.fifo_full == exec_.fifo_full() && o.lim_trip_fwd == lim_trip(true, busy()) &&
+         o.lim_trip_rev == lim_trip(false, busy());
+}
+
+bool AxisCore::lim_trip(bool fwd, bool busy_now) const {
+  if (!(fwd ? in_q_.lim_fwd : in_q_.lim_rev)) return false;
+  const bool start_req = in_q_.start && in_q_.enable && !busy_now;
+  return (into_limit() & (fwd ? 1u : 2u)) != 0 || (start_req && (start_into_limit() & (fwd ? 4u : 8u)) != 0);
 }
 
 uint64_t AxisCore::clocks_to_next_event(const CoreInputs& in) const {

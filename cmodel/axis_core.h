@@ -23,6 +23,12 @@ struct CoreInputs {
   // reset values.
   uint64_t stop_jerk = StopJerkReset;
   uint64_t stop_acc = StopAccReset;
+  // Limits (lim_fwd_i, lim_rev_i, lim_hard_i): a limit switch is active on
+  // the + / - side; motion into it stops (hard: at once), a START toward it
+  // is refused.
+  bool lim_fwd = false;
+  bool lim_rev = false;
+  bool lim_hard = false;
 };
 
 // The external step source of sc_axis_core #(.ExtStep(1)) (its ext_*
@@ -65,6 +71,8 @@ struct CoreOutputs {
   int64_t ref_jerk = 0;
   uint8_t seg_idx = 0;
   int8_t step_pending = 0;
+  bool lim_trip_fwd = false;  // the + limit stops motion or refuses a start
+  bool lim_trip_rev = false;
   bool operator==(const CoreOutputs&) const = default;
 };
 
@@ -97,8 +105,8 @@ class AxisCore {
   // exec_start_o of the clock last stepped with step(in, x): the executor
   // started (after arming).
   bool exec_started() const { return exec_started_; }
-  // abort_o: abort as registered by the core.
-  bool abort_q() const { return in_q_.abort; }
+  // abort_o: abort as registered by the core, or a hard limit acting.
+  bool abort_q() const { return in_q_.abort || (in_q_.lim_hard && (into_limit() & 3) != 0); }
   // en_o.
   bool enable_q() const { return in_q_.enable; }
 
@@ -128,6 +136,7 @@ class AxisCore {
     bool stop = false;
     uint64_t stop_jerk = 0;
     uint64_t stop_acc = 0;
+    bool lim_fwd = false, lim_rev = false, lim_hard = false;
     PulseTiming cfg{0, 0, 0, 0};
     u128 pos_frac0 = 0;
   };
@@ -140,6 +149,15 @@ class AxisCore {
   uint16_t arm_cnt_ = 0;
   bool exec_started_ = false;
   ProfileExec::Inputs exec_in_{};  // reused every clock: no per-clock construction
+  // Motion into an active limit (into_fwd bit 0, into_rev bit 1) and a
+  // start refused toward one (bits 2 and 3: + and -), from the current state.
+  unsigned into_limit() const;
+  unsigned start_into_limit() const;
+ public:
+  // lim_trip_fwd_o / lim_trip_rev_o with busy_o = busy_now (the external
+  // source's busy included).
+  bool lim_trip(bool fwd, bool busy_now) const;
+ private:
   void latch_write(const CoreInputs& in);
   void latch_inputs(const CoreInputs& in);
   // kExt = false is the plain core (ExtStep = 0): x is not read.

@@ -66,6 +66,9 @@ void ServoAxis::step(const ServoInputs& in) {
   ki.stop = in.stop || (c.ferr && cq.ctl.ferr_stop && c.active);
   ki.stop_jerk = in.stop_jerk;
   ki.stop_acc = in.stop_acc;
+  ki.lim_fwd = in.lim_fwd;
+  ki.lim_rev = in.lim_rev;
+  ki.lim_hard = in.lim_hard;
 
   NeuronPi::Inputs ci;
   ci.stop = core_.abort_q();
@@ -122,6 +125,8 @@ ServoOutputs ServoAxis::outputs() const {
   o.discont = e.discont;
   o.stopping = e.stop;
   o.overshoot = core_.exec().overshoot();
+  o.lim_trip_fwd = core_.lim_trip(true, o.busy);
+  o.lim_trip_rev = core_.lim_trip(false, o.busy);
   o.move_done = e.move_done;
   o.move_idx = e.move_idx;
   o.boundary_pos = e.bpos;

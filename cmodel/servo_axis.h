@@ -36,6 +36,9 @@ struct ServoInputs {
   bool stop = false;
   uint64_t stop_jerk = StopJerkReset;  // controlled-stop limits (as CoreInputs)
   uint64_t stop_acc = StopAccReset;
+  bool lim_fwd = false;  // limits (as CoreInputs)
+  bool lim_rev = false;
+  bool lim_hard = false;
   bool enc_a = false;
   bool enc_b = false;
 };
@@ -48,6 +51,7 @@ struct ServoOutputs {
   bool fault_table = false, fault_overrun = false, fault_ferr = false, in_pos = false;
   bool underrun = false, discont = false, move_done = false, fifo_full = false;
   bool stopping = false, overshoot = false;
+  bool lim_trip_fwd = false, lim_trip_rev = false;
   uint32_t move_idx = 0;
   int32_t boundary_pos = 0;
   uint8_t fifo_level = 0;

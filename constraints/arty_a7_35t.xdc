@@ -32,6 +32,14 @@ set_property -dict { PACKAGE_PIN D12 IOSTANDARD LVCMOS33 DRIVE 8 SLEW SLOW } [ge
 set_property -dict { PACKAGE_PIN E15 IOSTANDARD LVCMOS33 PULLUP TRUE } [get_ports enc_a_i]
 set_property -dict { PACKAGE_PIN E16 IOSTANDARD LVCMOS33 PULLUP TRUE } [get_ports enc_b_i]
 
+## ---- switches on Pmod JB (JB3 limit -, JB4 limit +, JB7 home) -----------------------
+## Pulled down: with nothing connected they read inactive (SW_CFG.INVERT = 0).
+## A switch to 3.3 V closes active high; a normally-closed switch to GND with
+## an external pull-up reads active when it opens (or its wire breaks).
+set_property -dict { PACKAGE_PIN D15 IOSTANDARD LVCMOS33 PULLDOWN TRUE } [get_ports {sw_i[0]}]
+set_property -dict { PACKAGE_PIN C15 IOSTANDARD LVCMOS33 PULLDOWN TRUE } [get_ports {sw_i[1]}]
+set_property -dict { PACKAGE_PIN J17 IOSTANDARD LVCMOS33 PULLDOWN TRUE } [get_ports {sw_i[2]}]
+
 ## ---- LEDs LD4..LD7 -------------------------------------------------------------------
 set_property -dict { PACKAGE_PIN H5  IOSTANDARD LVCMOS33 } [get_ports {led_o[0]}]
 set_property -dict { PACKAGE_PIN J5  IOSTANDARD LVCMOS33 } [get_ports {led_o[1]}]
@@ -45,11 +53,12 @@ set_property -dict { PACKAGE_PIN G6  IOSTANDARD LVCMOS33 } [get_ports led_irq_o]
 ## FPGA clock, so no input delay applies. Each data input goes through an
 ## sc_sync (two flops meta_q -> sync_q, both ASYNC_REG): u_sync_rx,
 ## u_sync_estop, u_axis/u_servo/u_dec/u_sync_ab (encoder A/B into the
-## decoder) and u_axis/u_sync_enc (encoder A/B for STATUS.ENC_AB); the reset
+## decoder), u_axis/u_sync_enc (encoder A/B for STATUS.ENC_AB) and
+## u_axis/u_sw/u_sync (the limit and home switches); the reset
 ## button goes through sc_rst_sync (u_rst_sync/chain_q, ASYNC_REG).
 ## Encoder edges are >= 4 system clocks apart at the rated speed, the
 ## synchroniser adds 2 clocks of latency.
-set_false_path -from [get_ports {enc_a_i enc_b_i estop_i ck_rst_ni uart_rx_i}]
+set_false_path -from [get_ports {enc_a_i enc_b_i estop_i ck_rst_ni uart_rx_i sw_i[*]}]
 
 ## STEP/DIR/EN come straight from flops of clk_sys. The driver needs microsecond
 ## pulse/setup/hold times (counted in clocks by sc_step_gen); the output delay

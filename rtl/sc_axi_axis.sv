@@ -27,6 +27,7 @@ module sc_axi_axis (
   input  logic                                estop_i,
   input  logic [1:0]                          enc_ab_i,
   input  logic signed [sc_pkg::PosIntW-1:0]   enc_pos_i,
+  input  logic [sc_pkg::SwW-1:0]              sw_i,        // switch pins: limit -, limit +, home
 
   output logic                                step_o,
   output logic                                dir_o,
@@ -80,6 +81,9 @@ module sc_axi_axis (
   logic                        stop, stopping, overshoot;
   logic [sc_pkg::JerkW-1:0]    stop_jerk;
   logic [sc_pkg::AccW-1:0]     stop_acc;
+  logic [sc_pkg::SwW-1:0]      sw_invert, sw_level, sw_edge;
+  logic [sc_pkg::DebounceW-1:0] sw_debounce;
+  logic                        lim_en, lim_hard, lim_trip_fwd, lim_trip_rev;
   logic                        unused_closed;
   logic [sc_pkg::CtlCfgW-1:0]  unused_ctl_cfg;
 
@@ -139,6 +143,14 @@ module sc_axi_axis (
     .in_pos_i        (1'b0),
     .fault_ferr_i    (1'b0),
     .cl_stat_i       ({(sc_pkg::ClStatWords*32){1'b0}}),
+    .sw_invert_o     (sw_invert),
+    .sw_debounce_o   (sw_debounce),
+    .lim_en_o        (lim_en),
+    .lim_hard_o      (lim_hard),
+    .sw_level_i      (sw_level),
+    .sw_edge_i       (sw_edge),
+    .lim_trip_fwd_i  (lim_trip_fwd),
+    .lim_trip_rev_i  (lim_trip_rev),
     .underrun_i      (underrun),
     .discont_i       (discont),
     .stopping_i      (stopping),
@@ -150,6 +162,16 @@ module sc_axi_axis (
     .fifo_full_i     (fifo_full),
     .busy_o,
     .irq_o
+  );
+
+  sc_switch_filter #(.Width(sc_pkg::SwW)) u_sw (
+    .clk_i,
+    .rst_ni,
+    .sw_i,
+    .invert_i   (sw_invert),
+    .debounce_i (sw_debounce),
+    .level_o    (sw_level),
+    .edge_o     (sw_edge)
   );
 
   sc_axis_core u_core (
@@ -174,6 +196,9 @@ module sc_axi_axis (
     .stop_i          (stop),
     .stop_jerk_i     (stop_jerk),
     .stop_acc_i      (stop_acc),
+    .lim_fwd_i       (lim_en && sw_level[sc_pkg::SwLimPos]),
+    .lim_rev_i       (lim_en && sw_level[sc_pkg::SwLimNeg]),
+    .lim_hard_i      (lim_hard),
     .ext_sel_i        (1'b0),
     .ext_req_i        (1'b0),
     .ext_fwd_i        (1'b0),
@@ -187,6 +212,8 @@ module sc_axi_axis (
     .ref_done_o       (unused_ref_done),
     .ref_running_o    (unused_ref_running),
     .step_busy_o      (unused_step_busy),
+    .lim_trip_fwd_o   (lim_trip_fwd),
+    .lim_trip_rev_o   (lim_trip_rev),
     .step_o,
     .dir_o,
     .en_o,

@@ -26,6 +26,11 @@
 // (cl_stat_i). With Servo = 0 those addresses answer DECERR.
 // CTRL.CLOSED_LOOP is a plain flop in both (closed_loop_o); a CTRL write
 // that would change it while busy is refused.
+//
+// SW_CFG configures the switch filter (sw_invert_o, sw_debounce_o) and the
+// limits (lim_en_o, lim_hard_o); STATUS.SW_LEVEL shows the filtered levels,
+// an edge of one raises IRQ_STATUS.SWITCH, and the core's limit trips set
+// ERR.LIMIT_NEG / LIMIT_POS and IRQ_STATUS.FAULT.
 module sc_axi_regs #(
   parameter bit Servo = 1'b0
 ) (
@@ -78,6 +83,10 @@ module sc_axi_regs #(
   output logic [sc_pkg::AccW-1:0]             stop_acc_o,  // STOP_ACC
   output logic                                closed_loop_o,
   output logic [sc_pkg::CtlCfgW-1:0]          ctl_cfg_o,   // controller configuration
+  output logic [sc_pkg::SwW-1:0]              sw_invert_o, // SW_CFG
+  output logic [sc_pkg::DebounceW-1:0]        sw_debounce_o,
+  output logic                                lim_en_o,
+  output logic                                lim_hard_o,
 
   // from sc_axis_core
   input  logic                                busy_i,
@@ -101,6 +110,10 @@ module sc_axi_regs #(
   input  logic                                in_pos_i,
   input  logic                                fault_ferr_i,
   input  logic [sc_pkg::ClStatWords*32-1:0]   cl_stat_i,
+  input  logic [sc_pkg::SwW-1:0]              sw_level_i,  // filtered switch levels
+  input  logic [sc_pkg::SwW-1:0]              sw_edge_i,
+  input  logic                                lim_trip_fwd_i,
+  input  logic                                lim_trip_rev_i,
 
   output logic                                busy_o,      // STATUS.BUSY
   output logic                                irq_o
@@ -158,6 +171,9 @@ module sc_axi_regs #(
   localparam logic [AW-1:0] AVel1      = AW'(sc_pkg::RegSegVel0 + 4);
   localparam logic [AW-1:0] AVel2      = AW'(sc_pkg::RegSegVel0 + 8);
   localparam logic [AW-1:0] ARowPush   = AW'(sc_pkg::RegRowPush);
+  localparam logic [AW-1:0] ASwCfg     = AW'(sc_pkg::RegSwCfg);
+  localparam int SwW       = sc_pkg::SwW;
+  localparam int DebounceW = sc_pkg::DebounceW;
 
   localparam int CtrlEnableBit = sc_pkg::CtrlEnableBit;
   localparam int CtrlClosedBit = sc_pkg::CtrlClosedBit;
@@ -171,6 +187,8 @@ module sc_axi_regs #(
   localparam int ErrFifoFullBit = sc_pkg::ErrFifoFullBit;
   localparam int ErrDiscontBit = sc_pkg::ErrDiscontBit;
   localparam int ErrUnderrunBit = sc_pkg::ErrUnderrunBit;
+  localparam int ErrLimNegBit  = sc_pkg::ErrLimNegBit;
+  localparam int ErrLimPosBit  = sc_pkg::ErrLimPosBit;
 
   // Closed-loop words: implemented bits and reset values (generated from the
   // register tags, word 0 lowest).
@@ -226,6 +244,13 @@ module sc_axi_regs #(
   logic                      err_full_q, err_full_d;
   logic                      err_disc_q, err_disc_d;
   logic                      err_under_q, err_under_d;
+  logic                      err_lneg_q, err_lneg_d;
+  logic                      err_lpos_q, err_lpos_d;
+  logic [SwW-1:0]            sw_inv_q, sw_inv_d;
+  logic                      lim_en_q, lim_en_d, lim_hard_q, lim_hard_d;
+  logic [DebounceW-1:0]      sw_deb_q, sw_deb_d;
+  logic                      lim_trip;
+  logic [31:0]               sw_cfg_word, sw_cfg_new;  // SW_CFG as read, and as a write would leave it
 
   // ---- decode --------------------------------------------------------------
   logic        busy_eff;
@@ -273,7 +298,7 @@ module sc_axi_regs #(
   always_comb begin
     unique case (awaddr_q)
       APulseTime, ADirTime, AFrac0, AFrac1, AFrac2,
-      AStopJ0, AStopJ1, AStopA0, AStopA1:           w_locked = 1'b1;
+      AStopJ0, AStopJ1, AStopA0, AStopA1, ASwCfg:   w_locked = 1'b1;
       default:                                      w_locked = w_cfg_hit;
     endcase
   end
@@ -287,7 +312,8 @@ module sc_axi_regs #(
     status_word[sc_pkg::StatusFaultTableBit]        = fault_table_i;
     status_word[sc_pkg::StatusFaultOverrunBit]      = fault_overrun_i;
     status_word[sc_pkg::StatusEstopBit]             = err_estop_q;
-    status_word[sc_pkg::StatusErrBit]               = err_reject_q || err_bad_q || err_estop_q;
+    status_word[sc_pkg::StatusErrBit]               = err_reject_q || err_bad_q || err_estop_q ||
+                                                      err_lneg_q || err_lpos_q;
     status_word[sc_pkg::StatusFaultFerrBit]         = fault_ferr_i;
     status_word[sc_pkg::StatusInPosBit]             = in_pos_i;
     status_word[sc_pkg::StatusEncALsb +: 2]         = enc_ab_i;
@@ -296,11 +322,22 @@ module sc_axi_regs #(
     status_word[sc_pkg::StatusDiscontBit]           = discont_i;
     status_word[sc_pkg::StatusStoppingBit]          = stopping_i;
     status_word[sc_pkg::StatusOvershootBit]         = overshoot_i;
+    status_word[sc_pkg::StatusSwLevelLsb +: SwW]    = sw_level_i;
   end
+
+  always_comb begin
+    sw_cfg_word = '0;
+    sw_cfg_word[sc_pkg::SwInvertLsb +: SwW]         = sw_inv_q;
+    sw_cfg_word[sc_pkg::SwLimEnBit]                 = lim_en_q;
+    sw_cfg_word[sc_pkg::SwLimHardBit]               = lim_hard_q;
+    sw_cfg_word[sc_pkg::SwDebounceLsb +: DebounceW] = sw_deb_q;
+  end
+  assign sw_cfg_new = wmerge(sw_cfg_word, wd, wmask);
 
   // interrupt causes: events of the core's status (edges of its levels)
   assign below     = fifo_level_i < low_water_q;
-  assign fault_any = fault_table_i || fault_overrun_i || fault_ferr_i || err_estop_q;
+  assign lim_trip  = lim_trip_fwd_i || lim_trip_rev_i;
+  assign fault_any = fault_table_i || fault_overrun_i || fault_ferr_i || err_estop_q || lim_trip;
 
   // read mux
   always_comb begin
@@ -321,7 +358,10 @@ module sc_axi_regs #(
         rd_word[ErrFifoFullBit] = err_full_q;
         rd_word[ErrDiscontBit]  = err_disc_q;
         rd_word[ErrUnderrunBit] = err_under_q;
+        rd_word[ErrLimNegBit]   = err_lneg_q;
+        rd_word[ErrLimPosBit]   = err_lpos_q;
       end
+      ASwCfg:     rd_word = sw_cfg_word;
       APulseCnt:  rd_word = 32'(pulse_count_i);
       ARefPos:    rd_word = 32'(ref_pos_i);
       AEncPos:    rd_word = 32'(enc_pos_i);
@@ -413,6 +453,12 @@ module sc_axi_regs #(
     err_full_d   = err_full_q;
     err_disc_d   = err_disc_q;
     err_under_d  = err_under_q;
+    err_lneg_d   = err_lneg_q;
+    err_lpos_d   = err_lpos_q;
+    sw_inv_d     = sw_inv_q;
+    lim_en_d     = lim_en_q;
+    lim_hard_d   = lim_hard_q;
+    sw_deb_d     = sw_deb_q;
     set_reject   = 1'b0;
     set_bad      = 1'b0;
 
@@ -488,6 +534,8 @@ module sc_axi_regs #(
               if (wd[ErrFifoFullBit]) err_full_d  = 1'b0;
               if (wd[ErrDiscontBit])  err_disc_d  = 1'b0;
               if (wd[ErrUnderrunBit]) err_under_d = 1'b0;
+              if (wd[ErrLimNegBit])   err_lneg_d  = 1'b0;
+              if (wd[ErrLimPosBit])   err_lpos_d  = 1'b0;
             end
           end
           AIrqStat: begin
@@ -495,6 +543,12 @@ module sc_axi_regs #(
           end
           AIrqEn:   irq_en_d = IrqW'(wmerge(32'(irq_en_q) << sc_pkg::IrqEnableLsb, wd, wmask)
                                      >> sc_pkg::IrqEnableLsb);
+          ASwCfg: begin
+            sw_inv_d   = sw_cfg_new[sc_pkg::SwInvertLsb +: SwW];
+            lim_en_d   = sw_cfg_new[sc_pkg::SwLimEnBit];
+            lim_hard_d = sw_cfg_new[sc_pkg::SwLimHardBit];
+            sw_deb_d   = sw_cfg_new[sc_pkg::SwDebounceLsb +: DebounceW];
+          end
           AFifoLow: low_water_d = RowLevelW'(wmerge(32'(low_water_q) << sc_pkg::FifoLowLsb, wd, wmask)
                                              >> sc_pkg::FifoLowLsb);
           APulseTime: begin
@@ -575,6 +629,9 @@ module sc_axi_regs #(
     if (set_bad)    err_bad_d    = 1'b1;
     if (discont_i && !discont_prev_q)   err_disc_d  = 1'b1;
     if (underrun_i && !underrun_prev_q) err_under_d = 1'b1;
+    if (lim_trip_rev_i)                 err_lneg_d  = 1'b1;
+    if (lim_trip_fwd_i)                 err_lpos_d  = 1'b1;
+    if (sw_edge_i != '0)                irq_st_d[sc_pkg::IrqSwitchBit]   = 1'b1;
     if (below && !below_q)              irq_st_d[sc_pkg::IrqLowWaterBit] = 1'b1;
     if (move_done_i)                    irq_st_d[sc_pkg::IrqMoveDoneBit] = 1'b1;
     if (busy_prev_q && !busy_eff)       irq_st_d[sc_pkg::IrqIdleBit]     = 1'b1;
@@ -631,6 +688,12 @@ module sc_axi_regs #(
       err_full_q   <= 1'b0;
       err_disc_q   <= 1'b0;
       err_under_q  <= 1'b0;
+      err_lneg_q   <= 1'b0;
+      err_lpos_q   <= 1'b0;
+      sw_inv_q     <= '0;
+      lim_en_q     <= 1'b1;
+      lim_hard_q   <= 1'b0;
+      sw_deb_q     <= DebounceW'(sc_pkg::RstDebounce);
     end else begin
       aw_full_q    <= aw_full_d;
       awaddr_q     <= awaddr_d;
@@ -678,6 +741,12 @@ module sc_axi_regs #(
       err_full_q   <= err_full_d;
       err_disc_q   <= err_disc_d;
       err_under_q  <= err_under_d;
+      err_lneg_q   <= err_lneg_d;
+      err_lpos_q   <= err_lpos_d;
+      sw_inv_q     <= sw_inv_d;
+      lim_en_q     <= lim_en_d;
+      lim_hard_q   <= lim_hard_d;
+      sw_deb_q     <= sw_deb_d;
     end
   end
 
@@ -726,6 +795,10 @@ module sc_axi_regs #(
   assign stop_acc_o  = stop_acc_q;
   assign closed_loop_o = closed_q;
   assign ctl_cfg_o   = sc_pkg::ctl_cfg_from_words(cl_q);
+  assign sw_invert_o = sw_inv_q;
+  assign sw_debounce_o = sw_deb_q;
+  assign lim_en_o    = lim_en_q;
+  assign lim_hard_o  = lim_hard_q;
   assign busy_o      = busy_eff;
   assign irq_o       = irq_q;
 

@@ -33,6 +33,7 @@ module sc_axi_servo (
   input  logic                                estop_i,
   input  logic                                enc_a_i,
   input  logic                                enc_b_i,
+  input  logic [sc_pkg::SwW-1:0]              sw_i,        // switch pins: limit -, limit +, home
 
   output logic                                step_o,
   output logic                                dir_o,
@@ -87,6 +88,9 @@ module sc_axi_servo (
   logic [sc_pkg::CtlCfgW-1:0]  ctl_cfg;
   logic [NStat*32-1:0]         cl_stat;
   logic [1:0]                  enc_ab_sync;
+  logic [sc_pkg::SwW-1:0]      sw_invert, sw_level, sw_edge;
+  logic [sc_pkg::DebounceW-1:0] sw_debounce;
+  logic                        lim_en, lim_hard, lim_trip_fwd, lim_trip_rev;
 
   logic [sc_pkg::EncIllW-1:0]  enc_illegal;
   logic                        ctl_active;
@@ -186,6 +190,14 @@ module sc_axi_servo (
     .in_pos_i        (in_pos_o),
     .fault_ferr_i    (fault_ferr_o),
     .cl_stat_i       (cl_stat),
+    .sw_invert_o     (sw_invert),
+    .sw_debounce_o   (sw_debounce),
+    .lim_en_o        (lim_en),
+    .lim_hard_o      (lim_hard),
+    .sw_level_i      (sw_level),
+    .sw_edge_i       (sw_edge),
+    .lim_trip_fwd_i  (lim_trip_fwd),
+    .lim_trip_rev_i  (lim_trip_rev),
     .underrun_i      (underrun),
     .discont_i       (discont),
     .stopping_i      (stopping),
@@ -197,6 +209,16 @@ module sc_axi_servo (
     .fifo_full_i     (fifo_full),
     .busy_o,
     .irq_o
+  );
+
+  sc_switch_filter #(.Width(sc_pkg::SwW)) u_sw (
+    .clk_i,
+    .rst_ni,
+    .sw_i,
+    .invert_i   (sw_invert),
+    .debounce_i (sw_debounce),
+    .level_o    (sw_level),
+    .edge_o     (sw_edge)
   );
 
   sc_servo_axis u_servo (
@@ -222,6 +244,9 @@ module sc_axi_servo (
     .stop_i            (stop),
     .stop_jerk_i       (stop_jerk),
     .stop_acc_i        (stop_acc),
+    .lim_fwd_i         (lim_en && sw_level[sc_pkg::SwLimPos]),
+    .lim_rev_i         (lim_en && sw_level[sc_pkg::SwLimNeg]),
+    .lim_hard_i        (lim_hard),
     .enc_a_i,
     .enc_b_i,
     .ctl_cfg_i         (ctl_cfg),
@@ -242,6 +267,8 @@ module sc_axi_servo (
     .boundary_pos_o    (boundary_pos),
     .fifo_level_o      (fifo_level),
     .fifo_full_o       (fifo_full),
+    .lim_trip_fwd_o    (lim_trip_fwd),
+    .lim_trip_rev_o    (lim_trip_rev),
     .fault_ferr_o,
     .in_pos_o,
     .pulse_count_o,

@@ -18,6 +18,14 @@
 // rest with stop_jerk_i / stop_acc_i); during the arming it drops the start.
 // abort_i is the immediate stop (e-stop).
 //
+// Limits: lim_fwd_i / lim_rev_i say a limit switch is active on that side
+// (filtered and enabled by the register top). Motion into an active limit
+// stops it: the controlled stop, or with lim_hard_i the immediate stop; a
+// START whose move heads into one is refused and an arming toward one is
+// dropped. Motion away from it runs. lim_trip_fwd_o / lim_trip_rev_o are high
+// while a limit acts (for the sticky flags). "Motion" is the reference's: the
+// arming direction, else the sign of the executor's velocity.
+//
 // ExtStep = 1 adds an external step source (sc_servo_axis's closed-loop
 // NCO): with ext_sel_i set it replaces the executor's carry at the step
 // generator. DIR is pre-positioned (while no step is owed) by the arming,
@@ -54,6 +62,9 @@ module sc_axis_core #(
   input  logic                        stop_i,       // controlled stop; while arming, the start is dropped
   input  logic [sc_pkg::JerkW-1:0]            stop_jerk_i,  // controlled-stop limits
   input  logic [sc_pkg::AccW-1:0]             stop_acc_i,
+  input  logic                        lim_fwd_i,    // a limit is active on the + side
+  input  logic                        lim_rev_i,    // a limit is active on the - side
+  input  logic                        lim_hard_i,   // 1: a limit stops at once, 0: controlled stop
 
   // external step source (ExtStep = 1 only)
   input  logic                        ext_sel_i,         // steps come from ext_req_i/ext_fwd_i
@@ -65,10 +76,12 @@ module sc_axis_core #(
   input  logic                        ext_abort_i,       // aborts the executor (not the arming)
   input  logic                        ext_done_i,
   output logic                        exec_start_o,      // the executor starts this clock
-  output logic                        abort_o,           // abort_i as registered here
+  output logic                        abort_o,           // abort_i as registered here, or a hard limit acting
   output logic                        ref_done_o,        // the executor has finished the stream
   output logic                        ref_running_o,     // the executor runs (a stream or its controlled stop)
   output logic                        step_busy_o,       // a step is owed or STEP is high
+  output logic                        lim_trip_fwd_o,    // the + limit stops motion or refuses a start
+  output logic                        lim_trip_rev_o,    // the - limit stops motion or refuses a start
 
   output logic                        step_o,
   output logic                        dir_o,
@@ -112,6 +125,8 @@ module sc_axis_core #(
   logic   use_ext, exec_abort, finished, ref_moving;
   logic   start_ok, exec_start;
   logic   en_q, start_q, abort_q, stop_q;
+  logic   lim_fwd_q, lim_rev_q, lim_hard_q;
+  logic   start_req, start_into_lim, into_fwd, into_rev, lim_act, lim_stop, lim_abort;
   logic [sc_pkg::JerkW-1:0] stop_jerk_q;
   logic [sc_pkg::AccW-1:0]  stop_acc_q;
   logic   head_fwd;                      // direction of the FIFO's head row
@@ -123,10 +138,21 @@ module sc_axis_core #(
 
   assign use_ext    = ExtStep && ext_sel_i;
   assign busy_o     = exec_running || exec_step_req || sg_busy || arm_q || (ExtStep && ext_busy_i);
-  assign start_ok   = start_q && !busy_o && en_q;
+  assign start_req  = start_q && !busy_o && en_q;
+  // A move toward an active limit is refused (an empty FIFO is the table
+  // fault, as without limits).
+  assign start_into_lim = fifo_level_o != '0 && (head_fwd ? lim_fwd_q : lim_rev_q);
+  assign start_ok   = start_req && !start_into_lim;
+  // Motion into an active limit: the arming toward it, or the reference
+  // moving toward it (at rest, or moving away, nothing happens).
+  assign into_fwd   = lim_fwd_q && (arm_q ? arm_fwd_q : (ref_moving && !ref_vel_o[sc_pkg::VelW-1]));
+  assign into_rev   = lim_rev_q && (arm_q ? !arm_fwd_q : (ref_moving && ref_vel_o[sc_pkg::VelW-1]));
+  assign lim_act    = into_fwd || into_rev;
+  assign lim_stop   = lim_act && !lim_hard_q;
+  assign lim_abort  = lim_act && lim_hard_q;
   // A latched external fault must not block the arming of the next start:
   // the external source clears it when it starts with the executor.
-  assign exec_abort = abort_q || (ExtStep && ext_abort_i);
+  assign exec_abort = abort_q || lim_abort || (ExtStep && ext_abort_i);
   assign finished   = use_ext ? ext_done_i : exec_finished;
 
   // While arming, DIR is steered to the move's direction; otherwise, with no
@@ -149,7 +175,7 @@ module sc_axis_core #(
       arm_fwd_d = head_fwd;
       arm_cnt_d = '0;
     end else if (arm_q) begin
-      if (abort_q || stop_q) begin
+      if (abort_q || stop_q || lim_act) begin
         arm_d = 1'b0;
       end else if (sg_dir != arm_fwd_q) begin
         arm_cnt_d = '0;
@@ -176,7 +202,7 @@ module sc_axis_core #(
     .pos_frac0_i (pos_frac0_q),
     .start_i     (exec_start),
     .abort_i     (exec_abort),
-    .stop_i      (stop_q),
+    .stop_i      (stop_q || lim_stop),
     .stop_jerk_i (stop_jerk_q),
     .stop_acc_i  (stop_acc_q),
     .running_o   (exec_running),
@@ -232,6 +258,9 @@ module sc_axis_core #(
       start_q     <= 1'b0;
       abort_q     <= 1'b0;
       stop_q      <= 1'b0;
+      lim_fwd_q   <= 1'b0;
+      lim_rev_q   <= 1'b0;
+      lim_hard_q  <= 1'b0;
       stop_jerk_q <= '0;
       stop_acc_q  <= '0;
       cfg_high_q  <= '0;
@@ -247,6 +276,9 @@ module sc_axis_core #(
       start_q     <= start_i;
       abort_q     <= abort_i;
       stop_q      <= stop_i;
+      lim_fwd_q   <= lim_fwd_i;
+      lim_rev_q   <= lim_rev_i;
+      lim_hard_q  <= lim_hard_i;
       stop_jerk_q <= stop_jerk_i;
       stop_acc_q  <= stop_acc_i;
       cfg_high_q  <= cfg_high_i;
@@ -263,7 +295,9 @@ module sc_axis_core #(
   assign phase_o       = done_o ? sc_pkg::PhDone : exec_phase;
   assign fault_table_o = exec_fault;
   assign exec_start_o  = exec_start;
-  assign abort_o       = abort_q;
+  assign abort_o       = abort_q || lim_abort;
+  assign lim_trip_fwd_o = into_fwd || (start_req && start_into_lim && head_fwd);
+  assign lim_trip_rev_o = into_rev || (start_req && start_into_lim && !head_fwd);
   assign ref_done_o    = exec_finished;
   assign ref_running_o = exec_running;
   assign step_busy_o   = sg_busy;

@@ -47,6 +47,13 @@ package sc_pkg;
   localparam int PulseTimeW = 16;  // high/low/setup/hold in clocks
   localparam int PendW      = 4;   // signed queue of requested steps
 
+  // ---- switch inputs (limits, home) ----------------------------------------
+  localparam int DebounceW = 16;  // debounce filter length, clocks
+  localparam int SwW       = 3;   // switch inputs per axis
+  localparam int SwLimNeg  = 0;   // bit of each switch in sw_i, SW_CFG.INVERT, STATUS.SW_LEVEL
+  localparam int SwLimPos  = 1;
+  localparam int SwHome    = 2;
+
   // ---- closed loop: encoder, neuron-PI cascade, step NCO ----------------
   // Controller word: Q(CtlW-CtlFrac).CtlFrac, in encoder counts (positions,
   // errors) or counts per control period (speeds, u). Weights Q.WgtFrac,
@@ -179,14 +186,14 @@ package sc_pkg;
   // the UART bridge's address byte is a word address so it reaches them all);
   // 0x000 .. 0x0FC hold the 2.x map unchanged, the rest is free.
   localparam int RegAddrW      = 10;      // byte address bits of the window
-  localparam int RegMapVersion = 768;     // 0x0300 = 3.0 (1 KiB window, UART word address)
+  localparam int RegMapVersion = 769;     // 0x0301 = 3.1 (1 KiB window, UART word address; switch inputs)
   localparam int RegIdMagic    = 21315;   // 0x5343, ASCII "SC"
   localparam int RstPulseHigh  = 50;      // reset values of the pulse timing
   localparam int RstPulseLow   = 50;
   localparam int RstDirSetup   = 100;
   localparam int RstDirHold    = 100;
   localparam int RegId         = 32'h0000_0000;  //@reg ID RO "identification"
-  localparam int IdVersionLsb  = 0;      //@field ID VERSION 16 reset=RegMapVersion "register map version, 0x0300 = 3.0"
+  localparam int IdVersionLsb  = 0;      //@field ID VERSION 16 reset=RegMapVersion "register map version, 0x0301 = 3.1"
   localparam int IdMagicLsb    = 16;     //@field ID MAGIC 16 reset=21315 "0x5343, ASCII 'SC'"
   localparam int RegCtrl       = 32'h0000_0004;  //@reg CTRL RW "control"
   localparam int CtrlEnableBit = 0;      //@field CTRL ENABLE 1 "drives the EN pin; START is refused while 0; ESTOP clears it"
@@ -212,6 +219,7 @@ package sc_pkg;
   localparam int StatusSegIdxLsb       = 16;  //@field STATUS SEG_IDX SegIdxW "row of the current move being executed (modulo 16)"
   localparam int StatusDiscontBit      = 20;  //@field STATUS DISCONTINUITY 1 "a row did not continue the motion exactly: the axis stopped (until the next START)"
   localparam int StatusStoppingBit     = 21;  //@field STATUS STOPPING 1 "a controlled stop runs (CMD.STOP, underrun, discontinuity)"
+  localparam int StatusSwLevelLsb      = 23;  //@field STATUS SW_LEVEL SwW "filtered switch levels, 1 = active: bit 23 LIM_NEG, 24 LIM_POS, 25 HOME"
   localparam int StatusOvershootBit    = 22;  //@field STATUS OVERSHOOT 1 "the last controlled stop could not avoid a velocity reversal within STOP_JERK (limits below the plan's)"
   localparam int RegErr        = 32'h0000_0010;  //@reg ERR W1C "sticky error flags: write 1 to clear"
   localparam int ErrRejectBit  = 0;      //@field ERR REJECT 1 "a table/config/START write was refused (busy, e-stopped or disabled): SLVERR, nothing changed"
@@ -219,6 +227,8 @@ package sc_pkg;
   localparam int ErrEstopBit   = 2;      //@field ERR ESTOP 1 "e-stop latched (CMD.ESTOP or the e-stop input); blocks START until cleared"
   localparam int ErrFifoFullBit = 3;     //@field ERR FIFO_FULL 1 "a ROW_PUSH met a full FIFO: SLVERR, the row was not appended (the staged row is kept)"
   localparam int ErrDiscontBit = 4;      //@field ERR DISCONTINUITY 1 "a row did not continue the previous row's end state exactly: not executed, the axis stopped"
+  localparam int ErrLimNegBit  = 6;      //@field ERR LIMIT_NEG 1 "the - limit stopped motion into it or refused a START toward it"
+  localparam int ErrLimPosBit  = 7;      //@field ERR LIMIT_POS 1 "the + limit stopped motion into it or refused a START toward it"
   localparam int ErrUnderrunBit = 5;     //@field ERR UNDERRUN 1 "the FIFO ran dry while the axis was moving: the axis stopped"
   localparam int RegPulseCount = 32'h0000_0014;  //@reg PULSE_COUNT RO "net STEP pulses since the last START (signed)"
   localparam int RegRefPos     = 32'h0000_0018;  //@reg REF_POS RO "reference position P*, integer pulses (signed)"
@@ -369,14 +379,22 @@ package sc_pkg;
   localparam int IrqMoveDoneBit = 1;     //@field IRQ_STATUS MOVE_DONE 1 "a move ended (MOVE_INDEX advanced)"
   localparam int IrqIdleBit     = 2;     //@field IRQ_STATUS IDLE 1 "the axis became idle (BUSY fell)"
   localparam int IrqUnderrunBit = 3;     //@field IRQ_STATUS UNDERRUN 1 "the FIFO ran dry while moving"
-  localparam int IrqFaultBit    = 4;     //@field IRQ_STATUS FAULT 1 "a fault: FAULT_TABLE, FAULT_OVERRUN, DISCONTINUITY, FAULT_FERR or e-stop"
-  localparam int IrqW           = 5;
+  localparam int IrqFaultBit    = 4;     //@field IRQ_STATUS FAULT 1 "a fault: FAULT_TABLE, FAULT_OVERRUN, DISCONTINUITY, FAULT_FERR, e-stop or a limit acting"
+  localparam int IrqSwitchBit   = 5;     //@field IRQ_STATUS SWITCH 1 "a filtered switch level (STATUS.SW_LEVEL) changed"
+  localparam int IrqW           = 6;
   localparam int RegIrqEnable  = 32'h0000_00FC;  //@reg IRQ_ENABLE RW "interrupt enables, one per IRQ_STATUS bit"
   localparam int IrqEnableLsb  = 0;      //@field IRQ_ENABLE MASK IrqW "bit i enables IRQ_STATUS bit i"
   // Controlled-stop limits (motion control, from 0x100 on).
   localparam int RegStopJerk   = 32'h0000_0100;  //@reg STOP_JERK RW wide=JerkW reset=StopJerkReset "controlled-stop jerk limit J, executor LSB (2^-80 pulse/clock^3, > 0), 2 words low first"
   localparam int RegStopAcc    = 32'h0000_0108;  //@reg STOP_ACC RW wide=AccW reset=StopAccReset "controlled-stop deceleration limit D, executor LSB (2^-80 pulse/clock^2, > 0), 2 words low first"
-  // Writes to PULSE_TIME, DIR_TIME, POS_FRAC0, STOP_JERK, STOP_ACC, CMD.START and CMD.FLUSH
+  // Switch inputs (limit -, limit +, home): polarity, debounce, limit action.
+  localparam int RstDebounce   = 20000;   // 1 ms at 20 MHz
+  localparam int RegSwCfg      = 32'h0000_0110;  //@reg SW_CFG RW "switch inputs: polarity, debounce and what a limit does"
+  localparam int SwInvertLsb   = 0;      //@field SW_CFG INVERT SwW reset=0 "1 = active low: bit 0 LIM_NEG, 1 LIM_POS, 2 HOME"
+  localparam int SwLimEnBit    = 4;      //@field SW_CFG LIM_EN 1 reset=1 "1: motion into an active limit stops, a START toward it is refused"
+  localparam int SwLimHardBit  = 5;      //@field SW_CFG LIM_HARD 1 reset=0 "1: a limit stops at once (hard limit), 0: controlled stop with STOP_JERK / STOP_ACC"
+  localparam int SwDebounceLsb = 16;     //@field SW_CFG DEBOUNCE DebounceW reset=RstDebounce "clocks a new switch level must hold before it is taken"
+  // Writes to PULSE_TIME, DIR_TIME, POS_FRAC0, STOP_JERK, STOP_ACC, SW_CFG, CMD.START and CMD.FLUSH
   // while STATUS.BUSY is set are refused (SLVERR, ERR.REJECT); so are writes
   // to the controller settings (CL_CFG .. SETTLE_RATE). The row staging
   // registers and ROW_PUSH stay open: the host streams while the axis runs.

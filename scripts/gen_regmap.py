@@ -357,7 +357,7 @@ def doc(params, words, enums=None):
            "a write to a read-only register "
            "answers SLVERR. Both set ERR.BAD_ACCESS and change nothing else. Reserved bits read 0 "
            "and ignore writes. WSTRB selects bytes (CMD, ERR, IRQ_STATUS and ROW_PUSH act on byte 0).", "",
-           "Writes to PULSE_TIME, DIR_TIME, POS_FRAC0_*, STOP_JERK_*, STOP_ACC_*, CMD.START and CMD.FLUSH while "
+           "Writes to PULSE_TIME, DIR_TIME, POS_FRAC0_*, STOP_JERK_*, STOP_ACC_*, SW_CFG, CMD.START and CMD.FLUSH while "
            "STATUS.BUSY is set are refused: SLVERR, ERR.REJECT set, the running move is not touched. "
            "CMD.START is also refused while ERR.ESTOP is set or CTRL.ENABLE is 0. The row staging "
            "registers (SEG_*) and ROW_PUSH stay open while busy: the host appends rows to the "
@@ -367,7 +367,15 @@ def doc(params, words, enums=None):
            "`sc_axi_axis` (open loop) answers DECERR there. The controller settings (CL_CFG .. "
            "SETTLE_RATE) are locked while STATUS.BUSY is set like the pulse timing, and so is CTRL.CLOSED_LOOP "
            "(a CTRL write changing it while busy is refused). Their units: docs/closed_loop.md; reset "
-           "values = the closed-loop runner's defaults (`scurve sim --closed-loop`).", ""]
+           "values = the closed-loop runner's defaults (`scurve sim --closed-loop`).", "",
+           "Switch inputs (limit -, limit +, home; `sw_i` of both tops, Pmod JB3/JB4/JB7 on the board): each goes "
+           "through the common two-flop synchroniser, SW_CFG.INVERT and a debounce filter of SW_CFG.DEBOUNCE "
+           "clocks; STATUS.SW_LEVEL shows the filtered levels and every change raises IRQ_STATUS.SWITCH. With "
+           "SW_CFG.LIM_EN, motion into an active limit stops (SW_CFG.LIM_HARD = 0: the controlled stop with "
+           "STOP_JERK / STOP_ACC; 1: at once), and a START whose move heads into one is taken by the register "
+           "file but refused by the core (nothing moves). Either sets ERR.LIMIT_NEG / LIMIT_POS and "
+           "IRQ_STATUS.FAULT. Motion away from an active limit runs. Counts stay exact: PULSE_COUNT, REF_POS "
+           "and the pins agree after any limit stop (docs/limits.md).", ""]
     out += SOURCE_DOC
     out += ["## Registers", "",
            "| offset | name | access | reset | implemented bits | description |",

@@ -60,6 +60,7 @@ void RtlAxiAxis::step(const AxiIn& in, const RegsSide& side) {
   m.estop_i = side.estop;
   m.enc_ab_i = side.enc_ab & 3;
   m.enc_pos_i = uint32_t(side.enc_pos);
+  m.sw_i = side.sw_pins & ((1u << SwW) - 1);
   top_->tick();
 }
 
@@ -83,6 +84,7 @@ void RtlAxiServo::step(const AxiIn& in, const RegsSide& side) {
   m.estop_i = side.estop;
   m.enc_a_i = side.enc_ab & 1;
   m.enc_b_i = (side.enc_ab >> 1) & 1;
+  m.sw_i = side.sw_pins & ((1u << SwW) - 1);
   top_->tick();
 }
 
@@ -107,12 +109,13 @@ RtlBoard::RtlBoard() : ctx_(std::make_unique<VerilatedContext>()) {
 
 RtlBoard::~RtlBoard() { m_->final(); }
 
-void RtlBoard::tick100(bool uart_rx, bool rst_n, bool estop, bool enc_a, bool enc_b) {
+void RtlBoard::tick100(bool uart_rx, bool rst_n, bool estop, bool enc_a, bool enc_b, uint8_t sw) {
   m_->uart_rx_i = uart_rx;
   m_->ck_rst_ni = rst_n;
   m_->estop_i = estop;
   m_->enc_a_i = enc_a;
   m_->enc_b_i = enc_b;
+  m_->sw_i = sw & ((1u << SwW) - 1);
   m_->clk100_i = 1;
   m_->eval();
   m_->clk100_i = 0;

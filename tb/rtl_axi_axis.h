@@ -58,7 +58,8 @@ class RtlBoard {
   RtlBoard(const RtlBoard&) = delete;
   RtlBoard& operator=(const RtlBoard&) = delete;
   // One 100 MHz period (rising + falling edge) with these input levels.
-  void tick100(bool uart_rx, bool rst_n = true, bool estop = false, bool enc_a = false, bool enc_b = false);
+  void tick100(bool uart_rx, bool rst_n = true, bool estop = false, bool enc_a = false, bool enc_b = false,
+               uint8_t sw = 0);  // sw: the switch pins (bit 0 limit -, 1 limit +, 2 home)
   Pins pins() const;
   uint64_t clocks100() const { return clk100_; }
 

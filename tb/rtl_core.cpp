@@ -19,6 +19,7 @@ RtlCore::RtlCore() : top_(std::make_unique<VerilatedTop<Vsc_axis_core>>("sc_axis
   m.start_i = 0;
   m.abort_i = 0;
   drive_stop(m, last_.stop, last_.stop_jerk, last_.stop_acc);
+  drive_limits(m, last_.lim_fwd, last_.lim_rev, last_.lim_hard);
   // No external step source on the plain core (ExtStep = 0).
   m.ext_sel_i = 0;
   m.ext_req_i = 0;
@@ -57,6 +58,9 @@ void RtlCore::step(const CoreInputs& in) {
   if (in.stop != last_.stop || in.stop_jerk != last_.stop_jerk || in.stop_acc != last_.stop_acc) {
     drive_stop(m, in.stop, in.stop_jerk, in.stop_acc);
   }
+  if (in.lim_fwd != last_.lim_fwd || in.lim_rev != last_.lim_rev || in.lim_hard != last_.lim_hard) {
+    drive_limits(m, in.lim_fwd, in.lim_rev, in.lim_hard);
+  }
   last_.enable = in.enable;
   last_.cfg = in.cfg;
   last_.row_push = in.row_push;
@@ -67,6 +71,9 @@ void RtlCore::step(const CoreInputs& in) {
   last_.stop = in.stop;
   last_.stop_jerk = in.stop_jerk;
   last_.stop_acc = in.stop_acc;
+  last_.lim_fwd = in.lim_fwd;
+  last_.lim_rev = in.lim_rev;
+  last_.lim_hard = in.lim_hard;
   tick();
 }
 

@@ -40,6 +40,7 @@ void RtlServo::step(const ServoInputs& in) {
   m.start_i = in.start;
   m.abort_i = in.abort;
   drive_stop(m, in.stop, in.stop_jerk, in.stop_acc);
+  drive_limits(m, in.lim_fwd, in.lim_rev, in.lim_hard);
   m.enc_a_i = in.enc_a;
   m.enc_b_i = in.enc_b;
   top_->tick();

@@ -174,6 +174,14 @@ void drive_stop(V& m, bool stop, uint64_t stop_jerk, uint64_t stop_acc) {
   m.stop_acc_i = stop_acc;
 }
 
+// The limit inputs of the axis tops (sc_axis_core, sc_servo_axis).
+template <class V>
+void drive_limits(V& m, bool lim_fwd, bool lim_rev, bool lim_hard) {
+  m.lim_fwd_i = lim_fwd;
+  m.lim_rev_i = lim_rev;
+  m.lim_hard_i = lim_hard;
+}
+
 // The STEP/DIR and status outputs every top with an axis has under the same
 // port names (sc_axis_core, sc_servo_axis, sc_axi_axis, sc_axi_servo).
 template <class V, class O>
@@ -204,6 +212,8 @@ void read_axis_outputs(const V& m, O& o) {
   o.boundary_pos = int32_t(m.boundary_pos_o);
   o.fifo_level = m.fifo_level_o;
   o.fifo_full = m.fifo_full_o;
+  o.lim_trip_fwd = m.lim_trip_fwd_o;
+  o.lim_trip_rev = m.lim_trip_rev_o;
 }
 
 }  // namespace sc

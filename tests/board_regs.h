@@ -14,6 +14,7 @@
 #include "axi_bench.h"
 #include "paper_moves.h"
 #include "planner.h"
+#include "reg_encode.h"
 #include "sc_regmap.h"
 
 namespace sc::board_test {
@@ -48,6 +49,22 @@ inline Plan plan_or_die(const MoveRequest& req, const PulseTiming& t = PulseTimi
   const PlanResult r = plan_move(req, t);
   if (const auto* e = std::get_if<PlanError>(&r)) throw std::runtime_error(e->message);
   return std::get<Plan>(r);
+}
+
+// STOP_JERK / STOP_ACC from physical limits (pulses/s^3, pulses/s^2).
+template <class Bench>
+void set_stop_limits(Bench& b, double stop_jerk, double stop_acc) {
+  const auto w = scurve::encode_stop_limits(stop_jerk, stop_acc);
+  ASSERT_TRUE(std::holds_alternative<std::vector<RegWrite>>(w));
+  for (const RegWrite& r : std::get<std::vector<RegWrite>>(w)) ASSERT_EQ(b.write(r.addr, r.data), kOkay);
+}
+
+// A planned move's rows, pulse timing and POS_FRAC0 through the registers (no START).
+template <class Bench>
+void load(Bench& b, const Plan& p, const PulseTiming& t) {
+  for (const RegWrite& w : encode_move(p, t, false)) {
+    ASSERT_EQ(b.write(w.addr, w.data), kOkay) << reg_name(w.addr);
+  }
 }
 
 }  // namespace sc::board_test

@@ -25,19 +25,6 @@ MoveRequest short_move(int64_t distance = 30000) {
   return scurve::test::move_request(distance, 0, 150000, 0, 2e6, 2e8);
 }
 
-// STOP_JERK / STOP_ACC for a stop at the move's own limits.
-void set_stop_limits(AxiBench& b, double stop_jerk, double stop_acc) {
-  const auto w = scurve::encode_stop_limits(stop_jerk, stop_acc);
-  ASSERT_TRUE(std::holds_alternative<std::vector<RegWrite>>(w));
-  for (const RegWrite& r : std::get<std::vector<RegWrite>>(w)) ASSERT_EQ(b.write(r.addr, r.data), kOkay);
-}
-
-void load(AxiBench& b, const Plan& p, const PulseTiming& t) {
-  for (const RegWrite& w : encode_move(p, t, false)) {
-    ASSERT_EQ(b.write(w.addr, w.data), kOkay) << reg_name(w.addr);
-  }
-}
-
 // Start, poll STATUS until DONE; returns clocks from START to DONE seen.
 uint64_t run_to_done(AxiBench& b, uint64_t limit, int poll = 2000) {
   EXPECT_EQ(b.write(reg_addr("CMD"), field_mask("CMD", "START")), kOkay);
@@ -487,16 +474,18 @@ TEST(BoardUart, IllegalAddressReservedBitsAndWriteWhileBusy) {
   EXPECT_FALSE(r.ok);
   EXPECT_NE(r.error.find("0x3FC"), std::string::npos) << r.error;
   // Words above the 2.x map (address bytes 0x40..0xFF) reach the bus as
-  // byte addresses 0x100..0x3FC: STOP_JERK / STOP_ACC at 0x100..0x10C (their
-  // reset values, not ID or CTRL), the rest unmapped, DECERR, no alias of
-  // 0x000..0x0FC.
+  // byte addresses 0x100..0x3FC: STOP_JERK / STOP_ACC at 0x100..0x10C and
+  // SW_CFG at 0x110 (their reset values, not ID or CTRL), the rest unmapped,
+  // DECERR, no alias of 0x000..0x0FC.
   r = bd.host.read(0x100);
   ASSERT_TRUE(r.ok) << r.error;
   EXPECT_EQ(r.status, kOkay);
   EXPECT_EQ(r.data, uint32_t(StopJerkReset)) << "STOP_JERK_0 at its reset value";
   r = bd.host.read(0x10C);
   EXPECT_EQ(r.data, uint32_t(StopAccReset >> 32)) << "STOP_ACC_1 at its reset value";
-  for (const uint32_t a : {0x110u, 0x114u, 0x1F8u, 0x200u, 0x2CCu, 0x3FCu}) {
+  r = bd.host.read(reg_addr("SW_CFG"));
+  EXPECT_EQ(r.data, reg("SW_CFG").reset) << "SW_CFG at its reset value";
+  for (const uint32_t a : {0x114u, 0x118u, 0x1F8u, 0x200u, 0x2CCu, 0x3FCu}) {
     r = bd.host.read(a);
     ASSERT_TRUE(r.ok) << r.error;
     EXPECT_EQ(r.status, kDecErr) << std::hex << a;

@@ -35,6 +35,7 @@ set rtl_files {
   sc_uart_tx.sv
   sc_uart_rx.sv
   sc_sync.sv
+  sc_switch_filter.sv
   sc_rst_sync.sv
   sc_clkgen.sv
   sc_board_top.sv

@@ -230,7 +230,8 @@ int sc_main(int argc, char** argv) {
   dut.stop_jerk_i(stop_jerk);
   dut.stop_acc_i(stop_acc);
   // No external step source on the plain core (ExtStep = 0): one constant
-  // low signal for every ext_* input; the extra outputs are not observed.
+  // low signal for every ext_* input (and the limit inputs); the extra
+  // outputs are not observed.
   sc_signal<bool> ext_off("ext_off");
   sc_signal<bool> exec_start("exec_start"), abort_q("abort_q"), ref_done("ref_done"), ref_running("ref_running"),
       step_busy("step_busy");
@@ -242,6 +243,13 @@ int sc_main(int argc, char** argv) {
   dut.ext_busy_i(ext_off);
   dut.ext_abort_i(ext_off);
   dut.ext_done_i(ext_off);
+  // No limit switches on this bench.
+  dut.lim_fwd_i(ext_off);
+  dut.lim_rev_i(ext_off);
+  dut.lim_hard_i(ext_off);
+  sc_signal<bool> lim_trip_fwd("lim_trip_fwd"), lim_trip_rev("lim_trip_rev");
+  dut.lim_trip_fwd_o(lim_trip_fwd);
+  dut.lim_trip_rev_o(lim_trip_rev);
   dut.exec_start_o(exec_start);
   dut.abort_o(abort_q);
   dut.ref_done_o(ref_done);
