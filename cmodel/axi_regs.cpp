@@ -83,6 +83,7 @@ uint32_t AxiRegs::read_word(uint16_t a, const RegsSide& side, const CoreOutputs&
       if (core.stopping) s |= bit(StatusStoppingBit);
       if (core.overshoot) s |= bit(StatusOvershootBit);
       s |= uint32_t(side.sw_level & ((1u << SwW) - 1)) << StatusSwLevelLsb;
+      if (q_.latched) s |= bit(StatusLatchedBit);
       return s;
     }
     case RegErr:
@@ -91,6 +92,9 @@ uint32_t AxiRegs::read_word(uint16_t a, const RegsSide& side, const CoreOutputs&
              (q_.err_disc ? bit(ErrDiscontBit) : 0) | (q_.err_under ? bit(ErrUnderrunBit) : 0) |
              (q_.err_lim_neg ? bit(ErrLimNegBit) : 0) | (q_.err_lim_pos ? bit(ErrLimPosBit) : 0);
     case RegSwCfg: return sw_cfg_word();
+    case RegLatchCfg: return (q_.latch_rise ? bit(LatchRiseBit) : 0) | (q_.latch_fall ? bit(LatchFallBit) : 0);
+    case RegLatchPulse: return uint32_t(q_.latch_pulse);
+    case RegLatchEnc: return uint32_t(q_.latch_enc);
     case RegPulseCount: return uint32_t(core.pulse_count);
     case RegRefPos: return uint32_t(core.ref_pos_int);
     case RegEncPos: return uint32_t(side.enc_pos);
@@ -170,7 +174,7 @@ void AxiRegs::step(const AxiIn& in, const RegsSide& side, const CoreOutputs& cor
     } else {
       switch (a) {
         case RegId: case RegStatus: case RegPulseCount: case RegRefPos: case RegEncPos: case RegFollowErr:
-        case RegFifoStatus: case RegMoveIndex: case RegBoundaryPos:
+        case RegFifoStatus: case RegMoveIndex: case RegBoundaryPos: case RegLatchPulse: case RegLatchEnc:
           d.bresp = kSlvErr;
           set_bad = true;
           break;
@@ -231,6 +235,13 @@ void AxiRegs::step(const AxiIn& in, const RegsSide& side, const CoreOutputs& cor
           d.sw_debounce = uint16_t(field(w, SwDebounceLsb, DebounceW));
           break;
         }
+        case RegLatchCfg:
+          if (q.wstrb & 1) {
+            d.latch_rise = (wd >> LatchRiseBit) & 1;
+            d.latch_fall = (wd >> LatchFallBit) & 1;
+            d.latched = false;
+          }
+          break;
         case RegFifoLow:
           d.low_water = uint8_t(field(wmerge(uint32_t(q.low_water) << FifoLowLsb, wd, wmask), FifoLowLsb, RowLevelW));
           break;
@@ -329,6 +340,15 @@ void AxiRegs::step(const AxiIn& in, const RegsSide& side, const CoreOutputs& cor
   if (core.lim_trip_rev) d.err_lim_neg = true;
   if (core.lim_trip_fwd) d.err_lim_pos = true;
   if (side.sw_edge != 0) d.irq_st |= uint8_t(bit(IrqSwitchBit));
+  // position latch: an edge of the filtered home level, armed; a capture
+  // wins over a re-arm in the same clock
+  const bool home_edge = (side.sw_edge >> SwHome) & 1, home_level = (side.sw_level >> SwHome) & 1;
+  if (!q.latched && home_edge && (home_level ? q.latch_rise : q.latch_fall)) {
+    d.latched = true;
+    d.latch_pulse = core.pulse_count;
+    d.latch_enc = side.enc_pos;
+    d.irq_st |= uint8_t(bit(IrqLatchBit));
+  }
   if (below && !q.below) d.irq_st |= uint8_t(bit(IrqLowWaterBit));
   if (core.move_done) d.irq_st |= uint8_t(bit(IrqMoveDoneBit));
   if (q.busy_prev && !busy_eff) d.irq_st |= uint8_t(bit(IrqIdleBit));

@@ -107,6 +107,9 @@ class AxiRegs {
     bool lim_en = true;
     bool lim_hard = false;
     uint16_t sw_debounce = uint16_t(RstDebounce);
+    bool latch_rise = false, latch_fall = false;  // LATCH_CFG
+    bool latched = false;
+    int32_t latch_pulse = 0, latch_enc = 0;
     bool operator==(const State&) const = default;
   };
 

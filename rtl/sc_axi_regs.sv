@@ -30,7 +30,9 @@
 // SW_CFG configures the switch filter (sw_invert_o, sw_debounce_o) and the
 // limits (lim_en_o, lim_hard_o); STATUS.SW_LEVEL shows the filtered levels,
 // an edge of one raises IRQ_STATUS.SWITCH, and the core's limit trips set
-// ERR.LIMIT_NEG / LIMIT_POS and IRQ_STATUS.FAULT.
+// ERR.LIMIT_NEG / LIMIT_POS and IRQ_STATUS.FAULT. The position latch
+// captures PULSE_COUNT and ENC_POS in the clock the filtered home level
+// changes (the edge LATCH_CFG selects), once until LATCH_CFG is written.
 module sc_axi_regs #(
   parameter bit Servo = 1'b0
 ) (
@@ -172,6 +174,9 @@ module sc_axi_regs #(
   localparam logic [AW-1:0] AVel2      = AW'(sc_pkg::RegSegVel0 + 8);
   localparam logic [AW-1:0] ARowPush   = AW'(sc_pkg::RegRowPush);
   localparam logic [AW-1:0] ASwCfg     = AW'(sc_pkg::RegSwCfg);
+  localparam logic [AW-1:0] ALatchCfg  = AW'(sc_pkg::RegLatchCfg);
+  localparam logic [AW-1:0] ALatchPul  = AW'(sc_pkg::RegLatchPulse);
+  localparam logic [AW-1:0] ALatchEnc  = AW'(sc_pkg::RegLatchEnc);
   localparam int SwW       = sc_pkg::SwW;
   localparam int DebounceW = sc_pkg::DebounceW;
 
@@ -250,6 +255,9 @@ module sc_axi_regs #(
   logic                      lim_en_q, lim_en_d, lim_hard_q, lim_hard_d;
   logic [DebounceW-1:0]      sw_deb_q, sw_deb_d;
   logic                      lim_trip;
+  logic                      latch_rise_q, latch_rise_d, latch_fall_q, latch_fall_d;
+  logic                      latched_q, latched_d, latch_cap;
+  logic signed [sc_pkg::PosIntW-1:0] latch_pulse_q, latch_pulse_d, latch_enc_q, latch_enc_d;
   logic [31:0]               sw_cfg_word, sw_cfg_new;  // SW_CFG as read, and as a write would leave it
 
   // ---- decode --------------------------------------------------------------
@@ -323,6 +331,7 @@ module sc_axi_regs #(
     status_word[sc_pkg::StatusStoppingBit]          = stopping_i;
     status_word[sc_pkg::StatusOvershootBit]         = overshoot_i;
     status_word[sc_pkg::StatusSwLevelLsb +: SwW]    = sw_level_i;
+    status_word[sc_pkg::StatusLatchedBit]           = latched_q;
   end
 
   always_comb begin
@@ -333,6 +342,10 @@ module sc_axi_regs #(
     sw_cfg_word[sc_pkg::SwDebounceLsb +: DebounceW] = sw_deb_q;
   end
   assign sw_cfg_new = wmerge(sw_cfg_word, wd, wmask);
+
+  // position latch: an edge of the filtered home level, armed
+  assign latch_cap = !latched_q && sw_edge_i[sc_pkg::SwHome] &&
+                     (sw_level_i[sc_pkg::SwHome] ? latch_rise_q : latch_fall_q);
 
   // interrupt causes: events of the core's status (edges of its levels)
   assign below     = fifo_level_i < low_water_q;
@@ -362,6 +375,12 @@ module sc_axi_regs #(
         rd_word[ErrLimPosBit]   = err_lpos_q;
       end
       ASwCfg:     rd_word = sw_cfg_word;
+      ALatchCfg: begin
+        rd_word[sc_pkg::LatchRiseBit] = latch_rise_q;
+        rd_word[sc_pkg::LatchFallBit] = latch_fall_q;
+      end
+      ALatchPul:  rd_word = 32'(latch_pulse_q);
+      ALatchEnc:  rd_word = 32'(latch_enc_q);
       APulseCnt:  rd_word = 32'(pulse_count_i);
       ARefPos:    rd_word = 32'(ref_pos_i);
       AEncPos:    rd_word = 32'(enc_pos_i);
@@ -459,6 +478,11 @@ module sc_axi_regs #(
     lim_en_d     = lim_en_q;
     lim_hard_d   = lim_hard_q;
     sw_deb_d     = sw_deb_q;
+    latch_rise_d = latch_rise_q;
+    latch_fall_d = latch_fall_q;
+    latched_d    = latched_q;
+    latch_pulse_d = latch_pulse_q;
+    latch_enc_d  = latch_enc_q;
     set_reject   = 1'b0;
     set_bad      = 1'b0;
 
@@ -491,7 +515,8 @@ module sc_axi_regs #(
         set_reject = 1'b1;
       end else begin
         unique case (awaddr_q)
-          AId, AStatus, APulseCnt, ARefPos, AEncPos, AFollowErr, AFifoStat, AMoveIdx, ABoundPos: begin
+          AId, AStatus, APulseCnt, ARefPos, AEncPos, AFollowErr, AFifoStat, AMoveIdx, ABoundPos,
+          ALatchPul, ALatchEnc: begin
             bresp_d = RespSlvErr;
             set_bad = 1'b1;
           end
@@ -548,6 +573,13 @@ module sc_axi_regs #(
             lim_en_d   = sw_cfg_new[sc_pkg::SwLimEnBit];
             lim_hard_d = sw_cfg_new[sc_pkg::SwLimHardBit];
             sw_deb_d   = sw_cfg_new[sc_pkg::SwDebounceLsb +: DebounceW];
+          end
+          ALatchCfg: begin
+            if (wstrb_q[0]) begin
+              latch_rise_d = wd[sc_pkg::LatchRiseBit];
+              latch_fall_d = wd[sc_pkg::LatchFallBit];
+              latched_d    = 1'b0;
+            end
           end
           AFifoLow: low_water_d = RowLevelW'(wmerge(32'(low_water_q) << sc_pkg::FifoLowLsb, wd, wmask)
                                              >> sc_pkg::FifoLowLsb);
@@ -632,6 +664,13 @@ module sc_axi_regs #(
     if (lim_trip_rev_i)                 err_lneg_d  = 1'b1;
     if (lim_trip_fwd_i)                 err_lpos_d  = 1'b1;
     if (sw_edge_i != '0)                irq_st_d[sc_pkg::IrqSwitchBit]   = 1'b1;
+    // a capture wins over a re-arm in the same clock (the edge is not lost)
+    if (latch_cap) begin
+      latched_d     = 1'b1;
+      latch_pulse_d = pulse_count_i;
+      latch_enc_d   = enc_pos_i;
+      irq_st_d[sc_pkg::IrqLatchBit] = 1'b1;
+    end
     if (below && !below_q)              irq_st_d[sc_pkg::IrqLowWaterBit] = 1'b1;
     if (move_done_i)                    irq_st_d[sc_pkg::IrqMoveDoneBit] = 1'b1;
     if (busy_prev_q && !busy_eff)       irq_st_d[sc_pkg::IrqIdleBit]     = 1'b1;
@@ -694,6 +733,11 @@ module sc_axi_regs #(
       lim_en_q     <= 1'b1;
       lim_hard_q   <= 1'b0;
       sw_deb_q     <= DebounceW'(sc_pkg::RstDebounce);
+      latch_rise_q <= 1'b0;
+      latch_fall_q <= 1'b0;
+      latched_q    <= 1'b0;
+      latch_pulse_q <= '0;
+      latch_enc_q  <= '0;
     end else begin
       aw_full_q    <= aw_full_d;
       awaddr_q     <= awaddr_d;
@@ -747,6 +791,11 @@ module sc_axi_regs #(
       lim_en_q     <= lim_en_d;
       lim_hard_q   <= lim_hard_d;
       sw_deb_q     <= sw_deb_d;
+      latch_rise_q <= latch_rise_d;
+      latch_fall_q <= latch_fall_d;
+      latched_q    <= latched_d;
+      latch_pulse_q <= latch_pulse_d;
+      latch_enc_q  <= latch_enc_d;
     end
   end
 

@@ -219,6 +219,7 @@ package sc_pkg;
   localparam int StatusSegIdxLsb       = 16;  //@field STATUS SEG_IDX SegIdxW "row of the current move being executed (modulo 16)"
   localparam int StatusDiscontBit      = 20;  //@field STATUS DISCONTINUITY 1 "a row did not continue the motion exactly: the axis stopped (until the next START)"
   localparam int StatusStoppingBit     = 21;  //@field STATUS STOPPING 1 "a controlled stop runs (CMD.STOP, underrun, discontinuity)"
+  localparam int StatusLatchedBit      = 26;  //@field STATUS LATCHED 1 "LATCH_PULSE / LATCH_ENC hold a capture (a LATCH_CFG write re-arms)"
   localparam int StatusSwLevelLsb      = 23;  //@field STATUS SW_LEVEL SwW "filtered switch levels, 1 = active: bit 23 LIM_NEG, 24 LIM_POS, 25 HOME"
   localparam int StatusOvershootBit    = 22;  //@field STATUS OVERSHOOT 1 "the last controlled stop could not avoid a velocity reversal within STOP_JERK (limits below the plan's)"
   localparam int RegErr        = 32'h0000_0010;  //@reg ERR W1C "sticky error flags: write 1 to clear"
@@ -381,7 +382,8 @@ package sc_pkg;
   localparam int IrqUnderrunBit = 3;     //@field IRQ_STATUS UNDERRUN 1 "the FIFO ran dry while moving"
   localparam int IrqFaultBit    = 4;     //@field IRQ_STATUS FAULT 1 "a fault: FAULT_TABLE, FAULT_OVERRUN, DISCONTINUITY, FAULT_FERR, e-stop or a limit acting"
   localparam int IrqSwitchBit   = 5;     //@field IRQ_STATUS SWITCH 1 "a filtered switch level (STATUS.SW_LEVEL) changed"
-  localparam int IrqW           = 6;
+  localparam int IrqLatchBit    = 6;     //@field IRQ_STATUS LATCH 1 "the position latch captured (STATUS.LATCHED rose)"
+  localparam int IrqW           = 7;
   localparam int RegIrqEnable  = 32'h0000_00FC;  //@reg IRQ_ENABLE RW "interrupt enables, one per IRQ_STATUS bit"
   localparam int IrqEnableLsb  = 0;      //@field IRQ_ENABLE MASK IrqW "bit i enables IRQ_STATUS bit i"
   // Controlled-stop limits (motion control, from 0x100 on).
@@ -394,6 +396,13 @@ package sc_pkg;
   localparam int SwLimEnBit    = 4;      //@field SW_CFG LIM_EN 1 reset=1 "1: motion into an active limit stops, a START toward it is refused"
   localparam int SwLimHardBit  = 5;      //@field SW_CFG LIM_HARD 1 reset=0 "1: a limit stops at once (hard limit), 0: controlled stop with STOP_JERK / STOP_ACC"
   localparam int SwDebounceLsb = 16;     //@field SW_CFG DEBOUNCE DebounceW reset=RstDebounce "clocks a new switch level must hold before it is taken"
+  // Position latch on the home switch: the counts of the clock its filtered
+  // level changes (the first clock STATUS.SW_LEVEL shows the new level).
+  localparam int RegLatchCfg   = 32'h0000_0114;  //@reg LATCH_CFG RW "position latch: which edge of the filtered home switch captures; a write re-arms"
+  localparam int LatchRiseBit  = 0;      //@field LATCH_CFG RISE 1 reset=0 "capture when home becomes active"
+  localparam int LatchFallBit  = 1;      //@field LATCH_CFG FALL 1 reset=0 "capture when home becomes inactive (released)"
+  localparam int RegLatchPulse = 32'h0000_0118;  //@reg LATCH_PULSE RO "PULSE_COUNT at the capture (signed)"
+  localparam int RegLatchEnc   = 32'h0000_011C;  //@reg LATCH_ENC RO "ENC_POS at the capture (signed)"
   // Writes to PULSE_TIME, DIR_TIME, POS_FRAC0, STOP_JERK, STOP_ACC, SW_CFG, CMD.START and CMD.FLUSH
   // while STATUS.BUSY is set are refused (SLVERR, ERR.REJECT); so are writes
   // to the controller settings (CL_CFG .. SETTLE_RATE). The row staging

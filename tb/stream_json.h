@@ -12,8 +12,11 @@ namespace sc {
 
 // The stream file of `scurve stream`: {"limits": {"a_max", "j_max", "v_max"},
 // "moves": [{"distance", "v_cruise", "v_junction_max"}, ...]} (the junction
-// limit optional: v_max). Unknown keys, wrong types and values out of range
-// throw input::Error naming the place ("moves[3].v_cruise").
+// limit optional: v_max), and optionally "start_position" (pulses) and
+// "soft_limits": {"min", "max", "axis"} (the travel window, either side
+// optional; into limits.soft_limits / limits.start_position). Unknown keys,
+// wrong types and values out of range throw input::Error naming the place
+// ("moves[3].v_cruise").
 struct StreamRequest {
   scurve::StreamLimits limits;
   std::vector<scurve::StreamMove> moves;

@@ -475,8 +475,8 @@ TEST(BoardUart, IllegalAddressReservedBitsAndWriteWhileBusy) {
   EXPECT_NE(r.error.find("0x3FC"), std::string::npos) << r.error;
   // Words above the 2.x map (address bytes 0x40..0xFF) reach the bus as
   // byte addresses 0x100..0x3FC: STOP_JERK / STOP_ACC at 0x100..0x10C and
-  // SW_CFG at 0x110 (their reset values, not ID or CTRL), the rest unmapped,
-  // DECERR, no alias of 0x000..0x0FC.
+  // SW_CFG .. LATCH_ENC at 0x110..0x11C (their reset values, not ID or
+  // CTRL), the rest unmapped, DECERR, no alias of 0x000..0x0FC.
   r = bd.host.read(0x100);
   ASSERT_TRUE(r.ok) << r.error;
   EXPECT_EQ(r.status, kOkay);
@@ -485,16 +485,17 @@ TEST(BoardUart, IllegalAddressReservedBitsAndWriteWhileBusy) {
   EXPECT_EQ(r.data, uint32_t(StopAccReset >> 32)) << "STOP_ACC_1 at its reset value";
   r = bd.host.read(reg_addr("SW_CFG"));
   EXPECT_EQ(r.data, reg("SW_CFG").reset) << "SW_CFG at its reset value";
-  for (const uint32_t a : {0x114u, 0x118u, 0x1F8u, 0x200u, 0x2CCu, 0x3FCu}) {
+  EXPECT_EQ(bd.host.read(reg_addr("LATCH_CFG")).data, 0u);
+  for (const uint32_t a : {0x120u, 0x124u, 0x1F8u, 0x200u, 0x2CCu, 0x3FCu}) {
     r = bd.host.read(a);
     ASSERT_TRUE(r.ok) << r.error;
     EXPECT_EQ(r.status, kDecErr) << std::hex << a;
     EXPECT_EQ(r.data, 0u) << std::hex << a;
   }
-  r = bd.host.write(0x114, field_mask("CTRL", "ENABLE"));
+  r = bd.host.write(0x124, field_mask("CTRL", "ENABLE"));
   ASSERT_TRUE(r.ok) << r.error;
   EXPECT_EQ(r.status, kDecErr);
-  EXPECT_EQ(bd.host.read(reg_addr("CTRL")).data, 0u) << "0x114 wrote CTRL";
+  EXPECT_EQ(bd.host.read(reg_addr("CTRL")).data, 0u) << "0x124 wrote CTRL";
   r = bd.host.write(reg_addr("ID"), 0);
   EXPECT_EQ(r.status, kSlvErr);
   r = bd.host.write(reg_addr("SEG_PHASE"), 0xffffffffu);

@@ -16,6 +16,7 @@
 #include <cstdio>
 #include <random>
 #include <string>
+#include <vector>
 
 #include "axi_bench.h"
 #include "board_regs.h"
@@ -266,5 +267,98 @@ TEST(SwitchFilter, ALevelIsTakenAfterHoldingForTheDebouncePlusOneAndShorterPulse
     // Inverted: the pin high reads inactive.
     for (uint32_t k = 0; k < deb + 5; ++k) f.step(4u, 4u, deb);
     EXPECT_EQ(f.level(), 0u) << "debounce " << deb;
+  }
+}
+
+namespace {
+
+// One move over the home switch (clean contact): the pins' counts after
+// every clock of the move and the clock the pin first changed (-1: never).
+struct LatchRun {
+  std::vector<int64_t> count;  // pins' net steps after clock i of the run
+  std::vector<int32_t> enc;    // the encoder input during clock i
+  int64_t first_change = -1;
+};
+
+LatchRun run_over_home(AxiBench& b, SwitchPlant& plant, const Plan& p, bool want_active) {
+  LatchRun r;
+  load(b, p, PulseTiming{});
+  EXPECT_EQ(b.write(reg_addr("CMD"), field_mask("CMD", "START")), kOkay);
+  bool moved = false, last_pin = !want_active;
+  for (uint64_t i = 0; i < p.total_clocks + 400'000 && !b.failed(); ++i) {
+    const int64_t pos = b.net_steps();
+    const bool pin = plant.pin(pos);
+    b.side().sw_pins = uint8_t(pin ? 1u << SwHome : 0u);
+    // An encoder input that changes every clock (3 counts per pulse plus a
+    // clock stamp), so a capture one clock off reads a different value.
+    const int32_t enc = int32_t(3 * pos + 7 * int64_t(r.count.size()) + 11);
+    b.side().enc_pos = enc;
+    r.enc.push_back(enc);
+    if (pin != last_pin && r.first_change < 0) r.first_change = int64_t(r.count.size());
+    last_pin = pin;
+    b.tick();
+    r.count.push_back(b.net_steps());
+    moved = moved || b.out().busy;
+    if (moved && !b.out().busy && i > 1000) break;
+  }
+  return r;
+}
+
+}  // namespace
+
+// The latch against the plant: with a clean contact the capture holds the
+// counts of the clock the filtered level first shows the new state, which
+// the filter's rule puts DEBOUNCE + 2 clocks after the first clock the pin
+// shows it (two synchroniser flops, one of filtering; the register file
+// takes it the next clock, with the encoder input of that next clock).
+// The encoder input changes every clock, so a capture a clock early or late
+// fails.
+TEST(HomeLatch, CapturesTheCountsOfTheClockTheFilteredHomeEdgeArrivesOnBothEdges) {
+  std::mt19937_64 g(7);
+  for (int i = 0; i < 4 && !::testing::Test::HasFatalFailure(); ++i) {
+    const int dir = (i & 1) ? -1 : 1;
+    const int debounce = int(g() % 3 == 0 ? 0 : g() % 500);
+    const int64_t d = int64_t(1000 + g() % 3000) * dir;
+    const int64_t home = d / 4 + int64_t(g() % uint64_t(std::abs(d) / 2)) * dir;
+    SCOPED_TRACE("distance " + std::to_string(d) + ", home at " + std::to_string(home) + ", debounce " +
+                 std::to_string(debounce));
+    AxiBench b(true, uint32_t(200 + i));
+    b.reset();
+    SwitchPlant plant(home, dir, 0, false, uint64_t(i));
+    ASSERT_EQ(b.write(reg_addr("SW_CFG"), field_mask("SW_CFG", "LIM_EN") | (uint32_t(debounce) << SwDebounceLsb)),
+              kOkay);
+    ASSERT_EQ(b.write(reg_addr("CTRL"), field_mask("CTRL", "ENABLE")), kOkay);
+    ASSERT_EQ(b.write(reg_addr("LATCH_CFG"), field_mask("LATCH_CFG", "RISE")), kOkay);
+    ASSERT_EQ(b.write(reg_addr("IRQ_STATUS"), 0xffffffffu), kOkay);
+    const Plan out = plan_or_die(scurve::test::move_request(d, 0, log_uniform(g, 3e4, 1.5e5), 0, 1e6, 1e8));
+    const LatchRun r1 = run_over_home(b, plant, out, true);
+    ASSERT_FALSE(b.failed()) << b.error();
+    ASSERT_GE(r1.first_change, 0) << "the move never reached home";
+    const size_t at1 = size_t(r1.first_change + debounce + 2);
+    ASSERT_LT(at1, r1.count.size());
+    EXPECT_TRUE(b.read(reg_addr("STATUS")).first & field_mask("STATUS", "LATCHED"));
+    EXPECT_TRUE(b.read(reg_addr("IRQ_STATUS")).first & field_mask("IRQ_STATUS", "LATCH"));
+    EXPECT_EQ(int32_t(b.read(reg_addr("LATCH_PULSE")).first), r1.count[at1]) << "rising edge";
+    ASSERT_LT(at1 + 1, r1.enc.size());
+    EXPECT_EQ(int32_t(b.read(reg_addr("LATCH_ENC")).first), r1.enc[at1 + 1]) << "rising edge";
+    EXPECT_EQ(b.net_steps(), d);
+
+    // Back over it: the release, after a re-arm on the falling edge.
+    ASSERT_EQ(b.write(reg_addr("LATCH_CFG"), field_mask("LATCH_CFG", "FALL")), kOkay);
+    EXPECT_FALSE(b.read(reg_addr("STATUS")).first & field_mask("STATUS", "LATCHED")) << "a write re-arms";
+    const int64_t start2 = b.net_steps();
+    const Plan back = plan_or_die(scurve::test::move_request(-d, 0, log_uniform(g, 3e4, 1.5e5), 0, 1e6, 1e8));
+    const LatchRun r2 = run_over_home(b, plant, back, false);
+    ASSERT_FALSE(b.failed()) << b.error();
+    ASSERT_GE(r2.first_change, 0);
+    const size_t at2 = size_t(r2.first_change + debounce + 2);
+    ASSERT_LT(at2, r2.count.size());
+    EXPECT_EQ(int32_t(b.read(reg_addr("LATCH_PULSE")).first), r2.count[at2] - start2)
+        << "falling edge (PULSE_COUNT restarts at START)";
+    ASSERT_LT(at2 + 1, r2.enc.size());
+    EXPECT_EQ(int32_t(b.read(reg_addr("LATCH_ENC")).first), r2.enc[at2 + 1]) << "falling edge";
+    EXPECT_EQ(b.net_steps(), 0);
+    std::printf("[latch] home at %lld, debounce %d: rise latched at %lld, release at %lld\n", (long long)home,
+                debounce, (long long)r1.count[at1], (long long)r2.count[at2]);
   }
 }

@@ -29,13 +29,13 @@ set rtl_files {
   sc_quad_decoder.sv
   sc_axis_core.sv
   sc_servo_axis.sv
+  sc_switch_filter.sv
   sc_axi_regs.sv
   sc_axi_servo.sv
   sc_uart_bridge.sv
   sc_uart_tx.sv
   sc_uart_rx.sv
   sc_sync.sv
-  sc_switch_filter.sv
   sc_rst_sync.sv
   sc_clkgen.sv
   sc_board_top.sv
