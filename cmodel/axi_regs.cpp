@@ -28,6 +28,8 @@ bool locked_addr(uint16_t a) {
     case RegPosFrac0: case RegPosFrac0 + 4: case RegPosFrac0 + 8:
     case RegStopJerk: case RegStopJerk + 4: case RegStopAcc: case RegStopAcc + 4:
     case RegSwCfg:
+    case RegGuardVel: case RegGuardVel + 4: case RegGuardVel + 8:
+    case RegGuardAcc: case RegGuardAcc + 4: case RegGuardJerk: case RegGuardJerk + 4:
       return true;
     default:
       return false;
@@ -73,7 +75,9 @@ uint32_t AxiRegs::read_word(uint16_t a, const RegsSide& side, const CoreOutputs&
       if (core.fault_table) s |= bit(StatusFaultTableBit);
       if (core.fault_overrun) s |= bit(StatusFaultOverrunBit);
       if (q_.err_estop) s |= bit(StatusEstopBit);
-      if (q_.err_reject || q_.err_bad || q_.err_estop || q_.err_lim_neg || q_.err_lim_pos) s |= bit(StatusErrBit);
+      if (q_.err_reject || q_.err_bad || q_.err_estop || q_.err_lim_neg || q_.err_lim_pos || q_.err_guard) {
+        s |= bit(StatusErrBit);
+      }
       if (st.fault_ferr) s |= bit(StatusFaultFerrBit);
       if (st.in_pos) s |= bit(StatusInPosBit);
       s |= uint32_t(side.enc_ab & 3) << StatusEncALsb;
@@ -84,13 +88,15 @@ uint32_t AxiRegs::read_word(uint16_t a, const RegsSide& side, const CoreOutputs&
       if (core.overshoot) s |= bit(StatusOvershootBit);
       s |= uint32_t(side.sw_level & ((1u << SwW) - 1)) << StatusSwLevelLsb;
       if (q_.latched) s |= bit(StatusLatchedBit);
+      if (core.guard) s |= bit(StatusGuardBit);
       return s;
     }
     case RegErr:
       return (q_.err_reject ? bit(ErrRejectBit) : 0) | (q_.err_bad ? bit(ErrBadAddrBit) : 0) |
              (q_.err_estop ? bit(ErrEstopBit) : 0) | (q_.err_full ? bit(ErrFifoFullBit) : 0) |
              (q_.err_disc ? bit(ErrDiscontBit) : 0) | (q_.err_under ? bit(ErrUnderrunBit) : 0) |
-             (q_.err_lim_neg ? bit(ErrLimNegBit) : 0) | (q_.err_lim_pos ? bit(ErrLimPosBit) : 0);
+             (q_.err_lim_neg ? bit(ErrLimNegBit) : 0) | (q_.err_lim_pos ? bit(ErrLimPosBit) : 0) |
+             (q_.err_guard ? bit(ErrGuardBit) : 0);
     case RegSwCfg: return sw_cfg_word();
     case RegLatchCfg: return (q_.latch_rise ? bit(LatchRiseBit) : 0) | (q_.latch_fall ? bit(LatchFallBit) : 0);
     case RegLatchPulse: return uint32_t(q_.latch_pulse);
@@ -120,6 +126,13 @@ uint32_t AxiRegs::read_word(uint16_t a, const RegsSide& side, const CoreOutputs&
     case RegStopJerk + 4: return uint32_t(q_.stop_jerk >> 32);
     case RegStopAcc: return uint32_t(q_.stop_acc);
     case RegStopAcc + 4: return uint32_t(q_.stop_acc >> 32);
+    case RegGuardVel: return get_word(q_.guard.vel, 0);
+    case RegGuardVel + 4: return get_word(q_.guard.vel, 32);
+    case RegGuardVel + 8: return get_word(q_.guard.vel, 64);
+    case RegGuardAcc: return uint32_t(q_.guard.acc);
+    case RegGuardAcc + 4: return uint32_t(q_.guard.acc >> 32);
+    case RegGuardJerk: return uint32_t(q_.guard.jerk);
+    case RegGuardJerk + 4: return uint32_t(q_.guard.jerk >> 32);
     case RegSegAcc0: return uint32_t(q_.st_acc0);
     case RegSegAcc0 + 4: return uint32_t(q_.st_acc0 >> 32);
     case RegSegVel0: return get_word(q_.st_vel0, 0);
@@ -219,6 +232,7 @@ void AxiRegs::step(const AxiIn& in, const RegsSide& side, const CoreOutputs& cor
             if (wd & bit(ErrUnderrunBit)) d.err_under = false;
             if (wd & bit(ErrLimNegBit)) d.err_lim_neg = false;
             if (wd & bit(ErrLimPosBit)) d.err_lim_pos = false;
+            if (wd & bit(ErrGuardBit)) d.err_guard = false;
           }
           break;
         case RegIrqStatus:
@@ -277,6 +291,25 @@ void AxiRegs::step(const AxiIn& in, const RegsSide& side, const CoreOutputs& cor
           break;
         case RegStopAcc + 4:
           d.stop_acc = uint64_t(put_word(q.stop_acc, 32, wmerge(uint32_t(q.stop_acc >> 32), wd, wmask), AccW));
+          break;
+        case RegGuardVel: d.guard.vel = put_word(q.guard.vel, 0, wmerge(get_word(q.guard.vel, 0), wd, wmask), VelW); break;
+        case RegGuardVel + 4:
+          d.guard.vel = put_word(q.guard.vel, 32, wmerge(get_word(q.guard.vel, 32), wd, wmask), VelW);
+          break;
+        case RegGuardVel + 8:
+          d.guard.vel = put_word(q.guard.vel, 64, wmerge(get_word(q.guard.vel, 64), wd, wmask), VelW);
+          break;
+        case RegGuardAcc:
+          d.guard.acc = uint64_t(put_word(q.guard.acc, 0, wmerge(uint32_t(q.guard.acc), wd, wmask), AccW));
+          break;
+        case RegGuardAcc + 4:
+          d.guard.acc = uint64_t(put_word(q.guard.acc, 32, wmerge(uint32_t(q.guard.acc >> 32), wd, wmask), AccW));
+          break;
+        case RegGuardJerk:
+          d.guard.jerk = uint64_t(put_word(q.guard.jerk, 0, wmerge(uint32_t(q.guard.jerk), wd, wmask), JerkW));
+          break;
+        case RegGuardJerk + 4:
+          d.guard.jerk = uint64_t(put_word(q.guard.jerk, 32, wmerge(uint32_t(q.guard.jerk >> 32), wd, wmask), JerkW));
           break;
         case RegSegAcc0:
           d.st_acc0 = uint64_t(put_word(q.st_acc0, 0, wmerge(uint32_t(q.st_acc0), wd, wmask), AccW));
@@ -339,6 +372,7 @@ void AxiRegs::step(const AxiIn& in, const RegsSide& side, const CoreOutputs& cor
   if (core.underrun && !q.underrun_prev) d.err_under = true;
   if (core.lim_trip_rev) d.err_lim_neg = true;
   if (core.lim_trip_fwd) d.err_lim_pos = true;
+  if (core.guard && !q.guard_prev) d.err_guard = true;
   if (side.sw_edge != 0) d.irq_st |= uint8_t(bit(IrqSwitchBit));
   // position latch: an edge of the filtered home level, armed; a capture
   // wins over a re-arm in the same clock
@@ -353,13 +387,16 @@ void AxiRegs::step(const AxiIn& in, const RegsSide& side, const CoreOutputs& cor
   if (core.move_done) d.irq_st |= uint8_t(bit(IrqMoveDoneBit));
   if (q.busy_prev && !busy_eff) d.irq_st |= uint8_t(bit(IrqIdleBit));
   if (core.underrun && !q.underrun_prev) d.irq_st |= uint8_t(bit(IrqUnderrunBit));
-  if ((fault_any && !q.fault_prev) || (core.discont && !q.discont_prev)) d.irq_st |= uint8_t(bit(IrqFaultBit));
+  if ((fault_any && !q.fault_prev) || (core.discont && !q.discont_prev) || (core.guard && !q.guard_prev)) {
+    d.irq_st |= uint8_t(bit(IrqFaultBit));
+  }
   d.irq = (d.irq_st & d.irq_en) != 0;
   d.below = below;
   d.busy_prev = busy_eff;
   d.underrun_prev = core.underrun;
   d.fault_prev = fault_any;
   d.discont_prev = core.discont;
+  d.guard_prev = core.guard;
   d.start_d1 = q.start;
   q_ = d;
 }
@@ -403,6 +440,7 @@ CoreInputs AxiRegs::core_inputs(uint32_t sw_level) const {
   c.stop = q_.stop;
   c.stop_jerk = q_.stop_jerk;
   c.stop_acc = q_.stop_acc;
+  c.guard = q_.guard;
   return c;
 }
 
@@ -449,6 +487,7 @@ ServoInputs AxiServo::servo_inputs() const {
   si.stop = ci.stop;
   si.stop_jerk = ci.stop_jerk;
   si.stop_acc = ci.stop_acc;
+  si.guard = ci.guard;
   si.lim_fwd = ci.lim_fwd;
   si.lim_rev = ci.lim_rev;
   si.lim_hard = ci.lim_hard;
@@ -469,6 +508,7 @@ void AxiServo::step(const AxiIn& in, const RegsSide& side) {
   co.seg_idx = 0;
   co.underrun = so.underrun;
   co.discont = so.discont;
+  co.guard = so.guard;
   co.stopping = so.stopping;
   co.overshoot = so.overshoot;
   co.move_done = so.move_done;

@@ -78,7 +78,8 @@ class AxiRegs {
     uint8_t irq_en = 0;
     uint8_t irq_st = 0;
     bool irq = false;
-    bool below = false, busy_prev = false, underrun_prev = false, fault_prev = false, discont_prev = false;
+    bool below = false, busy_prev = false, underrun_prev = false, fault_prev = false, discont_prev = false,
+         guard_prev = false;
     PulseTiming cfg{};
     u128 frac0 = 0;
     uint8_t st_phase = 0;
@@ -95,6 +96,7 @@ class AxiRegs {
     bool stop = false;                      // CMD.STOP pulse
     uint64_t stop_jerk = StopJerkReset;     // STOP_JERK, JerkW bits
     uint64_t stop_acc = StopAccReset;       // STOP_ACC, AccW bits
+    GuardLimits guard{};                    // GUARD_VEL / GUARD_ACC / GUARD_JERK (0 = no limit)
     bool err_reject = false;
     bool err_bad = false;
     bool err_estop = false;
@@ -103,6 +105,7 @@ class AxiRegs {
     bool err_under = false;
     bool err_lim_neg = false;
     bool err_lim_pos = false;
+    bool err_guard = false;
     uint8_t sw_invert = 0;                  // SW_CFG
     bool lim_en = true;
     bool lim_hard = false;

@@ -12,6 +12,8 @@ void AxisCore::reset() {
   arm_fwd_ = true;
   arm_cnt_ = 0;
   exec_started_ = false;
+  rate_ = false;
+  rate_trip_ = false;
 }
 
 bool AxisCore::busy() const {
@@ -55,6 +57,7 @@ void AxisCore::latch_inputs(const CoreInputs& in) {
   in_q_.lim_hard = in.lim_hard;
   in_q_.stop_jerk = in.stop_jerk & ((uint64_t(1) << JerkW) - 1);
   in_q_.stop_acc = in.stop_acc;
+  in_q_.guard = in.guard.masked();
   in_q_.cfg = in.cfg;
   in_q_.pos_frac0 = mask_bits(in.pos_frac0, FracBits);
 }
@@ -101,6 +104,10 @@ void AxisCore::clock_edge(const CoreExtInputs& x) {
     }
   }
   const bool use_ext = kExt && x.sel;
+  // Step-rate guard: three steps short of a full queue, the executor stops
+  // the clock after.
+  const int pend = sg_.state().pend;
+  const bool rate_trip_d = !use_ext && e.run && (pend >= kPendNearFull || pend <= -kPendNearFull);
   StepGen::Inputs si;
   si.cfg = in_q_.cfg;
   si.clear = start_ok;
@@ -112,13 +119,16 @@ void AxisCore::clock_edge(const CoreExtInputs& x) {
   ProfileExec::Inputs& ei = exec_in_;
   ei.pos_frac0 = in_q_.pos_frac0;
   ei.start = exec_start;
-  ei.abort = in_q_.abort || (lim_act && in_q_.lim_hard) || (kExt && x.abort);
+  ei.abort = in_q_.abort || (lim_act && in_q_.lim_hard) || rate_trip_ || (kExt && x.abort);
   ei.stop = in_q_.stop || (lim_act && !in_q_.lim_hard);
   ei.stop_jerk = in_q_.stop_jerk;
   ei.stop_acc = in_q_.stop_acc;
+  ei.guard = in_q_.guard;
   sg_.step(si);  // uses the executor's current (registered) outputs
   exec_.step(ei);
   if constexpr (kExt) exec_started_ = exec_start;
+  rate_ = !start_ok && (rate_ || rate_trip_);
+  rate_trip_ = rate_trip_d;
   arm_ = arm_d;
   arm_fwd_ = arm_fwd_d;
   arm_cnt_ = arm_cnt_d;
@@ -130,6 +140,7 @@ bool AxisCore::inputs_settled(const CoreInputs& in) const {
          !in_q_.stop && !in.lim_fwd && !in.lim_rev && !in_q_.lim_fwd && !in_q_.lim_rev &&
          in_q_.lim_hard == in.lim_hard && in_q_.enable == in.enable && in_q_.cfg == in.cfg &&
          in_q_.stop_jerk == (in.stop_jerk & ((uint64_t(1) << JerkW) - 1)) && in_q_.stop_acc == in.stop_acc &&
+         in_q_.guard == in.guard.masked() &&
          in_q_.pos_frac0 == mask_bits(in.pos_frac0, FracBits);
 }
 CoreOutputs AxisCore::outputs() const {
@@ -148,9 +159,10 @@ void AxisCore::read_outputs(CoreOutputs& o) const {
   o.done = done();
   o.phase = o.done ? uint8_t(Phase::PhDone) : uint8_t(e.phase);
   o.fault_table = e.fault;
-  o.fault_overrun = s.overrun;
+  o.fault_overrun = fault_overrun();
   o.underrun = e.underrun;
   o.discont = e.discont;
+  o.guard = e.guard;
   o.stopping = e.stop;
   o.overshoot = exec_.overshoot();
   o.move_done = e.move_done;
@@ -180,8 +192,8 @@ bool AxisCore::outputs_equal(const CoreOutputs& o) const {
          o.ref_pos_frac == e.frac && o.ref_vel == e.vel && o.ref_acc == e.acc && o.ref_jerk == exec_.jerk() &&
          o.done == is_done && o.busy == busy() && o.en == in_q_.enable &&
          o.phase == (is_done ? uint8_t(Phase::PhDone) : uint8_t(e.phase)) && o.fault_table == e.fault &&
-         o.fault_overrun == s.overrun && o.seg_idx == e.idx && o.step_pending == s.pend &&
-         o.underrun == e.underrun && o.discont == e.discont && o.stopping == e.stop &&
+         o.fault_overrun == fault_overrun() && o.seg_idx == e.idx && o.step_pending == s.pend &&
+         o.underrun == e.underrun && o.discont == e.discont && o.guard == e.guard && o.stopping == e.stop &&
          o.overshoot == exec_.overshoot() && o.move_done == e.move_done &&
          o.move_idx == e.move_idx && o.boundary_pos == e.bpos && o.fifo_level == exec_.fifo_level() &&
          o.fifo_full == exec_.fifo_full() && o.lim_trip_fwd == lim_trip(true, busy()) &&
@@ -197,7 +209,7 @@ bool AxisCore::lim_trip(bool fwd, bool busy_now) const {
 uint64_t AxisCore::clocks_to_next_event(const CoreInputs& in) const {
   const ProfileExec::State& e = exec_.state();
   const bool dir_settled = !(e.run && e.vel != 0) || (e.vel >= 0) == sg_.state().dir;
-  if (!sg_.idle() || !dir_settled || e.step_req || arm_ || !inputs_settled(in)) return 0;
+  if (!sg_.idle() || !dir_settled || e.step_req || arm_ || rate_trip_ || !inputs_settled(in)) return 0;
   const uint64_t ev = exec_.clocks_to_next_event();
   return ev == 0 && !e.run ? UINT64_MAX : ev;  // idle: only counters move
 }

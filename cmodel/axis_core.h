@@ -23,6 +23,7 @@ struct CoreInputs {
   // reset values.
   uint64_t stop_jerk = StopJerkReset;
   uint64_t stop_acc = StopAccReset;
+  GuardLimits guard{};  // the executor's row guards (guard_*_i; 0 = none)
   // Limits (lim_fwd_i, lim_rev_i, lim_hard_i): a limit switch is active on
   // the + / - side; motion into it stops (hard: at once), a START toward it
   // is refused.
@@ -56,6 +57,7 @@ struct CoreOutputs {
   bool fault_overrun = false;
   bool underrun = false;
   bool discont = false;
+  bool guard = false;  // a row broke a guard limit (until START)
   bool stopping = false;
   bool overshoot = false;
   bool move_done = false;
@@ -95,6 +97,9 @@ class AxisCore {
   void tick();
 
   bool busy() const;
+  // fault_overrun_o: the step queue overflowed, or the step-rate guard
+  // stopped the executor (both until the next START).
+  bool fault_overrun() const { return sg_.state().overrun || rate_; }
   bool done() const { return exec_.state().finished && !busy(); }
   // busy_o, done_o and phase_o with the external source's inputs `x`.
   bool busy(const CoreExtInputs& x) const { return busy() || x.busy; }
@@ -136,6 +141,7 @@ class AxisCore {
     bool stop = false;
     uint64_t stop_jerk = 0;
     uint64_t stop_acc = 0;
+    GuardLimits guard{};
     bool lim_fwd = false, lim_rev = false, lim_hard = false;
     PulseTiming cfg{0, 0, 0, 0};
     u128 pos_frac0 = 0;
@@ -148,6 +154,11 @@ class AxisCore {
   bool arm_fwd_ = true;
   uint16_t arm_cnt_ = 0;
   bool exec_started_ = false;
+  bool rate_ = false;       // the step-rate guard stopped the executor (rate_q)
+  bool rate_trip_ = false;  // it stops it this clock (rate_trip_q)
+  // |queued steps| at which the executor is stopped (the clock after):
+  // three short of full.
+  static constexpr int kPendNearFull = (1 << (PendW - 1)) - 3;
   ProfileExec::Inputs exec_in_{};  // reused every clock: no per-clock construction
   // Motion into an active limit (into_fwd bit 0, into_rev bit 1) and a
   // start refused toward one (bits 2 and 3: + and -), from the current state.

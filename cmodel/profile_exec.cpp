@@ -10,6 +10,18 @@ void ProfileExec::reset() {
   stop_.reset();
 }
 
+GuardLimits GuardLimits::masked() const {
+  return {mask_bits(vel, VelW), acc, jerk & ((uint64_t(1) << JerkW) - 1)};
+}
+
+bool GuardLimits::exceeded_by(const Segment& s) const {
+  // Magnitudes as unsigned W-bit values, as the RTL's (|-2^(W-1)| fits).
+  const u128 v = s.vel0 < 0 ? u128(-s.vel0) : u128(s.vel0);
+  const uint64_t a = s.acc0 < 0 ? uint64_t(0) - uint64_t(s.acc0) : uint64_t(s.acc0);
+  const uint64_t j = s.jerk < 0 ? uint64_t(0) - uint64_t(s.jerk) : uint64_t(s.jerk);
+  return (vel != 0 && v > vel) || (acc != 0 && a > acc) || (jerk != 0 && j > jerk);
+}
+
 bool ProfileExec::head_forward() const {
   const Segment& h = fifo_.head().seg;
   return h.vel0 != 0 ? h.vel0 > 0 : h.acc0 != 0 ? h.acc0 > 0 : h.jerk >= 0;
@@ -27,11 +39,12 @@ void ProfileExec::step(const Inputs& in) {
   const bool at_rest = vel_end == 0 && acc_end == 0;
   const bool move_done = boundary && (q_.flags & kRowMoveEnd);
   const bool ends = (q_.flags & kRowStreamEnd) || (fifo_empty && at_rest);
+  const bool over_guard = in.guard.exceeded_by(hd.seg);
   bool load = false;
   if (boundary) {
-    load = !(q_.flags & kRowStreamEnd) && !fifo_empty && continues;
+    load = !(q_.flags & kRowStreamEnd) && !fifo_empty && continues && !over_guard;
   } else if (!q_.run) {
-    load = in.start && !fifo_empty;
+    load = in.start && !fifo_empty && !over_guard;
   }
   const bool row_bad = load && hd.seg.clocks == 0;
   const bool stop_start = q_.run && !q_.stop && !in.abort &&
@@ -92,7 +105,8 @@ void ProfileExec::step(const Inputs& in) {
           q_.finished = true;
         } else if (!load) {
           q_.underrun = fifo_empty;
-          q_.discont = !fifo_empty;
+          q_.discont = !fifo_empty && !continues;
+          q_.guard = !fifo_empty && continues;
         }
       } else {
         q_.left = q_.left - 1;
@@ -105,12 +119,17 @@ void ProfileExec::step(const Inputs& in) {
     q_.fault = false;
     q_.underrun = false;
     q_.discont = false;
+    q_.guard = false;
     q_.frac = mask_bits(in.pos_frac0, FracBits);
     q_.move_idx = 0;
     q_.bpos = q_.pint;
     if (!load) {
-      q_.fault = true;
+      // an empty FIFO is the table fault; a head row over a guard limit is
+      // refused with everything queued behind it
+      q_.fault = fifo_empty;
+      q_.guard = !fifo_empty;
       q_.phase = Phase::PhFault;
+      flush = !fifo_empty;
     }
   }
 
@@ -155,6 +174,7 @@ void ProfileExec::step(const Inputs& in) {
   }
   held_stop_jerk_ = in.stop_jerk;
   held_stop_acc_ = in.stop_acc;
+  held_guard_ = in.guard;
   // The stop generator's clock; idle and not started, it holds its state.
   if (stop_start || stop_.active()) {
     StopGen::Inputs si;
@@ -240,6 +260,7 @@ int64_t ProfileExec::fast_forward(uint64_t n) {
   Inputs quiet{};
   quiet.stop_jerk = held_stop_jerk_;
   quiet.stop_acc = held_stop_acc_;
+  quiet.guard = held_guard_;
   const int32_t p0 = q_.pint;
   while (n > 0) {
     const uint64_t span = std::min(closed_form_span(), n);

@@ -29,6 +29,20 @@ struct Row {
   bool operator==(const Row&) const = default;
 };
 
+// The executor's row guards (guard_*_i): the largest |vel0|, |acc0| and
+// |jerk| a loaded row may carry, unsigned VelW / AccW / JerkW bits;
+// 0 = no limit.
+struct GuardLimits {
+  u128 vel = 0;
+  uint64_t acc = 0;
+  uint64_t jerk = 0;
+  bool operator==(const GuardLimits&) const = default;
+  // The same limits with every field cut to its port width.
+  GuardLimits masked() const;
+  // The row is over one of the limits.
+  bool exceeded_by(const Segment& s) const;
+};
+
 inline constexpr uint8_t kRowMoveEnd = uint8_t(1u << RowFlagMoveEnd);
 inline constexpr uint8_t kRowStreamEnd = uint8_t(1u << RowFlagStreamEnd);
 inline constexpr uint8_t kRowAccStep = uint8_t(1u << RowFlagAccStep);
@@ -45,6 +59,7 @@ class ProfileExec {
     bool stop = false;                    // controlled stop
     uint64_t stop_jerk = StopJerkReset;   // JerkW bits (default: the register's reset value)
     uint64_t stop_acc = StopAccReset;     // AccW bits
+    GuardLimits guard{};                  // row guards (0 = none)
   };
   struct State {
     bool run = false;
@@ -52,6 +67,7 @@ class ProfileExec {
     bool fault = false;
     bool underrun = false;
     bool discont = false;
+    bool guard = false;  // a row broke a guard limit (until START)
     bool stop = false;  // controlled stop running
     uint8_t idx = 0;
     uint8_t flags = 0;
@@ -114,6 +130,7 @@ class ProfileExec {
   // The stop limits of the last step() (inputs the RTL sees held while
   // fast_forward() runs without inputs).
   uint64_t held_stop_jerk_ = StopJerkReset, held_stop_acc_ = StopAccReset;
+  GuardLimits held_guard_{};
 };
 
 }  // namespace sc

@@ -66,6 +66,7 @@ void ServoAxis::step(const ServoInputs& in) {
   ki.stop = in.stop || (c.ferr && cq.ctl.ferr_stop && c.active);
   ki.stop_jerk = in.stop_jerk;
   ki.stop_acc = in.stop_acc;
+  ki.guard = in.guard;
   ki.lim_fwd = in.lim_fwd;
   ki.lim_rev = in.lim_rev;
   ki.lim_hard = in.lim_hard;
@@ -118,11 +119,12 @@ ServoOutputs ServoAxis::outputs() const {
   o.done = core_.done(x);
   o.phase = c.ferr ? uint8_t(Phase::PhFault) : core_.phase(x);
   o.fault_table = e.fault;
-  o.fault_overrun = s.overrun;
+  o.fault_overrun = core_.fault_overrun();
   o.fault_ferr = c.ferr;
   o.in_pos = c.in_pos;
   o.underrun = e.underrun;
   o.discont = e.discont;
+  o.guard = e.guard;
   o.stopping = e.stop;
   o.overshoot = core_.exec().overshoot();
   o.lim_trip_fwd = core_.lim_trip(true, o.busy);

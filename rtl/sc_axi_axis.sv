@@ -63,7 +63,10 @@ module sc_axi_axis (
   logic signed [AccW-1:0]      seg_acc0;
   logic signed [VelW-1:0]      seg_vel0;
   logic [sc_pkg::RowFlagW-1:0] row_flags;
-  logic                        underrun, discont, move_done, fifo_full;
+  logic                        underrun, discont, guard, move_done, fifo_full;
+  logic [sc_pkg::VelW-1:0]     guard_vel;
+  logic [sc_pkg::AccW-1:0]     guard_acc;
+  logic [sc_pkg::JerkW-1:0]    guard_jerk;
   logic [sc_pkg::MoveIdxW-1:0] move_idx;
   logic signed [sc_pkg::PosIntW-1:0] boundary_pos;
   logic [RowLevelW-1:0]        fifo_level;
@@ -129,6 +132,9 @@ module sc_axi_axis (
     .stop_o          (stop),
     .stop_jerk_o     (stop_jerk),
     .stop_acc_o      (stop_acc),
+    .guard_vel_o     (guard_vel),
+    .guard_acc_o     (guard_acc),
+    .guard_jerk_o    (guard_jerk),
     .closed_loop_o   (unused_closed),
     .ctl_cfg_o       (unused_ctl_cfg),
     .busy_i          (core_busy),
@@ -153,6 +159,7 @@ module sc_axi_axis (
     .lim_trip_rev_i  (lim_trip_rev),
     .underrun_i      (underrun),
     .discont_i       (discont),
+    .guard_i         (guard),
     .stopping_i      (stopping),
     .overshoot_i     (overshoot),
     .move_done_i     (move_done),
@@ -196,6 +203,9 @@ module sc_axi_axis (
     .stop_i          (stop),
     .stop_jerk_i     (stop_jerk),
     .stop_acc_i      (stop_acc),
+    .guard_vel_i     (guard_vel),
+    .guard_acc_i     (guard_acc),
+    .guard_jerk_i    (guard_jerk),
     .lim_fwd_i       (lim_en && sw_level[sc_pkg::SwLimPos]),
     .lim_rev_i       (lim_en && sw_level[sc_pkg::SwLimNeg]),
     .lim_hard_i      (lim_hard),
@@ -224,6 +234,7 @@ module sc_axi_axis (
     .fault_overrun_o (fault_overrun),
     .underrun_o      (underrun),
     .discont_o       (discont),
+    .guard_o         (guard),
     .stopping_o      (stopping),
     .overshoot_o     (overshoot),
     .move_done_o     (move_done),

@@ -33,6 +33,9 @@
 // ERR.LIMIT_NEG / LIMIT_POS and IRQ_STATUS.FAULT. The position latch
 // captures PULSE_COUNT and ENC_POS in the clock the filtered home level
 // changes (the edge LATCH_CFG selects), once until LATCH_CFG is written.
+// GUARD_VEL / GUARD_ACC / GUARD_JERK are the executor's row limits
+// (guard_*_o, locked while busy); the core's guard_i sets ERR.GUARD and
+// IRQ_STATUS.FAULT when it rises.
 module sc_axi_regs #(
   parameter bit Servo = 1'b0
 ) (
@@ -83,6 +86,9 @@ module sc_axi_regs #(
   output logic                                stop_o,      // controlled stop (CMD.STOP)
   output logic [sc_pkg::JerkW-1:0]            stop_jerk_o, // STOP_JERK
   output logic [sc_pkg::AccW-1:0]             stop_acc_o,  // STOP_ACC
+  output logic [sc_pkg::VelW-1:0]             guard_vel_o, // GUARD_VEL
+  output logic [sc_pkg::AccW-1:0]             guard_acc_o, // GUARD_ACC
+  output logic [sc_pkg::JerkW-1:0]            guard_jerk_o, // GUARD_JERK
   output logic                                closed_loop_o,
   output logic [sc_pkg::CtlCfgW-1:0]          ctl_cfg_o,   // controller configuration
   output logic [sc_pkg::SwW-1:0]              sw_invert_o, // SW_CFG
@@ -102,6 +108,7 @@ module sc_axi_regs #(
   input  logic [sc_pkg::SegIdxW-1:0]          seg_idx_i,
   input  logic                                underrun_i,
   input  logic                                discont_i,
+  input  logic                                guard_i,
   input  logic                                stopping_i,
   input  logic                                overshoot_i,
   input  logic                                move_done_i,
@@ -177,6 +184,13 @@ module sc_axi_regs #(
   localparam logic [AW-1:0] ALatchCfg  = AW'(sc_pkg::RegLatchCfg);
   localparam logic [AW-1:0] ALatchPul  = AW'(sc_pkg::RegLatchPulse);
   localparam logic [AW-1:0] ALatchEnc  = AW'(sc_pkg::RegLatchEnc);
+  localparam logic [AW-1:0] AGuardV0   = AW'(sc_pkg::RegGuardVel);
+  localparam logic [AW-1:0] AGuardV1   = AW'(sc_pkg::RegGuardVel + 4);
+  localparam logic [AW-1:0] AGuardV2   = AW'(sc_pkg::RegGuardVel + 8);
+  localparam logic [AW-1:0] AGuardA0   = AW'(sc_pkg::RegGuardAcc);
+  localparam logic [AW-1:0] AGuardA1   = AW'(sc_pkg::RegGuardAcc + 4);
+  localparam logic [AW-1:0] AGuardJ0   = AW'(sc_pkg::RegGuardJerk);
+  localparam logic [AW-1:0] AGuardJ1   = AW'(sc_pkg::RegGuardJerk + 4);
   localparam int SwW       = sc_pkg::SwW;
   localparam int DebounceW = sc_pkg::DebounceW;
 
@@ -194,6 +208,7 @@ module sc_axi_regs #(
   localparam int ErrUnderrunBit = sc_pkg::ErrUnderrunBit;
   localparam int ErrLimNegBit  = sc_pkg::ErrLimNegBit;
   localparam int ErrLimPosBit  = sc_pkg::ErrLimPosBit;
+  localparam int ErrGuardBit   = sc_pkg::ErrGuardBit;
 
   // Closed-loop words: implemented bits and reset values (generated from the
   // register tags, word 0 lowest).
@@ -225,7 +240,8 @@ module sc_axi_regs #(
   logic [RowLevelW-1:0]      low_water_q, low_water_d;
   logic [IrqW-1:0]           irq_st_q, irq_st_d, irq_en_q, irq_en_d;
   logic                      irq_q;
-  logic                      below_q, busy_prev_q, underrun_prev_q, fault_prev_q, discont_prev_q;
+  logic                      below_q, busy_prev_q, underrun_prev_q, fault_prev_q, discont_prev_q,
+                             guard_prev_q;
   logic                      below, fault_any;
   logic [PulseTimeW-1:0]     high_q, high_d, low_q, low_d, setup_q, setup_d, hold_q, hold_d;
   logic [FracBits-1:0]       frac0_q, frac0_d;
@@ -243,6 +259,9 @@ module sc_axi_regs #(
   logic                      stop_q, stop_d;
   logic [JerkW-1:0]          stop_jerk_q, stop_jerk_d;
   logic [AccW-1:0]           stop_acc_q, stop_acc_d;
+  logic [VelW-1:0]           guard_vel_q, guard_vel_d;
+  logic [AccW-1:0]           guard_acc_q, guard_acc_d;
+  logic [JerkW-1:0]          guard_jerk_q, guard_jerk_d;
   logic                      err_reject_q, err_reject_d;
   logic                      err_bad_q, err_bad_d;
   logic                      err_estop_q, err_estop_d;
@@ -251,6 +270,7 @@ module sc_axi_regs #(
   logic                      err_under_q, err_under_d;
   logic                      err_lneg_q, err_lneg_d;
   logic                      err_lpos_q, err_lpos_d;
+  logic                      err_guard_q, err_guard_d;
   logic [SwW-1:0]            sw_inv_q, sw_inv_d;
   logic                      lim_en_q, lim_en_d, lim_hard_q, lim_hard_d;
   logic [DebounceW-1:0]      sw_deb_q, sw_deb_d;
@@ -306,7 +326,9 @@ module sc_axi_regs #(
   always_comb begin
     unique case (awaddr_q)
       APulseTime, ADirTime, AFrac0, AFrac1, AFrac2,
-      AStopJ0, AStopJ1, AStopA0, AStopA1, ASwCfg:   w_locked = 1'b1;
+      AStopJ0, AStopJ1, AStopA0, AStopA1, ASwCfg,
+      AGuardV0, AGuardV1, AGuardV2, AGuardA0, AGuardA1, AGuardJ0, AGuardJ1:
+                                                    w_locked = 1'b1;
       default:                                      w_locked = w_cfg_hit;
     endcase
   end
@@ -321,7 +343,7 @@ module sc_axi_regs #(
     status_word[sc_pkg::StatusFaultOverrunBit]      = fault_overrun_i;
     status_word[sc_pkg::StatusEstopBit]             = err_estop_q;
     status_word[sc_pkg::StatusErrBit]               = err_reject_q || err_bad_q || err_estop_q ||
-                                                      err_lneg_q || err_lpos_q;
+                                                      err_lneg_q || err_lpos_q || err_guard_q;
     status_word[sc_pkg::StatusFaultFerrBit]         = fault_ferr_i;
     status_word[sc_pkg::StatusInPosBit]             = in_pos_i;
     status_word[sc_pkg::StatusEncALsb +: 2]         = enc_ab_i;
@@ -332,6 +354,7 @@ module sc_axi_regs #(
     status_word[sc_pkg::StatusOvershootBit]         = overshoot_i;
     status_word[sc_pkg::StatusSwLevelLsb +: SwW]    = sw_level_i;
     status_word[sc_pkg::StatusLatchedBit]           = latched_q;
+    status_word[sc_pkg::StatusGuardBit]             = guard_i;
   end
 
   always_comb begin
@@ -373,6 +396,7 @@ module sc_axi_regs #(
         rd_word[ErrUnderrunBit] = err_under_q;
         rd_word[ErrLimNegBit]   = err_lneg_q;
         rd_word[ErrLimPosBit]   = err_lpos_q;
+        rd_word[ErrGuardBit]    = err_guard_q;
       end
       ASwCfg:     rd_word = sw_cfg_word;
       ALatchCfg: begin
@@ -414,6 +438,13 @@ module sc_axi_regs #(
       AStopJ1:    rd_word = 32'(stop_jerk_q[JerkW-1:32]);
       AStopA0:    rd_word = stop_acc_q[31:0];
       AStopA1:    rd_word = stop_acc_q[AccW-1:32];
+      AGuardV0:   rd_word = guard_vel_q[31:0];
+      AGuardV1:   rd_word = guard_vel_q[63:32];
+      AGuardV2:   rd_word = 32'(guard_vel_q[VelW-1:64]);
+      AGuardA0:   rd_word = guard_acc_q[31:0];
+      AGuardA1:   rd_word = guard_acc_q[AccW-1:32];
+      AGuardJ0:   rd_word = guard_jerk_q[31:0];
+      AGuardJ1:   rd_word = 32'(guard_jerk_q[JerkW-1:32]);
       AAcc0:      rd_word = st_acc0_q[31:0];
       AAcc1:      rd_word = st_acc0_q[63:32];
       AVel0:      rd_word = st_vel0_q[31:0];
@@ -466,6 +497,9 @@ module sc_axi_regs #(
     stop_d       = 1'b0;
     stop_jerk_d  = stop_jerk_q;
     stop_acc_d   = stop_acc_q;
+    guard_vel_d  = guard_vel_q;
+    guard_acc_d  = guard_acc_q;
+    guard_jerk_d = guard_jerk_q;
     err_reject_d = err_reject_q;
     err_bad_d    = err_bad_q;
     err_estop_d  = err_estop_q;
@@ -474,6 +508,7 @@ module sc_axi_regs #(
     err_under_d  = err_under_q;
     err_lneg_d   = err_lneg_q;
     err_lpos_d   = err_lpos_q;
+    err_guard_d  = err_guard_q;
     sw_inv_d     = sw_inv_q;
     lim_en_d     = lim_en_q;
     lim_hard_d   = lim_hard_q;
@@ -561,6 +596,7 @@ module sc_axi_regs #(
               if (wd[ErrUnderrunBit]) err_under_d = 1'b0;
               if (wd[ErrLimNegBit])   err_lneg_d  = 1'b0;
               if (wd[ErrLimPosBit])   err_lpos_d  = 1'b0;
+              if (wd[ErrGuardBit])    err_guard_d = 1'b0;
             end
           end
           AIrqStat: begin
@@ -608,6 +644,15 @@ module sc_axi_regs #(
           AStopJ1:    stop_jerk_d[JerkW-1:32] = (JerkW-32)'(wmerge(32'(stop_jerk_q[JerkW-1:32]), wd, wmask));
           AStopA0:    stop_acc_d[31:0] = wmerge(stop_acc_q[31:0], wd, wmask);
           AStopA1:    stop_acc_d[AccW-1:32] = wmerge(stop_acc_q[AccW-1:32], wd, wmask);
+          AGuardV0:   guard_vel_d[31:0]  = wmerge(guard_vel_q[31:0], wd, wmask);
+          AGuardV1:   guard_vel_d[63:32] = wmerge(guard_vel_q[63:32], wd, wmask);
+          AGuardV2:   guard_vel_d[VelW-1:64] =
+                          (VelW-64)'(wmerge(32'(guard_vel_q[VelW-1:64]), wd, wmask));
+          AGuardA0:   guard_acc_d[31:0] = wmerge(guard_acc_q[31:0], wd, wmask);
+          AGuardA1:   guard_acc_d[AccW-1:32] = wmerge(guard_acc_q[AccW-1:32], wd, wmask);
+          AGuardJ0:   guard_jerk_d[31:0] = wmerge(guard_jerk_q[31:0], wd, wmask);
+          AGuardJ1:   guard_jerk_d[JerkW-1:32] =
+                          (JerkW-32)'(wmerge(32'(guard_jerk_q[JerkW-1:32]), wd, wmask));
           AAcc0:      st_acc0_d[31:0]  = wmerge(st_acc0_q[31:0], wd, wmask);
           AAcc1:      st_acc0_d[63:32] = wmerge(st_acc0_q[63:32], wd, wmask);
           AVel0:      st_vel0_d[31:0]  = wmerge(st_vel0_q[31:0], wd, wmask);
@@ -663,6 +708,7 @@ module sc_axi_regs #(
     if (underrun_i && !underrun_prev_q) err_under_d = 1'b1;
     if (lim_trip_rev_i)                 err_lneg_d  = 1'b1;
     if (lim_trip_fwd_i)                 err_lpos_d  = 1'b1;
+    if (guard_i && !guard_prev_q)       err_guard_d = 1'b1;
     if (sw_edge_i != '0)                irq_st_d[sc_pkg::IrqSwitchBit]   = 1'b1;
     // a capture wins over a re-arm in the same clock (the edge is not lost)
     if (latch_cap) begin
@@ -675,7 +721,8 @@ module sc_axi_regs #(
     if (move_done_i)                    irq_st_d[sc_pkg::IrqMoveDoneBit] = 1'b1;
     if (busy_prev_q && !busy_eff)       irq_st_d[sc_pkg::IrqIdleBit]     = 1'b1;
     if (underrun_i && !underrun_prev_q) irq_st_d[sc_pkg::IrqUnderrunBit] = 1'b1;
-    if ((fault_any && !fault_prev_q) || (discont_i && !discont_prev_q))
+    if ((fault_any && !fault_prev_q) || (discont_i && !discont_prev_q) ||
+        (guard_i && !guard_prev_q))
                                         irq_st_d[sc_pkg::IrqFaultBit]    = 1'b1;
   end
 
@@ -702,6 +749,7 @@ module sc_axi_regs #(
       underrun_prev_q <= 1'b0;
       fault_prev_q <= 1'b0;
       discont_prev_q <= 1'b0;
+      guard_prev_q <= 1'b0;
       high_q       <= PulseTimeW'(sc_pkg::RstPulseHigh);
       low_q        <= PulseTimeW'(sc_pkg::RstPulseLow);
       setup_q      <= PulseTimeW'(sc_pkg::RstDirSetup);
@@ -721,6 +769,9 @@ module sc_axi_regs #(
       stop_q       <= 1'b0;
       stop_jerk_q  <= sc_pkg::StopJerkReset;
       stop_acc_q   <= sc_pkg::StopAccReset;
+      guard_vel_q  <= '0;
+      guard_acc_q  <= '0;
+      guard_jerk_q <= '0;
       err_reject_q <= 1'b0;
       err_bad_q    <= 1'b0;
       err_estop_q  <= 1'b0;
@@ -729,6 +780,7 @@ module sc_axi_regs #(
       err_under_q  <= 1'b0;
       err_lneg_q   <= 1'b0;
       err_lpos_q   <= 1'b0;
+      err_guard_q  <= 1'b0;
       sw_inv_q     <= '0;
       lim_en_q     <= 1'b1;
       lim_hard_q   <= 1'b0;
@@ -760,6 +812,7 @@ module sc_axi_regs #(
       underrun_prev_q <= underrun_i;
       fault_prev_q <= fault_any;
       discont_prev_q <= discont_i;
+      guard_prev_q <= guard_i;
       high_q       <= high_d;
       low_q        <= low_d;
       setup_q      <= setup_d;
@@ -779,6 +832,9 @@ module sc_axi_regs #(
       stop_q       <= stop_d;
       stop_jerk_q  <= stop_jerk_d;
       stop_acc_q   <= stop_acc_d;
+      guard_vel_q  <= guard_vel_d;
+      guard_acc_q  <= guard_acc_d;
+      guard_jerk_q <= guard_jerk_d;
       err_reject_q <= err_reject_d;
       err_bad_q    <= err_bad_d;
       err_estop_q  <= err_estop_d;
@@ -787,6 +843,7 @@ module sc_axi_regs #(
       err_under_q  <= err_under_d;
       err_lneg_q   <= err_lneg_d;
       err_lpos_q   <= err_lpos_d;
+      err_guard_q  <= err_guard_d;
       sw_inv_q     <= sw_inv_d;
       lim_en_q     <= lim_en_d;
       lim_hard_q   <= lim_hard_d;
@@ -842,6 +899,9 @@ module sc_axi_regs #(
   assign stop_o      = stop_q;
   assign stop_jerk_o = stop_jerk_q;
   assign stop_acc_o  = stop_acc_q;
+  assign guard_vel_o  = guard_vel_q;
+  assign guard_acc_o  = guard_acc_q;
+  assign guard_jerk_o = guard_jerk_q;
   assign closed_loop_o = closed_q;
   assign ctl_cfg_o   = sc_pkg::ctl_cfg_from_words(cl_q);
   assign sw_invert_o = sw_inv_q;

@@ -76,7 +76,10 @@ module sc_axi_servo (
   logic signed [AccW-1:0]      seg_acc0;
   logic signed [VelW-1:0]      seg_vel0;
   logic [sc_pkg::RowFlagW-1:0] row_flags;
-  logic                        underrun, discont, move_done, fifo_full;
+  logic                        underrun, discont, guard, move_done, fifo_full;
+  logic [sc_pkg::VelW-1:0]     guard_vel;
+  logic [sc_pkg::AccW-1:0]     guard_acc;
+  logic [sc_pkg::JerkW-1:0]    guard_jerk;
   logic                        stop, stopping, overshoot;
   logic [sc_pkg::JerkW-1:0]    stop_jerk;
   logic [sc_pkg::AccW-1:0]     stop_acc;
@@ -176,6 +179,9 @@ module sc_axi_servo (
     .stop_o          (stop),
     .stop_jerk_o     (stop_jerk),
     .stop_acc_o      (stop_acc),
+    .guard_vel_o     (guard_vel),
+    .guard_acc_o     (guard_acc),
+    .guard_jerk_o    (guard_jerk),
     .closed_loop_o   (closed_loop),
     .ctl_cfg_o       (ctl_cfg),
     .busy_i          (core_busy),
@@ -200,6 +206,7 @@ module sc_axi_servo (
     .lim_trip_rev_i  (lim_trip_rev),
     .underrun_i      (underrun),
     .discont_i       (discont),
+    .guard_i         (guard),
     .stopping_i      (stopping),
     .overshoot_i     (overshoot),
     .move_done_i     (move_done),
@@ -244,6 +251,9 @@ module sc_axi_servo (
     .stop_i            (stop),
     .stop_jerk_i       (stop_jerk),
     .stop_acc_i        (stop_acc),
+    .guard_vel_i       (guard_vel),
+    .guard_acc_i       (guard_acc),
+    .guard_jerk_i      (guard_jerk),
     .lim_fwd_i         (lim_en && sw_level[sc_pkg::SwLimPos]),
     .lim_rev_i         (lim_en && sw_level[sc_pkg::SwLimNeg]),
     .lim_hard_i        (lim_hard),
@@ -260,6 +270,7 @@ module sc_axi_servo (
     .fault_overrun_o   (fault_overrun),
     .underrun_o        (underrun),
     .discont_o         (discont),
+    .guard_o           (guard),
     .stopping_o        (stopping),
     .overshoot_o       (overshoot),
     .move_done_o       (move_done),

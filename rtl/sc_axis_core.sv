@@ -16,7 +16,18 @@
 //
 // stop_i asks for the controlled stop (sc_profile_exec: jerk-limited to
 // rest with stop_jerk_i / stop_acc_i); during the arming it drops the start.
-// abort_i is the immediate stop (e-stop).
+// abort_i is the immediate stop (e-stop). guard_*_i are the executor's
+// row limits (sc_profile_exec; 0 = no limit).
+//
+// Step-rate guard: whatever rows arrive, the executor's steps never
+// overflow the step generator's queue (no step is ever dropped). While the
+// executor drives the steps and the queue is three short of full, the
+// executor stops at once the next clock, as an abort (the trip is
+// registered: a combinational path from the queue into the executor's
+// abort cost about 1000 LUT): the two requests still in flight fit, the
+// queue drains at the pulse timing, the pins end on the reference.
+// fault_overrun_o reports it (until the next START), as it reports an
+// overflow of the external source.
 //
 // Limits: lim_fwd_i / lim_rev_i say a limit switch is active on that side
 // (filtered and enabled by the register top). Motion into an active limit
@@ -62,6 +73,9 @@ module sc_axis_core #(
   input  logic                        stop_i,       // controlled stop; while arming, the start is dropped
   input  logic [sc_pkg::JerkW-1:0]            stop_jerk_i,  // controlled-stop limits
   input  logic [sc_pkg::AccW-1:0]             stop_acc_i,
+  input  logic [sc_pkg::VelW-1:0]             guard_vel_i,  // row guard limits (0 = none)
+  input  logic [sc_pkg::AccW-1:0]             guard_acc_i,
+  input  logic [sc_pkg::JerkW-1:0]            guard_jerk_i,
   input  logic                        lim_fwd_i,    // a limit is active on the + side
   input  logic                        lim_rev_i,    // a limit is active on the - side
   input  logic                        lim_hard_i,   // 1: a limit stops at once, 0: controlled stop
@@ -94,6 +108,7 @@ module sc_axis_core #(
   output logic                        fault_overrun_o,
   output logic                        underrun_o,
   output logic                        discont_o,
+  output logic                        guard_o,      // a row broke a guard limit (until START)
   output logic                        stopping_o,   // a controlled stop runs
   output logic                        overshoot_o,  // the last stop could not avoid a reversal
   output logic                        move_done_o,
@@ -116,6 +131,8 @@ module sc_axis_core #(
   localparam int PulseTimeW = sc_pkg::PulseTimeW;
   localparam int FracBits   = sc_pkg::FracBits;
   localparam int PhaseW     = sc_pkg::PhaseW;
+  // |queued steps| at which the executor is stopped: three short of full
+  localparam logic signed [sc_pkg::PendW-1:0] PendNearFull = sc_pkg::PendW'((1 << (sc_pkg::PendW - 1)) - 3);
 
   logic   exec_running, exec_finished, exec_fault;
   logic   exec_step_req, exec_step_fwd;
@@ -127,8 +144,12 @@ module sc_axis_core #(
   logic   en_q, start_q, abort_q, stop_q;
   logic   lim_fwd_q, lim_rev_q, lim_hard_q;
   logic   start_req, start_into_lim, into_fwd, into_rev, lim_act, lim_stop, lim_abort;
+  logic   rate_trip_q, rate_trip_d, rate_q, rate_d, sg_overrun;
   logic [sc_pkg::JerkW-1:0] stop_jerk_q;
   logic [sc_pkg::AccW-1:0]  stop_acc_q;
+  logic [sc_pkg::VelW-1:0]  guard_vel_q;
+  logic [sc_pkg::AccW-1:0]  guard_acc_q;
+  logic [sc_pkg::JerkW-1:0] guard_jerk_q;
   logic   head_fwd;                      // direction of the FIFO's head row
   logic   arm_q, arm_d;                  // start accepted, waiting for DIR
   logic   arm_fwd_q, arm_fwd_d;
@@ -152,7 +173,10 @@ module sc_axis_core #(
   assign lim_abort  = lim_act && lim_hard_q;
   // A latched external fault must not block the arming of the next start:
   // the external source clears it when it starts with the executor.
-  assign exec_abort = abort_q || lim_abort || (ExtStep && ext_abort_i);
+  assign rate_trip_d = !use_ext && exec_running &&
+                      (step_pending_o >= PendNearFull || step_pending_o <= -PendNearFull);
+  assign rate_d     = start_ok ? 1'b0 : (rate_q || rate_trip_q);
+  assign exec_abort = abort_q || lim_abort || rate_trip_q || (ExtStep && ext_abort_i);
   assign finished   = use_ext ? ext_done_i : exec_finished;
 
   // While arming, DIR is steered to the move's direction; otherwise, with no
@@ -205,11 +229,15 @@ module sc_axis_core #(
     .stop_i      (stop_q || lim_stop),
     .stop_jerk_i (stop_jerk_q),
     .stop_acc_i  (stop_acc_q),
+    .guard_vel_i (guard_vel_q),
+    .guard_acc_i (guard_acc_q),
+    .guard_jerk_i (guard_jerk_q),
     .running_o   (exec_running),
     .finished_o  (exec_finished),
     .fault_o     (exec_fault),
     .underrun_o,
     .discont_o,
+    .guard_o,
     .stopping_o,
     .overshoot_o,
     .move_done_o,
@@ -244,7 +272,7 @@ module sc_axis_core #(
     .step_o,
     .dir_o       (sg_dir),
     .busy_o      (sg_busy),
-    .overrun_o   (fault_overrun_o),
+    .overrun_o   (sg_overrun),
     .pending_o   (step_pending_o),
     .count_o     (pulse_count_o)
   );
@@ -253,6 +281,8 @@ module sc_axis_core #(
     if (!rst_ni) begin
       en_q        <= 1'b0;
       arm_q       <= 1'b0;
+      rate_q      <= 1'b0;
+      rate_trip_q <= 1'b0;
       arm_fwd_q   <= 1'b1;
       arm_cnt_q   <= '0;
       start_q     <= 1'b0;
@@ -263,6 +293,9 @@ module sc_axis_core #(
       lim_hard_q  <= 1'b0;
       stop_jerk_q <= '0;
       stop_acc_q  <= '0;
+      guard_vel_q <= '0;
+      guard_acc_q <= '0;
+      guard_jerk_q <= '0;
       cfg_high_q  <= '0;
       cfg_low_q   <= '0;
       cfg_setup_q <= '0;
@@ -271,6 +304,8 @@ module sc_axis_core #(
     end else begin
       en_q        <= enable_i;
       arm_q       <= arm_d;
+      rate_q      <= rate_d;
+      rate_trip_q <= rate_trip_d;
       arm_fwd_q   <= arm_fwd_d;
       arm_cnt_q   <= arm_cnt_d;
       start_q     <= start_i;
@@ -281,6 +316,9 @@ module sc_axis_core #(
       lim_hard_q  <= lim_hard_i;
       stop_jerk_q <= stop_jerk_i;
       stop_acc_q  <= stop_acc_i;
+      guard_vel_q <= guard_vel_i;
+      guard_acc_q <= guard_acc_i;
+      guard_jerk_q <= guard_jerk_i;
       cfg_high_q  <= cfg_high_i;
       cfg_low_q   <= cfg_low_i;
       cfg_setup_q <= cfg_setup_i;
@@ -294,6 +332,7 @@ module sc_axis_core #(
   assign done_o        = finished && !busy_o;
   assign phase_o       = done_o ? sc_pkg::PhDone : exec_phase;
   assign fault_table_o = exec_fault;
+  assign fault_overrun_o = sg_overrun || rate_q;
   assign exec_start_o  = exec_start;
   assign abort_o       = abort_q || lim_abort;
   assign lim_trip_fwd_o = into_fwd || (start_req && start_into_lim && head_fwd);

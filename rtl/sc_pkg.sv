@@ -186,14 +186,14 @@ package sc_pkg;
   // the UART bridge's address byte is a word address so it reaches them all);
   // 0x000 .. 0x0FC hold the 2.x map unchanged, the rest is free.
   localparam int RegAddrW      = 10;      // byte address bits of the window
-  localparam int RegMapVersion = 769;     // 0x0301 = 3.1 (1 KiB window, UART word address; switch inputs)
+  localparam int RegMapVersion = 770;     // 0x0302 = 3.2 (1 KiB window, UART word address; switch inputs, guards)
   localparam int RegIdMagic    = 21315;   // 0x5343, ASCII "SC"
   localparam int RstPulseHigh  = 50;      // reset values of the pulse timing
   localparam int RstPulseLow   = 50;
   localparam int RstDirSetup   = 100;
   localparam int RstDirHold    = 100;
   localparam int RegId         = 32'h0000_0000;  //@reg ID RO "identification"
-  localparam int IdVersionLsb  = 0;      //@field ID VERSION 16 reset=RegMapVersion "register map version, 0x0301 = 3.1"
+  localparam int IdVersionLsb  = 0;      //@field ID VERSION 16 reset=RegMapVersion "register map version, 0x0302 = 3.2"
   localparam int IdMagicLsb    = 16;     //@field ID MAGIC 16 reset=21315 "0x5343, ASCII 'SC'"
   localparam int RegCtrl       = 32'h0000_0004;  //@reg CTRL RW "control"
   localparam int CtrlEnableBit = 0;      //@field CTRL ENABLE 1 "drives the EN pin; START is refused while 0; ESTOP clears it"
@@ -209,7 +209,7 @@ package sc_pkg;
   localparam int StatusDoneBit         = 5;   //@field STATUS DONE 1 "the stream has ended and the last pulse has left the pin"
   localparam int StatusEnBit           = 6;   //@field STATUS EN 1 "level of the EN pin"
   localparam int StatusFaultTableBit   = 7;   //@field STATUS FAULT_TABLE 1 "the last START met an empty FIFO, or a zero-length row was loaded"
-  localparam int StatusFaultOverrunBit = 8;   //@field STATUS FAULT_OVERRUN 1 "step requests overflowed the pulse queue"
+  localparam int StatusFaultOverrunBit = 8;   //@field STATUS FAULT_OVERRUN 1 "the steps outran the pulse timing (until the next START): the profile stopped at once before the pulse queue could overflow, no step lost (open loop); the queue overflowed (closed loop)"
   localparam int StatusEstopBit        = 9;   //@field STATUS ESTOP 1 "ERR.ESTOP is set (START refused)"
   localparam int StatusErrBit          = 10;  //@field STATUS ERR 1 "some ERR flag is set"
   localparam int StatusFaultFerrBit    = 11;  //@field STATUS FAULT_FERR 1 "closed loop: following-error fault latched (|P* - P| > FERR_LIM); 0 in sc_axi_axis"
@@ -220,6 +220,7 @@ package sc_pkg;
   localparam int StatusDiscontBit      = 20;  //@field STATUS DISCONTINUITY 1 "a row did not continue the motion exactly: the axis stopped (until the next START)"
   localparam int StatusStoppingBit     = 21;  //@field STATUS STOPPING 1 "a controlled stop runs (CMD.STOP, underrun, discontinuity)"
   localparam int StatusLatchedBit      = 26;  //@field STATUS LATCHED 1 "LATCH_PULSE / LATCH_ENC hold a capture (a LATCH_CFG write re-arms)"
+  localparam int StatusGuardBit        = 27;  //@field STATUS GUARD 1 "a row broke a GUARD_VEL / GUARD_ACC / GUARD_JERK limit and was refused: the axis stopped (until the next START)"
   localparam int StatusSwLevelLsb      = 23;  //@field STATUS SW_LEVEL SwW "filtered switch levels, 1 = active: bit 23 LIM_NEG, 24 LIM_POS, 25 HOME"
   localparam int StatusOvershootBit    = 22;  //@field STATUS OVERSHOOT 1 "the last controlled stop could not avoid a velocity reversal within STOP_JERK (limits below the plan's)"
   localparam int RegErr        = 32'h0000_0010;  //@reg ERR W1C "sticky error flags: write 1 to clear"
@@ -230,6 +231,7 @@ package sc_pkg;
   localparam int ErrDiscontBit = 4;      //@field ERR DISCONTINUITY 1 "a row did not continue the previous row's end state exactly: not executed, the axis stopped"
   localparam int ErrLimNegBit  = 6;      //@field ERR LIMIT_NEG 1 "the - limit stopped motion into it or refused a START toward it"
   localparam int ErrLimPosBit  = 7;      //@field ERR LIMIT_POS 1 "the + limit stopped motion into it or refused a START toward it"
+  localparam int ErrGuardBit   = 8;      //@field ERR GUARD 1 "a row broke a guard limit: not executed, the axis stopped (or the START was refused)"
   localparam int ErrUnderrunBit = 5;     //@field ERR UNDERRUN 1 "the FIFO ran dry while the axis was moving: the axis stopped"
   localparam int RegPulseCount = 32'h0000_0014;  //@reg PULSE_COUNT RO "net STEP pulses since the last START (signed)"
   localparam int RegRefPos     = 32'h0000_0018;  //@reg REF_POS RO "reference position P*, integer pulses (signed)"
@@ -380,7 +382,7 @@ package sc_pkg;
   localparam int IrqMoveDoneBit = 1;     //@field IRQ_STATUS MOVE_DONE 1 "a move ended (MOVE_INDEX advanced)"
   localparam int IrqIdleBit     = 2;     //@field IRQ_STATUS IDLE 1 "the axis became idle (BUSY fell)"
   localparam int IrqUnderrunBit = 3;     //@field IRQ_STATUS UNDERRUN 1 "the FIFO ran dry while moving"
-  localparam int IrqFaultBit    = 4;     //@field IRQ_STATUS FAULT 1 "a fault: FAULT_TABLE, FAULT_OVERRUN, DISCONTINUITY, FAULT_FERR, e-stop or a limit acting"
+  localparam int IrqFaultBit    = 4;     //@field IRQ_STATUS FAULT 1 "a fault: FAULT_TABLE, FAULT_OVERRUN, DISCONTINUITY, GUARD, FAULT_FERR, e-stop or a limit acting"
   localparam int IrqSwitchBit   = 5;     //@field IRQ_STATUS SWITCH 1 "a filtered switch level (STATUS.SW_LEVEL) changed"
   localparam int IrqLatchBit    = 6;     //@field IRQ_STATUS LATCH 1 "the position latch captured (STATUS.LATCHED rose)"
   localparam int IrqW           = 7;
@@ -403,7 +405,17 @@ package sc_pkg;
   localparam int LatchFallBit  = 1;      //@field LATCH_CFG FALL 1 reset=0 "capture when home becomes inactive (released)"
   localparam int RegLatchPulse = 32'h0000_0118;  //@reg LATCH_PULSE RO "PULSE_COUNT at the capture (signed)"
   localparam int RegLatchEnc   = 32'h0000_011C;  //@reg LATCH_ENC RO "ENC_POS at the capture (signed)"
-  // Writes to PULSE_TIME, DIR_TIME, POS_FRAC0, STOP_JERK, STOP_ACC, SW_CFG, CMD.START and CMD.FLUSH
+  // Guards against the host: the largest |vel0|, |acc0| and |jerk| a row
+  // may carry (executor LSBs, unsigned; 0 = no limit). The executor checks
+  // the head row when it would load it (at START and at every row
+  // boundary): a row over a limit is not executed. At START the start is
+  // refused (no motion); at a boundary the axis stops under control from
+  // the running row's end state (STOP_JERK / STOP_ACC). Either way the FIFO
+  // is emptied and STATUS.GUARD / ERR.GUARD are set.
+  localparam int RegGuardVel   = 32'h0000_0120;  //@reg GUARD_VEL RW wide=VelW "guard: largest |vel0| of a row, unsigned SQ1.80 magnitude (0 = no limit), 3 words low first"
+  localparam int RegGuardAcc   = 32'h0000_0130;  //@reg GUARD_ACC RW wide=AccW "guard: largest |acc0| of a row, unsigned, executor LSB (0 = no limit), 2 words low first"
+  localparam int RegGuardJerk  = 32'h0000_0138;  //@reg GUARD_JERK RW wide=JerkW "guard: largest |jerk| of a row, unsigned, executor LSB (0 = no limit), 2 words low first"
+  // Writes to PULSE_TIME, DIR_TIME, POS_FRAC0, STOP_JERK, STOP_ACC, SW_CFG, GUARD_*, CMD.START and CMD.FLUSH
   // while STATUS.BUSY is set are refused (SLVERR, ERR.REJECT); so are writes
   // to the controller settings (CL_CFG .. SETTLE_RATE). The row staging
   // registers and ROW_PUSH stay open: the host streams while the axis runs.

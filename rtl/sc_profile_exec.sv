@@ -16,11 +16,19 @@
 // else it is not executed: the continuity guard stops the axis and flags it. At the end
 // of a row:
 //   * row flagged STREAM_END: the stream ends (v, a, j to 0: the plan's end);
-//   * else the head row is loaded if it continues exactly;
+//   * else the head row is loaded if it continues exactly and is within
+//     the guard limits;
 //   * else, with the FIFO empty and the end state at rest (v = a = 0), the
 //     stream ends;
 //   * else (the FIFO ran dry while moving: underrun; the head row does not
-//     continue: discontinuity; or it has no clocks): a controlled stop.
+//     continue: discontinuity; it is over a guard limit; or it has no
+//     clocks): a controlled stop.
+// Guards (guard_vel_i, guard_acc_i, guard_jerk_i; 0 = no limit): a head
+// row whose |vel0|, |acc0| or |jerk| is over its limit is not loaded. At
+// START nothing moves (the start is refused); at a boundary the axis stops
+// under control as for a discontinuity. Either way guard_o is set (until
+// START) and the FIFO is emptied: what the host queued behind a refused
+// row is not run.
 // A row flagged MOVE_END closes a move: move_idx_o counts the moves done
 // since START and boundary_pos_o holds the integer position at that
 // boundary (after the step of its last clock).
@@ -55,11 +63,15 @@ module sc_profile_exec (
   input  logic [sc_pkg::JerkW-1:0]            stop_jerk_i,   // stop limits (sc_stop_gen)
   input  logic [sc_pkg::AccW-1:0]             stop_acc_i,
 
+  input  logic [sc_pkg::VelW-1:0]             guard_vel_i,   // row limits, magnitudes (0 = none)
+  input  logic [sc_pkg::AccW-1:0]             guard_acc_i,
+  input  logic [sc_pkg::JerkW-1:0]            guard_jerk_i,
   output logic                       running_o,
   output logic                       finished_o,
   output logic                       fault_o,       // START met an empty FIFO, or a zero-length row
   output logic                       underrun_o,    // the FIFO ran dry while moving (until START)
   output logic                       discont_o,     // a row did not continue the motion (until START)
+  output logic                       guard_o,       // a row broke a guard limit (until START)
   output logic                       stopping_o,    // a controlled stop runs
   output logic                       overshoot_o,   // the last stop could not avoid a reversal (until its next start)
   output logic                       move_done_o,   // a MOVE_END row ended (one clock, with its move_idx_o)
@@ -99,6 +111,7 @@ module sc_profile_exec (
   logic                      fault_q, fault_d;
   logic                      underrun_q, underrun_d;
   logic                      discont_q, discont_d;
+  logic                      guard_q, guard_d;
   logic                      stop_q, stop_d;        // controlled stop running
   logic [SegIdxW-1:0]        idx_q, idx_d;
   logic [RowFlagW-1:0]       flags_q, flags_d;
@@ -124,7 +137,11 @@ module sc_profile_exec (
   logic signed [JerkW-1:0]    sg_jerk;
   logic signed [VelW-1:0]     vel_end;
   logic signed [AccW-1:0]     acc_end;
-  logic                       continues, at_rest;
+  logic                       continues, at_rest, over_guard;
+  logic [VelW-1:0]            hd_vel_x;
+  logic [AccW-1:0]            hd_acc_x;
+  logic [JerkW-1:0]           hd_jerk_x;
+  logic                       over_vel, over_acc, over_jerk;
 
   logic [RowW-1:0]            head;
   logic                       fifo_empty, fifo_full;
@@ -160,6 +177,16 @@ module sc_profile_exec (
   assign acc_end  = acc_q + AccW'(jerk_q);
   assign continues = hd_vel0 == vel_end && (hd_acc0 == acc_end || hd_flags[sc_pkg::RowFlagAccStep]);
   assign at_rest   = vel_end == '0 && acc_end == '0;
+  // |x| > L without a negation: for x < 0, |x| = ~x + 1, so |x| > L is
+  // ~x >= L; x ^ {sign} is x or ~x (a comparator, no adder).
+  assign hd_vel_x  = hd_vel0 ^ {VelW{hd_vel0[VelW-1]}};
+  assign hd_acc_x  = hd_acc0 ^ {AccW{hd_acc0[AccW-1]}};
+  assign hd_jerk_x = hd_jerk ^ {JerkW{hd_jerk[JerkW-1]}};
+  assign over_vel  = hd_vel_x > guard_vel_i || (hd_vel0[VelW-1] && hd_vel_x == guard_vel_i);
+  assign over_acc  = hd_acc_x > guard_acc_i || (hd_acc0[AccW-1] && hd_acc_x == guard_acc_i);
+  assign over_jerk = hd_jerk_x > guard_jerk_i || (hd_jerk[JerkW-1] && hd_jerk_x == guard_jerk_i);
+  assign over_guard = (guard_vel_i != '0 && over_vel) || (guard_acc_i != '0 && over_acc) ||
+                      (guard_jerk_i != '0 && over_jerk);
   assign boundary  = run_q && !stop_q && !abort_i && left_q == SegClkW'(1);
   assign move_done = boundary && flags_q[sc_pkg::RowFlagMoveEnd];
   // The stream ends as planned at this boundary (no row follows).
@@ -170,13 +197,14 @@ module sc_profile_exec (
                        (boundary && ((!load && !ends) || row_bad)));
 
   // The head row is loaded at the end of a row that does not end the
-  // stream, when it continues exactly, and on an accepted START.
+  // stream, when it continues exactly, and on an accepted START; never
+  // over a guard limit.
   always_comb begin
     load = 1'b0;
     if (boundary) begin
-      load = !flags_q[sc_pkg::RowFlagStreamEnd] && !fifo_empty && continues;
+      load = !flags_q[sc_pkg::RowFlagStreamEnd] && !fifo_empty && continues && !over_guard;
     end else if (!run_q) begin
-      load = start_i && !fifo_empty;
+      load = start_i && !fifo_empty && !over_guard;
     end
   end
   assign pop = load;
@@ -187,6 +215,7 @@ module sc_profile_exec (
     fault_d    = fault_q;
     underrun_d = underrun_q;
     discont_d  = discont_q;
+    guard_d    = guard_q;
     stop_d     = stop_q;
     idx_d      = idx_q;
     flags_d    = flags_q;
@@ -244,10 +273,11 @@ module sc_profile_exec (
             jerk_d     = '0;
             finished_d = 1'b1;
           end else if (!load) begin
-            // No row, or one that does not continue the motion: the rest
-            // of the stream is not run.
+            // No row, one that does not continue the motion, or one over
+            // a guard limit: the rest of the stream is not run.
             underrun_d = fifo_empty;
-            discont_d  = !fifo_empty;
+            discont_d  = !fifo_empty && !continues;
+            guard_d    = !fifo_empty && continues;
           end
         end else begin
           left_d = left_q - SegClkW'(1);
@@ -260,12 +290,17 @@ module sc_profile_exec (
       fault_d    = 1'b0;
       underrun_d = 1'b0;
       discont_d  = 1'b0;
+      guard_d    = 1'b0;
       frac_d     = pos_frac0_i;
       move_idx_d = '0;
       bpos_d     = pint_q;
       if (!load) begin
-        fault_d = 1'b1;
+        // an empty FIFO is the table fault; a head row over a guard limit
+        // is refused with everything queued behind it
+        fault_d = fifo_empty;
+        guard_d = !fifo_empty;
         phase_d = sc_pkg::PhFault;
+        flush   = !fifo_empty;
       end
     end
 
@@ -325,6 +360,7 @@ module sc_profile_exec (
       fault_q    <= 1'b0;
       underrun_q <= 1'b0;
       discont_q  <= 1'b0;
+      guard_q    <= 1'b0;
       stop_q     <= 1'b0;
       idx_q      <= '0;
       flags_q    <= '0;
@@ -346,6 +382,7 @@ module sc_profile_exec (
       fault_q    <= fault_d;
       underrun_q <= underrun_d;
       discont_q  <= discont_d;
+      guard_q    <= guard_d;
       stop_q     <= stop_d;
       idx_q      <= idx_d;
       flags_q    <= flags_d;
@@ -374,6 +411,7 @@ module sc_profile_exec (
   assign fault_o        = fault_q;
   assign underrun_o     = underrun_q;
   assign discont_o      = discont_q;
+  assign guard_o        = guard_q;
   assign stopping_o     = stop_q;
   assign overshoot_o    = sg_overshoot;
   assign fifo_full_o    = fifo_full || stop_q;

@@ -357,7 +357,8 @@ def doc(params, words, enums=None):
            "a write to a read-only register "
            "answers SLVERR. Both set ERR.BAD_ACCESS and change nothing else. Reserved bits read 0 "
            "and ignore writes. WSTRB selects bytes (CMD, ERR, IRQ_STATUS and ROW_PUSH act on byte 0).", "",
-           "Writes to PULSE_TIME, DIR_TIME, POS_FRAC0_*, STOP_JERK_*, STOP_ACC_*, SW_CFG, CMD.START and CMD.FLUSH while "
+           "Writes to PULSE_TIME, DIR_TIME, POS_FRAC0_*, STOP_JERK_*, STOP_ACC_*, SW_CFG, GUARD_*, CMD.START and "
+           "CMD.FLUSH while "
            "STATUS.BUSY is set are refused: SLVERR, ERR.REJECT set, the running move is not touched. "
            "CMD.START is also refused while ERR.ESTOP is set or CTRL.ENABLE is 0. The row staging "
            "registers (SEG_*) and ROW_PUSH stay open while busy: the host appends rows to the "
@@ -375,7 +376,14 @@ def doc(params, words, enums=None):
            "STOP_JERK / STOP_ACC; 1: at once), and a START whose move heads into one is taken by the register "
            "file but refused by the core (nothing moves). Either sets ERR.LIMIT_NEG / LIMIT_POS and "
            "IRQ_STATUS.FAULT. Motion away from an active limit runs. Counts stay exact: PULSE_COUNT, REF_POS "
-           "and the pins agree after any limit stop (docs/limits.md).", ""]
+           "and the pins agree after any limit stop (docs/limits.md).", "",
+           "Guards against the host: GUARD_VEL, GUARD_ACC and GUARD_JERK (0 = no limit, the reset value) are "
+           "the largest |vel0|, |acc0| and |jerk| a row may start with. The executor checks the head row when "
+           "it would load it: a START whose first row is over a guard is refused (nothing moves); a later row "
+           "over one is not executed and the axis stops under control from the running row's end state (STOP_JERK "
+           "/ STOP_ACC). Either way the FIFO is emptied, STATUS.GUARD is set until the next START and "
+           "ERR.GUARD and IRQ_STATUS.FAULT are raised; counts stay exact. Recovery: clear ERR, load rows within "
+           "the guards, START (docs/limits.md).", ""]
     out += SOURCE_DOC
     out += ["## Registers", "",
            "| offset | name | access | reset | implemented bits | description |",

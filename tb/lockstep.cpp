@@ -31,6 +31,7 @@ SignalValues render_outputs(const CoreOutputs& o) {
       {"step_pending_o", hex_bits(int64_t(o.step_pending), PendW)},
       {"underrun_o", hex_bits(uint64_t(o.underrun), 1)},
       {"discont_o", hex_bits(uint64_t(o.discont), 1)},
+      {"guard_o", hex_bits(uint64_t(o.guard), 1)},
       {"stopping_o", hex_bits(uint64_t(o.stopping), 1)},
       {"overshoot_o", hex_bits(uint64_t(o.overshoot), 1)},
       {"move_done_o", hex_bits(uint64_t(o.move_done), 1)},

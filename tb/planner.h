@@ -80,6 +80,7 @@ struct Plan {
   double v_end_actual = 0;
   bool end_speed_adjusted = false;
   double v_end_used = 0;
+  scurve::JunctionState end_state;
 };
 
 inline Plan to_model(const scurve::Plan& p) {
@@ -97,6 +98,7 @@ inline Plan to_model(const scurve::Plan& p) {
   m.v_end_actual = p.v_end_actual;
   m.end_speed_adjusted = p.end_speed_adjusted;
   m.v_end_used = p.v_end_used;
+  m.end_state = p.end_state;
   return m;
 }
 inline scurve::Plan to_host(const Plan& m) {
@@ -114,6 +116,7 @@ inline scurve::Plan to_host(const Plan& m) {
   p.v_end_actual = m.v_end_actual;
   p.end_speed_adjusted = m.end_speed_adjusted;
   p.v_end_used = m.v_end_used;
+  p.end_state = m.end_state;
   return p;
 }
 

@@ -20,6 +20,7 @@ RtlCore::RtlCore() : top_(std::make_unique<VerilatedTop<Vsc_axis_core>>("sc_axis
   m.abort_i = 0;
   drive_stop(m, last_.stop, last_.stop_jerk, last_.stop_acc);
   drive_limits(m, last_.lim_fwd, last_.lim_rev, last_.lim_hard);
+  drive_guards(m, last_.guard);
   // No external step source on the plain core (ExtStep = 0).
   m.ext_sel_i = 0;
   m.ext_req_i = 0;
@@ -58,6 +59,7 @@ void RtlCore::step(const CoreInputs& in) {
   if (in.stop != last_.stop || in.stop_jerk != last_.stop_jerk || in.stop_acc != last_.stop_acc) {
     drive_stop(m, in.stop, in.stop_jerk, in.stop_acc);
   }
+  if (!(in.guard == last_.guard)) drive_guards(m, in.guard);
   if (in.lim_fwd != last_.lim_fwd || in.lim_rev != last_.lim_rev || in.lim_hard != last_.lim_hard) {
     drive_limits(m, in.lim_fwd, in.lim_rev, in.lim_hard);
   }
@@ -71,6 +73,7 @@ void RtlCore::step(const CoreInputs& in) {
   last_.stop = in.stop;
   last_.stop_jerk = in.stop_jerk;
   last_.stop_acc = in.stop_acc;
+  last_.guard = in.guard;
   last_.lim_fwd = in.lim_fwd;
   last_.lim_rev = in.lim_rev;
   last_.lim_hard = in.lim_hard;

@@ -6,7 +6,9 @@
 
 namespace sc {
 
-RtlServo::RtlServo() : top_(std::make_unique<VerilatedTop<Vsc_servo_axis>>("sc_servo_axis")) {}
+RtlServo::RtlServo() : top_(std::make_unique<VerilatedTop<Vsc_servo_axis>>("sc_servo_axis")) {
+  drive_guards(top_->top(), guard_);
+}
 
 RtlServo::~RtlServo() = default;
 
@@ -41,6 +43,10 @@ void RtlServo::step(const ServoInputs& in) {
   m.abort_i = in.abort;
   drive_stop(m, in.stop, in.stop_jerk, in.stop_acc);
   drive_limits(m, in.lim_fwd, in.lim_rev, in.lim_hard);
+  if (!(in.guard == guard_)) {
+    guard_ = in.guard;
+    drive_guards(m, guard_);
+  }
   m.enc_a_i = in.enc_a;
   m.enc_b_i = in.enc_b;
   top_->tick();

@@ -34,6 +34,7 @@ class RtlServo {
   void apply_cfg(const ServoConfig& c);
   std::unique_ptr<VerilatedTop<Vsc_servo_axis>> top_;
   u128 pos_frac0_ = 0;
+  GuardLimits guard_{};  // the guard inputs as driven
   ServoConfig cfg_{};
   bool cfg_set_ = false;
 };

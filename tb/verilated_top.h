@@ -174,6 +174,15 @@ void drive_stop(V& m, bool stop, uint64_t stop_jerk, uint64_t stop_acc) {
   m.stop_acc_i = stop_acc;
 }
 
+// The row guard inputs of the axis tops (sc_axis_core, sc_servo_axis).
+template <class V>
+void drive_guards(V& m, const GuardLimits& g) {
+  const GuardLimits w = g.masked();
+  put_bits(m.guard_vel_i, 0, VelW, w.vel);
+  m.guard_acc_i = w.acc;
+  m.guard_jerk_i = w.jerk;
+}
+
 // The limit inputs of the axis tops (sc_axis_core, sc_servo_axis).
 template <class V>
 void drive_limits(V& m, bool lim_fwd, bool lim_rev, bool lim_hard) {
@@ -205,6 +214,7 @@ void read_axis_outputs(const V& m, O& o) {
   o.ref_pos_int = int32_t(m.ref_pos_int_o);
   o.underrun = m.underrun_o;
   o.discont = m.discont_o;
+  o.guard = m.guard_o;
   o.stopping = m.stopping_o;
   o.overshoot = m.overshoot_o;
   o.move_done = m.move_done_o;

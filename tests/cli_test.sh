@@ -132,6 +132,24 @@ assert w[-1]["reg"] == "CMD" and w[-1]["data"] == 2 and w[-1]["at_clock"] == 600
 assert w[-2]["reg"] == "CMD" and w[-2]["data"] == 1, w[-2]
 names = [x["reg"] for x in w]
 assert names.index("STOP_JERK_0") < names.index("ROW_PUSH"), names
+assert not any(n.startswith("GUARD") for n in names), names
+PY
+# --guard: the row guards from the move's own limits, rounded up (at most a
+# relative 2^-50 above the exact value), after the stop limits and before
+# the table.
+"$scurve" regs --distance 4000 --v-cruise 40000 --a-max 2e6 --j-max 4e8 --guard --json > "$tmp/guard_regs.json"
+python3 - "$tmp/guard_regs.json" <<'PY'
+import json, sys
+w = json.load(open(sys.argv[1]))
+names = [x["reg"] for x in w]
+val = lambda base, n: sum(w[names.index(f"{base}_{i}")]["data"] << (32 * i) for i in range(n))
+def up(got, num, den):
+    exact = -(-num // den)
+    assert exact <= got <= exact + (exact >> 49) + 1, (got, exact)
+up(val("GUARD_VEL", 3), 2**80, 500)                 # 40000 / 20e6 pulses per clock
+up(val("GUARD_ACC", 2), 2**80, 200_000_000)         # 2e6 / 20e6^2
+up(val("GUARD_JERK", 2), 2**80, 20_000_000_000_000)  # 4e8 / 20e6^3
+assert names.index("STOP_ACC_1") < names.index("GUARD_VEL_0") < names.index("ROW_PUSH"), names
 PY
 # --stop-at on the closed-loop axis: the reference stops under control, the
 # controller settles where it came to rest, in position, RTL = model.

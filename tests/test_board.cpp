@@ -486,16 +486,16 @@ TEST(BoardUart, IllegalAddressReservedBitsAndWriteWhileBusy) {
   r = bd.host.read(reg_addr("SW_CFG"));
   EXPECT_EQ(r.data, reg("SW_CFG").reset) << "SW_CFG at its reset value";
   EXPECT_EQ(bd.host.read(reg_addr("LATCH_CFG")).data, 0u);
-  for (const uint32_t a : {0x120u, 0x124u, 0x1F8u, 0x200u, 0x2CCu, 0x3FCu}) {
+  for (const uint32_t a : {0x140u, 0x144u, 0x1F8u, 0x200u, 0x2CCu, 0x3FCu}) {
     r = bd.host.read(a);
     ASSERT_TRUE(r.ok) << r.error;
     EXPECT_EQ(r.status, kDecErr) << std::hex << a;
     EXPECT_EQ(r.data, 0u) << std::hex << a;
   }
-  r = bd.host.write(0x124, field_mask("CTRL", "ENABLE"));
+  r = bd.host.write(0x144, field_mask("CTRL", "ENABLE"));
   ASSERT_TRUE(r.ok) << r.error;
   EXPECT_EQ(r.status, kDecErr);
-  EXPECT_EQ(bd.host.read(reg_addr("CTRL")).data, 0u) << "0x124 wrote CTRL";
+  EXPECT_EQ(bd.host.read(reg_addr("CTRL")).data, 0u) << "0x144 wrote CTRL";
   r = bd.host.write(reg_addr("ID"), 0);
   EXPECT_EQ(r.status, kSlvErr);
   r = bd.host.write(reg_addr("SEG_PHASE"), 0xffffffffu);

@@ -22,6 +22,9 @@ void add_regs_flags(CLI::App* cmd, RegsCliFlags& f) {
   cmd->add_flag("--closed-loop", f.closed_loop,
                 "closed-loop axis (board top): write the controller settings (the closed-loop runner's "
                 "defaults for this pulse timing) and CTRL.CLOSED_LOOP before the table");
+  cmd->add_flag("--guard", f.guard,
+                "write the row guards GUARD_VEL / GUARD_ACC / GUARD_JERK from the move's own limits (its largest "
+                "speed, --a-max and its jerk limit) after the stop limits");
   add_stop_flags(cmd, f.stop);
 }
 
@@ -38,7 +41,14 @@ std::variant<nlohmann::json, Error> regs_to_json(const RegsCliFlags& f, const Mo
       std::get<std::vector<RegWrite>>(encode_stop_limits(sr.limits.jerk, sr.limits.acc, plan.clock));
   const auto after_timing = std::find_if(writes.begin(), writes.end(),
                                          [](const RegWrite& w) { return w.addr == uint32_t(RegDirTime); });
-  writes.insert(after_timing + 1, limits.begin(), limits.end());
+  std::vector<RegWrite> config = limits;
+  if (f.guard) {
+    const GuardLimitCodesResult g = move_guard_codes(request, plan.clock);
+    if (const Error* err = std::get_if<Error>(&g)) return Error{err->parameter, "--guard: " + err->message};
+    const std::vector<RegWrite> gw = encode_guard_codes(std::get<GuardLimitCodes>(g));
+    config.insert(config.end(), gw.begin(), gw.end());
+  }
+  writes.insert(after_timing + 1, config.begin(), config.end());
   if (sr.at_clock) writes.push_back(stop_command());
   if (f.closed_loop) {
     const double counts_per_step = 1.0;  // the closed-loop runner's default encoder

@@ -115,7 +115,7 @@ PYBIND11_MODULE(scurve, m) {
       },
       "Plan a move and return its register writes as `scurve regs --json` prints them: "
       "[{'addr', 'reg', 'data'}] (and 'frame' with uart=True); keyword arguments as for plan plus "
-      "uart, no_start, closed_loop, stop_at, stop_jerk, stop_acc.");
+      "uart, no_start, closed_loop, guard, stop_at, stop_jerk, stop_acc.");
 
   m.def(
       "uart_write_frame",

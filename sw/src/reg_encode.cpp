@@ -78,6 +78,49 @@ StopLimitsResult encode_stop_limits(double stop_jerk, double stop_acc, Clock clo
   };
 }
 
+GuardLimitCodesResult guard_limit_codes(double guard_v, double guard_a, double guard_j, Clock clock) {
+  auto check = [](const char* name, double v, LimitRange r) -> std::optional<Error> {
+    if (std::isfinite(v) && v >= r.lo && v <= r.hi) return std::nullopt;
+    return Error{name, fmt::format("{}={}: needs a number in [{}, {}]", name, v, r.lo, r.hi)};
+  };
+  if (!std::isfinite(guard_v) || guard_v <= 0 || guard_v >= clock.hz) {
+    return Error{"guard_v", fmt::format("guard_v={}: needs a number in (0, {}) (below one pulse per clock)",
+                                        guard_v, clock.hz)};
+  }
+  if (auto e = check("guard_a", guard_a, accel_range(clock))) return *e;
+  if (auto e = check("guard_j", guard_j, jerk_range(clock))) return *e;
+  // Rounded up past the conversion's own rounding (a relative 2^-50 covers
+  // it): a row planned within the same limits is never over them. |v| < 1
+  // pulse/clock keeps the velocity code at most 2^FracBits.
+  auto up = [](long double lsb) { return u128(std::ceil(lsb + lsb * 0x1p-50L)); };
+  const long double hz = clock.hz, one = kTwoPowFrac;
+  return GuardLimitCodes{std::min(up(guard_v * one / hz), kOne), uint64_t(up(guard_a * one / (hz * hz))),
+                         uint64_t(up(guard_j * one / (hz * hz * hz)))};
+}
+
+GuardLimitCodesResult move_guard_codes(const MoveRequest& r, Clock clock) {
+  return guard_limit_codes(std::max({r.v_start, r.v_cruise, r.v_end}), r.a_max, move_stop_limits(r, clock).jerk,
+                           clock);
+}
+
+std::vector<RegWrite> encode_guard_codes(const GuardLimitCodes& c) {
+  return {
+      {uint32_t(RegGuardVel), uint32_t(c.vel)},
+      {uint32_t(RegGuardVel + 4), uint32_t(c.vel >> 32)},
+      {uint32_t(RegGuardVel + 8), uint32_t(c.vel >> 64)},
+      {uint32_t(RegGuardAcc), uint32_t(c.acc)},
+      {uint32_t(RegGuardAcc + 4), uint32_t(c.acc >> 32)},
+      {uint32_t(RegGuardJerk), uint32_t(c.jerk)},
+      {uint32_t(RegGuardJerk + 4), uint32_t(c.jerk >> 32)},
+  };
+}
+
+GuardLimitsResult encode_guard_limits(double guard_v, double guard_a, double guard_j, Clock clock) {
+  const GuardLimitCodesResult r = guard_limit_codes(guard_v, guard_a, guard_j, clock);
+  if (const Error* e = std::get_if<Error>(&r)) return *e;
+  return encode_guard_codes(std::get<GuardLimitCodes>(r));
+}
+
 StopLimits move_stop_limits(const MoveRequest& r, Clock clock) {
   StopLimits s;
   s.acc = r.a_max;

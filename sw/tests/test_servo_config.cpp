@@ -125,6 +125,58 @@ TEST(RegEncode, StopLimitsAreTheirRegistersInExecutorUnits) {
   EXPECT_EQ((uint64_t(w[3].data) << 32) | w[2].data, scurve::hw::StopAccReset);
 }
 
+TEST(RegEncode, GuardLimitsRoundUpToTheNextLsbAndWriteTheirRegisters) {
+  const scurve::Clock clk{20e6};
+  const auto r = scurve::guard_limit_codes(40000, 2e6, 4e8, clk);
+  ASSERT_TRUE(std::holds_alternative<scurve::GuardLimitCodes>(r));
+  const auto& c = std::get<scurve::GuardLimitCodes>(r);
+  // Exact values: 40000 / 20e6 pulses per clock = 2^80 / 500 LSB, 2e6 / 20e6^2
+  // = 2^80 / 2e8, 4e8 / 20e6^3 = 2^80 / 2e13; rounded up, by at most a
+  // relative 2^-50 more.
+  auto expect_up = [](scurve::u128 got, scurve::u128 num, scurve::u128 den, const char* what) {
+    const scurve::u128 exact_up = (num + den - 1) / den;
+    EXPECT_GE(got, exact_up) << what;
+    EXPECT_LE(got, exact_up + (exact_up >> 49) + 1) << what;
+  };
+  expect_up(c.vel, scurve::kOne, 500, "velocity");
+  expect_up(c.acc, scurve::kOne, 200'000'000, "acceleration");
+  expect_up(c.jerk, scurve::kOne, 20'000'000'000'000, "jerk");
+  const std::vector<scurve::RegWrite> w = scurve::encode_guard_codes(c);
+  ASSERT_EQ(w.size(), 7u);
+  EXPECT_EQ(w[0].addr, uint32_t(scurve::hw::RegGuardVel));
+  EXPECT_EQ(w[3].addr, uint32_t(scurve::hw::RegGuardAcc));
+  EXPECT_EQ(w[5].addr, uint32_t(scurve::hw::RegGuardJerk));
+  EXPECT_EQ((scurve::u128(w[2].data) << 64) | (scurve::u128(w[1].data) << 32) | w[0].data, c.vel);
+  EXPECT_EQ((uint64_t(w[4].data) << 32) | w[3].data, c.acc);
+  EXPECT_EQ((uint64_t(w[6].data) << 32) | w[5].data, c.jerk);
+  // A move's own limits: its largest speed, a_max and its jerk limit.
+  scurve::MoveRequest m;
+  m.distance = 1000;
+  m.v_start = 50000;
+  m.v_cruise = 40000;
+  m.a_max = 2e6;
+  m.j_max = 4e8;
+  const auto mg = scurve::move_guard_codes(m, clk);
+  ASSERT_TRUE(std::holds_alternative<scurve::GuardLimitCodes>(mg));
+  expect_up(std::get<scurve::GuardLimitCodes>(mg).vel, scurve::kOne, 400, "the move's largest speed");
+}
+
+TEST(RegEncode, GuardLimitsOutOfRangeNameTheParameterAndTheBound) {
+  for (const double bad : {0.0, -1.0, std::nan(""), 20e6, 1e30}) {
+    const auto v = scurve::guard_limit_codes(bad, 2e6, 4e8);
+    ASSERT_TRUE(std::holds_alternative<scurve::Error>(v)) << bad;
+    EXPECT_EQ(std::get<scurve::Error>(v).parameter, "guard_v");
+    EXPECT_NE(std::get<scurve::Error>(v).message.find("(0, 20000000)"), std::string::npos)
+        << std::get<scurve::Error>(v).message;
+    const auto a = scurve::guard_limit_codes(40000, bad == 20e6 ? 1e300 : bad, 4e8);
+    ASSERT_TRUE(std::holds_alternative<scurve::Error>(a)) << bad;
+    EXPECT_EQ(std::get<scurve::Error>(a).parameter, "guard_a");
+    const auto j = scurve::guard_limit_codes(40000, 2e6, bad == 20e6 ? 1e300 : bad);
+    ASSERT_TRUE(std::holds_alternative<scurve::Error>(j)) << bad;
+    EXPECT_EQ(std::get<scurve::Error>(j).parameter, "guard_j");
+  }
+}
+
 TEST(RegEncode, StopLimitsOutOfRangeNameTheParameterAndTheBound) {
   for (const double bad : {0.0, -1.0, std::nan(""), 1e30}) {
     const auto j = scurve::encode_stop_limits(bad, 2e5);

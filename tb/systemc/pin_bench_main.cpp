@@ -243,7 +243,14 @@ int sc_main(int argc, char** argv) {
   dut.ext_busy_i(ext_off);
   dut.ext_abort_i(ext_off);
   dut.ext_done_i(ext_off);
-  // No limit switches on this bench.
+  // No limit switches and no guard limits (0 = none) on this bench.
+  sc_signal<VelBv> guard_vel("guard_vel");
+  sc_signal<uint64_t> guard_acc("guard_acc"), guard_jerk("guard_jerk");
+  sc_signal<bool> guard("guard");
+  dut.guard_vel_i(guard_vel);
+  dut.guard_acc_i(guard_acc);
+  dut.guard_jerk_i(guard_jerk);
+  dut.guard_o(guard);
   dut.lim_fwd_i(ext_off);
   dut.lim_rev_i(ext_off);
   dut.lim_hard_i(ext_off);

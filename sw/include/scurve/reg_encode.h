@@ -68,6 +68,29 @@ struct StopLimits {
   double acc = 0;   // pulses/s^2
 };
 StopLimits move_stop_limits(const MoveRequest& request, Clock clock = Clock{});
+// The row guards (GUARD_VEL, GUARD_ACC, GUARD_JERK): the largest velocity
+// (pulses/s), acceleration (pulses/s^2) and jerk (pulses/s^3) a row may
+// start with at `clock`, rounded up (to the next LSB past the conversion's
+// rounding, at most a relative 2^-50 above the exact value), so a plan
+// within the same limits passes. The register writes, or an Error naming "guard_v"
+// (a finite number in (0, clock rate): below one pulse per clock),
+// "guard_a" (accel_range()) or "guard_j" (jerk_range()). Written while idle
+// (refused while busy); the executor refuses a row over them at its
+// boundary (docs/regmap.md).
+struct GuardLimitCodes {
+  u128 vel = 0;       // GUARD_VEL
+  uint64_t acc = 0;   // GUARD_ACC
+  uint64_t jerk = 0;  // GUARD_JERK
+};
+using GuardLimitCodesResult = std::variant<GuardLimitCodes, Error>;
+GuardLimitCodesResult guard_limit_codes(double guard_v, double guard_a, double guard_j, Clock clock = Clock{});
+// The guards a move's own limits give: its largest speed (v_start, v_cruise,
+// v_end), a_max and its jerk limit as move_stop_limits() takes it.
+GuardLimitCodesResult move_guard_codes(const MoveRequest& request, Clock clock = Clock{});
+// The register writes of guard codes as they are (0 = no limit).
+std::vector<RegWrite> encode_guard_codes(const GuardLimitCodes& codes);
+using GuardLimitsResult = std::variant<std::vector<RegWrite>, Error>;
+GuardLimitsResult encode_guard_limits(double guard_v, double guard_a, double guard_j, Clock clock = Clock{});
 // CMD.STOP: the controlled stop with the limits in STOP_JERK / STOP_ACC.
 RegWrite stop_command();
 

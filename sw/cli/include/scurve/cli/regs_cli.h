@@ -18,6 +18,7 @@ struct RegsCliFlags {
   bool uart = false;      // print UART frames (hex) instead of address/data
   bool no_start = false;  // leave out the final CMD.START
   bool closed_loop = false;  // sc_axi_servo: controller settings + CTRL.CLOSED_LOOP
+  bool guard = false;        // GUARD_VEL / GUARD_ACC / GUARD_JERK from the move's limits
   StopFlags stop;            // stop limits (always written) and --stop-at
 };
 
