@@ -98,7 +98,9 @@ uint32_t AxiRegs::read_word(uint16_t a, const RegsSide& side, const CoreOutputs&
              (q_.err_lim_neg ? bit(ErrLimNegBit) : 0) | (q_.err_lim_pos ? bit(ErrLimPosBit) : 0) |
              (q_.err_guard ? bit(ErrGuardBit) : 0);
     case RegSwCfg: return sw_cfg_word();
-    case RegLatchCfg: return (q_.latch_rise ? bit(LatchRiseBit) : 0) | (q_.latch_fall ? bit(LatchFallBit) : 0);
+    case RegLatchCfg:
+      return (q_.latch_rise ? bit(LatchRiseBit) : 0) | (q_.latch_fall ? bit(LatchFallBit) : 0) |
+             (q_.latch_probe ? bit(LatchProbeBit) : 0);
     case RegLatchPulse: return uint32_t(q_.latch_pulse);
     case RegLatchEnc: return uint32_t(q_.latch_enc);
     case RegPulseCount: return uint32_t(core.pulse_count);
@@ -253,6 +255,7 @@ void AxiRegs::step(const AxiIn& in, const RegsSide& side, const CoreOutputs& cor
           if (q.wstrb & 1) {
             d.latch_rise = (wd >> LatchRiseBit) & 1;
             d.latch_fall = (wd >> LatchFallBit) & 1;
+            d.latch_probe = (wd >> LatchProbeBit) & 1;
             d.latched = false;
           }
           break;
@@ -374,10 +377,11 @@ void AxiRegs::step(const AxiIn& in, const RegsSide& side, const CoreOutputs& cor
   if (core.lim_trip_fwd) d.err_lim_pos = true;
   if (core.guard && !q.guard_prev) d.err_guard = true;
   if (side.sw_edge != 0) d.irq_st |= uint8_t(bit(IrqSwitchBit));
-  // position latch: an edge of the filtered home level, armed; a capture
-  // wins over a re-arm in the same clock
-  const bool home_edge = (side.sw_edge >> SwHome) & 1, home_level = (side.sw_level >> SwHome) & 1;
-  if (!q.latched && home_edge && (home_level ? q.latch_rise : q.latch_fall)) {
+  // position latch: an edge of the filtered home (or probe) level, armed;
+  // a capture wins over a re-arm in the same clock
+  const int src = q.latch_probe ? SwProbe : SwHome;
+  const bool src_edge = (side.sw_edge >> src) & 1, src_level = (side.sw_level >> src) & 1;
+  if (!q.latched && src_edge && (src_level ? q.latch_rise : q.latch_fall)) {
     d.latched = true;
     d.latch_pulse = core.pulse_count;
     d.latch_enc = side.enc_pos;

@@ -45,7 +45,7 @@ struct RegsSide {
   bool estop = false;
   uint8_t enc_ab = 0;  // bit 0 = A, bit 1 = B
   int32_t enc_pos = 0;
-  uint8_t sw_pins = 0;   // switch pins (bit SwLimNeg, SwLimPos, SwHome): AxiAxis / AxiServo filter them
+  uint8_t sw_pins = 0;   // switch pins (bit SwLimNeg, SwLimPos, SwHome, SwProbe): AxiAxis / AxiServo filter them
   uint8_t sw_level = 0;  // the filter's outputs as the register file sees them (set by AxiAxis / AxiServo)
   uint8_t sw_edge = 0;
 };
@@ -111,6 +111,7 @@ class AxiRegs {
     bool lim_hard = false;
     uint16_t sw_debounce = uint16_t(RstDebounce);
     bool latch_rise = false, latch_fall = false;  // LATCH_CFG
+    bool latch_probe = false;                     // LATCH_CFG.PROBE: the probe, not home
     bool latched = false;
     int32_t latch_pulse = 0, latch_enc = 0;
     bool operator==(const State&) const = default;

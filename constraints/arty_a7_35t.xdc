@@ -32,13 +32,14 @@ set_property -dict { PACKAGE_PIN D12 IOSTANDARD LVCMOS33 DRIVE 8 SLEW SLOW } [ge
 set_property -dict { PACKAGE_PIN E15 IOSTANDARD LVCMOS33 PULLUP TRUE } [get_ports enc_a_i]
 set_property -dict { PACKAGE_PIN E16 IOSTANDARD LVCMOS33 PULLUP TRUE } [get_ports enc_b_i]
 
-## ---- switches on Pmod JB (JB3 limit -, JB4 limit +, JB7 home) -----------------------
+## ---- switches on Pmod JB (JB3 limit -, JB4 limit +, JB7 home, JB8 probe) ------------
 ## Pulled down: with nothing connected they read inactive (SW_CFG.INVERT = 0).
 ## A switch to 3.3 V closes active high; a normally-closed switch to GND with
 ## an external pull-up reads active when it opens (or its wire breaks).
 set_property -dict { PACKAGE_PIN D15 IOSTANDARD LVCMOS33 PULLDOWN TRUE } [get_ports {sw_i[0]}]
 set_property -dict { PACKAGE_PIN C15 IOSTANDARD LVCMOS33 PULLDOWN TRUE } [get_ports {sw_i[1]}]
 set_property -dict { PACKAGE_PIN J17 IOSTANDARD LVCMOS33 PULLDOWN TRUE } [get_ports {sw_i[2]}]
+set_property -dict { PACKAGE_PIN J18 IOSTANDARD LVCMOS33 PULLDOWN TRUE } [get_ports {probe_i}]
 
 ## ---- LEDs LD4..LD7 -------------------------------------------------------------------
 set_property -dict { PACKAGE_PIN H5  IOSTANDARD LVCMOS33 } [get_ports {led_o[0]}]
@@ -58,7 +59,7 @@ set_property -dict { PACKAGE_PIN G6  IOSTANDARD LVCMOS33 } [get_ports led_irq_o]
 ## button goes through sc_rst_sync (u_rst_sync/chain_q, ASYNC_REG).
 ## Encoder edges are >= 4 system clocks apart at the rated speed, the
 ## synchroniser adds 2 clocks of latency.
-set_false_path -from [get_ports {enc_a_i enc_b_i estop_i ck_rst_ni uart_rx_i sw_i[*]}]
+set_false_path -from [get_ports {enc_a_i enc_b_i estop_i ck_rst_ni uart_rx_i sw_i[*] probe_i}]
 
 ## STEP/DIR/EN come straight from flops of clk_sys. The driver needs microsecond
 ## pulse/setup/hold times (counted in clocks by sc_step_gen); the output delay

@@ -27,7 +27,7 @@ module sc_axi_axis (
   input  logic                                estop_i,
   input  logic [1:0]                          enc_ab_i,
   input  logic signed [sc_pkg::PosIntW-1:0]   enc_pos_i,
-  input  logic [sc_pkg::SwW-1:0]              sw_i,        // switch pins: limit -, limit +, home
+  input  logic [sc_pkg::SwW-1:0]              sw_i,        // switch pins: limit -, limit +, home, probe
 
   output logic                                step_o,
   output logic                                dir_o,

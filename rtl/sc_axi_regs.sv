@@ -31,8 +31,9 @@
 // limits (lim_en_o, lim_hard_o); STATUS.SW_LEVEL shows the filtered levels,
 // an edge of one raises IRQ_STATUS.SWITCH, and the core's limit trips set
 // ERR.LIMIT_NEG / LIMIT_POS and IRQ_STATUS.FAULT. The position latch
-// captures PULSE_COUNT and ENC_POS in the clock the filtered home level
-// changes (the edge LATCH_CFG selects), once until LATCH_CFG is written.
+// captures PULSE_COUNT and ENC_POS in the clock the filtered home (or,
+// with LATCH_CFG.PROBE, probe) level changes (the edge LATCH_CFG selects),
+// once until LATCH_CFG is written.
 // GUARD_VEL / GUARD_ACC / GUARD_JERK are the executor's row limits
 // (guard_*_o, locked while busy); the core's guard_i sets ERR.GUARD and
 // IRQ_STATUS.FAULT when it rises.
@@ -276,6 +277,8 @@ module sc_axi_regs #(
   logic [DebounceW-1:0]      sw_deb_q, sw_deb_d;
   logic                      lim_trip;
   logic                      latch_rise_q, latch_rise_d, latch_fall_q, latch_fall_d;
+  logic                      latch_probe_q, latch_probe_d;
+  logic                      latch_edge, latch_level;
   logic                      latched_q, latched_d, latch_cap;
   logic signed [sc_pkg::PosIntW-1:0] latch_pulse_q, latch_pulse_d, latch_enc_q, latch_enc_d;
   logic [31:0]               sw_cfg_word, sw_cfg_new;  // SW_CFG as read, and as a write would leave it
@@ -367,8 +370,9 @@ module sc_axi_regs #(
   assign sw_cfg_new = wmerge(sw_cfg_word, wd, wmask);
 
   // position latch: an edge of the filtered home level, armed
-  assign latch_cap = !latched_q && sw_edge_i[sc_pkg::SwHome] &&
-                     (sw_level_i[sc_pkg::SwHome] ? latch_rise_q : latch_fall_q);
+  assign latch_edge  = latch_probe_q ? sw_edge_i[sc_pkg::SwProbe] : sw_edge_i[sc_pkg::SwHome];
+  assign latch_level = latch_probe_q ? sw_level_i[sc_pkg::SwProbe] : sw_level_i[sc_pkg::SwHome];
+  assign latch_cap = !latched_q && latch_edge && (latch_level ? latch_rise_q : latch_fall_q);
 
   // interrupt causes: events of the core's status (edges of its levels)
   assign below     = fifo_level_i < low_water_q;
@@ -400,8 +404,9 @@ module sc_axi_regs #(
       end
       ASwCfg:     rd_word = sw_cfg_word;
       ALatchCfg: begin
-        rd_word[sc_pkg::LatchRiseBit] = latch_rise_q;
-        rd_word[sc_pkg::LatchFallBit] = latch_fall_q;
+        rd_word[sc_pkg::LatchRiseBit]  = latch_rise_q;
+        rd_word[sc_pkg::LatchFallBit]  = latch_fall_q;
+        rd_word[sc_pkg::LatchProbeBit] = latch_probe_q;
       end
       ALatchPul:  rd_word = 32'(latch_pulse_q);
       ALatchEnc:  rd_word = 32'(latch_enc_q);
@@ -514,6 +519,7 @@ module sc_axi_regs #(
     lim_hard_d   = lim_hard_q;
     sw_deb_d     = sw_deb_q;
     latch_rise_d = latch_rise_q;
+    latch_probe_d = latch_probe_q;
     latch_fall_d = latch_fall_q;
     latched_d    = latched_q;
     latch_pulse_d = latch_pulse_q;
@@ -613,6 +619,7 @@ module sc_axi_regs #(
           ALatchCfg: begin
             if (wstrb_q[0]) begin
               latch_rise_d = wd[sc_pkg::LatchRiseBit];
+              latch_probe_d = wd[sc_pkg::LatchProbeBit];
               latch_fall_d = wd[sc_pkg::LatchFallBit];
               latched_d    = 1'b0;
             end
@@ -786,6 +793,7 @@ module sc_axi_regs #(
       lim_hard_q   <= 1'b0;
       sw_deb_q     <= DebounceW'(sc_pkg::RstDebounce);
       latch_rise_q <= 1'b0;
+      latch_probe_q <= 1'b0;
       latch_fall_q <= 1'b0;
       latched_q    <= 1'b0;
       latch_pulse_q <= '0;
@@ -849,6 +857,7 @@ module sc_axi_regs #(
       lim_hard_q   <= lim_hard_d;
       sw_deb_q     <= sw_deb_d;
       latch_rise_q <= latch_rise_d;
+      latch_probe_q <= latch_probe_d;
       latch_fall_q <= latch_fall_d;
       latched_q    <= latched_d;
       latch_pulse_q <= latch_pulse_d;

@@ -33,7 +33,7 @@ module sc_axi_servo (
   input  logic                                estop_i,
   input  logic                                enc_a_i,
   input  logic                                enc_b_i,
-  input  logic [sc_pkg::SwW-1:0]              sw_i,        // switch pins: limit -, limit +, home
+  input  logic [sc_pkg::SwW-1:0]              sw_i,        // switch pins: limit -, limit +, home, probe
 
   output logic                                step_o,
   output logic                                dir_o,

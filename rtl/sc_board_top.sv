@@ -8,9 +8,10 @@
 //   encoder A/B on Pmod JB --> sc_servo_axis's quadrature decoder (its own
 //       two-flop synchronisers and glitch filter) --> closed loop, ENC_POS /
 //       FOLLOW_ERR; CTRL.CLOSED_LOOP = 0 runs the move open loop
-//   limit -, limit +, home switches on Pmod JB3, JB4, JB7 --> sc_axi_servo's
-//       switch filter (synchroniser, polarity, debounce: SW_CFG) --> stop on
-//       limit, STATUS.SW_LEVEL, IRQ_STATUS.SWITCH
+//   limit -, limit +, home switches on Pmod JB3, JB4, JB7 and the probe on
+//       JB8 --> sc_axi_servo's switch filter (synchroniser, polarity,
+//       debounce: SW_CFG) --> stop on limit, position latch on home or
+//       probe, STATUS.SW_LEVEL, IRQ_STATUS.SWITCH
 //   BTN0 --[sc_sync]--> e-stop (abort, EN off, ERR.ESTOP latched)
 //   LD4 heartbeat, LD5 busy, LD6 done (closed loop: in position),
 //   LD7 fault (table, overrun, following error) / e-stop
@@ -33,6 +34,7 @@ module sc_board_top #(
   input  logic       enc_a_i,     // E15, Pmod JB1
   input  logic       enc_b_i,     // E16, Pmod JB2
   input  logic [2:0] sw_i,        // D15 C15 J17, Pmod JB3 JB4 JB7: limit -, limit +, home
+  input  logic       probe_i,     // J18, Pmod JB8: the probe (touch-off, tool setter)
   output logic [3:0] led_o        // H5 J5 T9 T10 (LD4..LD7)
 );
 
@@ -154,7 +156,7 @@ module sc_board_top #(
     .estop_i         (estop_sync),
     .enc_a_i,
     .enc_b_i,
-    .sw_i,
+    .sw_i            ({probe_i, sw_i}),
     .step_o,
     .dir_o,
     .en_o,

@@ -47,12 +47,13 @@ package sc_pkg;
   localparam int PulseTimeW = 16;  // high/low/setup/hold in clocks
   localparam int PendW      = 4;   // signed queue of requested steps
 
-  // ---- switch inputs (limits, home) ----------------------------------------
+  // ---- switch inputs (limits, home, probe) ---------------------------------
   localparam int DebounceW = 16;  // debounce filter length, clocks
-  localparam int SwW       = 3;   // switch inputs per axis
+  localparam int SwW       = 4;   // switch inputs per axis
   localparam int SwLimNeg  = 0;   // bit of each switch in sw_i, SW_CFG.INVERT, STATUS.SW_LEVEL
   localparam int SwLimPos  = 1;
   localparam int SwHome    = 2;
+  localparam int SwProbe   = 3;   // the board's one probe input, fanned out to every axis
 
   // ---- closed loop: encoder, neuron-PI cascade, step NCO ----------------
   // Controller word: Q(CtlW-CtlFrac).CtlFrac, in encoder counts (positions,
@@ -186,14 +187,14 @@ package sc_pkg;
   // the UART bridge's address byte is a word address so it reaches them all);
   // 0x000 .. 0x0FC hold the 2.x map unchanged, the rest is free.
   localparam int RegAddrW      = 10;      // byte address bits of the window
-  localparam int RegMapVersion = 770;     // 0x0302 = 3.2 (1 KiB window, UART word address; switch inputs, guards)
+  localparam int RegMapVersion = 771;     // 0x0303 = 3.3 (1 KiB window, UART word address; switch inputs, guards, probe)
   localparam int RegIdMagic    = 21315;   // 0x5343, ASCII "SC"
   localparam int RstPulseHigh  = 50;      // reset values of the pulse timing
   localparam int RstPulseLow   = 50;
   localparam int RstDirSetup   = 100;
   localparam int RstDirHold    = 100;
   localparam int RegId         = 32'h0000_0000;  //@reg ID RO "identification"
-  localparam int IdVersionLsb  = 0;      //@field ID VERSION 16 reset=RegMapVersion "register map version, 0x0302 = 3.2"
+  localparam int IdVersionLsb  = 0;      //@field ID VERSION 16 reset=RegMapVersion "register map version, 0x0303 = 3.3"
   localparam int IdMagicLsb    = 16;     //@field ID MAGIC 16 reset=21315 "0x5343, ASCII 'SC'"
   localparam int RegCtrl       = 32'h0000_0004;  //@reg CTRL RW "control"
   localparam int CtrlEnableBit = 0;      //@field CTRL ENABLE 1 "drives the EN pin; START is refused while 0; ESTOP clears it"
@@ -221,7 +222,7 @@ package sc_pkg;
   localparam int StatusStoppingBit     = 21;  //@field STATUS STOPPING 1 "a controlled stop runs (CMD.STOP, underrun, discontinuity)"
   localparam int StatusLatchedBit      = 26;  //@field STATUS LATCHED 1 "LATCH_PULSE / LATCH_ENC hold a capture (a LATCH_CFG write re-arms)"
   localparam int StatusGuardBit        = 27;  //@field STATUS GUARD 1 "a row broke a GUARD_VEL / GUARD_ACC / GUARD_JERK limit and was refused: the axis stopped (until the next START)"
-  localparam int StatusSwLevelLsb      = 23;  //@field STATUS SW_LEVEL SwW "filtered switch levels, 1 = active: bit 23 LIM_NEG, 24 LIM_POS, 25 HOME"
+  localparam int StatusSwLevelLsb      = 28;  //@field STATUS SW_LEVEL SwW "filtered switch levels, 1 = active: bit 28 LIM_NEG, 29 LIM_POS, 30 HOME, 31 PROBE"
   localparam int StatusOvershootBit    = 22;  //@field STATUS OVERSHOOT 1 "the last controlled stop could not avoid a velocity reversal within STOP_JERK (limits below the plan's)"
   localparam int RegErr        = 32'h0000_0010;  //@reg ERR W1C "sticky error flags: write 1 to clear"
   localparam int ErrRejectBit  = 0;      //@field ERR REJECT 1 "a table/config/START write was refused (busy, e-stopped or disabled): SLVERR, nothing changed"
@@ -394,15 +395,16 @@ package sc_pkg;
   // Switch inputs (limit -, limit +, home): polarity, debounce, limit action.
   localparam int RstDebounce   = 20000;   // 1 ms at 20 MHz
   localparam int RegSwCfg      = 32'h0000_0110;  //@reg SW_CFG RW "switch inputs: polarity, debounce and what a limit does"
-  localparam int SwInvertLsb   = 0;      //@field SW_CFG INVERT SwW reset=0 "1 = active low: bit 0 LIM_NEG, 1 LIM_POS, 2 HOME"
+  localparam int SwInvertLsb   = 0;      //@field SW_CFG INVERT SwW reset=0 "1 = active low: bit 0 LIM_NEG, 1 LIM_POS, 2 HOME, 3 PROBE"
   localparam int SwLimEnBit    = 4;      //@field SW_CFG LIM_EN 1 reset=1 "1: motion into an active limit stops, a START toward it is refused"
   localparam int SwLimHardBit  = 5;      //@field SW_CFG LIM_HARD 1 reset=0 "1: a limit stops at once (hard limit), 0: controlled stop with STOP_JERK / STOP_ACC"
   localparam int SwDebounceLsb = 16;     //@field SW_CFG DEBOUNCE DebounceW reset=RstDebounce "clocks a new switch level must hold before it is taken"
   // Position latch on the home switch: the counts of the clock its filtered
   // level changes (the first clock STATUS.SW_LEVEL shows the new level).
-  localparam int RegLatchCfg   = 32'h0000_0114;  //@reg LATCH_CFG RW "position latch: which edge of the filtered home switch captures; a write re-arms"
-  localparam int LatchRiseBit  = 0;      //@field LATCH_CFG RISE 1 reset=0 "capture when home becomes active"
-  localparam int LatchFallBit  = 1;      //@field LATCH_CFG FALL 1 reset=0 "capture when home becomes inactive (released)"
+  localparam int RegLatchCfg   = 32'h0000_0114;  //@reg LATCH_CFG RW "position latch: which input (home or probe) and which of its filtered edges captures; a write re-arms"
+  localparam int LatchRiseBit  = 0;      //@field LATCH_CFG RISE 1 reset=0 "capture when the input becomes active"
+  localparam int LatchFallBit  = 1;      //@field LATCH_CFG FALL 1 reset=0 "capture when the input becomes inactive (released)"
+  localparam int LatchProbeBit = 2;      //@field LATCH_CFG PROBE 1 reset=0 "the input: 0 = the axis's home switch, 1 = the board's probe"
   localparam int RegLatchPulse = 32'h0000_0118;  //@reg LATCH_PULSE RO "PULSE_COUNT at the capture (signed)"
   localparam int RegLatchEnc   = 32'h0000_011C;  //@reg LATCH_ENC RO "ENC_POS at the capture (signed)"
   // Guards against the host: the largest |vel0|, |acc0| and |jerk| a row

@@ -369,14 +369,16 @@ def doc(params, words, enums=None):
            "SETTLE_RATE) are locked while STATUS.BUSY is set like the pulse timing, and so is CTRL.CLOSED_LOOP "
            "(a CTRL write changing it while busy is refused). Their units: docs/closed_loop.md; reset "
            "values = the closed-loop runner's defaults (`scurve sim --closed-loop`).", "",
-           "Switch inputs (limit -, limit +, home; `sw_i` of both tops, Pmod JB3/JB4/JB7 on the board): each goes "
+           "Switch inputs (limit -, limit +, home, probe; `sw_i` of both tops; on the board Pmod JB3/JB4/JB7 and "
+           "the board's one probe on JB8, `probe_i`, fanned out to every axis): each goes "
            "through the common two-flop synchroniser, SW_CFG.INVERT and a debounce filter of SW_CFG.DEBOUNCE "
            "clocks; STATUS.SW_LEVEL shows the filtered levels and every change raises IRQ_STATUS.SWITCH. With "
            "SW_CFG.LIM_EN, motion into an active limit stops (SW_CFG.LIM_HARD = 0: the controlled stop with "
            "STOP_JERK / STOP_ACC; 1: at once), and a START whose move heads into one is taken by the register "
            "file but refused by the core (nothing moves). Either sets ERR.LIMIT_NEG / LIMIT_POS and "
            "IRQ_STATUS.FAULT. Motion away from an active limit runs. Counts stay exact: PULSE_COUNT, REF_POS "
-           "and the pins agree after any limit stop (docs/limits.md).", "",
+           "and the pins agree after any limit stop (docs/limits.md). The probe stops nothing; with home it "
+           "is a source of the position latch (LATCH_CFG.PROBE).", "",
            "Guards against the host: GUARD_VEL, GUARD_ACC and GUARD_JERK (0 = no limit, the reset value) are "
            "the largest |vel0|, |acc0| and |jerk| a row may start with. The executor checks the head row when "
            "it would load it: a START whose first row is over a guard is refused (nothing moves); a later row "

@@ -115,7 +115,8 @@ void RtlBoard::tick100(bool uart_rx, bool rst_n, bool estop, bool enc_a, bool en
   m_->estop_i = estop;
   m_->enc_a_i = enc_a;
   m_->enc_b_i = enc_b;
-  m_->sw_i = sw & ((1u << SwW) - 1);
+  m_->sw_i = sw & ((1u << SwProbe) - 1);  // the axis's switches; the probe has its own pin
+  m_->probe_i = (sw >> SwProbe) & 1;
   m_->clk100_i = 1;
   m_->eval();
   m_->clk100_i = 0;

@@ -59,7 +59,7 @@ class RtlBoard {
   RtlBoard& operator=(const RtlBoard&) = delete;
   // One 100 MHz period (rising + falling edge) with these input levels.
   void tick100(bool uart_rx, bool rst_n = true, bool estop = false, bool enc_a = false, bool enc_b = false,
-               uint8_t sw = 0);  // sw: the switch pins (bit 0 limit -, 1 limit +, 2 home)
+               uint8_t sw = 0);  // sw: the switch pins (bit 0 limit -, 1 limit +, 2 home, 3 probe)
   Pins pins() const;
   uint64_t clocks100() const { return clk100_; }
 

@@ -272,15 +272,18 @@ TEST(SwitchFilter, ALevelIsTakenAfterHoldingForTheDebouncePlusOneAndShorterPulse
 
 namespace {
 
-// One move over the home switch (clean contact): the pins' counts after
-// every clock of the move and the clock the pin first changed (-1: never).
+// One move over the latch's switch (clean contact) with the other latch
+// input (home when the probe captures, the probe when home does) switching
+// at a decoy position on the way: the pins' counts after every clock of the
+// move and the clock the latch's pin first changed (-1: never).
 struct LatchRun {
   std::vector<int64_t> count;  // pins' net steps after clock i of the run
   std::vector<int32_t> enc;    // the encoder input during clock i
   int64_t first_change = -1;
 };
 
-LatchRun run_over_home(AxiBench& b, SwitchPlant& plant, const Plan& p, bool want_active) {
+LatchRun run_over_switch(AxiBench& b, SwitchPlant& plant, SwitchPlant& decoy, int src_bit, int decoy_bit,
+                         const Plan& p, bool want_active) {
   LatchRun r;
   load(b, p, PulseTiming{});
   EXPECT_EQ(b.write(reg_addr("CMD"), field_mask("CMD", "START")), kOkay);
@@ -288,7 +291,7 @@ LatchRun run_over_home(AxiBench& b, SwitchPlant& plant, const Plan& p, bool want
   for (uint64_t i = 0; i < p.total_clocks + 400'000 && !b.failed(); ++i) {
     const int64_t pos = b.net_steps();
     const bool pin = plant.pin(pos);
-    b.side().sw_pins = uint8_t(pin ? 1u << SwHome : 0u);
+    b.side().sw_pins = uint8_t((pin ? 1u << src_bit : 0u) | (decoy.pin(pos) ? 1u << decoy_bit : 0u));
     // An encoder input that changes every clock (3 counts per pulse plus a
     // clock stamp), so a capture one clock off reads a different value.
     const int32_t enc = int32_t(3 * pos + 7 * int64_t(r.count.size()) + 11);
@@ -304,51 +307,58 @@ LatchRun run_over_home(AxiBench& b, SwitchPlant& plant, const Plan& p, bool want
   return r;
 }
 
-}  // namespace
-
 // The latch against the plant: with a clean contact the capture holds the
 // counts of the clock the filtered level first shows the new state, which
 // the filter's rule puts DEBOUNCE + 2 clocks after the first clock the pin
 // shows it (two synchroniser flops, one of filtering; the register file
 // takes it the next clock, with the encoder input of that next clock).
 // The encoder input changes every clock, so a capture a clock early or late
-// fails.
-TEST(HomeLatch, CapturesTheCountsOfTheClockTheFilteredHomeEdgeArrivesOnBothEdges) {
-  std::mt19937_64 g(7);
+// fails; the other input switches before it on the way out and after it on
+// the way back, so a capture from the wrong input fails too.
+void check_latch_on_both_edges(bool probe, uint64_t seed) {
+  std::mt19937_64 g(seed);
+  const int src_bit = probe ? SwProbe : SwHome, decoy_bit = probe ? SwHome : SwProbe;
+  const uint32_t src = probe ? field_mask("LATCH_CFG", "PROBE") : 0u;
   for (int i = 0; i < 4 && !::testing::Test::HasFatalFailure(); ++i) {
     const int dir = (i & 1) ? -1 : 1;
     const int debounce = int(g() % 3 == 0 ? 0 : g() % 500);
     const int64_t d = int64_t(1000 + g() % 3000) * dir;
-    const int64_t home = d / 4 + int64_t(g() % uint64_t(std::abs(d) / 2)) * dir;
-    SCOPED_TRACE("distance " + std::to_string(d) + ", home at " + std::to_string(home) + ", debounce " +
-                 std::to_string(debounce));
-    AxiBench b(true, uint32_t(200 + i));
+    const int64_t at = d / 4 + int64_t(g() % uint64_t(std::abs(d) / 2)) * dir;
+    const int64_t decoy_at = at / 2;  // crossed before the latch's switch out, after it back
+    SCOPED_TRACE(std::string(probe ? "probe" : "home") + ": distance " + std::to_string(d) + ", switch at " +
+                 std::to_string(at) + ", debounce " + std::to_string(debounce));
+    AxiBench b(true, uint32_t(200 + i + (probe ? 10 : 0)));
     b.reset();
-    SwitchPlant plant(home, dir, 0, false, uint64_t(i));
+    SwitchPlant plant(at, dir, 0, false, uint64_t(i));
+    SwitchPlant decoy(decoy_at, dir, 0, false, uint64_t(i + 100));
     ASSERT_EQ(b.write(reg_addr("SW_CFG"), field_mask("SW_CFG", "LIM_EN") | (uint32_t(debounce) << SwDebounceLsb)),
               kOkay);
     ASSERT_EQ(b.write(reg_addr("CTRL"), field_mask("CTRL", "ENABLE")), kOkay);
-    ASSERT_EQ(b.write(reg_addr("LATCH_CFG"), field_mask("LATCH_CFG", "RISE")), kOkay);
+    ASSERT_EQ(b.write(reg_addr("LATCH_CFG"), field_mask("LATCH_CFG", "RISE") | src), kOkay);
+    ASSERT_EQ(b.read(reg_addr("LATCH_CFG")).first, field_mask("LATCH_CFG", "RISE") | src);
     ASSERT_EQ(b.write(reg_addr("IRQ_STATUS"), 0xffffffffu), kOkay);
     const Plan out = plan_or_die(scurve::test::move_request(d, 0, log_uniform(g, 3e4, 1.5e5), 0, 1e6, 1e8));
-    const LatchRun r1 = run_over_home(b, plant, out, true);
+    const LatchRun r1 = run_over_switch(b, plant, decoy, src_bit, decoy_bit, out, true);
     ASSERT_FALSE(b.failed()) << b.error();
-    ASSERT_GE(r1.first_change, 0) << "the move never reached home";
+    ASSERT_GE(r1.first_change, 0) << "the move never reached the switch";
     const size_t at1 = size_t(r1.first_change + debounce + 2);
     ASSERT_LT(at1, r1.count.size());
     EXPECT_TRUE(b.read(reg_addr("STATUS")).first & field_mask("STATUS", "LATCHED"));
     EXPECT_TRUE(b.read(reg_addr("IRQ_STATUS")).first & field_mask("IRQ_STATUS", "LATCH"));
+    EXPECT_EQ(b.read(reg_addr("STATUS")).first & field_mask("STATUS", "SW_LEVEL"),
+              (1u << (StatusSwLevelLsb + src_bit)) | (1u << (StatusSwLevelLsb + decoy_bit)))
+        << "both inputs active at the end of the move";
     EXPECT_EQ(int32_t(b.read(reg_addr("LATCH_PULSE")).first), r1.count[at1]) << "rising edge";
     ASSERT_LT(at1 + 1, r1.enc.size());
     EXPECT_EQ(int32_t(b.read(reg_addr("LATCH_ENC")).first), r1.enc[at1 + 1]) << "rising edge";
     EXPECT_EQ(b.net_steps(), d);
 
     // Back over it: the release, after a re-arm on the falling edge.
-    ASSERT_EQ(b.write(reg_addr("LATCH_CFG"), field_mask("LATCH_CFG", "FALL")), kOkay);
+    ASSERT_EQ(b.write(reg_addr("LATCH_CFG"), field_mask("LATCH_CFG", "FALL") | src), kOkay);
     EXPECT_FALSE(b.read(reg_addr("STATUS")).first & field_mask("STATUS", "LATCHED")) << "a write re-arms";
     const int64_t start2 = b.net_steps();
     const Plan back = plan_or_die(scurve::test::move_request(-d, 0, log_uniform(g, 3e4, 1.5e5), 0, 1e6, 1e8));
-    const LatchRun r2 = run_over_home(b, plant, back, false);
+    const LatchRun r2 = run_over_switch(b, plant, decoy, src_bit, decoy_bit, back, false);
     ASSERT_FALSE(b.failed()) << b.error();
     ASSERT_GE(r2.first_change, 0);
     const size_t at2 = size_t(r2.first_change + debounce + 2);
@@ -358,7 +368,15 @@ TEST(HomeLatch, CapturesTheCountsOfTheClockTheFilteredHomeEdgeArrivesOnBothEdges
     ASSERT_LT(at2 + 1, r2.enc.size());
     EXPECT_EQ(int32_t(b.read(reg_addr("LATCH_ENC")).first), r2.enc[at2 + 1]) << "falling edge";
     EXPECT_EQ(b.net_steps(), 0);
-    std::printf("[latch] home at %lld, debounce %d: rise latched at %lld, release at %lld\n", (long long)home,
-                debounce, (long long)r1.count[at1], (long long)r2.count[at2]);
+    std::printf("[latch] %s at %lld, debounce %d: rise latched at %lld, release at %lld\n", probe ? "probe" : "home",
+                (long long)at, debounce, (long long)r1.count[at1], (long long)r2.count[at2]);
   }
 }
+
+}  // namespace
+
+TEST(HomeLatch, CapturesTheCountsOfTheClockTheFilteredHomeEdgeArrivesOnBothEdges) {
+  check_latch_on_both_edges(false, 7);
+}
+
+TEST(HomeLatch, WithProbeSelectedCapturesTheProbeEdgeNotHomes) { check_latch_on_both_edges(true, 8); }

@@ -73,7 +73,7 @@ class AxiFuzzer {
     } else if (pick < 87) {
       b_.idle(1 + g_() % 20000);
     } else if (pick < 92) {
-      b_.side().sw_pins = uint8_t(g_() % 8);
+      b_.side().sw_pins = uint8_t(g_() % (1u << SwW));
     } else if (pick < 96) {
       random_guards();
     } else {
