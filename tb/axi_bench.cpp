@@ -73,6 +73,7 @@ void AxiBench::reset() {
 }
 
 void AxiBench::tick() {
+  if (switch_pins_) side_.sw_pins = switch_pins_(pins_.net_steps());
   if (rtl_) rtl_->step(in_, side_);
   RegsSide ms = side_;
   ms.enc_pos = int32_t(uint32_t(ms.enc_pos) + uint32_t(model_enc_offset_));

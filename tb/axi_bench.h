@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <random>
 #include <string>
@@ -105,6 +106,9 @@ class AxiBench : public AxiLockstepBench<RtlAxiAxis, AxiAxis, AxiAxisOutputs> {
   void tick() override;
   // Checker self-test: the model sees the encoder position off by `d`.
   void inject_model_enc_offset(int32_t d) { model_enc_offset_ = d; }
+  // Switch pins driven every clock (also inside bus transactions) from the
+  // pins' net step count: a switch model in the plant.
+  void set_switch_pins(std::function<uint8_t(int64_t)> f) { switch_pins_ = std::move(f); }
 
   // STEP rising edges, as clocks after the last START pulse to the core.
   const std::vector<uint64_t>& rise_times() const { return rise_times_; }
@@ -112,6 +116,7 @@ class AxiBench : public AxiLockstepBench<RtlAxiAxis, AxiAxis, AxiAxisOutputs> {
  private:
   bool last_step_ = false;
   int32_t model_enc_offset_ = 0;
+  std::function<uint8_t(int64_t)> switch_pins_;
   uint64_t start_clock_ = 0;
   std::vector<uint64_t> rise_times_;
 };

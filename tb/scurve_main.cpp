@@ -3,6 +3,7 @@
 //   scurve sim  (same move flags | --group 1 2 3 4) [--engine ...] [--stop-at T] [--json]
 //   scurve regs (same move flags) [--uart] [--no-start] [--closed-loop] [--json]   register writes
 //   scurve stream FILE [--engine ...] [--json]   a stream of moves with look-ahead junctions
+//   scurve home [--switch-at N] [--runs N] [--engine ...] [--json]   homing against a switch in the plant
 // plan and regs are the host commands (sw/, scurve::host_cli); sim, regress,
 // diff run the RTL and the model.
 // Exit codes: 0 ok, 1 a check failed, 2 bad input (one line on stderr).
@@ -29,6 +30,7 @@
 #include "scenarios.h"
 #include "sim_run.h"
 #include "stream_run.h"
+#include "homing_cli.h"
 #include "scurve/reg_encode.h"
 #include "tool_commands.h"
 
@@ -203,6 +205,10 @@ int main(int argc, char** argv) {
   scurve::cli::add_timing_flags(stream_cmd, tf);
   scurve::cli::add_output_flags(stream_cmd, tf);
 
+  // ---- home: the homing sequence against a switch in the plant -----------------
+  HomingCli home;
+  add_homing_command(app, home);
+
   auto tools = add_tool_commands(app);  // diff, regress (tb/tools/tool_commands.h)
 
   if (const auto rc = scurve::cli::parse_command_line(app, argc, argv)) return *rc;
@@ -210,6 +216,8 @@ int main(int argc, char** argv) {
   if (int rc = 0; run_tool_command(*tools, &rc)) return rc;
 
   if (int rc = 0; host->run(&rc)) return rc;
+
+  if (*home.cmd) return run_homing_cli(home);
 
   if (*stream_cmd) return run_stream_cli(stream_file, stream_engine, stream_closed_loop, tf);
 

@@ -227,4 +227,23 @@ ends = [m["end_position"] for m in c["moves"]]
 assert ends == [800, 1400, 2900, 2000] == [m["expected_end_position"] for m in c["moves"]], ends
 assert [m["end_clock"] for m in c["moves"]] == [m["end_clock"] for m in o["moves"]], (c["moves"], o["moves"])
 PY
+# scurve home: the defaults home in lockstep onto the switch's release point;
+# a latch speed past the exact bound still homes, to a zero that is off by
+# the steps of the filter's latency; bad input names the field.
+"$scurve" home --runs 2 --json > "$tmp/home.json"
+"$scurve" home --engine model --seek-speed 150000 --latch-speed 100000 --a-max 1e7 --j-max 1e10 --json > "$tmp/home_fast.json"
+python3 - "$tmp/home.json" "$tmp/home_fast.json" <<'PY'
+import json, sys
+h, f = (json.load(open(p)) for p in sys.argv[1:3])
+assert h["pass"] and h["engine"] == "lockstep" and h["spread"] == 0 and h["zero_expected_exact"], h
+for r in h["runs"]:
+    assert r["home_ref"] == r["release_point"] and r["pins"] == r["ref_pos"], r
+    assert r["matched_clocks"] == r["clocks"], r
+assert f["pass"] and not f["zero_expected_exact"] and f["runs"][0]["zero_error"] > 0, f
+PY
+check_bad seek_speed home --seek-speed 1e7
+check_bad latch_speed home --latch-speed 30000
+check_bad debounce home --debounce -1
+check_bad direction home --direction 0
+check_bad max_backoff home --max-backoff 0
 echo "cli ok"

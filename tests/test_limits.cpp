@@ -23,6 +23,7 @@
 #include "planner.h"
 #include "stop_check.h"
 #include "switch_filter.h"
+#include "switch_plant.h"
 
 using namespace sc;
 using namespace sc::board_test;
@@ -37,42 +38,6 @@ double log_uniform(std::mt19937_64& g, double lo, double hi) {
   std::uniform_real_distribution<double> u(std::log(lo), std::log(hi));
   return std::exp(u(g));
 }
-
-// A switch at `at` pulses, active on the far side of it (dir > 0: position
-// >= at; dir < 0: position <= at). On every change of state the contact
-// bounces for `bounce` clocks (random pin levels) before it settles.
-class SwitchPlant {
- public:
-  SwitchPlant(int64_t at, int dir, int bounce, bool invert, uint64_t seed)
-      : at_(at), dir_(dir), bounce_(bounce), invert_(invert), g_(seed) {}
-  // The pin level for the axis at `pos` this clock.
-  bool pin(int64_t pos) {
-    const bool active = dir_ > 0 ? pos >= at_ : pos <= at_;
-    if (active != active_) {
-      active_ = active;
-      left_ = bounce_;
-      if (active) ++activations_;
-    }
-    bool level = active_;
-    if (left_ > 0) {
-      --left_;
-      level = (g_() & 1) != 0;
-    }
-    return level != invert_;
-  }
-  bool active() const { return active_; }
-  int activations() const { return activations_; }
-
- private:
-  int64_t at_;
-  int dir_;
-  int bounce_;
-  bool invert_;
-  std::mt19937_64 g_;
-  bool active_ = false;
-  int left_ = 0;
-  int activations_ = 0;
-};
 
 struct LimitCase {
   bool hard = false;

@@ -1,0 +1,130 @@
+#include "homing_cli.h"
+
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <random>
+
+#include "homing_run.h"
+#include "scurve/homing.h"
+#include "scurve/hw/params.h"
+#include "scurve/reg_encode.h"
+
+namespace sc {
+
+using scurve::cli::int_flag;
+using scurve::cli::real_flag;
+
+void add_homing_command(CLI::App& app, HomingCli& h) {
+  CLI::App* c = app.add_subcommand(
+      "home", "home an axis in simulation: seek the home switch, back off slowly, latch the release, set the zero");
+  h.cmd = c;
+  int_flag(c, "--direction", h.direction, -1, 1, "where the home switch lies: -1 (default) or 1");
+  int_flag(c, "--switch-at", h.switch_at, -1'000'000'000, 1'000'000'000,
+           "the switch's edge, pulses from the start (default 1500 toward --direction; on the other side the axis "
+           "starts on the switch)");
+  real_flag(c, "--seek-speed", h.seek_speed, "seek speed toward the switch, pulses/s (default 20000)");
+  real_flag(c, "--latch-speed", h.latch_speed,
+            "back-off speed off the switch, pulses/s (default: half the speed that keeps the zero exact)");
+  real_flag(c, "--a-max", h.a_max, "acceleration of the seek and back-off, pulses/s^2 (default 1e6)");
+  real_flag(c, "--j-max", h.j_max, "jerk of the seek and back-off, pulses/s^3 (default 1e9)");
+  real_flag(c, "--stop-jerk", h.stop_jerk, "STOP_JERK, pulses/s^3 (default --j-max)");
+  real_flag(c, "--stop-acc", h.stop_acc, "STOP_ACC, pulses/s^2 (default --a-max)");
+  int_flag(c, "--max-travel", h.max_travel, -(int64_t(1) << 62), int64_t(1) << 62,
+           "pulses the seek may run (default 20000)");
+  int_flag(c, "--max-backoff", h.max_backoff, -(int64_t(1) << 62), int64_t(1) << 62,
+           "pulses the back-off may run (default 2000)");
+  int_flag(c, "--offset", h.offset, -(int64_t(1) << 62), int64_t(1) << 62,
+           "machine position of the release point (default 0)");
+  real_flag(c, "--poll-period", h.poll_period, "seconds between STATUS reads while a move runs (default 0.001)");
+  int_flag(c, "--debounce", h.debounce, 0, (1 << scurve::hw::DebounceW) - 1,
+           "SW_CFG.DEBOUNCE, clocks (default 2000 = 100 us)");
+  int_flag(c, "--bounce", h.bounce, 0, 1'000'000, "contact bounce on every change of the switch, clocks (default 0)");
+  real_flag(c, "--noise-rate", h.noise_rate, "switch glitches per clock (default 0)", 0, 0.01);
+  int_flag(c, "--noise-clocks", h.noise_clocks, 1, 1'000'000, "length of one glitch, clocks (default 10)");
+  int_flag(c, "--runs", h.runs, 1, 10'000,
+           "homings to run; beyond the first, random switch positions (0.5 .. 1.5 x --switch-at) and bounce "
+           "(0 .. --bounce)");
+  int_flag(c, "--seed", h.seed, 0, int64_t(1) << 62, "seed of the random runs, the bounce and the noise");
+  c->add_option("--engine", h.engine, "lockstep (default) | model")->check(CLI::IsMember({"lockstep", "model"}));
+  scurve::cli::add_timing_flags(c, h.timing);
+  scurve::cli::add_output_flags(c, h.timing);
+}
+
+int run_homing_cli(const HomingCli& h) {
+  if (h.direction == 0) return scurve::cli::bad_input("--direction=0: needs -1 or 1");
+  const scurve::PulseTiming timing = scurve::cli::to_timing(h.timing);
+  HomingSimConfig base;
+  base.timing = timing;
+  base.debounce = h.debounce;
+  base.bounce = h.bounce;
+  base.noise_rate = h.noise_rate;
+  base.noise_clocks = h.noise_clocks;
+  base.lockstep = h.engine == "lockstep";
+  base.seed = h.seed;
+  base.switch_at = h.cmd->count("--switch-at") > 0 ? h.switch_at : h.direction * h.switch_at;
+  scurve::HomingRequest& r = base.request;
+  r.direction = h.direction;
+  r.seek_speed = h.seek_speed;
+  r.latch_speed = h.latch_speed > 0 ? h.latch_speed
+                                    : std::min(h.seek_speed, std::floor(scurve::exact_latch_speed(h.debounce, h.bounce) / 2));
+  r.a_max = h.a_max;
+  r.j_max = h.j_max;
+  r.max_travel = h.max_travel;
+  r.max_backoff = h.max_backoff;
+  r.offset = h.offset;
+  r.poll_period = h.poll_period;
+  base.stop_jerk = h.stop_jerk > 0 ? h.stop_jerk : h.j_max;
+  base.stop_acc = h.stop_acc > 0 ? h.stop_acc : h.a_max;
+  if (auto e = scurve::check_homing_request(r, timing)) return scurve::cli::bad_input(e->message);
+  const auto stop_limits = scurve::encode_stop_limits(base.stop_jerk, base.stop_acc);
+  if (const scurve::Error* e = std::get_if<scurve::Error>(&stop_limits)) return scurve::cli::bad_input(e->message);
+
+  std::mt19937_64 g(h.seed);
+  std::vector<HomingSimResult> runs;
+  const bool tty = isatty(2);
+  for (int i = 0; i < h.runs; ++i) {
+    HomingSimConfig c = base;
+    c.seed = h.seed + uint64_t(i);
+    if (i > 0) {
+      const double f = std::uniform_real_distribution<double>(0.5, 1.5)(g);
+      c.switch_at = int64_t(std::llround(double(base.switch_at) * f));
+      c.bounce = h.bounce == 0 ? 0 : uint32_t(g() % (h.bounce + 1));
+    }
+    if (tty) std::fprintf(stderr, "\r[home %d/%d]", i + 1, h.runs);
+    runs.push_back(run_homing_sim(c));
+  }
+  if (tty) std::fputs("\n", stderr);
+
+  const HomingSummary s = summarize(runs);
+  const bool clean = h.bounce == 0 && h.noise_rate == 0 &&
+                     r.latch_speed <= scurve::exact_latch_speed(h.debounce, h.bounce);
+  bool pass = s.passed == s.runs;
+  // A clean switch at a latch speed within the bound: the zero is the
+  // switch's release point, every run.
+  if (clean && pass) pass = s.zero_min == 0 && s.zero_max == 0;
+  nlohmann::json out = homing_to_json(runs, base.lockstep);
+  out["latch_speed"] = r.latch_speed;
+  out["exact_latch_speed"] = scurve::exact_latch_speed(h.debounce, h.bounce);
+  out["zero_expected_exact"] = clean;
+  out["pass"] = pass;
+  if (h.timing.json) {
+    std::cout << out.dump(2) << "\n";
+  } else {
+    std::cout << fmt::format("homing, {} engine: seek {} pulses/s, latch {} pulses/s (exact up to {:.0f}), debounce "
+                             "{} clocks, bounce {} clocks, noise {}/clock\n",
+                             h.engine, r.seek_speed, r.latch_speed,
+                             scurve::exact_latch_speed(h.debounce, h.bounce), h.debounce, h.bounce, h.noise_rate);
+    std::cout << homing_table(runs);
+    std::cout << (pass ? "PASS" : "FAIL") << "\n";
+  }
+  if (!scurve::cli::write_json_file(h.timing.json_out, out)) {
+    return scurve::cli::bad_input("--json-out: cannot write " + h.timing.json_out);
+  }
+  return pass ? 0 : 1;
+}
+
+}  // namespace sc

@@ -1,0 +1,193 @@
+// Homing (the host library's sequence, scurve::home) against the
+// register-level axis with a home switch in the plant. What is checked does
+// not come from the sequence: the zero against the plant's true release
+// point of the switch, the pins against REF_POS, the lockstep comparer
+// every clock.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <random>
+#include <vector>
+
+#include "homing_run.h"
+#include "scurve/homing.h"
+
+using namespace sc;
+
+namespace {
+
+double log_uniform(std::mt19937_64& g, double lo, double hi) {
+  std::uniform_real_distribution<double> u(std::log(lo), std::log(hi));
+  return std::exp(u(g));
+}
+
+// A random homing: the switch 300 .. 1500 pulses from the start on a random
+// side, a random seek speed, a latch speed within the exact bound.
+HomingSimConfig random_homing(std::mt19937_64& g, int i, bool lockstep, uint32_t max_bounce) {
+  HomingSimConfig c;
+  c.lockstep = lockstep;
+  c.seed = uint64_t(1000 + i);
+  c.debounce = uint32_t(100 + g() % 400);
+  c.bounce = max_bounce == 0 ? 0 : uint32_t(g() % (max_bounce + 1));
+  scurve::HomingRequest& r = c.request;
+  r.direction = (g() & 1) ? 1 : -1;
+  r.seek_speed = log_uniform(g, 3e4, 1.5e5);
+  r.latch_speed = std::min(r.seek_speed, scurve::exact_latch_speed(c.debounce, max_bounce) * 0.5);
+  r.a_max = log_uniform(g, 5e6, 2e7);
+  r.j_max = log_uniform(g, 5e9, 2e10);
+  r.max_travel = 6000;
+  r.max_backoff = 3000;
+  r.offset = int64_t(g() % 2001) - 1000;
+  r.poll_period = 1e-4;
+  c.stop_jerk = r.j_max;
+  c.stop_acc = r.a_max;
+  c.switch_at = r.direction * int64_t(300 + g() % 1201);
+  return c;
+}
+
+void expect_homed(const HomingSimResult& r) {
+  EXPECT_TRUE(r.homed) << r.error;
+  EXPECT_TRUE(r.error.empty()) << r.error;
+  EXPECT_EQ(r.pins, r.ref_pos) << "pins and REF_POS disagree at rest";
+}
+
+std::vector<HomingSimResult> run_random(int n, bool lockstep, uint32_t max_bounce, uint64_t seed) {
+  std::mt19937_64 g(seed);
+  std::vector<HomingSimResult> runs;
+  for (int i = 0; i < n && !::testing::Test::HasFailure(); ++i) {
+    const HomingSimConfig c = random_homing(g, i, lockstep, max_bounce);
+    runs.push_back(run_homing_sim(c));
+    SCOPED_TRACE(::testing::Message() << "run " << i << ": switch at " << c.switch_at << ", seek "
+                                      << c.request.seek_speed << " pulses/s, bounce " << c.bounce);
+    expect_homed(runs.back());
+  }
+  return runs;
+}
+
+}  // namespace
+
+TEST(Homing, HundredRandomHomingsOnTheModelLandOnTheSwitchReleaseExactly) {
+  const auto runs = run_random(100, false, 0, 5);
+  const HomingSummary s = summarize(runs);
+  std::printf("%s", homing_table(runs).c_str());
+  EXPECT_EQ(s.passed, 100u);
+  // The zero is the plant's release point itself, every run: spread 0.
+  EXPECT_EQ(s.zero_min, 0);
+  EXPECT_EQ(s.zero_max, 0);
+}
+
+TEST(Homing, RandomHomingsInRtlLockstepLandOnTheSwitchReleaseExactly) {
+  const auto runs = run_random(8, true, 0, 6);
+  const HomingSummary s = summarize(runs);
+  std::printf("%s", homing_table(runs).c_str());
+  EXPECT_EQ(s.passed, runs.size());
+  EXPECT_EQ(s.spread(), 0);
+  EXPECT_EQ(s.zero_min, 0);
+  for (const HomingSimResult& r : runs) EXPECT_EQ(r.matched_clocks, r.clocks);
+}
+
+TEST(Homing, ContactBounceShorterThanTheLatchSpeedAllowsKeepsTheZeroExact) {
+  // Bounce up to 300 clocks on every change; the latch speed within the
+  // exact bound for that bounce: still the release point, every run.
+  const auto runs = run_random(30, false, 300, 7);
+  const HomingSummary s = summarize(runs);
+  std::printf("%s", homing_table(runs).c_str());
+  EXPECT_EQ(s.passed, runs.size());
+  EXPECT_EQ(s.spread(), 0);
+  EXPECT_EQ(s.zero_min, 0);
+}
+
+TEST(Homing, NoiseGlitchesShorterThanTheDebounceAreReportedAsTheZerosSpread) {
+  // Glitches restart the debounce count: the capture comes later and may
+  // take a step more. The zero stays on the release side of the switch and
+  // within the steps the latch speed makes in the delay.
+  std::mt19937_64 g(8);
+  std::vector<HomingSimResult> runs;
+  for (int i = 0; i < 30 && !HasFailure(); ++i) {
+    HomingSimConfig c = random_homing(g, i, false, 0);
+    c.noise_rate = 2e-4;
+    c.noise_clocks = 1 + uint32_t(g() % 20);
+    runs.push_back(run_homing_sim(c));
+    expect_homed(runs.back());
+  }
+  const HomingSummary s = summarize(runs);
+  std::printf("%s", homing_table(runs).c_str());
+  std::printf("[homing] with noise: zero error %lld .. %lld pulses, spread %lld\n", (long long)s.zero_min,
+              (long long)s.zero_max, (long long)s.spread());
+  uint64_t glitches = 0;
+  for (const HomingSimResult& r : runs) glitches += r.glitches;
+  EXPECT_GT(glitches, 0u) << "the noise never glitched";
+  EXPECT_EQ(s.passed, runs.size());
+  EXPECT_GE(s.zero_min, 0);
+  EXPECT_LE(s.zero_max, 2);
+}
+
+TEST(Homing, StartingOnTheSwitchSkipsTheSeekAndFindsTheSameZero) {
+  std::mt19937_64 g(9);
+  HomingSimConfig c = random_homing(g, 0, true, 0);
+  c.switch_at = c.request.direction * -200;  // the start is 200 pulses inside the switch
+  const HomingSimResult r = run_homing_sim(c);
+  expect_homed(r);
+  EXPECT_TRUE(r.result.seek_skipped);
+  EXPECT_EQ(r.zero_error, 0);
+}
+
+TEST(Homing, NoSwitchWithinMaxTravelIsAnErrorNamingItAndTheAxisIsAtRest) {
+  std::mt19937_64 g(10);
+  HomingSimConfig c = random_homing(g, 0, true, 0);
+  c.request.max_travel = 200;
+  c.switch_at = c.request.direction * 2000;
+  const HomingSimResult r = run_homing_sim(c);
+  EXPECT_FALSE(r.homed);
+  EXPECT_NE(r.error.find("max_travel=200"), std::string::npos) << r.error;
+  EXPECT_EQ(r.pins, int64_t(c.request.direction) * 200) << "the seek ran its full travel, exactly";
+  EXPECT_EQ(r.matched_clocks, r.clocks);
+}
+
+TEST(Homing, BadRequestsAreRefusedNamingTheField) {
+  const scurve::PulseTiming t{};
+  scurve::HomingRequest ok;
+  ok.seek_speed = 20000;
+  ok.latch_speed = 1000;
+  ok.a_max = 1e6;
+  ok.j_max = 1e9;
+  ok.max_travel = 10000;
+  ok.max_backoff = 1000;
+  EXPECT_FALSE(scurve::check_homing_request(ok, t).has_value());
+  struct Bad {
+    const char* field;
+    void (*mutate)(scurve::HomingRequest&);
+  };
+  const Bad bad[] = {
+      {"direction", [](scurve::HomingRequest& r) { r.direction = 0; }},
+      {"seek_speed", [](scurve::HomingRequest& r) { r.seek_speed = -1; }},
+      {"seek_speed", [](scurve::HomingRequest& r) { r.seek_speed = 1e9; }},
+      {"seek_speed", [](scurve::HomingRequest& r) { r.seek_speed = NAN; }},
+      {"latch_speed", [](scurve::HomingRequest& r) { r.latch_speed = 30000; }},
+      {"latch_speed", [](scurve::HomingRequest& r) { r.latch_speed = 0; }},
+      {"max_travel", [](scurve::HomingRequest& r) { r.max_travel = 0; }},
+      {"max_backoff", [](scurve::HomingRequest& r) { r.max_backoff = -5; }},
+      {"poll_period", [](scurve::HomingRequest& r) { r.poll_period = 0; }},
+      {"offset", [](scurve::HomingRequest& r) { r.offset = INT64_MAX; }},
+      {"a_max", [](scurve::HomingRequest& r) { r.a_max = -1; }},
+      {"j_max", [](scurve::HomingRequest& r) { r.j_max = 0; }},
+  };
+  for (const Bad& b : bad) {
+    scurve::HomingRequest r = ok;
+    b.mutate(r);
+    const auto e = scurve::check_homing_request(r, t);
+    ASSERT_TRUE(e.has_value()) << b.field;
+    EXPECT_EQ(e->parameter, b.field) << e->message;
+    EXPECT_NE(e->message.find(b.field), std::string::npos) << e->message;
+  }
+}
+
+TEST(HomingLong, HundredRandomHomingsInRtlLockstepLandOnTheSwitchReleaseExactly) {
+  const auto runs = run_random(100, true, 0, 11);
+  const HomingSummary s = summarize(runs);
+  std::printf("%s", homing_table(runs).c_str());
+  EXPECT_EQ(s.passed, 100u);
+  EXPECT_EQ(s.spread(), 0);
+  EXPECT_EQ(s.zero_min, 0);
+}
