@@ -30,6 +30,7 @@ bool locked_addr(uint16_t a) {
     case RegSwCfg:
     case RegGuardVel: case RegGuardVel + 4: case RegGuardVel + 8:
     case RegGuardAcc: case RegGuardAcc + 4: case RegGuardJerk: case RegGuardJerk + 4:
+    case RegSoftMin: case RegSoftMax:
       return true;
     default:
       return false;
@@ -75,7 +76,8 @@ uint32_t AxiRegs::read_word(uint16_t a, const RegsSide& side, const CoreOutputs&
       if (core.fault_table) s |= bit(StatusFaultTableBit);
       if (core.fault_overrun) s |= bit(StatusFaultOverrunBit);
       if (q_.err_estop) s |= bit(StatusEstopBit);
-      if (q_.err_reject || q_.err_bad || q_.err_estop || q_.err_lim_neg || q_.err_lim_pos || q_.err_guard) {
+      if (q_.err_reject || q_.err_bad || q_.err_estop || q_.err_lim_neg || q_.err_lim_pos || q_.err_guard ||
+          q_.err_soft) {
         s |= bit(StatusErrBit);
       }
       if (st.fault_ferr) s |= bit(StatusFaultFerrBit);
@@ -96,12 +98,14 @@ uint32_t AxiRegs::read_word(uint16_t a, const RegsSide& side, const CoreOutputs&
              (q_.err_estop ? bit(ErrEstopBit) : 0) | (q_.err_full ? bit(ErrFifoFullBit) : 0) |
              (q_.err_disc ? bit(ErrDiscontBit) : 0) | (q_.err_under ? bit(ErrUnderrunBit) : 0) |
              (q_.err_lim_neg ? bit(ErrLimNegBit) : 0) | (q_.err_lim_pos ? bit(ErrLimPosBit) : 0) |
-             (q_.err_guard ? bit(ErrGuardBit) : 0);
+             (q_.err_guard ? bit(ErrGuardBit) : 0) | (q_.err_soft ? bit(ErrSoftLimBit) : 0);
     case RegSwCfg: return sw_cfg_word();
     case RegLatchCfg:
       return (q_.latch_rise ? bit(LatchRiseBit) : 0) | (q_.latch_fall ? bit(LatchFallBit) : 0) |
              (q_.latch_probe ? bit(LatchProbeBit) : 0);
     case RegLatchPulse: return uint32_t(q_.latch_pulse);
+    case RegSoftMin: return uint32_t(q_.soft_min);
+    case RegSoftMax: return uint32_t(q_.soft_max);
     case RegLatchEnc: return uint32_t(q_.latch_enc);
     case RegPulseCount: return uint32_t(core.pulse_count);
     case RegRefPos: return uint32_t(core.ref_pos_int);
@@ -235,6 +239,7 @@ void AxiRegs::step(const AxiIn& in, const RegsSide& side, const CoreOutputs& cor
             if (wd & bit(ErrLimNegBit)) d.err_lim_neg = false;
             if (wd & bit(ErrLimPosBit)) d.err_lim_pos = false;
             if (wd & bit(ErrGuardBit)) d.err_guard = false;
+            if (wd & bit(ErrSoftLimBit)) d.err_soft = false;
           }
           break;
         case RegIrqStatus:
@@ -248,6 +253,7 @@ void AxiRegs::step(const AxiIn& in, const RegsSide& side, const CoreOutputs& cor
           d.sw_invert = uint8_t(field(w, SwInvertLsb, SwW));
           d.lim_en = (w >> SwLimEnBit) & 1;
           d.lim_hard = (w >> SwLimHardBit) & 1;
+          d.soft_en = (w >> SwSoftEnBit) & 1;
           d.sw_debounce = uint16_t(field(w, SwDebounceLsb, DebounceW));
           break;
         }
@@ -314,6 +320,8 @@ void AxiRegs::step(const AxiIn& in, const RegsSide& side, const CoreOutputs& cor
         case RegGuardJerk + 4:
           d.guard.jerk = uint64_t(put_word(q.guard.jerk, 32, wmerge(uint32_t(q.guard.jerk >> 32), wd, wmask), JerkW));
           break;
+        case RegSoftMin: d.soft_min = int32_t(wmerge(uint32_t(q.soft_min), wd, wmask)); break;
+        case RegSoftMax: d.soft_max = int32_t(wmerge(uint32_t(q.soft_max), wd, wmask)); break;
         case RegSegAcc0:
           d.st_acc0 = uint64_t(put_word(q.st_acc0, 0, wmerge(uint32_t(q.st_acc0), wd, wmask), AccW));
           break;
@@ -376,6 +384,9 @@ void AxiRegs::step(const AxiIn& in, const RegsSide& side, const CoreOutputs& cor
   if (core.lim_trip_rev) d.err_lim_neg = true;
   if (core.lim_trip_fwd) d.err_lim_pos = true;
   if (core.guard && !q.guard_prev) d.err_guard = true;
+  if ((core.lim_trip_fwd && soft_fwd(core.ref_pos_int)) || (core.lim_trip_rev && soft_rev(core.ref_pos_int))) {
+    d.err_soft = true;
+  }
   if (side.sw_edge != 0) d.irq_st |= uint8_t(bit(IrqSwitchBit));
   // position latch: an edge of the filtered home (or probe) level, armed;
   // a capture wins over a re-arm in the same clock
@@ -420,13 +431,14 @@ AxiOut AxiRegs::axi_outputs() const {
 
 uint32_t AxiRegs::sw_cfg_word() const {
   return (uint32_t(q_.sw_invert) << SwInvertLsb) | (q_.lim_en ? bit(SwLimEnBit) : 0) |
-         (q_.lim_hard ? bit(SwLimHardBit) : 0) | (uint32_t(q_.sw_debounce) << SwDebounceLsb);
+         (q_.lim_hard ? bit(SwLimHardBit) : 0) | (q_.soft_en ? bit(SwSoftEnBit) : 0) |
+         (uint32_t(q_.sw_debounce) << SwDebounceLsb);
 }
 
-CoreInputs AxiRegs::core_inputs(uint32_t sw_level) const {
+CoreInputs AxiRegs::core_inputs(uint32_t sw_level, int32_t ref_pos) const {
   CoreInputs c;
-  c.lim_fwd = q_.lim_en && ((sw_level >> SwLimPos) & 1);
-  c.lim_rev = q_.lim_en && ((sw_level >> SwLimNeg) & 1);
+  c.lim_fwd = (q_.lim_en && ((sw_level >> SwLimPos) & 1)) || soft_fwd(ref_pos);
+  c.lim_rev = (q_.lim_en && ((sw_level >> SwLimNeg) & 1)) || soft_rev(ref_pos);
   c.lim_hard = q_.lim_hard;
   c.enable = q_.en;
   c.cfg = q_.cfg;
@@ -478,7 +490,7 @@ ServoConfig AxiServo::decode_config(bool enable, bool closed, const PulseTiming&
 }
 
 ServoInputs AxiServo::servo_inputs() const {
-  const CoreInputs ci = regs_.core_inputs(sw_.level());
+  const CoreInputs ci = regs_.core_inputs(sw_.level(), servo_.outputs().ref_pos_int);
   const AxiRegs::State& q = regs_.state();
   ServoInputs si;
   si.cfg = decode_config(ci.enable, q.closed, ci.cfg, q.cl);

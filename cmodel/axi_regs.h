@@ -106,9 +106,12 @@ class AxiRegs {
     bool err_lim_neg = false;
     bool err_lim_pos = false;
     bool err_guard = false;
+    bool err_soft = false;
     uint8_t sw_invert = 0;                  // SW_CFG
     bool lim_en = true;
     bool lim_hard = false;
+    bool soft_en = false;                   // SW_CFG.SOFT_EN, SOFT_MIN, SOFT_MAX
+    int32_t soft_min = 0, soft_max = 0;
     uint16_t sw_debounce = uint16_t(RstDebounce);
     bool latch_rise = false, latch_fall = false;  // LATCH_CFG
     bool latch_probe = false;                     // LATCH_CFG.PROBE: the probe, not home
@@ -129,7 +132,11 @@ class AxiRegs {
   AxiOut axi_outputs() const;
   // The core's inputs from the register file; the limit inputs from the
   // filtered levels `sw_level` (bit SwLimNeg, SwLimPos) and SW_CFG.
-  CoreInputs core_inputs(uint32_t sw_level = 0) const;
+  // ref_pos: the core's REF_POS this clock (the soft limits compare it).
+  CoreInputs core_inputs(uint32_t sw_level = 0, int32_t ref_pos = 0) const;
+  // The soft limits' sides: active beyond SOFT_MAX / SOFT_MIN.
+  bool soft_fwd(int32_t ref_pos) const { return q_.soft_en && ref_pos > q_.soft_max; }
+  bool soft_rev(int32_t ref_pos) const { return q_.soft_en && ref_pos < q_.soft_min; }
   // STATUS.BUSY: the core is busy or an accepted START has not reached it yet.
   bool busy(const CoreOutputs& core) const { return core.busy || q_.start || q_.start_d1; }
   const State& state() const { return q_; }
@@ -165,7 +172,7 @@ class AxiAxis {
     sw_.reset();
   }
   void step(const AxiIn& in, const RegsSide& side) {
-    const CoreInputs ci = regs_.core_inputs(sw_.level());
+    const CoreInputs ci = regs_.core_inputs(sw_.level(), core_.outputs().ref_pos_int);
     RegsSide rs = side;
     rs.sw_level = uint8_t(sw_.level());
     rs.sw_edge = uint8_t(sw_.edge());

@@ -86,7 +86,7 @@ module sc_axi_axis (
   logic [sc_pkg::AccW-1:0]     stop_acc;
   logic [sc_pkg::SwW-1:0]      sw_invert, sw_level, sw_edge;
   logic [sc_pkg::DebounceW-1:0] sw_debounce;
-  logic                        lim_en, lim_hard, lim_trip_fwd, lim_trip_rev;
+  logic                        lim_fwd, lim_rev, lim_hard, lim_trip_fwd, lim_trip_rev;
   logic                        unused_closed;
   logic [sc_pkg::CtlCfgW-1:0]  unused_ctl_cfg;
 
@@ -151,7 +151,8 @@ module sc_axi_axis (
     .cl_stat_i       ({(sc_pkg::ClStatWords*32){1'b0}}),
     .sw_invert_o     (sw_invert),
     .sw_debounce_o   (sw_debounce),
-    .lim_en_o        (lim_en),
+    .lim_fwd_o       (lim_fwd),
+    .lim_rev_o       (lim_rev),
     .lim_hard_o      (lim_hard),
     .sw_level_i      (sw_level),
     .sw_edge_i       (sw_edge),
@@ -206,8 +207,8 @@ module sc_axi_axis (
     .guard_vel_i     (guard_vel),
     .guard_acc_i     (guard_acc),
     .guard_jerk_i    (guard_jerk),
-    .lim_fwd_i       (lim_en && sw_level[sc_pkg::SwLimPos]),
-    .lim_rev_i       (lim_en && sw_level[sc_pkg::SwLimNeg]),
+    .lim_fwd_i       (lim_fwd),
+    .lim_rev_i       (lim_rev),
     .lim_hard_i      (lim_hard),
     .ext_sel_i        (1'b0),
     .ext_req_i        (1'b0),

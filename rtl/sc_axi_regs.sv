@@ -28,9 +28,12 @@
 // that would change it while busy is refused.
 //
 // SW_CFG configures the switch filter (sw_invert_o, sw_debounce_o) and the
-// limits (lim_en_o, lim_hard_o); STATUS.SW_LEVEL shows the filtered levels,
+// limits: lim_fwd_o / lim_rev_o are the enabled limit switches or, with
+// SW_CFG.SOFT_EN, REF_POS beyond SOFT_MAX / SOFT_MIN (the soft limits
+// act as limit switches; lim_hard_o for both); STATUS.SW_LEVEL shows the filtered levels,
 // an edge of one raises IRQ_STATUS.SWITCH, and the core's limit trips set
-// ERR.LIMIT_NEG / LIMIT_POS and IRQ_STATUS.FAULT. The position latch
+// ERR.LIMIT_NEG / LIMIT_POS (and ERR.SOFT_LIMIT when the window
+// was the cause) and IRQ_STATUS.FAULT. The position latch
 // captures PULSE_COUNT and ENC_POS in the clock the filtered home (or,
 // with LATCH_CFG.PROBE, probe) level changes (the edge LATCH_CFG selects),
 // once until LATCH_CFG is written.
@@ -94,7 +97,8 @@ module sc_axi_regs #(
   output logic [sc_pkg::CtlCfgW-1:0]          ctl_cfg_o,   // controller configuration
   output logic [sc_pkg::SwW-1:0]              sw_invert_o, // SW_CFG
   output logic [sc_pkg::DebounceW-1:0]        sw_debounce_o,
-  output logic                                lim_en_o,
+  output logic                                lim_fwd_o,   // a limit (switch or soft) is active on the + side
+  output logic                                lim_rev_o,
   output logic                                lim_hard_o,
 
   // from sc_axis_core
@@ -192,6 +196,8 @@ module sc_axi_regs #(
   localparam logic [AW-1:0] AGuardA1   = AW'(sc_pkg::RegGuardAcc + 4);
   localparam logic [AW-1:0] AGuardJ0   = AW'(sc_pkg::RegGuardJerk);
   localparam logic [AW-1:0] AGuardJ1   = AW'(sc_pkg::RegGuardJerk + 4);
+  localparam logic [AW-1:0] ASoftMin   = AW'(sc_pkg::RegSoftMin);
+  localparam logic [AW-1:0] ASoftMax   = AW'(sc_pkg::RegSoftMax);
   localparam int SwW       = sc_pkg::SwW;
   localparam int DebounceW = sc_pkg::DebounceW;
 
@@ -274,6 +280,9 @@ module sc_axi_regs #(
   logic                      err_guard_q, err_guard_d;
   logic [SwW-1:0]            sw_inv_q, sw_inv_d;
   logic                      lim_en_q, lim_en_d, lim_hard_q, lim_hard_d;
+  logic                      soft_en_q, soft_en_d, err_soft_q, err_soft_d;
+  logic signed [sc_pkg::PosIntW-1:0] soft_min_q, soft_min_d, soft_max_q, soft_max_d;
+  logic                      soft_fwd, soft_rev;
   logic [DebounceW-1:0]      sw_deb_q, sw_deb_d;
   logic                      lim_trip;
   logic                      latch_rise_q, latch_rise_d, latch_fall_q, latch_fall_d;
@@ -330,8 +339,8 @@ module sc_axi_regs #(
     unique case (awaddr_q)
       APulseTime, ADirTime, AFrac0, AFrac1, AFrac2,
       AStopJ0, AStopJ1, AStopA0, AStopA1, ASwCfg,
-      AGuardV0, AGuardV1, AGuardV2, AGuardA0, AGuardA1, AGuardJ0, AGuardJ1:
-                                                    w_locked = 1'b1;
+      AGuardV0, AGuardV1, AGuardV2, AGuardA0, AGuardA1, AGuardJ0, AGuardJ1,
+      ASoftMin, ASoftMax:                           w_locked = 1'b1;
       default:                                      w_locked = w_cfg_hit;
     endcase
   end
@@ -346,7 +355,7 @@ module sc_axi_regs #(
     status_word[sc_pkg::StatusFaultOverrunBit]      = fault_overrun_i;
     status_word[sc_pkg::StatusEstopBit]             = err_estop_q;
     status_word[sc_pkg::StatusErrBit]               = err_reject_q || err_bad_q || err_estop_q ||
-                                                      err_lneg_q || err_lpos_q || err_guard_q;
+                                                      err_lneg_q || err_lpos_q || err_guard_q || err_soft_q;
     status_word[sc_pkg::StatusFaultFerrBit]         = fault_ferr_i;
     status_word[sc_pkg::StatusInPosBit]             = in_pos_i;
     status_word[sc_pkg::StatusEncALsb +: 2]         = enc_ab_i;
@@ -365,6 +374,7 @@ module sc_axi_regs #(
     sw_cfg_word[sc_pkg::SwInvertLsb +: SwW]         = sw_inv_q;
     sw_cfg_word[sc_pkg::SwLimEnBit]                 = lim_en_q;
     sw_cfg_word[sc_pkg::SwLimHardBit]               = lim_hard_q;
+    sw_cfg_word[sc_pkg::SwSoftEnBit]                = soft_en_q;
     sw_cfg_word[sc_pkg::SwDebounceLsb +: DebounceW] = sw_deb_q;
   end
   assign sw_cfg_new = wmerge(sw_cfg_word, wd, wmask);
@@ -377,6 +387,10 @@ module sc_axi_regs #(
   // interrupt causes: events of the core's status (edges of its levels)
   assign below     = fifo_level_i < low_water_q;
   assign lim_trip  = lim_trip_fwd_i || lim_trip_rev_i;
+  // soft limits: beyond the window's last positions REF_POS is on a limit
+  // switch (a move planned to end on an edge does not trip)
+  assign soft_fwd  = soft_en_q && ref_pos_i > soft_max_q;
+  assign soft_rev  = soft_en_q && ref_pos_i < soft_min_q;
   assign fault_any = fault_table_i || fault_overrun_i || fault_ferr_i || err_estop_q || lim_trip;
 
   // read mux
@@ -401,6 +415,7 @@ module sc_axi_regs #(
         rd_word[ErrLimNegBit]   = err_lneg_q;
         rd_word[ErrLimPosBit]   = err_lpos_q;
         rd_word[ErrGuardBit]    = err_guard_q;
+        rd_word[sc_pkg::ErrSoftLimBit] = err_soft_q;
       end
       ASwCfg:     rd_word = sw_cfg_word;
       ALatchCfg: begin
@@ -450,6 +465,8 @@ module sc_axi_regs #(
       AGuardA1:   rd_word = guard_acc_q[AccW-1:32];
       AGuardJ0:   rd_word = guard_jerk_q[31:0];
       AGuardJ1:   rd_word = 32'(guard_jerk_q[JerkW-1:32]);
+      ASoftMin:   rd_word = 32'(soft_min_q);
+      ASoftMax:   rd_word = 32'(soft_max_q);
       AAcc0:      rd_word = st_acc0_q[31:0];
       AAcc1:      rd_word = st_acc0_q[63:32];
       AVel0:      rd_word = st_vel0_q[31:0];
@@ -514,6 +531,10 @@ module sc_axi_regs #(
     err_lneg_d   = err_lneg_q;
     err_lpos_d   = err_lpos_q;
     err_guard_d  = err_guard_q;
+    err_soft_d   = err_soft_q;
+    soft_en_d    = soft_en_q;
+    soft_min_d   = soft_min_q;
+    soft_max_d   = soft_max_q;
     sw_inv_d     = sw_inv_q;
     lim_en_d     = lim_en_q;
     lim_hard_d   = lim_hard_q;
@@ -603,6 +624,7 @@ module sc_axi_regs #(
               if (wd[ErrLimNegBit])   err_lneg_d  = 1'b0;
               if (wd[ErrLimPosBit])   err_lpos_d  = 1'b0;
               if (wd[ErrGuardBit])    err_guard_d = 1'b0;
+              if (wd[sc_pkg::ErrSoftLimBit]) err_soft_d = 1'b0;
             end
           end
           AIrqStat: begin
@@ -614,6 +636,7 @@ module sc_axi_regs #(
             sw_inv_d   = sw_cfg_new[sc_pkg::SwInvertLsb +: SwW];
             lim_en_d   = sw_cfg_new[sc_pkg::SwLimEnBit];
             lim_hard_d = sw_cfg_new[sc_pkg::SwLimHardBit];
+            soft_en_d  = sw_cfg_new[sc_pkg::SwSoftEnBit];
             sw_deb_d   = sw_cfg_new[sc_pkg::SwDebounceLsb +: DebounceW];
           end
           ALatchCfg: begin
@@ -660,6 +683,8 @@ module sc_axi_regs #(
           AGuardJ0:   guard_jerk_d[31:0] = wmerge(guard_jerk_q[31:0], wd, wmask);
           AGuardJ1:   guard_jerk_d[JerkW-1:32] =
                           (JerkW-32)'(wmerge(32'(guard_jerk_q[JerkW-1:32]), wd, wmask));
+          ASoftMin:   soft_min_d = wmerge(soft_min_q, wd, wmask);
+          ASoftMax:   soft_max_d = wmerge(soft_max_q, wd, wmask);
           AAcc0:      st_acc0_d[31:0]  = wmerge(st_acc0_q[31:0], wd, wmask);
           AAcc1:      st_acc0_d[63:32] = wmerge(st_acc0_q[63:32], wd, wmask);
           AVel0:      st_vel0_d[31:0]  = wmerge(st_vel0_q[31:0], wd, wmask);
@@ -716,6 +741,7 @@ module sc_axi_regs #(
     if (lim_trip_rev_i)                 err_lneg_d  = 1'b1;
     if (lim_trip_fwd_i)                 err_lpos_d  = 1'b1;
     if (guard_i && !guard_prev_q)       err_guard_d = 1'b1;
+    if ((lim_trip_fwd_i && soft_fwd) || (lim_trip_rev_i && soft_rev)) err_soft_d = 1'b1;
     if (sw_edge_i != '0)                irq_st_d[sc_pkg::IrqSwitchBit]   = 1'b1;
     // a capture wins over a re-arm in the same clock (the edge is not lost)
     if (latch_cap) begin
@@ -788,6 +814,10 @@ module sc_axi_regs #(
       err_lneg_q   <= 1'b0;
       err_lpos_q   <= 1'b0;
       err_guard_q  <= 1'b0;
+      err_soft_q   <= 1'b0;
+      soft_en_q    <= 1'b0;
+      soft_min_q   <= '0;
+      soft_max_q   <= '0;
       sw_inv_q     <= '0;
       lim_en_q     <= 1'b1;
       lim_hard_q   <= 1'b0;
@@ -852,6 +882,10 @@ module sc_axi_regs #(
       err_lneg_q   <= err_lneg_d;
       err_lpos_q   <= err_lpos_d;
       err_guard_q  <= err_guard_d;
+      err_soft_q   <= err_soft_d;
+      soft_en_q    <= soft_en_d;
+      soft_min_q   <= soft_min_d;
+      soft_max_q   <= soft_max_d;
       sw_inv_q     <= sw_inv_d;
       lim_en_q     <= lim_en_d;
       lim_hard_q   <= lim_hard_d;
@@ -915,7 +949,8 @@ module sc_axi_regs #(
   assign ctl_cfg_o   = sc_pkg::ctl_cfg_from_words(cl_q);
   assign sw_invert_o = sw_inv_q;
   assign sw_debounce_o = sw_deb_q;
-  assign lim_en_o    = lim_en_q;
+  assign lim_fwd_o   = (lim_en_q && sw_level_i[sc_pkg::SwLimPos]) || soft_fwd;
+  assign lim_rev_o   = (lim_en_q && sw_level_i[sc_pkg::SwLimNeg]) || soft_rev;
   assign lim_hard_o  = lim_hard_q;
   assign busy_o      = busy_eff;
   assign irq_o       = irq_q;

@@ -93,7 +93,7 @@ module sc_axi_servo (
   logic [1:0]                  enc_ab_sync;
   logic [sc_pkg::SwW-1:0]      sw_invert, sw_level, sw_edge;
   logic [sc_pkg::DebounceW-1:0] sw_debounce;
-  logic                        lim_en, lim_hard, lim_trip_fwd, lim_trip_rev;
+  logic                        lim_fwd, lim_rev, lim_hard, lim_trip_fwd, lim_trip_rev;
 
   logic [sc_pkg::EncIllW-1:0]  enc_illegal;
   logic                        ctl_active;
@@ -198,7 +198,8 @@ module sc_axi_servo (
     .cl_stat_i       (cl_stat),
     .sw_invert_o     (sw_invert),
     .sw_debounce_o   (sw_debounce),
-    .lim_en_o        (lim_en),
+    .lim_fwd_o       (lim_fwd),
+    .lim_rev_o       (lim_rev),
     .lim_hard_o      (lim_hard),
     .sw_level_i      (sw_level),
     .sw_edge_i       (sw_edge),
@@ -254,8 +255,8 @@ module sc_axi_servo (
     .guard_vel_i       (guard_vel),
     .guard_acc_i       (guard_acc),
     .guard_jerk_i      (guard_jerk),
-    .lim_fwd_i         (lim_en && sw_level[sc_pkg::SwLimPos]),
-    .lim_rev_i         (lim_en && sw_level[sc_pkg::SwLimNeg]),
+    .lim_fwd_i         (lim_fwd),
+    .lim_rev_i         (lim_rev),
     .lim_hard_i        (lim_hard),
     .enc_a_i,
     .enc_b_i,

@@ -187,14 +187,14 @@ package sc_pkg;
   // the UART bridge's address byte is a word address so it reaches them all);
   // 0x000 .. 0x0FC hold the 2.x map unchanged, the rest is free.
   localparam int RegAddrW      = 10;      // byte address bits of the window
-  localparam int RegMapVersion = 771;     // 0x0303 = 3.3 (1 KiB window, UART word address; switch inputs, guards, probe)
+  localparam int RegMapVersion = 772;     // 0x0304 = 3.4 (1 KiB window, UART word address; switch inputs, guards, probe, soft limits)
   localparam int RegIdMagic    = 21315;   // 0x5343, ASCII "SC"
   localparam int RstPulseHigh  = 50;      // reset values of the pulse timing
   localparam int RstPulseLow   = 50;
   localparam int RstDirSetup   = 100;
   localparam int RstDirHold    = 100;
   localparam int RegId         = 32'h0000_0000;  //@reg ID RO "identification"
-  localparam int IdVersionLsb  = 0;      //@field ID VERSION 16 reset=RegMapVersion "register map version, 0x0303 = 3.3"
+  localparam int IdVersionLsb  = 0;      //@field ID VERSION 16 reset=RegMapVersion "register map version, 0x0304 = 3.4"
   localparam int IdMagicLsb    = 16;     //@field ID MAGIC 16 reset=21315 "0x5343, ASCII 'SC'"
   localparam int RegCtrl       = 32'h0000_0004;  //@reg CTRL RW "control"
   localparam int CtrlEnableBit = 0;      //@field CTRL ENABLE 1 "drives the EN pin; START is refused while 0; ESTOP clears it"
@@ -230,9 +230,10 @@ package sc_pkg;
   localparam int ErrEstopBit   = 2;      //@field ERR ESTOP 1 "e-stop latched (CMD.ESTOP or the e-stop input); blocks START until cleared"
   localparam int ErrFifoFullBit = 3;     //@field ERR FIFO_FULL 1 "a ROW_PUSH met a full FIFO: SLVERR, the row was not appended (the staged row is kept)"
   localparam int ErrDiscontBit = 4;      //@field ERR DISCONTINUITY 1 "a row did not continue the previous row's end state exactly: not executed, the axis stopped"
-  localparam int ErrLimNegBit  = 6;      //@field ERR LIMIT_NEG 1 "the - limit stopped motion into it or refused a START toward it"
-  localparam int ErrLimPosBit  = 7;      //@field ERR LIMIT_POS 1 "the + limit stopped motion into it or refused a START toward it"
+  localparam int ErrLimNegBit  = 6;      //@field ERR LIMIT_NEG 1 "the - limit (switch or SOFT_MIN) stopped motion into it or refused a START toward it"
+  localparam int ErrLimPosBit  = 7;      //@field ERR LIMIT_POS 1 "the + limit (switch or SOFT_MAX) stopped motion into it or refused a START toward it"
   localparam int ErrGuardBit   = 8;      //@field ERR GUARD 1 "a row broke a guard limit: not executed, the axis stopped (or the START was refused)"
+  localparam int ErrSoftLimBit = 9;      //@field ERR SOFT_LIMIT 1 "the soft-limit window stopped motion out of it or refused a START out of it (with LIMIT_NEG / LIMIT_POS for the side)"
   localparam int ErrUnderrunBit = 5;     //@field ERR UNDERRUN 1 "the FIFO ran dry while the axis was moving: the axis stopped"
   localparam int RegPulseCount = 32'h0000_0014;  //@reg PULSE_COUNT RO "net STEP pulses since the last START (signed)"
   localparam int RegRefPos     = 32'h0000_0018;  //@reg REF_POS RO "reference position P*, integer pulses (signed)"
@@ -398,6 +399,7 @@ package sc_pkg;
   localparam int SwInvertLsb   = 0;      //@field SW_CFG INVERT SwW reset=0 "1 = active low: bit 0 LIM_NEG, 1 LIM_POS, 2 HOME, 3 PROBE"
   localparam int SwLimEnBit    = 4;      //@field SW_CFG LIM_EN 1 reset=1 "1: motion into an active limit stops, a START toward it is refused"
   localparam int SwLimHardBit  = 5;      //@field SW_CFG LIM_HARD 1 reset=0 "1: a limit stops at once (hard limit), 0: controlled stop with STOP_JERK / STOP_ACC"
+  localparam int SwSoftEnBit   = 6;      //@field SW_CFG SOFT_EN 1 reset=0 "1: REF_POS beyond SOFT_MIN / SOFT_MAX acts as an active limit switch on that side"
   localparam int SwDebounceLsb = 16;     //@field SW_CFG DEBOUNCE DebounceW reset=RstDebounce "clocks a new switch level must hold before it is taken"
   // Position latch on the home switch: the counts of the clock its filtered
   // level changes (the first clock STATUS.SW_LEVEL shows the new level).
@@ -417,7 +419,14 @@ package sc_pkg;
   localparam int RegGuardVel   = 32'h0000_0120;  //@reg GUARD_VEL RW wide=VelW "guard: largest |vel0| of a row, unsigned SQ1.80 magnitude (0 = no limit), 3 words low first"
   localparam int RegGuardAcc   = 32'h0000_0130;  //@reg GUARD_ACC RW wide=AccW "guard: largest |acc0| of a row, unsigned, executor LSB (0 = no limit), 2 words low first"
   localparam int RegGuardJerk  = 32'h0000_0138;  //@reg GUARD_JERK RW wide=JerkW "guard: largest |jerk| of a row, unsigned, executor LSB (0 = no limit), 2 words low first"
-  // Writes to PULSE_TIME, DIR_TIME, POS_FRAC0, STOP_JERK, STOP_ACC, SW_CFG, GUARD_*, CMD.START and CMD.FLUSH
+  // Soft limits: with SW_CFG.SOFT_EN, REF_POS < SOFT_MIN is an active -
+  // limit and REF_POS > SOFT_MAX an active + limit (the window's last
+  // positions are inside it), with everything a limit
+  // switch does (motion into it stops, controlled or with SW_CFG.LIM_HARD at
+  // once; a START toward it is refused; motion away runs).
+  localparam int RegSoftMin    = 32'h0000_0140;  //@reg SOFT_MIN RW "soft limit -: the lowest REF_POS inside the window, pulses (signed); SW_CFG.SOFT_EN"
+  localparam int RegSoftMax    = 32'h0000_0144;  //@reg SOFT_MAX RW "soft limit +: the highest REF_POS inside the window, pulses (signed); SW_CFG.SOFT_EN"
+  // Writes to PULSE_TIME, DIR_TIME, POS_FRAC0, STOP_JERK, STOP_ACC, SW_CFG, GUARD_*, SOFT_MIN, SOFT_MAX, CMD.START and CMD.FLUSH
   // while STATUS.BUSY is set are refused (SLVERR, ERR.REJECT); so are writes
   // to the controller settings (CL_CFG .. SETTLE_RATE). The row staging
   // registers and ROW_PUSH stay open: the host streams while the axis runs.

@@ -227,6 +227,16 @@ ends = [m["end_position"] for m in c["moves"]]
 assert ends == [800, 1400, 2900, 2000] == [m["expected_end_position"] for m in c["moves"]], ends
 assert [m["end_clock"] for m in c["moves"]] == [m["end_clock"] for m in o["moves"]], (c["moves"], o["moves"])
 PY
+# scurve regs with a window: the hardware soft limits are written too (SOFT_EN
+# in SW_CFG); a bound beyond REF_POS's 32 bits is exit 2 naming it.
+"$scurve" regs --distance 1000 --v-cruise 3000 --a-max 500 --j-max 2500 --start-pos -200 --soft-min -500 --soft-max 900 --json > "$tmp/regs_soft.json"
+python3 - "$tmp/regs_soft.json" <<'PY'
+import json, sys
+w = {x["reg"]: x["data"] for x in json.load(open(sys.argv[1]))}
+assert w["SOFT_MIN"] == (-500) & 0xffffffff and w["SOFT_MAX"] == 900, w
+assert w["SW_CFG"] & (1 << 6) and w["SW_CFG"] & (1 << 4), w
+PY
+check_bad "soft_limits.max_pos=5000000000" regs --distance 1000 --v-cruise 3000 --a-max 500 --j-max 2500 --soft-max 5000000000
 # scurve home: the defaults home in lockstep onto the switch's release point;
 # a latch speed past the exact bound still homes, to a zero that is off by
 # the steps of the filter's latency; bad input names the field.

@@ -337,6 +337,20 @@ TEST(AxiRegs, FifoRunningDryWhileMovingIsAnUnderrunWithTheBoundaryKept) {
   b.idle(100);
   EXPECT_EQ(b.read(reg_addr("STATUS")).first, st);
   EXPECT_EQ(b.net_steps(), stopped_at);
+  // Recovery: clear the flag, plan the rest from rest where the axis
+  // stopped, START: it runs to its exact end, with no new flag.
+  EXPECT_EQ(b.write(reg_addr("ERR"), 0xffffffffu), kOkay);
+  EXPECT_EQ(b.write(reg_addr("IRQ_STATUS"), 0xffffffffu), kOkay);
+  const int64_t rest = 2500 + 4000 - stopped_at;
+  const Plan p = plan_or_die(short_move(rest), PulseTiming{});
+  load(b, p, PulseTiming{});
+  EXPECT_EQ(b.write(reg_addr("CMD"), field_mask("CMD", "START")), kOkay);
+  b.idle(p.total_clocks + 1000);
+  while (b.out().busy && !b.failed()) b.idle(100);
+  EXPECT_EQ(b.net_steps(), 2500 + 4000);
+  EXPECT_EQ(int32_t(b.read(reg_addr("REF_POS")).first), 2500 + 4000);
+  EXPECT_TRUE(b.read(reg_addr("STATUS")).first & field_mask("STATUS", "DONE"));
+  EXPECT_EQ(b.read(reg_addr("ERR")).first, 0u);
   EXPECT_FALSE(b.failed()) << b.error();
 }
 
@@ -384,6 +398,11 @@ TEST(AxiRegs, StartRefusedWhenDisabledOrEstoppedStopAndEstopAbort) {
   EXPECT_TRUE(st & field_mask("STATUS", "ESTOP"));
   EXPECT_FALSE(st & field_mask("STATUS", "EN"));
   EXPECT_FALSE(b.out().en);
+  EXPECT_TRUE(b.read(reg_addr("IRQ_STATUS")).first & field_mask("IRQ_STATUS", "FAULT"));
+  EXPECT_EQ(b.net_steps(), int32_t(b.read(reg_addr("REF_POS")).first)) << "the e-stop lost a position";
+  const int64_t at_estop = b.net_steps();
+  b.idle(20000);
+  EXPECT_EQ(b.net_steps(), at_estop) << "pulses after the e-stop";
   EXPECT_EQ(b.read(reg_addr("CTRL")).first, 0u);
   EXPECT_EQ(b.write(reg_addr("CTRL"), 1), kOkay);
   EXPECT_EQ(b.write(reg_addr("CMD"), start), kSlvErr) << "START while e-stop latched";
@@ -486,16 +505,16 @@ TEST(BoardUart, IllegalAddressReservedBitsAndWriteWhileBusy) {
   r = bd.host.read(reg_addr("SW_CFG"));
   EXPECT_EQ(r.data, reg("SW_CFG").reset) << "SW_CFG at its reset value";
   EXPECT_EQ(bd.host.read(reg_addr("LATCH_CFG")).data, 0u);
-  for (const uint32_t a : {0x140u, 0x144u, 0x1F8u, 0x200u, 0x2CCu, 0x3FCu}) {
+  for (const uint32_t a : {0x148u, 0x14Cu, 0x180u, 0x1F8u, 0x200u, 0x2CCu, 0x3FCu}) {
     r = bd.host.read(a);
     ASSERT_TRUE(r.ok) << r.error;
     EXPECT_EQ(r.status, kDecErr) << std::hex << a;
     EXPECT_EQ(r.data, 0u) << std::hex << a;
   }
-  r = bd.host.write(0x144, field_mask("CTRL", "ENABLE"));
+  r = bd.host.write(0x14C, field_mask("CTRL", "ENABLE"));
   ASSERT_TRUE(r.ok) << r.error;
   EXPECT_EQ(r.status, kDecErr);
-  EXPECT_EQ(bd.host.read(reg_addr("CTRL")).data, 0u) << "0x144 wrote CTRL";
+  EXPECT_EQ(bd.host.read(reg_addr("CTRL")).data, 0u) << "0x14C wrote CTRL";
   r = bd.host.write(reg_addr("ID"), 0);
   EXPECT_EQ(r.status, kSlvErr);
   r = bd.host.write(reg_addr("SEG_PHASE"), 0xffffffffu);

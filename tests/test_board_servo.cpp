@@ -181,6 +181,73 @@ TEST(AxiServo, ClosedLoopMoveOverAxiWithPlant) {
               (unsigned long long)b.matched(), max_ferr);
 }
 
+// A following-error fault over the registers (FERR_LIM below what the loop
+// lags on this move, CL_CFG.FERR_STOP): the reference stops under control,
+// the counts are kept (pins = PULSE_COUNT, the plant's count = ENC_POS),
+// STATUS.FAULT_FERR, CL_STATUS.FAULT_FERR and IRQ_STATUS.FAULT are set;
+// the documented recovery - a wider limit, the move to the target again,
+// START (which clears the fault) - ends in position on the target.
+TEST(AxiServo, FollowingErrorFaultStopsUnderControlKeepsTheCountsAndRecoversAtTheNextStart) {
+  const int64_t L = 600;
+  const PulseTiming t{};
+  AxiServoBench b(true, 33);
+  b.attach_plant(PlantConfig{});
+  ControllerParams cp;
+  cp.ferr_lim = 1.0;
+  cp.ferr_stop = true;
+  ServoConfig cfg;
+  ASSERT_EQ(to_servo_config(cp, PlantConfig{}, t, cfg), "");
+  for (const RegWrite& w : encode_servo_config(cfg)) ASSERT_EQ(b.write(w.addr, w.data), kOkay) << reg_name(w.addr);
+  set_stop_limits(b, 4e6, 1e5);
+  load(b, plan_or_die(cl_move(L)), t);
+  const uint32_t ctrl = field_mask("CTRL", "ENABLE") | field_mask("CTRL", "CLOSED_LOOP");
+  ASSERT_EQ(b.write(reg_addr("CTRL"), ctrl), kOkay);
+  ASSERT_EQ(b.write(reg_addr("IRQ_STATUS"), 0xffffffffu), kOkay);
+  ASSERT_EQ(b.write(reg_addr("CMD"), field_mask("CMD", "START")), kOkay);
+  bool fault = false;
+  for (int i = 0; i < 400 && !b.failed() && !fault; ++i) {
+    b.idle(5000);
+    fault = b.read(reg_addr("STATUS")).first & field_mask("STATUS", "FAULT_FERR");
+  }
+  ASSERT_TRUE(fault) << "no following-error fault with FERR_LIM = 1 count";
+  EXPECT_TRUE(b.read(reg_addr("CL_STATUS")).first & field_mask("CL_STATUS", "FAULT_FERR"));
+  EXPECT_TRUE(b.read(reg_addr("IRQ_STATUS")).first & field_mask("IRQ_STATUS", "FAULT"));
+  // The controlled stop, then the loop settles where the reference rested.
+  for (int i = 0; i < 400 && !b.failed() && b.out().busy; ++i) b.idle(5000);
+  ASSERT_FALSE(b.out().busy);
+  b.idle(20000);
+  const int32_t ref = int32_t(b.read(reg_addr("REF_POS")).first);
+  EXPECT_GT(ref, 0);
+  EXPECT_LT(ref, L) << "the fault did not stop the reference";
+  EXPECT_EQ(int32_t(b.read(reg_addr("PULSE_COUNT")).first), b.net_steps()) << "a step lost or invented";
+  EXPECT_EQ(int32_t(b.read(reg_addr("ENC_POS")).first), b.plant()->count());
+  EXPECT_EQ(b.net_steps(), b.plant()->commanded());
+  EXPECT_FALSE(b.read(reg_addr("STATUS")).first & field_mask("STATUS", "DONE")) << "a faulted move is not done";
+
+  // Recovery: the default limit, the rest of the way, START.
+  cp.ferr_lim = ControllerParams{}.ferr_lim;
+  ASSERT_EQ(to_servo_config(cp, PlantConfig{}, t, cfg), "");
+  for (const RegWrite& w : encode_servo_config(cfg)) ASSERT_EQ(b.write(w.addr, w.data), kOkay) << reg_name(w.addr);
+  ASSERT_EQ(b.write(reg_addr("CMD"), field_mask("CMD", "FLUSH")), kOkay);
+  const Plan rest = plan_or_die(cl_move(L - ref));
+  load(b, rest, t);
+  ASSERT_EQ(b.write(reg_addr("CTRL"), ctrl), kOkay);
+  ASSERT_EQ(b.write(reg_addr("CMD"), field_mask("CMD", "START")), kOkay);
+  b.idle(1000);  // past the DIR setup: the loop restarts with the reference
+  EXPECT_FALSE(b.read(reg_addr("STATUS")).first & field_mask("STATUS", "FAULT_FERR")) << "START clears the fault";
+  bool done = false;
+  const uint64_t t0 = b.clock();
+  while (!done && !b.failed() && b.clock() - t0 < rest.total_clocks + 2 * uint64_t(ClkHz)) {
+    b.idle(5000);
+    done = b.read(reg_addr("STATUS")).first & field_mask("STATUS", "DONE");
+  }
+  ASSERT_TRUE(done) << "no DONE after the recovery";
+  EXPECT_EQ(int32_t(b.read(reg_addr("REF_POS")).first), L);
+  EXPECT_EQ(int32_t(b.read(reg_addr("ENC_POS")).first), L);
+  EXPECT_EQ(b.plant()->count(), L);
+  EXPECT_FALSE(b.failed()) << b.error();
+}
+
 // Open loop through the same wrapper (CTRL.CLOSED_LOOP = 0): exact pulses.
 TEST(AxiServo, OpenLoopModeEmitsExactPulses) {
   const Plan p = plan_or_die(cl_move(300));

@@ -19,6 +19,7 @@
 #include "axi_bench.h"
 #include "board_regs.h"
 #include "planner.h"
+#include "random_moves.h"
 #include "stop_check.h"
 
 using namespace sc;
@@ -29,10 +30,7 @@ namespace {
 using stopcheck::kLsb;
 using stopcheck::ld;
 
-double log_uniform(std::mt19937_64& g, double lo, double hi) {
-  std::uniform_real_distribution<double> u(std::log(lo), std::log(hi));
-  return std::exp(u(g));
-}
+using scurve::test::log_uniform;
 
 template <class T>
 T magnitude(T x) {

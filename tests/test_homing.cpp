@@ -11,16 +11,14 @@
 #include <vector>
 
 #include "homing_run.h"
+#include "random_moves.h"
 #include "scurve/homing.h"
 
 using namespace sc;
 
 namespace {
 
-double log_uniform(std::mt19937_64& g, double lo, double hi) {
-  std::uniform_real_distribution<double> u(std::log(lo), std::log(hi));
-  return std::exp(u(g));
-}
+using scurve::test::log_uniform;
 
 // A random homing: the switch 300 .. 1500 pulses from the start on a random
 // side, a random seek speed, a latch speed within the exact bound.

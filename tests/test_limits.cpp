@@ -21,6 +21,7 @@
 #include "axi_bench.h"
 #include "board_regs.h"
 #include "planner.h"
+#include "random_moves.h"
 #include "stop_check.h"
 #include "switch_filter.h"
 #include "switch_plant.h"
@@ -34,10 +35,7 @@ using stopcheck::kF;
 using stopcheck::kLsb;
 using stopcheck::ld;
 
-double log_uniform(std::mt19937_64& g, double lo, double hi) {
-  std::uniform_real_distribution<double> u(std::log(lo), std::log(hi));
-  return std::exp(u(g));
-}
+using scurve::test::log_uniform;
 
 struct LimitCase {
   bool hard = false;

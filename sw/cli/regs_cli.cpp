@@ -48,6 +48,14 @@ std::variant<nlohmann::json, Error> regs_to_json(const RegsCliFlags& f, const Mo
     const std::vector<RegWrite> gw = encode_guard_codes(std::get<GuardLimitCodes>(g));
     config.insert(config.end(), gw.begin(), gw.end());
   }
+  // A travel window (--soft-min / --soft-max): also the hardware's soft
+  // limits, so a table that would leave it stops at its edge.
+  if (request.soft_limits) {
+    const SoftLimitWritesResult s = encode_soft_limits(*request.soft_limits);
+    if (const Error* err = std::get_if<Error>(&s)) return *err;
+    const std::vector<RegWrite>& sw = std::get<std::vector<RegWrite>>(s);
+    config.insert(config.end(), sw.begin(), sw.end());
+  }
   writes.insert(after_timing + 1, config.begin(), config.end());
   if (sr.at_clock) writes.push_back(stop_command());
   if (f.closed_loop) {

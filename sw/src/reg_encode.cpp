@@ -115,6 +115,23 @@ std::vector<RegWrite> encode_guard_codes(const GuardLimitCodes& c) {
   };
 }
 
+SoftLimitWritesResult encode_soft_limits(const SoftLimits& w) {
+  constexpr int64_t lo = -(int64_t(1) << (PosIntW - 1)), hi = (int64_t(1) << (PosIntW - 1)) - 1;
+  const int64_t mn = w.min_pos.value_or(lo), mx = w.max_pos.value_or(hi);
+  if (mn < lo || mn > hi) {
+    return Error{"soft_limits.min_pos",
+                 fmt::format("soft_limits.min_pos={}: the hardware window needs {} .. {} (REF_POS)", mn, lo, hi)};
+  }
+  if (mx < lo || mx > hi) {
+    return Error{"soft_limits.max_pos",
+                 fmt::format("soft_limits.max_pos={}: the hardware window needs {} .. {} (REF_POS)", mx, lo, hi)};
+  }
+  const uint32_t sw_cfg = (1u << SwLimEnBit) | (1u << SwSoftEnBit) | (uint32_t(RstDebounce) << SwDebounceLsb);
+  return std::vector<RegWrite>{{uint32_t(RegSoftMin), uint32_t(int32_t(mn))},
+                               {uint32_t(RegSoftMax), uint32_t(int32_t(mx))},
+                               {uint32_t(RegSwCfg), sw_cfg}};
+}
+
 GuardLimitsResult encode_guard_limits(double guard_v, double guard_a, double guard_j, Clock clock) {
   const GuardLimitCodesResult r = guard_limit_codes(guard_v, guard_a, guard_j, clock);
   if (const Error* e = std::get_if<Error>(&r)) return *e;

@@ -91,6 +91,14 @@ GuardLimitCodesResult move_guard_codes(const MoveRequest& request, Clock clock =
 std::vector<RegWrite> encode_guard_codes(const GuardLimitCodes& codes);
 using GuardLimitsResult = std::variant<std::vector<RegWrite>, Error>;
 GuardLimitsResult encode_guard_limits(double guard_v, double guard_a, double guard_j, Clock clock = Clock{});
+// A travel window as the hardware soft limits: SOFT_MIN, SOFT_MAX (an
+// unbounded side at the end of REF_POS's 32-bit range) and SW_CFG at its
+// reset value with SOFT_EN. The window is in REF_POS coordinates (the
+// planner's start_position is REF_POS at the START). An Error naming
+// "soft_limits.min_pos" / "soft_limits.max_pos" when a bound is beyond
+// REF_POS's range. Written while idle (refused while busy).
+using SoftLimitWritesResult = std::variant<std::vector<RegWrite>, Error>;
+SoftLimitWritesResult encode_soft_limits(const SoftLimits& window);
 // CMD.STOP: the controlled stop with the limits in STOP_JERK / STOP_ACC.
 RegWrite stop_command();
 

@@ -1,0 +1,176 @@
+// Soft limits in hardware (SOFT_MIN / SOFT_MAX with SW_CFG.SOFT_EN): the
+// window's edges act as limit switches on REF_POS. sc_axi_axis RTL and
+// model in lockstep every clock; what is checked does not come from the
+// RTL: the stop lies past the edge by at most the latency travel (hard) or
+// that plus the closed-form stopping distance (controlled); the pins,
+// PULSE_COUNT and REF_POS agree; the flags are set; a START further out is
+// refused; a move back into the window runs to its exact end.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <random>
+#include <string>
+
+#include "axi_bench.h"
+#include "board_regs.h"
+#include "planner.h"
+#include "random_moves.h"
+#include "stop_check.h"
+
+using namespace sc;
+using namespace sc::board_test;
+
+namespace {
+
+using stopcheck::kF;
+using stopcheck::kLsb;
+using stopcheck::ld;
+
+using scurve::test::log_uniform;
+
+template <class Done>
+void run_until(AxiBench& b, uint64_t limit, Done done) {
+  const uint64_t t0 = b.clock();
+  while (b.clock() - t0 < limit && !b.failed() && !done()) b.tick();
+}
+
+// Loads and starts a move, runs it to rest.
+void run_move(AxiBench& b, const Plan& p, const PulseTiming& t) {
+  load(b, p, t);
+  ASSERT_EQ(b.write(reg_addr("CMD"), field_mask("CMD", "START")), kOkay);
+  bool moved = false;
+  run_until(b, p.total_clocks + 2'000'000, [&] {
+    moved = moved || b.out().busy;
+    return moved && !b.out().busy;
+  });
+  ASSERT_FALSE(b.failed()) << b.error();
+  b.idle(10);
+}
+
+void run_soft_case(std::mt19937_64& g, int i) {
+  const bool hard = (i & 2) != 0;
+  const int dir = (i & 1) ? -1 : 1;
+  const PulseTiming t{};
+  AxiBench b(true, uint32_t(200 + i));
+  b.reset();
+  b.idle(4);
+  ASSERT_EQ(b.write(reg_addr("CTRL"), field_mask("CTRL", "ENABLE")), kOkay);
+
+  // To a random start (the window off): REF_POS carries over between STARTs.
+  const int64_t s0 = int64_t(g() % 6001) - 3000;
+  if (s0 != 0) run_move(b, plan_or_die(scurve::test::move_request(s0, 0, 50000, 0, 1e6, 1e9), t), t);
+  ASSERT_EQ(b.net_steps(), s0);
+
+  MoveRequest req;
+  int64_t distance = 0;
+  for (;;) {
+    const int64_t d = int64_t(2000 + g() % 18000);
+    req = scurve::test::move_request(d * dir, 0, log_uniform(g, 5e3, 1.5e5), 0, log_uniform(g, 1e5, 2e6),
+                                     log_uniform(g, 1e7, 2e9));
+    const PlanResult r = plan_move(req, t);
+    if (const Plan* p = std::get_if<Plan>(&r); p && p->total_clocks < 1'500'000) {
+      distance = d * dir;
+      break;
+    }
+  }
+  const Plan p = plan_or_die(req, t);
+  // The window's edge inside the move, far enough from its end for the stop.
+  const int64_t edge = s0 + distance / 10 + int64_t(g() % uint64_t(std::abs(distance) / 3)) * dir;
+  const int64_t other = s0 - dir * int64_t(100 + g() % 1000);
+  const int64_t soft_min = dir > 0 ? other : edge, soft_max = dir > 0 ? edge : other;
+  const double stop_jerk = req.j_max * log_uniform(g, 1, 4), stop_acc = req.a_max * log_uniform(g, 1, 4);
+  const std::string what = "start " + std::to_string(s0) + ", distance " + std::to_string(distance) + ", window [" +
+                           std::to_string(soft_min) + ", " + std::to_string(soft_max) + "], " +
+                           (hard ? "hard" : "controlled");
+  SCOPED_TRACE(what);
+
+  set_stop_limits(b, stop_jerk, stop_acc);
+  ASSERT_EQ(b.write(reg_addr("SOFT_MIN"), uint32_t(int32_t(soft_min))), kOkay);
+  ASSERT_EQ(b.write(reg_addr("SOFT_MAX"), uint32_t(int32_t(soft_max))), kOkay);
+  const uint32_t sw_cfg = field_mask("SW_CFG", "LIM_EN") | field_mask("SW_CFG", "SOFT_EN") |
+                          (hard ? field_mask("SW_CFG", "LIM_HARD") : 0);
+  ASSERT_EQ(b.write(reg_addr("SW_CFG"), sw_cfg), kOkay);
+  ASSERT_EQ(b.read(reg_addr("ERR")).first, 0u) << "inside the window nothing trips";
+  ASSERT_EQ(b.write(reg_addr("IRQ_STATUS"), 0xffffffffu), kOkay);
+  run_move(b, p, t);
+
+  const int64_t end = b.net_steps();
+  const int64_t overtravel = (end - edge) * dir;
+  // Latency from the reference reaching the edge to the stop's first clock:
+  // the comparison, the core's input register, the executor.
+  const ld latency = 4;
+  const ld v_peak = ld(p.peak_velocity), a_peak = ld(p.peak_acceleration);
+  ld bound = v_peak * latency / kF + 1;
+  if (!hard) {
+    const stopcheck::ClosedForm cf = stopcheck::closed_form(
+        v_peak * kLsb / kF, a_peak * kLsb / (kF * kF), ld(stop_jerk) * kLsb / (kF * kF * kF), ld(stop_acc) * kLsb / (kF * kF));
+    bound += cf.dist / kLsb;
+  }
+  std::printf("[soft] %s: overtravel %lld pulses (bound %.1f)\n", what.c_str(), (long long)overtravel, double(bound));
+  EXPECT_GE(overtravel, 1) << "stopped inside the window at " << end;
+  EXPECT_LE(ld(overtravel), bound) << "stopped at " << end;
+  EXPECT_LT((end - s0) * dir, std::abs(distance)) << "the window did not stop the move";
+  EXPECT_EQ(int32_t(b.read(reg_addr("PULSE_COUNT")).first), end - s0);
+  EXPECT_EQ(int32_t(b.read(reg_addr("REF_POS")).first), end);
+  const uint32_t side = field_mask("ERR", dir > 0 ? "LIMIT_POS" : "LIMIT_NEG");
+  EXPECT_EQ(b.read(reg_addr("ERR")).first, side | field_mask("ERR", "SOFT_LIMIT"));
+  const uint32_t status = b.read(reg_addr("STATUS")).first;
+  EXPECT_TRUE(status & field_mask("STATUS", "ERR"));
+  EXPECT_FALSE(status & field_mask("STATUS", "DONE")) << "a stopped move is not done";
+  EXPECT_TRUE(b.read(reg_addr("IRQ_STATUS")).first & field_mask("IRQ_STATUS", "FAULT"));
+
+  // Further out: refused, nothing moves, the flags again.
+  ASSERT_EQ(b.write(reg_addr("ERR"), 0xffffffffu), kOkay);
+  ASSERT_EQ(b.write(reg_addr("CMD"), field_mask("CMD", "FLUSH")), kOkay);
+  load(b, plan_or_die(scurve::test::move_request(100 * dir, 0, 5000, 0, 1e5, 1e7), t), t);
+  ASSERT_EQ(b.write(reg_addr("CMD"), field_mask("CMD", "START")), kOkay);
+  b.idle(5000);
+  EXPECT_EQ(b.net_steps(), end) << "a move further out of the window ran";
+  EXPECT_EQ(b.read(reg_addr("ERR")).first, side | field_mask("ERR", "SOFT_LIMIT"));
+
+  // Back into the window: runs to its exact end; the window is locked while
+  // the axis moves; no flag.
+  ASSERT_EQ(b.write(reg_addr("ERR"), 0xffffffffu), kOkay);
+  ASSERT_EQ(b.write(reg_addr("CMD"), field_mask("CMD", "FLUSH")), kOkay);
+  const int64_t back = -(overtravel + 50) * dir;
+  const Plan away = plan_or_die(scurve::test::move_request(back, 0, 20000, 0, 4e5, 4e7), t);
+  load(b, away, t);
+  ASSERT_EQ(b.write(reg_addr("CMD"), field_mask("CMD", "START")), kOkay);
+  b.idle(200);
+  ASSERT_TRUE(b.out().busy);
+  EXPECT_EQ(b.write(reg_addr("SOFT_MAX"), 0x7fffffffu), kSlvErr) << "the window is configuration";
+  EXPECT_EQ(b.write(reg_addr("ERR"), field_mask("ERR", "REJECT")), kOkay);
+  run_until(b, away.total_clocks + 200'000, [&] { return !b.out().busy; });
+  b.idle(10);
+  EXPECT_FALSE(b.failed()) << b.error();
+  EXPECT_EQ(b.net_steps(), end + back);
+  EXPECT_EQ(int32_t(b.read(reg_addr("REF_POS")).first), end + back);
+  EXPECT_EQ(int32_t(b.read(reg_addr("SOFT_MAX")).first), soft_max);
+  EXPECT_EQ(b.read(reg_addr("ERR")).first, 0u);
+  EXPECT_TRUE(b.read(reg_addr("STATUS")).first & field_mask("STATUS", "DONE"));
+}
+
+}  // namespace
+
+TEST(SoftLimit, RandomMovesOutOfTheWindowStopPastItsEdgeWithinTheStopDistanceAndMoveBackExactly) {
+  std::mt19937_64 g(51);
+  for (int i = 0; i < 8 && !::testing::Test::HasFatalFailure(); ++i) run_soft_case(g, i);
+}
+
+TEST(SoftLimit, DisabledTheWindowStopsNothingAndItsRegistersReadBack) {
+  const PulseTiming t{};
+  AxiBench b(true, 7);
+  b.reset();
+  b.idle(4);
+  ASSERT_EQ(b.write(reg_addr("CTRL"), field_mask("CTRL", "ENABLE")), kOkay);
+  ASSERT_EQ(b.write(reg_addr("SOFT_MIN"), uint32_t(-10)), kOkay);
+  ASSERT_EQ(b.write(reg_addr("SOFT_MAX"), 10u), kOkay);
+  EXPECT_EQ(int32_t(b.read(reg_addr("SOFT_MIN")).first), -10);
+  EXPECT_EQ(int32_t(b.read(reg_addr("SOFT_MAX")).first), 10);
+  EXPECT_FALSE(b.read(reg_addr("SW_CFG")).first & field_mask("SW_CFG", "SOFT_EN")) << "off after reset";
+  run_move(b, plan_or_die(scurve::test::move_request(500, 0, 50000, 0, 1e6, 1e9), t), t);
+  EXPECT_EQ(b.net_steps(), 500);
+  EXPECT_EQ(b.read(reg_addr("ERR")).first, 0u);
+  EXPECT_TRUE(b.read(reg_addr("STATUS")).first & field_mask("STATUS", "DONE"));
+}
