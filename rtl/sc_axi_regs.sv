@@ -379,7 +379,7 @@ module sc_axi_regs #(
   end
   assign sw_cfg_new = wmerge(sw_cfg_word, wd, wmask);
 
-  // position latch: an edge of the filtered home level, armed
+  // position latch: an edge of the filtered home (or probe) level, armed
   assign latch_edge  = latch_probe_q ? sw_edge_i[sc_pkg::SwProbe] : sw_edge_i[sc_pkg::SwHome];
   assign latch_level = latch_probe_q ? sw_level_i[sc_pkg::SwProbe] : sw_level_i[sc_pkg::SwHome];
   assign latch_cap = !latched_q && latch_edge && (latch_level ? latch_rise_q : latch_fall_q);

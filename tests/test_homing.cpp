@@ -7,12 +7,15 @@
 
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <random>
+#include <variant>
 #include <vector>
 
 #include "homing_run.h"
 #include "random_moves.h"
 #include "scurve/homing.h"
+#include "scurve/hw/params.h"
 
 using namespace sc;
 
@@ -179,6 +182,56 @@ TEST(Homing, BadRequestsAreRefusedNamingTheField) {
     EXPECT_EQ(e->parameter, b.field) << e->message;
     EXPECT_NE(e->message.find(b.field), std::string::npos) << e->message;
   }
+}
+
+// The sequence against a scripted board: the switch already active (no
+// seek), the back-off latching at once. CTRL.CLOSED_LOOP, read at the start,
+// is kept in every CTRL write (the closed-loop axis homes in its mode), and
+// the zero is the back-off's start plus LATCH_PULSE.
+TEST(Homing, KeepsTheClosedLoopModeAndTakesTheZeroFromTheLatchOnAScriptedBoard) {
+  namespace hw = scurve::hw;
+  struct ScriptedPort : scurve::RegisterPort {
+    uint32_t ctrl = (1u << hw::CtrlEnableBit) | (1u << hw::CtrlClosedBit);
+    std::vector<uint32_t> ctrl_writes;
+    int polls_since_start = -1;  // -1: no move started
+    std::optional<scurve::Error> write(uint32_t addr, uint32_t data) override {
+      if (addr == uint32_t(hw::RegCtrl)) {
+        ctrl = data;
+        ctrl_writes.push_back(data);
+      }
+      if (addr == uint32_t(hw::RegCmd) && (data & (1u << hw::CmdStartBit))) polls_since_start = 0;
+      return std::nullopt;
+    }
+    std::variant<uint32_t, scurve::Error> read(uint32_t addr) override {
+      if (addr == uint32_t(hw::RegCtrl)) return ctrl;
+      if (addr == uint32_t(hw::RegRefPos)) return 100u;
+      if (addr == uint32_t(hw::RegLatchPulse)) return 7u;
+      if (addr == uint32_t(hw::RegErr)) return 0u;
+      uint32_t st = polls_since_start < 0 ? (1u << (hw::StatusSwLevelLsb + hw::SwHome)) : 0u;
+      if (polls_since_start >= 0) {
+        st |= 1u << hw::StatusLatchedBit;
+        if (polls_since_start++ == 0) st |= 1u << hw::StatusBusyBit;
+      }
+      return st;
+    }
+    void wait(double) override {}
+  } port;
+  scurve::HomingRequest r;
+  r.seek_speed = 20000;
+  r.latch_speed = 1000;
+  r.a_max = 1e6;
+  r.j_max = 1e9;
+  r.max_travel = 10000;
+  r.max_backoff = 1000;
+  r.offset = 50;
+  const scurve::HomingOutcome o = scurve::home(port, r, scurve::PulseTiming{});
+  ASSERT_TRUE(std::holds_alternative<scurve::HomingResult>(o)) << std::get<scurve::Error>(o).message;
+  const scurve::HomingResult& h = std::get<scurve::HomingResult>(o);
+  EXPECT_TRUE(h.seek_skipped);
+  EXPECT_EQ(h.home_ref, 107);
+  EXPECT_EQ(h.machine_position(107), 50);
+  ASSERT_FALSE(port.ctrl_writes.empty());
+  for (uint32_t c : port.ctrl_writes) EXPECT_TRUE(c & (1u << hw::CtrlClosedBit)) << "CTRL written without CLOSED_LOOP";
 }
 
 TEST(HomingLong, HundredRandomHomingsInRtlLockstepLandOnTheSwitchReleaseExactly) {

@@ -42,6 +42,8 @@ std::variant<Plan, Error> plan_leg(const HomingRequest& r, bool seek, const Puls
 class Session {
  public:
   Session(RegisterPort& port, const HomingRequest& req) : port_(port), req_(req) {}
+  // CTRL bits the moves keep (CLOSED_LOOP: the servo axis homes in its mode).
+  uint32_t ctrl_keep = 0;
 
   std::optional<Error> write(uint32_t addr, uint32_t data, const char* during) {
     if (auto e = port_.write(addr, data)) return port_error(*e, during);
@@ -59,7 +61,8 @@ class Session {
   std::variant<bool, Error> run_until_latched(const Plan& plan, const PulseTiming& timing, const char* leg) {
     if (auto e = write(hw::RegCmd, bit(hw::CmdFlushBit), leg)) return *e;
     for (const RegWrite& w : encode_move(plan, timing, true)) {
-      if (auto e = write(w.addr, w.data, leg)) return *e;
+      const uint32_t data = w.addr == uint32_t(hw::RegCtrl) ? (w.data | ctrl_keep) : w.data;
+      if (auto e = write(w.addr, data, leg)) return *e;
     }
     bool stop_sent = false;
     bool ever_busy = false;
@@ -155,6 +158,9 @@ HomingOutcome home(RegisterPort& port, const HomingRequest& req, const PulseTimi
   if (std::get<uint32_t>(st) & bit(hw::StatusBusyBit)) {
     return Error{"board", "the axis is busy: homing starts from rest (CMD.STOP first)"};
   }
+  auto ctrl = s.read(hw::RegCtrl, "the first status read");
+  if (const Error* e = std::get_if<Error>(&ctrl)) return *e;
+  s.ctrl_keep = std::get<uint32_t>(ctrl) & bit(hw::CtrlClosedBit);
 
   // 1. seek, unless already on the switch
   if (std::get<uint32_t>(st) & home_level) {

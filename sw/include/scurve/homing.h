@@ -82,10 +82,11 @@ double exact_latch_speed(uint32_t debounce, uint32_t bounce, Clock clock = Clock
 std::optional<Error> check_homing_request(const HomingRequest& req, const PulseTiming& timing,
                                           Clock clock = Clock{});
 
-// Runs the sequence. The axis must be idle and enabled (CTRL.ENABLE is
-// written with every move); the limits, switch polarity and debounce
-// (SW_CFG) and the stop limits are the board's configuration. Leaves the
-// latch disarmed-by-capture and the axis at rest past the release point.
+// Runs the sequence. The axis must be idle; CTRL.ENABLE is written with
+// every move, CTRL.CLOSED_LOOP kept as it is (the closed-loop axis homes in
+// its mode); the limits, switch polarity and debounce (SW_CFG) and the stop
+// limits are the board's configuration. Leaves the latch holding the
+// release's capture and the axis at rest past the release point.
 HomingOutcome home(RegisterPort& port, const HomingRequest& req, const PulseTiming& timing, Clock clock = Clock{});
 
 }  // namespace scurve
