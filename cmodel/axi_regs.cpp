@@ -102,7 +102,7 @@ uint32_t AxiRegs::read_word(uint16_t a, const RegsSide& side, const CoreOutputs&
     case RegSwCfg: return sw_cfg_word();
     case RegLatchCfg:
       return (q_.latch_rise ? bit(LatchRiseBit) : 0) | (q_.latch_fall ? bit(LatchFallBit) : 0) |
-             (q_.latch_probe ? bit(LatchProbeBit) : 0);
+             (uint32_t(q_.latch_src) << LatchSrcLsb);
     case RegLatchPulse: return uint32_t(q_.latch_pulse);
     case RegSoftMin: return uint32_t(q_.soft_min);
     case RegSoftMax: return uint32_t(q_.soft_max);
@@ -259,10 +259,15 @@ void AxiRegs::step(const AxiIn& in, const RegsSide& side, const CoreOutputs& cor
         }
         case RegLatchCfg:
           if (q.wstrb & 1) {
-            d.latch_rise = (wd >> LatchRiseBit) & 1;
-            d.latch_fall = (wd >> LatchFallBit) & 1;
-            d.latch_probe = (wd >> LatchProbeBit) & 1;
-            d.latched = false;
+            if (field(wd, LatchSrcLsb, LatchSrcW) > uint32_t(LatchSrcIndex)) {
+              d.bresp = kSlvErr;  // no such input: nothing changes
+              set_reject = true;
+            } else {
+              d.latch_rise = (wd >> LatchRiseBit) & 1;
+              d.latch_fall = (wd >> LatchFallBit) & 1;
+              d.latch_src = uint8_t(field(wd, LatchSrcLsb, LatchSrcW));
+              d.latched = false;
+            }
           }
           break;
         case RegFifoLow:
@@ -388,10 +393,18 @@ void AxiRegs::step(const AxiIn& in, const RegsSide& side, const CoreOutputs& cor
     d.err_soft = true;
   }
   if (side.sw_edge != 0) d.irq_st |= uint8_t(bit(IrqSwitchBit));
-  // position latch: an edge of the filtered home (or probe) level, armed;
-  // a capture wins over a re-arm in the same clock
-  const int src = q.latch_probe ? SwProbe : SwHome;
-  const bool src_edge = (side.sw_edge >> src) & 1, src_level = (side.sw_level >> src) & 1;
+  // position latch: an edge of the filtered home, probe or index level,
+  // armed; a capture wins over a re-arm in the same clock
+  bool src_edge = false, src_level = false;
+  if (q.latch_src == LatchSrcIndex) {
+    src_edge = side.enc_z != q.index;
+    src_level = side.enc_z;
+  } else {
+    const int src = q.latch_src == LatchSrcProbe ? SwProbe : SwHome;
+    src_edge = (side.sw_edge >> src) & 1;
+    src_level = (side.sw_level >> src) & 1;
+  }
+  d.index = side.enc_z;
   if (!q.latched && src_edge && (src_level ? q.latch_rise : q.latch_fall)) {
     d.latched = true;
     d.latch_pulse = core.pulse_count;
@@ -551,9 +564,11 @@ void AxiServo::step(const AxiIn& in, const RegsSide& side) {
   ServoInputs si = servo_inputs();
   si.enc_a = side.enc_ab & 1;
   si.enc_b = (side.enc_ab >> 1) & 1;
+  si.enc_z = side.enc_z;
   RegsSide rs = side;
   rs.enc_ab = uint8_t(enc_sync_.q());
   rs.enc_pos = so.enc_pos;
+  rs.enc_z = so.enc_index;
   rs.sw_level = uint8_t(sw_.level());
   rs.sw_edge = uint8_t(sw_.edge());
   const uint32_t invert = regs_.state().sw_invert, debounce = regs_.state().sw_debounce;

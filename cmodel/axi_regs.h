@@ -45,6 +45,7 @@ struct RegsSide {
   bool estop = false;
   uint8_t enc_ab = 0;  // bit 0 = A, bit 1 = B
   int32_t enc_pos = 0;
+  bool enc_z = false;    // encoder index: AxiServo's Z pin; for AxiAxis (and the register file) the level in step with enc_pos
   uint8_t sw_pins = 0;   // switch pins (bit SwLimNeg, SwLimPos, SwHome, SwProbe): AxiAxis / AxiServo filter them
   uint8_t sw_level = 0;  // the filter's outputs as the register file sees them (set by AxiAxis / AxiServo)
   uint8_t sw_edge = 0;
@@ -114,7 +115,8 @@ class AxiRegs {
     int32_t soft_min = 0, soft_max = 0;
     uint16_t sw_debounce = uint16_t(RstDebounce);
     bool latch_rise = false, latch_fall = false;  // LATCH_CFG
-    bool latch_probe = false;                     // LATCH_CFG.PROBE: the probe, not home
+    uint8_t latch_src = 0;                        // LATCH_CFG.SRC: LatchSrcHome / Probe / Index
+    bool index = false;                           // the index level of the last clock: its edges
     bool latched = false;
     int32_t latch_pulse = 0, latch_enc = 0;
     bool operator==(const State&) const = default;

@@ -95,7 +95,7 @@ void ServoAxis::step(const ServoInputs& in) {
   ci.start = exec_start && closed;
   nco_.step(cq.ctl.div, cq.ctl.shift, exec_start, nco_run, nco_u);
   ctl_.step(cq.ctl, ci);
-  dec_.step(in.enc_a, in.enc_b, cq.ctl.enc_filt);
+  dec_.step(in.enc_a, in.enc_b, in.enc_z, cq.ctl.enc_filt);
 
   // in_q_.cfg always holds registered(cfg of the previous clock); the
   // compare keeps the per-clock cost low while the configuration is static.
@@ -137,6 +137,7 @@ ServoOutputs ServoAxis::outputs() const {
   o.pulse_count = s.count;
   o.enc_pos = dec_.state().count;
   o.enc_illegal = dec_.state().illegal;
+  o.enc_index = dec_.index();
   o.ref_pos_int = e.pint;
   o.ref_frac_hi = uint32_t(e.frac >> (FracBits - MulAW));
   o.ref_vel = int32_t(e.vel >> (VelW - MulAW));

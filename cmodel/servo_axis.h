@@ -42,6 +42,7 @@ struct ServoInputs {
   bool lim_hard = false;
   bool enc_a = false;
   bool enc_b = false;
+  bool enc_z = false;  // index
 };
 
 // Every output of sc_servo_axis, as the lockstep checker compares them.
@@ -59,6 +60,7 @@ struct ServoOutputs {
   int32_t pulse_count = 0;
   int32_t enc_pos = 0;
   uint16_t enc_illegal = 0;
+  bool enc_index = false;  // filtered Z, in step with enc_pos
   int32_t ref_pos_int = 0;
   uint32_t ref_frac_hi = 0;
   int32_t ref_vel = 0;  // Q.VffFrac pulses/clock

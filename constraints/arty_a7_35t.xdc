@@ -28,9 +28,11 @@ set_property -dict { PACKAGE_PIN B11 IOSTANDARD LVCMOS33 DRIVE 8 SLEW SLOW } [ge
 set_property -dict { PACKAGE_PIN A11 IOSTANDARD LVCMOS33 DRIVE 8 SLEW SLOW } [get_ports en_o]
 set_property -dict { PACKAGE_PIN D12 IOSTANDARD LVCMOS33 DRIVE 8 SLEW SLOW } [get_ports irq_o]
 
-## ---- quadrature encoder on Pmod JB (JB1 A, JB2 B) ---------------------------------
+## ---- quadrature encoder on Pmod JB (JB1 A, JB2 B, JB9 index Z) -----------------------
+## Z is pulled down: an encoder without an index never latches on it.
 set_property -dict { PACKAGE_PIN E15 IOSTANDARD LVCMOS33 PULLUP TRUE } [get_ports enc_a_i]
 set_property -dict { PACKAGE_PIN E16 IOSTANDARD LVCMOS33 PULLUP TRUE } [get_ports enc_b_i]
+set_property -dict { PACKAGE_PIN K15 IOSTANDARD LVCMOS33 PULLDOWN TRUE } [get_ports enc_z_i]
 
 ## ---- switches on Pmod JB (JB3 limit -, JB4 limit +, JB7 home, JB8 probe) ------------
 ## Pulled down: with nothing connected they read inactive (SW_CFG.INVERT = 0).
@@ -53,13 +55,13 @@ set_property -dict { PACKAGE_PIN G6  IOSTANDARD LVCMOS33 } [get_ports led_irq_o]
 ## Asynchronous inputs (encoder, buttons, UART RX): no phase relation to any
 ## FPGA clock, so no input delay applies. Each data input goes through an
 ## sc_sync (two flops meta_q -> sync_q, both ASYNC_REG): u_sync_rx,
-## u_sync_estop, u_axis/u_servo/u_dec/u_sync_ab (encoder A/B into the
+## u_sync_estop, u_axis/u_servo/u_dec/u_sync_abz (encoder A/B/Z into the
 ## decoder), u_axis/u_sync_enc (encoder A/B for STATUS.ENC_AB) and
 ## u_axis/u_sw/u_sync (the limit and home switches); the reset
 ## button goes through sc_rst_sync (u_rst_sync/chain_q, ASYNC_REG).
 ## Encoder edges are >= 4 system clocks apart at the rated speed, the
 ## synchroniser adds 2 clocks of latency.
-set_false_path -from [get_ports {enc_a_i enc_b_i estop_i ck_rst_ni uart_rx_i sw_i[*] probe_i}]
+set_false_path -from [get_ports {enc_a_i enc_b_i enc_z_i estop_i ck_rst_ni uart_rx_i sw_i[*] probe_i}]
 
 ## STEP/DIR/EN come straight from flops of clk_sys. The driver needs microsecond
 ## pulse/setup/hold times (counted in clocks by sc_step_gen); the output delay

@@ -27,6 +27,7 @@ module sc_axi_axis (
   input  logic                                estop_i,
   input  logic [1:0]                          enc_ab_i,
   input  logic signed [sc_pkg::PosIntW-1:0]   enc_pos_i,
+  input  logic                                enc_index_i, // encoder index level, in step with enc_pos_i
   input  logic [sc_pkg::SwW-1:0]              sw_i,        // switch pins: limit -, limit +, home, probe
 
   output logic                                step_o,
@@ -113,6 +114,7 @@ module sc_axi_axis (
     .estop_i,
     .enc_ab_i,
     .enc_pos_i,
+    .enc_index_i,
     .enable_o        (enable),
     .cfg_high_o      (cfg_high),
     .cfg_low_o       (cfg_low),

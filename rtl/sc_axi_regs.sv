@@ -34,8 +34,8 @@
 // an edge of one raises IRQ_STATUS.SWITCH, and the core's limit trips set
 // ERR.LIMIT_NEG / LIMIT_POS (and ERR.SOFT_LIMIT when the window
 // was the cause) and IRQ_STATUS.FAULT. The position latch
-// captures PULSE_COUNT and ENC_POS in the clock the filtered home (or,
-// with LATCH_CFG.PROBE, probe) level changes (the edge LATCH_CFG selects),
+// captures PULSE_COUNT and ENC_POS in the clock the filtered home, probe or
+// encoder index level (LATCH_CFG.SRC) changes (the edge LATCH_CFG selects),
 // once until LATCH_CFG is written.
 // GUARD_VEL / GUARD_ACC / GUARD_JERK are the executor's row limits
 // (guard_*_o, locked while busy); the core's guard_i sets ERR.GUARD and
@@ -69,6 +69,7 @@ module sc_axi_regs #(
   input  logic                                estop_i,     // level: abort, disable, latch ERR.ESTOP
   input  logic [1:0]                          enc_ab_i,    // synchronised encoder A (bit 0), B (bit 1)
   input  logic signed [sc_pkg::PosIntW-1:0]   enc_pos_i,
+  input  logic                                enc_index_i, // encoder index (filtered Z), in step with enc_pos_i
 
   // to sc_axis_core
   output logic                                enable_o,
@@ -286,7 +287,8 @@ module sc_axi_regs #(
   logic [DebounceW-1:0]      sw_deb_q, sw_deb_d;
   logic                      lim_trip;
   logic                      latch_rise_q, latch_rise_d, latch_fall_q, latch_fall_d;
-  logic                      latch_probe_q, latch_probe_d;
+  logic [sc_pkg::LatchSrcW-1:0] latch_src_q, latch_src_d;
+  logic                      index_q;   // enc_index_i of the last clock: its edges
   logic                      latch_edge, latch_level;
   logic                      latched_q, latched_d, latch_cap;
   logic signed [sc_pkg::PosIntW-1:0] latch_pulse_q, latch_pulse_d, latch_enc_q, latch_enc_d;
@@ -379,9 +381,23 @@ module sc_axi_regs #(
   end
   assign sw_cfg_new = wmerge(sw_cfg_word, wd, wmask);
 
-  // position latch: an edge of the filtered home (or probe) level, armed
-  assign latch_edge  = latch_probe_q ? sw_edge_i[sc_pkg::SwProbe] : sw_edge_i[sc_pkg::SwHome];
-  assign latch_level = latch_probe_q ? sw_level_i[sc_pkg::SwProbe] : sw_level_i[sc_pkg::SwHome];
+  // position latch: an edge of the filtered home, probe or index level, armed
+  always_comb begin
+    unique case (latch_src_q)
+      sc_pkg::LatchSrcW'(sc_pkg::LatchSrcProbe): begin
+        latch_edge  = sw_edge_i[sc_pkg::SwProbe];
+        latch_level = sw_level_i[sc_pkg::SwProbe];
+      end
+      sc_pkg::LatchSrcW'(sc_pkg::LatchSrcIndex): begin
+        latch_edge  = enc_index_i != index_q;
+        latch_level = enc_index_i;
+      end
+      default: begin
+        latch_edge  = sw_edge_i[sc_pkg::SwHome];
+        latch_level = sw_level_i[sc_pkg::SwHome];
+      end
+    endcase
+  end
   assign latch_cap = !latched_q && latch_edge && (latch_level ? latch_rise_q : latch_fall_q);
 
   // interrupt causes: events of the core's status (edges of its levels)
@@ -421,7 +437,7 @@ module sc_axi_regs #(
       ALatchCfg: begin
         rd_word[sc_pkg::LatchRiseBit]  = latch_rise_q;
         rd_word[sc_pkg::LatchFallBit]  = latch_fall_q;
-        rd_word[sc_pkg::LatchProbeBit] = latch_probe_q;
+        rd_word[sc_pkg::LatchSrcLsb +: sc_pkg::LatchSrcW] = latch_src_q;
       end
       ALatchPul:  rd_word = 32'(latch_pulse_q);
       ALatchEnc:  rd_word = 32'(latch_enc_q);
@@ -540,7 +556,7 @@ module sc_axi_regs #(
     lim_hard_d   = lim_hard_q;
     sw_deb_d     = sw_deb_q;
     latch_rise_d = latch_rise_q;
-    latch_probe_d = latch_probe_q;
+    latch_src_d  = latch_src_q;
     latch_fall_d = latch_fall_q;
     latched_d    = latched_q;
     latch_pulse_d = latch_pulse_q;
@@ -641,10 +657,15 @@ module sc_axi_regs #(
           end
           ALatchCfg: begin
             if (wstrb_q[0]) begin
-              latch_rise_d = wd[sc_pkg::LatchRiseBit];
-              latch_probe_d = wd[sc_pkg::LatchProbeBit];
-              latch_fall_d = wd[sc_pkg::LatchFallBit];
-              latched_d    = 1'b0;
+              if (wd[sc_pkg::LatchSrcLsb +: sc_pkg::LatchSrcW] > sc_pkg::LatchSrcW'(sc_pkg::LatchSrcIndex)) begin
+                bresp_d    = RespSlvErr;  // no such input: nothing changes
+                set_reject = 1'b1;
+              end else begin
+                latch_rise_d = wd[sc_pkg::LatchRiseBit];
+                latch_src_d  = wd[sc_pkg::LatchSrcLsb +: sc_pkg::LatchSrcW];
+                latch_fall_d = wd[sc_pkg::LatchFallBit];
+                latched_d    = 1'b0;
+              end
             end
           end
           AFifoLow: low_water_d = RowLevelW'(wmerge(32'(low_water_q) << sc_pkg::FifoLowLsb, wd, wmask)
@@ -823,7 +844,8 @@ module sc_axi_regs #(
       lim_hard_q   <= 1'b0;
       sw_deb_q     <= DebounceW'(sc_pkg::RstDebounce);
       latch_rise_q <= 1'b0;
-      latch_probe_q <= 1'b0;
+      latch_src_q  <= '0;
+      index_q      <= 1'b0;
       latch_fall_q <= 1'b0;
       latched_q    <= 1'b0;
       latch_pulse_q <= '0;
@@ -891,7 +913,8 @@ module sc_axi_regs #(
       lim_hard_q   <= lim_hard_d;
       sw_deb_q     <= sw_deb_d;
       latch_rise_q <= latch_rise_d;
-      latch_probe_q <= latch_probe_d;
+      latch_src_q  <= latch_src_d;
+      index_q      <= enc_index_i;
       latch_fall_q <= latch_fall_d;
       latched_q    <= latched_d;
       latch_pulse_q <= latch_pulse_d;

@@ -4,8 +4,9 @@
 // whose fields form the configuration vector ctl_cfg) and
 // CTRL.CLOSED_LOOP, and reads back the encoder position, the following
 // error, IN_POS / FAULT_FERR and the controller's u, v_cmd, errors and
-// learned weights. Encoder A/B go to the
-// quadrature decoder of sc_servo_axis (which synchronises them); STATUS.ENC_AB
+// learned weights. Encoder A/B/Z go to the
+// quadrature decoder of sc_servo_axis (which synchronises them; its filtered
+// Z is the position latch's index input); STATUS.ENC_AB
 // shows them through an sc_sync of its own. The model is
 // cmodel/axi_regs.h (AxiServo); the testbench drives both in lockstep.
 module sc_axi_servo (
@@ -33,6 +34,7 @@ module sc_axi_servo (
   input  logic                                estop_i,
   input  logic                                enc_a_i,
   input  logic                                enc_b_i,
+  input  logic                                enc_z_i,     // encoder index
   input  logic [sc_pkg::SwW-1:0]              sw_i,        // switch pins: limit -, limit +, home, probe
 
   output logic                                step_o,
@@ -96,6 +98,7 @@ module sc_axi_servo (
   logic                        lim_fwd, lim_rev, lim_hard, lim_trip_fwd, lim_trip_rev;
 
   logic [sc_pkg::EncIllW-1:0]  enc_illegal;
+  logic                        enc_index;
   logic                        ctl_active;
   logic [sc_pkg::CtlStW-1:0]   ctl_state;
   logic signed [CtlW-1:0]      ctl_u, ctl_v_cmd, ctl_e_p, ctl_e_v;
@@ -160,6 +163,7 @@ module sc_axi_servo (
     .estop_i,
     .enc_ab_i        (enc_ab_sync),
     .enc_pos_i       (enc_pos_o),
+    .enc_index_i     (enc_index),
     .enable_o        (enable),
     .cfg_high_o      (cfg_high),
     .cfg_low_o       (cfg_low),
@@ -260,6 +264,7 @@ module sc_axi_servo (
     .lim_hard_i        (lim_hard),
     .enc_a_i,
     .enc_b_i,
+    .enc_z_i,
     .ctl_cfg_i         (ctl_cfg),
     .step_o,
     .dir_o,
@@ -286,6 +291,7 @@ module sc_axi_servo (
     .pulse_count_o,
     .enc_pos_o,
     .enc_illegal_o     (enc_illegal),
+    .enc_index_o       (enc_index),
     .ref_pos_int_o     (ref_pos_o),
     .ref_frac_hi_o     (unused_ref_frac_hi),
     .ref_vel_o         (unused_ref_vel),

@@ -5,9 +5,10 @@
 //   ck_rst button AND MMCM locked --[sc_rst_sync]--> rst_n
 //   USB-UART (115200 8N1) --[sc_uart_rx/tx + sc_uart_bridge]--> AXI4-Lite
 //       --> sc_axi_servo (sc_axi_regs + sc_servo_axis) --> STEP/DIR/EN on Pmod JA
-//   encoder A/B on Pmod JB --> sc_servo_axis's quadrature decoder (its own
+//   encoder A/B/Z on Pmod JB --> sc_servo_axis's quadrature decoder (its own
 //       two-flop synchronisers and glitch filter) --> closed loop, ENC_POS /
-//       FOLLOW_ERR; CTRL.CLOSED_LOOP = 0 runs the move open loop
+//       FOLLOW_ERR, position latch on the index; CTRL.CLOSED_LOOP = 0 runs
+//       the move open loop
 //   limit -, limit +, home switches on Pmod JB3, JB4, JB7 and the probe on
 //       JB8 --> sc_axi_servo's switch filter (synchroniser, polarity,
 //       debounce: SW_CFG) --> stop on limit, position latch on home or
@@ -33,6 +34,7 @@ module sc_board_top #(
   output logic       led_irq_o,   // G6, LD0 red: interrupt pending
   input  logic       enc_a_i,     // E15, Pmod JB1
   input  logic       enc_b_i,     // E16, Pmod JB2
+  input  logic       enc_z_i,     // K15, Pmod JB9: encoder index (0 when absent)
   input  logic [2:0] sw_i,        // D15 C15 J17, Pmod JB3 JB4 JB7: limit -, limit +, home
   input  logic       probe_i,     // J18, Pmod JB8: the probe (touch-off, tool setter)
   output logic [3:0] led_o        // H5 J5 T9 T10 (LD4..LD7)
@@ -156,6 +158,7 @@ module sc_board_top #(
     .estop_i         (estop_sync),
     .enc_a_i,
     .enc_b_i,
+    .enc_z_i,
     .sw_i            ({probe_i, sw_i}),
     .step_o,
     .dir_o,

@@ -187,14 +187,14 @@ package sc_pkg;
   // the UART bridge's address byte is a word address so it reaches them all);
   // 0x000 .. 0x0FC hold the 2.x map unchanged, the rest is free.
   localparam int RegAddrW      = 10;      // byte address bits of the window
-  localparam int RegMapVersion = 772;     // 0x0304 = 3.4 (1 KiB window, UART word address; switch inputs, guards, probe, soft limits)
+  localparam int RegMapVersion = 773;     // 0x0305 = 3.5 (1 KiB window, UART word address; switch inputs, guards, probe, soft limits, index latch)
   localparam int RegIdMagic    = 21315;   // 0x5343, ASCII "SC"
   localparam int RstPulseHigh  = 50;      // reset values of the pulse timing
   localparam int RstPulseLow   = 50;
   localparam int RstDirSetup   = 100;
   localparam int RstDirHold    = 100;
   localparam int RegId         = 32'h0000_0000;  //@reg ID RO "identification"
-  localparam int IdVersionLsb  = 0;      //@field ID VERSION 16 reset=RegMapVersion "register map version, 0x0304 = 3.4"
+  localparam int IdVersionLsb  = 0;      //@field ID VERSION 16 reset=RegMapVersion "register map version, 0x0305 = 3.5"
   localparam int IdMagicLsb    = 16;     //@field ID MAGIC 16 reset=21315 "0x5343, ASCII 'SC'"
   localparam int RegCtrl       = 32'h0000_0004;  //@reg CTRL RW "control"
   localparam int CtrlEnableBit = 0;      //@field CTRL ENABLE 1 "drives the EN pin; START is refused while 0; ESTOP clears it"
@@ -401,12 +401,18 @@ package sc_pkg;
   localparam int SwLimHardBit  = 5;      //@field SW_CFG LIM_HARD 1 reset=0 "1: a limit stops at once (hard limit), 0: controlled stop with STOP_JERK / STOP_ACC"
   localparam int SwSoftEnBit   = 6;      //@field SW_CFG SOFT_EN 1 reset=0 "1: REF_POS beyond SOFT_MIN / SOFT_MAX acts as an active limit switch on that side"
   localparam int SwDebounceLsb = 16;     //@field SW_CFG DEBOUNCE DebounceW reset=RstDebounce "clocks a new switch level must hold before it is taken"
-  // Position latch on the home switch: the counts of the clock its filtered
-  // level changes (the first clock STATUS.SW_LEVEL shows the new level).
-  localparam int RegLatchCfg   = 32'h0000_0114;  //@reg LATCH_CFG RW "position latch: which input (home or probe) and which of its filtered edges captures; a write re-arms"
-  localparam int LatchRiseBit  = 0;      //@field LATCH_CFG RISE 1 reset=0 "capture when the input becomes active"
-  localparam int LatchFallBit  = 1;      //@field LATCH_CFG FALL 1 reset=0 "capture when the input becomes inactive (released)"
-  localparam int LatchProbeBit = 2;      //@field LATCH_CFG PROBE 1 reset=0 "the input: 0 = the axis's home switch, 1 = the board's probe"
+  // Position latch on the home switch, the probe or the encoder index: the
+  // counts of the clock its filtered level changes (for a switch the first
+  // clock STATUS.SW_LEVEL shows the new level; for the index the clock the
+  // decoder's count shows the quadrature state Z came with).
+  localparam int RegLatchCfg   = 32'h0000_0114;  //@reg LATCH_CFG RW "position latch: which input (home, probe or encoder index) and which of its filtered edges captures; a write re-arms"
+  localparam int LatchRiseBit  = 0;      //@field LATCH_CFG RISE 1 reset=0 "capture when the input becomes active (Z: goes high)"
+  localparam int LatchFallBit  = 1;      //@field LATCH_CFG FALL 1 reset=0 "capture when the input becomes inactive (released; Z: goes low)"
+  localparam int LatchSrcW     = 2;
+  localparam int LatchSrcLsb   = 2;      //@field LATCH_CFG SRC LatchSrcW reset=0 "the input: 0 = the axis's home switch, 1 = the board's probe, 2 = the encoder index (Z); 3 is refused (SLVERR, ERR.REJECT)"
+  localparam int LatchSrcHome  = 0;
+  localparam int LatchSrcProbe = 1;
+  localparam int LatchSrcIndex = 2;
   localparam int RegLatchPulse = 32'h0000_0118;  //@reg LATCH_PULSE RO "PULSE_COUNT at the capture (signed)"
   localparam int RegLatchEnc   = 32'h0000_011C;  //@reg LATCH_ENC RO "ENC_POS at the capture (signed)"
   // Guards against the host: the largest |vel0|, |acc0| and |jerk| a row

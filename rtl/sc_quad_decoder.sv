@@ -1,7 +1,11 @@
 // sc_quad_decoder: quadrature encoder interface.
 //
-//   enc_a_i/enc_b_i -> sc_sync (two flops) -> glitch filter -> 4x decoder
+//   enc_a_i/enc_b_i/enc_z_i -> sc_sync (two flops) -> glitch filter -> 4x decoder
 //
+// The index Z goes through the same synchroniser and filter as A and B, so
+// a Z edge that came with an A/B edge shows in the same clock as that
+// count (z_o and count_o change together): a latch of the count on z_o's
+// edge holds the quadrature state Z is tied to, exactly.
 // Glitch filter (per channel): a synchronised level that differs from the
 // filtered one is accepted on the (cfg_filt_i+1)-th consecutive clock it is
 // seen, so any pulse of <= cfg_filt_i clocks is ignored (0 = no filter).
@@ -15,21 +19,24 @@ module sc_quad_decoder (
 
   input  logic                                enc_a_i,
   input  logic                                enc_b_i,
+  input  logic                                enc_z_i,  // index, once per revolution
   input  logic [sc_pkg::EncFiltW-1:0]         cfg_filt_i,
 
   output logic signed [sc_pkg::EncCntW-1:0]   count_o,
   output logic [sc_pkg::EncIllW-1:0]          illegal_o,
   output logic                                a_o,      // filtered levels
-  output logic                                b_o
+  output logic                                b_o,
+  output logic                                z_o
 );
 
   localparam int EncCntW  = sc_pkg::EncCntW;
   localparam int EncFiltW = sc_pkg::EncFiltW;
   localparam int EncIllW  = sc_pkg::EncIllW;
+  localparam int ChA = 0, ChB = 1, ChZ = 2, Channels = 3;
 
-  logic                      a_s, b_s;   // synchronised levels
-  logic                      a_f_q, a_f_d, b_f_q, b_f_d;
-  logic [EncFiltW-1:0]       a_cnt_q, a_cnt_d, b_cnt_q, b_cnt_d;
+  logic [Channels-1:0]                s_ch;        // synchronised levels
+  logic [Channels-1:0]                f_q, f_d;    // filtered levels
+  logic [Channels*EncFiltW-1:0]       cnt_q, cnt_d;  // channel c: [c*EncFiltW +: EncFiltW]
   logic signed [EncCntW-1:0] count_q, count_d;
   logic [EncIllW-1:0]        ill_q, ill_d;
   logic [1:0]                ph_old, ph_new, ph_diff;
@@ -40,38 +47,32 @@ module sc_quad_decoder (
   endfunction
 
   sc_sync #(
-    .Width    (2),
+    .Width    (Channels),
     .ResetVal (1'b0)
-  ) u_sync_ab (
+  ) u_sync_abz (
     .clk_i,
     .rst_ni,
-    .d_i ({enc_b_i, enc_a_i}),
-    .q_o ({b_s, a_s})
+    .d_i ({enc_z_i, enc_b_i, enc_a_i}),
+    .q_o (s_ch)
   );
 
+  // the same filter on every channel
   always_comb begin
-    a_f_d   = a_f_q;
-    b_f_d   = b_f_q;
-    a_cnt_d = '0;
-    b_cnt_d = '0;
-    if (a_s != a_f_q) begin
-      if (a_cnt_q >= cfg_filt_i) begin
-        a_f_d = a_s;
-      end else begin
-        a_cnt_d = a_cnt_q + EncFiltW'(1);
-      end
-    end
-    if (b_s != b_f_q) begin
-      if (b_cnt_q >= cfg_filt_i) begin
-        b_f_d = b_s;
-      end else begin
-        b_cnt_d = b_cnt_q + EncFiltW'(1);
+    f_d   = f_q;
+    cnt_d = '0;
+    for (int c = 0; c < Channels; c++) begin
+      if (s_ch[c] != f_q[c]) begin
+        if (cnt_q[c*EncFiltW +: EncFiltW] >= cfg_filt_i) begin
+          f_d[c] = s_ch[c];
+        end else begin
+          cnt_d[c*EncFiltW +: EncFiltW] = cnt_q[c*EncFiltW +: EncFiltW] + EncFiltW'(1);
+        end
       end
     end
   end
 
-  assign ph_old  = gray_phase(a_f_q, b_f_q);
-  assign ph_new  = gray_phase(a_f_d, b_f_d);
+  assign ph_old  = gray_phase(f_q[ChA], f_q[ChB]);
+  assign ph_new  = gray_phase(f_d[ChA], f_d[ChB]);
   assign ph_diff = ph_new - ph_old;
 
   always_comb begin
@@ -87,17 +88,13 @@ module sc_quad_decoder (
 
   always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
-      a_f_q   <= 1'b0;
-      b_f_q   <= 1'b0;
-      a_cnt_q <= '0;
-      b_cnt_q <= '0;
+      f_q     <= '0;
+      cnt_q   <= '0;
       count_q <= '0;
       ill_q   <= '0;
     end else begin
-      a_f_q   <= a_f_d;
-      b_f_q   <= b_f_d;
-      a_cnt_q <= a_cnt_d;
-      b_cnt_q <= b_cnt_d;
+      f_q     <= f_d;
+      cnt_q   <= cnt_d;
       count_q <= count_d;
       ill_q   <= ill_d;
     end
@@ -105,7 +102,8 @@ module sc_quad_decoder (
 
   assign count_o   = count_q;
   assign illegal_o = ill_q;
-  assign a_o       = a_f_q;
-  assign b_o       = b_f_q;
+  assign a_o       = f_q[ChA];
+  assign b_o       = f_q[ChB];
+  assign z_o       = f_q[ChZ];
 
 endmodule

@@ -52,6 +52,7 @@ module sc_servo_axis (
 
   input  logic                                enc_a_i,
   input  logic                                enc_b_i,
+  input  logic                                enc_z_i,     // index: to the decoder with A/B
 
   // controller configuration (fields: sc_pkg::CtlCfg*, docs/regmap.md)
   input  logic [sc_pkg::CtlCfgW-1:0]          ctl_cfg_i,
@@ -82,6 +83,7 @@ module sc_servo_axis (
   output logic signed [sc_pkg::PosIntW-1:0]   pulse_count_o,
   output logic signed [sc_pkg::EncCntW-1:0]   enc_pos_o,
   output logic [sc_pkg::EncIllW-1:0]          enc_illegal_o,
+  output logic                                enc_index_o, // filtered Z, in step with enc_pos_o
 
   output logic signed [sc_pkg::PosIntW-1:0]   ref_pos_int_o,
   output logic [sc_pkg::MulAW-1:0]            ref_frac_hi_o,  // top MulAW bits of the fraction
@@ -233,11 +235,13 @@ module sc_servo_axis (
     .rst_ni,
     .enc_a_i,
     .enc_b_i,
+    .enc_z_i,
     .cfg_filt_i (ctl_cfg_q[sc_pkg::CtlCfgEncFiltLsb +: sc_pkg::CtlCfgEncFiltW]),
     .count_o    (enc_pos_o),
     .illegal_o  (enc_illegal_o),
     .a_o        (unused_enc_a),
-    .b_o        (unused_enc_b)
+    .b_o        (unused_enc_b),
+    .z_o        (enc_index_o)
   );
 
   logic [sc_pkg::CtlDivW+(1<<sc_pkg::EncShiftW)-2:0] div_sh;  // div << shift

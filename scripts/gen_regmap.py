@@ -377,8 +377,12 @@ def doc(params, words, enums=None):
            "STOP_JERK / STOP_ACC; 1: at once), and a START whose move heads into one is taken by the register "
            "file but refused by the core (nothing moves). Either sets ERR.LIMIT_NEG / LIMIT_POS and "
            "IRQ_STATUS.FAULT. Motion away from an active limit runs. Counts stay exact: PULSE_COUNT, REF_POS "
-           "and the pins agree after any limit stop (docs/limits.md). The probe stops nothing; with home it "
-           "is a source of the position latch (LATCH_CFG.PROBE).", "",
+           "and the pins agree after any limit stop (docs/limits.md). The probe stops nothing; with home and "
+           "the encoder index it is a source of the position latch (LATCH_CFG.SRC).", "",
+           "Encoder index (Z; `enc_z_i` of sc_axi_servo, on the board Pmod JB9, pulled down): through the "
+           "decoder's synchroniser and glitch filter with A and B, so its filtered level changes in the clock "
+           "ENC_POS shows the quadrature state it came with; LATCH_CFG.SRC = 2 latches on its edges "
+           "(sc_axi_axis takes the filtered level as `enc_index_i`, in step with `enc_pos_i`).", "",
            "Guards against the host: GUARD_VEL, GUARD_ACC and GUARD_JERK (0 = no limit, the reset value) are "
            "the largest |vel0|, |acc0| and |jerk| a row may start with. The executor checks the head row when "
            "it would load it: a START whose first row is over a guard is refused (nothing moves); a later row "

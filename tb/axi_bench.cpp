@@ -102,7 +102,10 @@ AxiServoBench::AxiServoBench(bool with_rtl, uint32_t seed)
 }
 
 void AxiServoBench::tick() {
-  if (plant_) side_.enc_ab = uint8_t((plant_->enc_a() ? 1 : 0) | (plant_->enc_b() ? 2 : 0));
+  if (plant_) {
+    side_.enc_ab = uint8_t((plant_->enc_a() ? 1 : 0) | (plant_->enc_b() ? 2 : 0));
+    side_.enc_z = plant_->enc_z();
+  }
   if (rtl_) rtl_->step(in_, side_);
   RegsSide ms = side_;
   if (inject_) ms.enc_ab ^= 1;
@@ -186,7 +189,7 @@ void UartHost::set_timing(const PulseTiming& t) {
 }
 
 void UartHost::tick() {
-  b_.tick100(line_, true, estop, enc_ab & 1, (enc_ab >> 1) & 1);
+  b_.tick100(line_, true, estop, enc_ab & 1, (enc_ab >> 1) & 1, 0, enc_z);
   const RtlBoard::Pins p = b_.pins();
   pins_.on_clock(b_.clocks100(), p.step, p.dir, false, 0);
   // receiver: sample at the middle of each bit

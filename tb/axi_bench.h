@@ -156,6 +156,7 @@ class UartHost {
   void idle(uint64_t clocks100);
   bool estop = false;
   uint8_t enc_ab = 0;  // encoder pins: bit 0 = A, bit 1 = B
+  bool enc_z = false;  // encoder index pin
   int64_t net_steps() const { return pins_.net_steps(); }
   uint64_t pulses() const { return pins_.rising_edges(); }
   // The STEP/DIR pins checked against the pulse timing the host programs

@@ -61,6 +61,7 @@ SignalValues render_servo(const ServoOutputs& o) {
   add("pulse_count_o", o.pulse_count, 32);
   add("enc_pos_o", o.enc_pos, 32);
   add("enc_illegal_o", o.enc_illegal, 16);
+  add("enc_index_o", o.enc_index, 1);
   add("ref_pos_int_o", o.ref_pos_int, 32);
   add("ref_frac_hi_o", o.ref_frac_hi, 32);
   add("ref_vel_o", o.ref_vel, 32);
@@ -269,6 +270,7 @@ ClosedLoopResult run_rows(RowJob job, const ClosedLoopOptions& opt) {
     plant.clock(out.step, out.dir);
     in.enc_a = plant.enc_a();
     in.enc_b = plant.enc_b();
+    in.enc_z = plant.enc_z();
     ++clock;
   };
 

@@ -12,7 +12,9 @@
 // First order (paper 000's 1/(s+1) with time constant tau):
 //   theta' = (c - theta) / tau
 // Encoder: count = round(theta * counts_per_step + noise), A/B in Gray code
-// (00, 10, 11, 01 forward), at most one count change per clock.
+// (00, 10, 11, 01 forward), at most one count change per clock; the index Z
+// is high for the one quadrature state of each revolution where
+// count = index_at (mod index_period), changing in the clock A/B do.
 //
 // Defaults resemble a NEMA-23 hybrid stepper (1.26 N m holding torque,
 // rotor + load inertia 6e-5 kg m^2, 50 pole pairs: wn = sqrt(63/6e-5) =
@@ -42,6 +44,8 @@ struct PlantConfig {
   double noise_counts = 0;        // Gaussian encoder noise, sigma in counts
   double glitch_rate = 0;         // A/B glitches per second (Poisson)
   int glitch_clocks = 2;          // length of one glitch, clocks
+  int64_t index_period = 0;       // encoder counts between index pulses (counts/rev); 0: no index
+  int64_t index_at = 0;           // a count where Z is high
   uint64_t seed = 1;
   int substep = 20;               // clocks per dynamics update (1 us)
 
@@ -64,6 +68,11 @@ class Plant {
   }
   bool enc_a() const { return glitch_left_ > 0 ? (a_ ^ glitch_a_) : a_; }
   bool enc_b() const { return glitch_left_ > 0 ? (b_ ^ !glitch_a_) : b_; }
+  bool enc_z() const {
+    if (cfg_.index_period <= 0) return false;
+    const int64_t r = (count_ - cfg_.index_at) % cfg_.index_period;
+    return r == 0;
+  }
 
   double theta() const { return theta_; }          // rotor position, pulses
   double omega() const { return omega_; }          // pulses/s

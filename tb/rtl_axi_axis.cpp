@@ -60,6 +60,7 @@ void RtlAxiAxis::step(const AxiIn& in, const RegsSide& side) {
   m.estop_i = side.estop;
   m.enc_ab_i = side.enc_ab & 3;
   m.enc_pos_i = uint32_t(side.enc_pos);
+  m.enc_index_i = side.enc_z;
   m.sw_i = side.sw_pins & ((1u << SwW) - 1);
   top_->tick();
 }
@@ -84,6 +85,7 @@ void RtlAxiServo::step(const AxiIn& in, const RegsSide& side) {
   m.estop_i = side.estop;
   m.enc_a_i = side.enc_ab & 1;
   m.enc_b_i = (side.enc_ab >> 1) & 1;
+  m.enc_z_i = side.enc_z;
   m.sw_i = side.sw_pins & ((1u << SwW) - 1);
   top_->tick();
 }
@@ -109,12 +111,13 @@ RtlBoard::RtlBoard() : ctx_(std::make_unique<VerilatedContext>()) {
 
 RtlBoard::~RtlBoard() { m_->final(); }
 
-void RtlBoard::tick100(bool uart_rx, bool rst_n, bool estop, bool enc_a, bool enc_b, uint8_t sw) {
+void RtlBoard::tick100(bool uart_rx, bool rst_n, bool estop, bool enc_a, bool enc_b, uint8_t sw, bool enc_z) {
   m_->uart_rx_i = uart_rx;
   m_->ck_rst_ni = rst_n;
   m_->estop_i = estop;
   m_->enc_a_i = enc_a;
   m_->enc_b_i = enc_b;
+  m_->enc_z_i = enc_z;
   m_->sw_i = sw & ((1u << SwProbe) - 1);  // the axis's switches; the probe has its own pin
   m_->probe_i = (sw >> SwProbe) & 1;
   m_->clk100_i = 1;

@@ -30,7 +30,8 @@ class RtlAxiAxis {
   std::unique_ptr<VerilatedTop<Vsc_axi_axis>> top_;
 };
 
-// Verilated sc_axi_servo; side.enc_ab drives enc_a_i (bit 0) / enc_b_i (bit 1).
+// Verilated sc_axi_servo; side.enc_ab drives enc_a_i (bit 0) / enc_b_i (bit 1),
+// side.enc_z the index enc_z_i.
 class RtlAxiServo {
  public:
   RtlAxiServo();
@@ -59,7 +60,8 @@ class RtlBoard {
   RtlBoard& operator=(const RtlBoard&) = delete;
   // One 100 MHz period (rising + falling edge) with these input levels.
   void tick100(bool uart_rx, bool rst_n = true, bool estop = false, bool enc_a = false, bool enc_b = false,
-               uint8_t sw = 0);  // sw: the switch pins (bit 0 limit -, 1 limit +, 2 home, 3 probe)
+               uint8_t sw = 0,   // sw: the switch pins (bit 0 limit -, 1 limit +, 2 home, 3 probe)
+               bool enc_z = false);
   Pins pins() const;
   uint64_t clocks100() const { return clk100_; }
 

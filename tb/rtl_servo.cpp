@@ -49,6 +49,7 @@ void RtlServo::step(const ServoInputs& in) {
   }
   m.enc_a_i = in.enc_a;
   m.enc_b_i = in.enc_b;
+  m.enc_z_i = in.enc_z;
   top_->tick();
 }
 
@@ -60,6 +61,7 @@ ServoOutputs RtlServo::outputs() const {
   o.in_pos = m.in_pos_o;
   o.enc_pos = int32_t(m.enc_pos_o);
   o.enc_illegal = uint16_t(m.enc_illegal_o);
+  o.enc_index = m.enc_index_o;
   o.ref_frac_hi = uint32_t(m.ref_frac_hi_o);
   o.ref_vel = int32_t(m.ref_vel_o);
   o.ref_done = m.ref_done_o;

@@ -1,8 +1,9 @@
 // Helpers shared by the register-level board tests (test_board.cpp,
 // test_board_servo.cpp): registers and fields looked up in the generated
 // register table (the documented map, not the RTL constants), the reset
-// read-back check, a planner call that throws on a rejected request, and the
-// host library's request helper.
+// read-back check, a planner call that throws on a rejected request, the
+// host library's request helper, a move's and a stream's rows through the
+// registers.
 #pragma once
 
 #include <gtest/gtest.h>
@@ -64,6 +65,29 @@ template <class Bench>
 void load(Bench& b, const Plan& p, const PulseTiming& t) {
   for (const RegWrite& w : encode_move(p, t, false)) {
     ASSERT_EQ(b.write(w.addr, w.data), kOkay) << reg_name(w.addr);
+  }
+}
+
+// Streams host rows (the stream planner's, with their ROW_PUSH flags) as a
+// host does while the axis runs: a ROW_PUSH refused because the FIFO is full
+// is retried (the staged row is kept) until there is room.
+template <class Bench>
+void push_rows(Bench& b, const std::vector<scurve::Segment>& rows, const std::vector<scurve::RowFlags>& flags) {
+  for (size_t i = 0; i < rows.size(); ++i) {
+    for (const scurve::RegWrite& w : scurve::encode_row(rows[i], flags[i])) {
+      if (w.addr != uint32_t(reg_addr("ROW_PUSH"))) {
+        ASSERT_EQ(b.write(w.addr, w.data), kOkay) << scurve::reg_name(w.addr) << " row " << i;
+        continue;
+      }
+      for (int tries = 0; b.write(w.addr, w.data) != kOkay; ++tries) {
+        ASSERT_LT(tries, 100000) << "row " << i << ": the FIFO never drains";
+        ASSERT_EQ(b.read(reg_addr("ERR")).first & field_mask("ERR", "FIFO_FULL"), field_mask("ERR", "FIFO_FULL"));
+        b.idle(200);
+      }
+    }
+  }
+  if (b.read(reg_addr("ERR")).first & field_mask("ERR", "FIFO_FULL")) {
+    ASSERT_EQ(b.write(reg_addr("ERR"), field_mask("ERR", "FIFO_FULL")), kOkay);
   }
 }
 

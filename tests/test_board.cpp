@@ -53,8 +53,11 @@ TEST(AxiRegs, ResetValuesReservedBitsAndAccessTypes) {
     if (r.servo) continue;
     const std::string n = r.name;
     if (r.access == regmap::Access::RW) {
-      EXPECT_EQ(b.write(r.addr, 0xffffffffu), kOkay) << n;
-      EXPECT_EQ(b.read(r.addr).first, r.mask) << n << ": all-ones must read back as the implemented bits";
+      // LATCH_CFG.SRC = 3 names no input and is refused (below): its largest legal value
+      const uint32_t ones = n == "LATCH_CFG" ? 0xffffffffu & ~(uint32_t(3 & ~LatchSrcIndex) << LatchSrcLsb)
+                                             : 0xffffffffu;
+      EXPECT_EQ(b.write(r.addr, ones), kOkay) << n;
+      EXPECT_EQ(b.read(r.addr).first, r.mask & ones) << n << ": all-ones must read back as the implemented bits";
       EXPECT_EQ(b.write(r.addr, 0), kOkay) << n;
       EXPECT_EQ(b.read(r.addr).first, 0u) << n;
     } else if (r.access == regmap::Access::RO) {
@@ -70,6 +73,12 @@ TEST(AxiRegs, ResetValuesReservedBitsAndAccessTypes) {
       EXPECT_EQ(b.read(r.addr).first, 0u) << n << " reads 0";
     }
   }
+  // a value that names nothing is refused and changes nothing
+  EXPECT_EQ(b.write(reg_addr("LATCH_CFG"), field_mask("LATCH_CFG", "RISE")), kOkay);
+  EXPECT_EQ(b.write(reg_addr("LATCH_CFG"), field_mask("LATCH_CFG", "SRC")), kSlvErr) << "LATCH_CFG.SRC = 3";
+  EXPECT_EQ(b.read(reg_addr("LATCH_CFG")).first, field_mask("LATCH_CFG", "RISE"));
+  EXPECT_TRUE(b.read(reg_addr("ERR")).first & field_mask("ERR", "REJECT"));
+  EXPECT_EQ(b.write(reg_addr("ERR"), field_mask("ERR", "REJECT")), kOkay);
   // byte strobes: only the selected bytes change
   EXPECT_EQ(b.write(reg_addr("SEG_CLOCKS"), 0x11223344u), kOkay);
   EXPECT_EQ(b.write(reg_addr("SEG_CLOCKS"), 0xaabbccddu, 0x5), kOkay);
@@ -170,28 +179,6 @@ TEST(AxiRegs, WritesWhileBusyAreRejectedFlaggedAndTheMoveIsUnharmed) {
 namespace {
 
 uint32_t fifo_level(AxiBench& b) { return b.read(reg_addr("FIFO_STATUS")).first & field_mask("FIFO_STATUS", "LEVEL"); }
-
-// Streams host rows (the stream planner's, with their ROW_PUSH flags) as a
-// host does while the axis runs: a ROW_PUSH refused because the FIFO is full
-// is retried (the staged row is kept) until there is room.
-void push_rows(AxiBench& b, const std::vector<scurve::Segment>& rows, const std::vector<scurve::RowFlags>& flags) {
-  for (size_t i = 0; i < rows.size(); ++i) {
-    for (const scurve::RegWrite& w : scurve::encode_row(rows[i], flags[i])) {
-      if (w.addr != uint32_t(reg_addr("ROW_PUSH"))) {
-        ASSERT_EQ(b.write(w.addr, w.data), kOkay) << scurve::reg_name(w.addr) << " row " << i;
-        continue;
-      }
-      for (int tries = 0; b.write(w.addr, w.data) != kOkay; ++tries) {
-        ASSERT_LT(tries, 100000) << "row " << i << ": the FIFO never drains";
-        ASSERT_EQ(b.read(reg_addr("ERR")).first & field_mask("ERR", "FIFO_FULL"), field_mask("ERR", "FIFO_FULL"));
-        b.idle(200);
-      }
-    }
-  }
-  if (b.read(reg_addr("ERR")).first & field_mask("ERR", "FIFO_FULL")) {
-    ASSERT_EQ(b.write(reg_addr("ERR"), field_mask("ERR", "FIFO_FULL")), kOkay);
-  }
-}
 
 // Two streamed moves joined at a nonzero junction speed (rows of each move
 // flagged by move_row_flags, the stream ending at rest).
@@ -584,8 +571,9 @@ TEST(BoardUart, CorruptedFramesAreRejectedWithNothingWritten) {
 }
 
 // The encoder pins reach the closed-loop axis's quadrature decoder: a Gray
-// sequence on Pmod JB counts up and down, read back over the UART.
-TEST(BoardUart, EncoderPinsCountThroughTheQuadratureDecoder) {
+// sequence on Pmod JB counts up and down, read back over the UART; the
+// index pin latches the count it came with.
+TEST(BoardUart, EncoderPinsCountThroughTheQuadratureDecoderAndTheIndexLatchesItsCount) {
   Board bd;
   static constexpr uint8_t kGray[4] = {0, 1, 3, 2};  // A leads B: forward
   for (int i = 1; i <= 10; ++i) {
@@ -603,6 +591,25 @@ TEST(BoardUart, EncoderPinsCountThroughTheQuadratureDecoder) {
   EXPECT_EQ(int32_t(bd.host.read(reg_addr("ENC_POS")).data), 7);
   EXPECT_EQ(int32_t(bd.host.read(reg_addr("FOLLOW_ERR")).data), -7);
   EXPECT_EQ(bd.host.read(reg_addr("CL_STATUS")).data & field_mask("CL_STATUS", "ENC_ILLEGAL"), 0u);
+  // The index pin (Pmod JB9) is a latch source: Z rising with the step to
+  // count 6 captures 6.
+  const uint32_t index_rise = field_mask("LATCH_CFG", "RISE") | (uint32_t(LatchSrcIndex) << LatchSrcLsb);
+  ASSERT_EQ(bd.host.write(reg_addr("LATCH_CFG"), index_rise).status, kOkay);
+  EXPECT_EQ(bd.host.read(reg_addr("STATUS")).data & field_mask("STATUS", "LATCHED"), 0u);
+  bd.host.enc_ab = kGray[6 & 3];
+  bd.host.enc_z = true;
+  bd.host.idle(500);
+  bd.host.enc_ab = kGray[5 & 3];
+  bd.host.enc_z = false;
+  bd.host.idle(500);
+  EXPECT_NE(bd.host.read(reg_addr("STATUS")).data & field_mask("STATUS", "LATCHED"), 0u);
+  EXPECT_EQ(int32_t(bd.host.read(reg_addr("LATCH_ENC")).data), 6);
+  EXPECT_EQ(int32_t(bd.host.read(reg_addr("ENC_POS")).data), 5);
+  // SRC = 3 names no input: refused, nothing changes
+  EXPECT_EQ(bd.host.write(reg_addr("LATCH_CFG"), field_mask("LATCH_CFG", "SRC")).status, kSlvErr);
+  EXPECT_EQ(bd.host.read(reg_addr("LATCH_CFG")).data, index_rise);
+  EXPECT_NE(bd.host.read(reg_addr("STATUS")).data & field_mask("STATUS", "LATCHED"), 0u);
+  EXPECT_NE(bd.host.read(reg_addr("ERR")).data & field_mask("ERR", "REJECT"), 0u);
 }
 
 // ---------------------------------------------------------------------------------

@@ -6,7 +6,9 @@
 // short closed-loop move loaded over AXI with the stepper/encoder plant.
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <cstdlib>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -246,6 +248,85 @@ TEST(AxiServo, FollowingErrorFaultStopsUnderControlKeepsTheCountsAndRecoversAtTh
   EXPECT_EQ(int32_t(b.read(reg_addr("ENC_POS")).first), L);
   EXPECT_EQ(b.plant()->count(), L);
   EXPECT_FALSE(b.failed()) << b.error();
+}
+
+// The position latch on the encoder index, open and closed loop, both
+// directions: the plant's encoder has an index (Z high in one quadrature
+// state every 97 counts, at a random place). Armed on Z rising, the latch
+// holds the count the plant's encoder showed when Z rose (the first rising
+// edge on the pins after arming, found from the plant, not the RTL), which
+// is an index state; PULSE_COUNT is taken in the clock the decoder shows Z
+// (two synchroniser flops and CL_CFG.ENC_FILT + 1 filter clocks after the
+// pin). Armed on Z falling, a move back latches the count Z left.
+TEST(AxiServo, IndexLatchHoldsTheEncoderCountOfTheIndexStateInBothDirectionsAndModes) {
+  constexpr int64_t kPeriod = 97;
+  const PulseTiming t{};
+  std::mt19937_64 g(23);
+  for (int c = 0; c < 4; ++c) {
+    const bool closed = c >= 2;
+    const int dir = (c & 1) ? -1 : 1;
+    PlantConfig pc;
+    pc.index_period = kPeriod;
+    pc.index_at = int64_t(g() % kPeriod);
+    const int64_t d = dir * int64_t(150 + g() % 150);
+    SCOPED_TRACE(std::string(closed ? "closed" : "open") + " loop, distance " + std::to_string(d) + ", index at " +
+                 std::to_string(pc.index_at));
+    AxiServoBench b(true, uint32_t(40 + c));
+    b.attach_plant(pc);
+    uint32_t ctrl = field_mask("CTRL", "ENABLE");
+    int filt = RstEncFilt;
+    if (closed) {
+      ServoConfig cfg;
+      ASSERT_EQ(to_servo_config(ControllerParams{}, pc, t, cfg), "");
+      for (const RegWrite& w : encode_servo_config(cfg)) ASSERT_EQ(b.write(w.addr, w.data), kOkay) << reg_name(w.addr);
+      ctrl |= field_mask("CTRL", "CLOSED_LOOP");
+      filt = int(cfg.ctl.enc_filt);
+    }
+    for (int leg = 0; leg < 2; ++leg) {
+      const bool rise = leg == 0;
+      const uint32_t cfg_word = field_mask("LATCH_CFG", rise ? "RISE" : "FALL") |
+                                (uint32_t(LatchSrcIndex) << LatchSrcLsb);
+      ASSERT_EQ(b.write(reg_addr("LATCH_CFG"), cfg_word), kOkay);
+      ASSERT_EQ(b.read(reg_addr("LATCH_CFG")).first, cfg_word);
+      const int32_t pulse0 = int32_t(b.net_steps());
+      load(b, plan_or_die(cl_move(rise ? d : -d)), t);
+      ASSERT_EQ(b.write(reg_addr("CTRL"), ctrl), kOkay);
+      ASSERT_EQ(b.write(reg_addr("CMD"), field_mask("CMD", "START")), kOkay);
+      // clock by clock: the pins' Z and count, the steps after each clock
+      std::vector<int64_t> net;
+      int64_t edge_clock = -1, edge_count = 0;
+      bool last_z = b.plant()->enc_z(), moved = false;
+      for (uint64_t i = 0; i < 4'000'000 && !b.failed(); ++i) {
+        const bool z = b.plant()->enc_z();
+        if (edge_clock < 0 && z != last_z && z == rise) {
+          edge_clock = int64_t(net.size());
+          edge_count = b.plant()->count();
+        }
+        last_z = z;
+        b.tick();
+        net.push_back(b.net_steps());
+        moved = moved || b.out().busy;
+        if (moved && !b.out().busy && edge_clock >= 0 && net.size() > size_t(edge_clock) + 100) break;
+      }
+      ASSERT_FALSE(b.failed()) << b.error();
+      ASSERT_GE(edge_clock, 0) << "the move crossed no index";
+      // rising: the index state itself; falling: one count off it (either side: the rotor rings)
+      const int64_t off = ((edge_count - pc.index_at) % kPeriod + kPeriod) % kPeriod;
+      if (rise) {
+        EXPECT_EQ(off, 0) << "Z rose at " << edge_count;
+      } else {
+        EXPECT_TRUE(off == 1 || off == kPeriod - 1) << "Z fell at " << edge_count;
+      }
+      EXPECT_TRUE(b.read(reg_addr("STATUS")).first & field_mask("STATUS", "LATCHED"));
+      EXPECT_EQ(int32_t(b.read(reg_addr("LATCH_ENC")).first), edge_count) << (rise ? "rising" : "falling") << " edge";
+      const size_t at = size_t(edge_clock + 2 + filt);
+      ASSERT_LT(at, net.size());
+      EXPECT_EQ(int32_t(b.read(reg_addr("LATCH_PULSE")).first), int32_t(net[at]) - pulse0)
+          << "PULSE_COUNT of the clock the decoder shows Z (it restarts at START)";
+      std::printf("[index] %s loop: Z %s at count %lld, PULSE_COUNT %d\n", closed ? "closed" : "open",
+                  rise ? "rose" : "fell", (long long)edge_count, int32_t(net[at]) - pulse0);
+    }
+  }
 }
 
 // Open loop through the same wrapper (CTRL.CLOSED_LOOP = 0): exact pulses.

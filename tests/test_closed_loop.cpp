@@ -292,6 +292,7 @@ void expect_pins_match_distance(bool closed_loop) {
     plant.clock(o.step, o.dir);
     in.enc_a = plant.enc_a();
     in.enc_b = plant.enc_b();
+    in.enc_z = plant.enc_z();
   };
   for (const Row& r : move_rows(plan.segments)) {
     ServoInputs w = in;

@@ -281,7 +281,7 @@ LatchRun run_over_switch(AxiBench& b, SwitchPlant& plant, SwitchPlant& decoy, in
 void check_latch_on_both_edges(bool probe, uint64_t seed) {
   std::mt19937_64 g(seed);
   const int src_bit = probe ? SwProbe : SwHome, decoy_bit = probe ? SwHome : SwProbe;
-  const uint32_t src = probe ? field_mask("LATCH_CFG", "PROBE") : 0u;
+  const uint32_t src = uint32_t(probe ? LatchSrcProbe : LatchSrcHome) << LatchSrcLsb;
   for (int i = 0; i < 4 && !::testing::Test::HasFatalFailure(); ++i) {
     const int dir = (i & 1) ? -1 : 1;
     const int debounce = int(g() % 3 == 0 ? 0 : g() % 500);
@@ -343,3 +343,33 @@ TEST(HomeLatch, CapturesTheCountsOfTheClockTheFilteredHomeEdgeArrivesOnBothEdges
 }
 
 TEST(HomeLatch, WithProbeSelectedCapturesTheProbeEdgeNotHomes) { check_latch_on_both_edges(true, 8); }
+
+// The open-loop axis takes the index as a level in step with its encoder
+// input (enc_index_i, filtered outside, like enc_pos_i): with the encoder
+// input changing every clock, a capture on Z rising holds the encoder value
+// of the first clock Z is high, on Z falling of the first clock it is low;
+// the home switch toggling at other clocks is not the source.
+TEST(IndexLatch, OpenLoopAxisCapturesTheEncoderValueOfTheClockTheIndexLevelChanges) {
+  std::mt19937_64 g(9);
+  AxiBench b(true, 77);
+  b.reset();
+  ASSERT_EQ(b.write(reg_addr("SW_CFG"), field_mask("SW_CFG", "LIM_EN")), kOkay);  // DEBOUNCE 0
+  uint64_t clk = 0;
+  auto enc_of = [](uint64_t c) { return int32_t(7 * int64_t(c) + 11); };
+  for (const bool rise : {true, false}) {
+    const uint32_t cfg = field_mask("LATCH_CFG", rise ? "RISE" : "FALL") | (uint32_t(LatchSrcIndex) << LatchSrcLsb);
+    ASSERT_EQ(b.write(reg_addr("LATCH_CFG"), cfg), kOkay);
+    const uint64_t home_at = 50 + g() % 100, z_at = home_at + 20 + g() % 100;
+    int32_t want = 0;
+    for (uint64_t i = 0; i < z_at + 50; ++i, ++clk) {
+      b.side().enc_pos = enc_of(clk);
+      b.side().enc_z = (i >= z_at) == rise;
+      b.side().sw_pins = uint8_t((i >= home_at) == rise ? 1u << SwHome : 0u);
+      if (i == z_at) want = enc_of(clk);
+      b.tick();
+    }
+    EXPECT_TRUE(b.read(reg_addr("STATUS")).first & field_mask("STATUS", "LATCHED"));
+    EXPECT_EQ(int32_t(b.read(reg_addr("LATCH_ENC")).first), want) << (rise ? "Z rising" : "Z falling");
+  }
+  EXPECT_FALSE(b.failed()) << b.error();
+}

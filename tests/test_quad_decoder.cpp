@@ -14,7 +14,7 @@ constexpr bool kB[4] = {false, false, true, true};
 
 // Drive (a,b) for enough clocks to pass the synchronisers and the filter.
 void hold(QuadDecoder& d, bool a, bool b, int clocks, uint8_t filt) {
-  for (int i = 0; i < clocks; ++i) d.step(a, b, filt);
+  for (int i = 0; i < clocks; ++i) d.step(a, b, false, filt);
 }
 
 TEST(QuadDecoder, EveryTransitionFromEveryState) {
@@ -41,7 +41,7 @@ TEST(QuadDecoder, LatencyIsSyncPlusFilter) {
     QuadDecoder d;
     int clocks = 0;
     while (d.state().count == 0 && clocks < 100) {
-      d.step(true, false, filt);
+      d.step(true, false, false, filt);
       ++clocks;
     }
     // two synchroniser flops, then accepted on the (filt+1)-th clock seen
@@ -65,11 +65,11 @@ TEST(QuadDecoder, GlitchFilterRejectsShortPulses) {
       hold(e, false, false, 10, filt);
       bool seen = false;
       for (int i = 0; i < len; ++i) {
-        e.step(true, false, filt);
+        e.step(true, false, false, filt);
         seen = seen || e.state().count != 0;
       }
       for (int i = 0; i < 20; ++i) {
-        e.step(false, false, filt);
+        e.step(false, false, false, filt);
         seen = seen || e.state().count != 0;
       }
       EXPECT_EQ(seen, passes) << "filt " << int(filt) << " len " << len;
@@ -89,6 +89,39 @@ TEST(QuadDecoder, LongRandomWalkCountsExactly) {
   hold(d, kA[unsigned(pos) & 3], kB[unsigned(pos) & 3], 8, 0);
   EXPECT_EQ(d.state().count, pos);
   EXPECT_EQ(d.state().illegal, 0);
+}
+
+// The index goes through the same synchroniser and filter: on a random walk
+// with Z high in one quadrature state per "revolution", the filtered Z is
+// high in exactly the clocks the count shows that state, for every filter
+// length, and a Z pulse no longer than the filter never shows.
+TEST(QuadDecoder, IndexShowsInTheClocksTheCountShowsItsState) {
+  constexpr int64_t kPeriod = 20, kAt = 7;
+  for (uint8_t filt : {uint8_t(0), uint8_t(2), uint8_t(5)}) {
+    std::mt19937_64 rng(11 + filt);
+    QuadDecoder d;
+    int64_t pos = 0, highs = 0;
+    auto z_of = [&](int64_t c) { return ((c - kAt) % kPeriod + kPeriod) % kPeriod == 0; };
+    for (int i = 0; i < 20000; ++i) {
+      pos += (rng() % 3 == 0) ? -1 : 1;
+      const unsigned ph = unsigned(pos) & 3;
+      for (int k = 0, n = int(filt) + 1 + int(rng() % 4); k < n; ++k) {
+        d.step(kA[ph], kB[ph], z_of(pos), filt);
+        ASSERT_EQ(d.index(), z_of(d.state().count)) << "filt " << int(filt) << ", count " << d.state().count;
+        highs += d.index();
+      }
+    }
+    EXPECT_GT(highs, 100) << "the walk crossed the index";
+    // a Z glitch of filt clocks on a still encoder is not taken
+    for (int k = 0; k < 10; ++k) d.step(kA[unsigned(pos) & 3], kB[unsigned(pos) & 3], false, filt);
+    if (!z_of(pos)) {
+      for (int k = 0; k < filt; ++k) d.step(kA[unsigned(pos) & 3], kB[unsigned(pos) & 3], true, filt);
+      for (int k = 0; k < 10; ++k) {
+        d.step(kA[unsigned(pos) & 3], kB[unsigned(pos) & 3], false, filt);
+        EXPECT_FALSE(d.index()) << "filt " << int(filt);
+      }
+    }
+  }
 }
 
 TEST(QuadDecoder, IllegalCounterSaturates) {
