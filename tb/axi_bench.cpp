@@ -74,6 +74,11 @@ void AxiBench::reset() {
 
 void AxiBench::tick() {
   if (switch_pins_) side_.sw_pins = switch_pins_(pins_.net_steps());
+  if (encoder_) {
+    const Encoder e = encoder_(pins_.net_steps());
+    side_.enc_pos = e.count;
+    side_.enc_z = e.index;
+  }
   if (rtl_) rtl_->step(in_, side_);
   RegsSide ms = side_;
   ms.enc_pos = int32_t(uint32_t(ms.enc_pos) + uint32_t(model_enc_offset_));

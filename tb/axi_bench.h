@@ -109,6 +109,13 @@ class AxiBench : public AxiLockstepBench<RtlAxiAxis, AxiAxis, AxiAxisOutputs> {
   // Switch pins driven every clock (also inside bus transactions) from the
   // pins' net step count: a switch model in the plant.
   void set_switch_pins(std::function<uint8_t(int64_t)> f) { switch_pins_ = std::move(f); }
+  // The encoder inputs (ENC_POS, the index level) driven every clock from
+  // the pins' net step count: an encoder on the plant's shaft.
+  struct Encoder {
+    int32_t count = 0;
+    bool index = false;
+  };
+  void set_encoder(std::function<Encoder(int64_t)> f) { encoder_ = std::move(f); }
 
   // STEP rising edges, as clocks after the last START pulse to the core.
   const std::vector<uint64_t>& rise_times() const { return rise_times_; }
@@ -117,6 +124,7 @@ class AxiBench : public AxiLockstepBench<RtlAxiAxis, AxiAxis, AxiAxisOutputs> {
   bool last_step_ = false;
   int32_t model_enc_offset_ = 0;
   std::function<uint8_t(int64_t)> switch_pins_;
+  std::function<Encoder(int64_t)> encoder_;
   uint64_t start_clock_ = 0;
   std::vector<uint64_t> rise_times_;
 };

@@ -17,6 +17,7 @@ struct HomingCli {
   double seek_speed = 20000, latch_speed = 0, a_max = 1e6, j_max = 1e9;
   double stop_jerk = 0, stop_acc = 0, poll_period = 1e-3;
   int64_t max_travel = 20000, max_backoff = 2000, offset = 0;
+  int64_t index_period = 0, index_at = 0, max_index_travel = 0;
   uint32_t debounce = 2000, bounce = 0, noise_clocks = 10;
   double noise_rate = 0;
   int runs = 1;

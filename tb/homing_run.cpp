@@ -57,6 +57,13 @@ HomingSimResult run_homing_sim(const HomingSimConfig& c) {
   plant.set_noise(c.noise_rate, int(c.noise_clocks));
   out.release_point = plant.release_point();
   b.set_switch_pins([&plant](int64_t pos) { return uint8_t(plant.pin(pos) ? 1u << scurve::hw::SwHome : 0u); });
+  const int64_t index_at = c.index_at ? *c.index_at : out.release_point - dir * (c.index_period / 2);
+  auto is_index = [&c, index_at](int64_t pos) {
+    return c.index_period > 0 && (pos - index_at) % c.index_period == 0;
+  };
+  if (c.index_period > 0) {
+    b.set_encoder([&is_index](int64_t pos) { return AxiBench::Encoder{int32_t(pos), is_index(pos)}; });
+  }
   b.idle(4);
 
   BenchPort port(b);
@@ -81,7 +88,19 @@ HomingSimResult run_homing_sim(const HomingSimConfig& c) {
     } else {
       out.homed = true;
       out.result = std::get<scurve::HomingResult>(r);
-      out.zero_error = out.result.home_ref - out.release_point;
+      out.zero_point = out.release_point;
+      if (out.result.on_index) {
+        // Z rises on entering an index count: the first one past where the
+        // back-off came to rest, in the creep's direction.
+        int64_t p = out.result.backoff_stop - dir;
+        while (!is_index(p) && std::abs(p - out.result.backoff_stop) <= c.index_period) p -= dir;
+        out.index_point = p;
+        out.zero_point = p;
+        if (out.result.index_enc != p) {
+          out.error = fmt::format("LATCH_ENC {} at the index, the encoder's index count is {}", out.result.index_enc, p);
+        }
+      }
+      out.zero_error = out.result.home_ref - out.zero_point;
       // At rest the pins and the reference agree (no step lost or invented).
       port.wait(double(c.timing.high + c.timing.low + c.timing.setup + c.timing.hold) / double(ClkHz));
       auto ref = port.read(scurve::hw::RegRefPos);
@@ -116,13 +135,13 @@ HomingSummary summarize(const std::vector<HomingSimResult>& runs) {
 
 std::string homing_table(const std::vector<HomingSimResult>& runs) {
   std::string t = fmt::format("{:>4} {:>9} {:>7} {:>10} {:>10} {:>10} {:>9} {:>8} {:>11}  {}\n", "run", "switch",
-                              "bounce", "seek stop", "home ref", "release", "zero err", "glitches", "clocks",
+                              "bounce", "seek stop", "home ref", "zero at", "zero err", "glitches", "clocks",
                               "result");
   for (size_t i = 0; i < runs.size(); ++i) {
     const HomingSimResult& r = runs[i];
     t += fmt::format("{:>4} {:>9} {:>7} {:>10} {:>10} {:>10} {:>9} {:>8} {:>11}  {}\n", i + 1, r.switch_at, r.bounce,
                      r.homed ? std::to_string(r.result.seek_stop) : "-",
-                     r.homed ? std::to_string(r.result.home_ref) : "-", r.release_point,
+                     r.homed ? std::to_string(r.result.home_ref) : "-", r.homed ? r.zero_point : r.release_point,
                      r.homed ? std::to_string(r.zero_error) : "-", r.glitches, r.clocks,
                      r.pass() ? "ok" : (r.error.empty() ? "pins != REF_POS" : r.error));
   }
@@ -148,7 +167,13 @@ nlohmann::json homing_to_json(const std::vector<HomingSimResult>& runs, bool loc
       x["seek_skipped"] = r.result.seek_skipped;
       x["backoff_stop"] = r.result.backoff_stop;
       x["latch_pulse"] = r.result.latch_pulse;
+      x["release_ref"] = r.result.release_ref;
       x["home_ref"] = r.result.home_ref;
+      x["zero_point"] = r.zero_point;
+      if (r.result.on_index) {
+        x["index_point"] = r.index_point;
+        x["index_enc"] = r.result.index_enc;
+      }
       x["zero_error"] = r.zero_error;
       x["machine_position_at_rest"] = r.result.machine_position(r.ref_pos);
     }

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,11 @@ struct HomingSimConfig {
   double noise_rate = 0;       // glitches per clock
   uint32_t noise_clocks = 0;   // length of one glitch, clocks
   double stop_jerk = 0, stop_acc = 0;  // STOP_JERK / STOP_ACC, pulses/s^3, pulses/s^2
+  // An encoder on the shaft, one count per pulse, its index high at the
+  // counts index_at + k index_period (request.max_index_travel > 0 homes on
+  // it); index_at by default half a revolution past the release point.
+  int64_t index_period = 0;
+  std::optional<int64_t> index_at;
   bool lockstep = true;        // false: the model alone
   uint64_t seed = 1;
 };
@@ -31,11 +37,13 @@ struct HomingSimConfig {
 struct HomingSimResult {
   int64_t switch_at = 0;
   int64_t release_point = 0;   // the plant's first position off the switch
+  int64_t index_point = 0;     // with the index: the plant's first index position past the back-off's stop
+  int64_t zero_point = 0;      // what the zero must be: index_point with the index, else release_point
   uint32_t bounce = 0;
   bool homed = false;
   std::string error;           // the sequence's error, or the bench's
   scurve::HomingResult result;
-  int64_t zero_error = 0;      // result.home_ref - release_point, pulses
+  int64_t zero_error = 0;      // result.home_ref - zero_point, pulses
   int64_t pins = 0;            // net STEP pulses on the pins at the end
   int64_t ref_pos = 0;         // REF_POS at the end
   uint64_t clocks = 0;

@@ -256,4 +256,16 @@ check_bad latch_speed home --latch-speed 30000
 check_bad debounce home --debounce -1
 check_bad direction home --direction 0
 check_bad max_backoff home --max-backoff 0
+check_bad max_index_travel home --max-index-travel -1
+# switch plus index: noisy bouncing switches, every run's zero the one index
+"$scurve" home --engine model --runs 3 --index-period 4000 --bounce 500 --noise-rate 0.00005 --json > "$tmp/home_index.json"
+python3 - "$tmp/home_index.json" <<'PY'
+import json, sys
+h = json.load(open(sys.argv[1]))
+assert h["pass"] and h["spread"] == 0 and h["zero_expected_exact"], h
+refs = {r["home_ref"] for r in h["runs"]}
+assert len(refs) == 1, refs
+for r in h["runs"]:
+    assert r["home_ref"] == r["index_point"] == r["index_enc"] == r["zero_point"], r
+PY
 echo "cli ok"

@@ -169,6 +169,7 @@ TEST(Homing, BadRequestsAreRefusedNamingTheField) {
       {"latch_speed", [](scurve::HomingRequest& r) { r.latch_speed = 0; }},
       {"max_travel", [](scurve::HomingRequest& r) { r.max_travel = 0; }},
       {"max_backoff", [](scurve::HomingRequest& r) { r.max_backoff = -5; }},
+      {"max_index_travel", [](scurve::HomingRequest& r) { r.max_index_travel = -1; }},
       {"poll_period", [](scurve::HomingRequest& r) { r.poll_period = 0; }},
       {"offset", [](scurve::HomingRequest& r) { r.offset = INT64_MAX; }},
       {"a_max", [](scurve::HomingRequest& r) { r.a_max = -1; }},
@@ -232,6 +233,58 @@ TEST(Homing, KeepsTheClosedLoopModeAndTakesTheZeroFromTheLatchOnAScriptedBoard) 
   EXPECT_EQ(h.machine_position(107), 50);
   ASSERT_FALSE(port.ctrl_writes.empty());
   for (uint32_t c : port.ctrl_writes) EXPECT_TRUE(c & (1u << hw::CtrlClosedBit)) << "CTRL written without CLOSED_LOOP";
+}
+
+// Switch plus index: after the release, the axis creeps on to the encoder's
+// index (one index every 2000 counts, fixed on the shaft). With the switch
+// at random places (within a quarter revolution), contact bounce beyond the
+// exact latch speed and noise, every run's zero is the same index count,
+// exactly; LATCH_ENC is that count (checked by the bench against its own
+// encoder). The same runs without the index show the switch's spread.
+TEST(Homing, OnTheIndexEveryRunFindsTheSameIndexCountWhateverTheSwitchDoes) {
+  constexpr int64_t kPeriod = 2000;
+  std::mt19937_64 g(31);
+  std::vector<HomingSimResult> on_index, on_switch;
+  for (int i = 0; i < 16 && !::testing::Test::HasFailure(); ++i) {
+    const bool lockstep = i < 2;
+    HomingSimConfig c = random_homing(g, i, lockstep, 1500);
+    c.request.direction = -1;
+    c.switch_at = -int64_t(1000 + g() % 500);
+    c.noise_rate = 2e-5;
+    c.noise_clocks = 20;
+    c.request.latch_speed = c.request.seek_speed / 4;  // beyond the exact bound: the switch alone wanders
+    c.index_period = kPeriod;
+    c.index_at = -1250 + kPeriod / 2;  // half a revolution past the switches' middle
+    c.request.max_index_travel = kPeriod;
+    SCOPED_TRACE(::testing::Message() << "run " << i << ": switch at " << c.switch_at << ", bounce " << c.bounce);
+    on_index.push_back(run_homing_sim(c));
+    expect_homed(on_index.back());
+    EXPECT_TRUE(on_index.back().result.on_index);
+    EXPECT_EQ(on_index.back().result.home_ref, *c.index_at) << "the zero is the index on the shaft";
+    EXPECT_EQ(on_index.back().result.index_enc, *c.index_at);
+    c.request.max_index_travel = 0;
+    c.lockstep = false;
+    on_switch.push_back(run_homing_sim(c));
+  }
+  const HomingSummary si = summarize(on_index), ss = summarize(on_switch);
+  std::printf("%s", homing_table(on_index).c_str());
+  std::printf("[homing] on the index: spread %lld pulses over %zu runs; on the switch alone: spread %lld\n",
+              (long long)si.spread(), si.runs, (long long)ss.spread());
+  EXPECT_EQ(si.passed, si.runs);
+  EXPECT_EQ(si.zero_min, 0);
+  EXPECT_EQ(si.zero_max, 0);
+}
+
+// An index farther than max_index_travel: an error naming it.
+TEST(Homing, NoIndexWithinMaxIndexTravelIsAnErrorNamingIt) {
+  std::mt19937_64 g(32);
+  HomingSimConfig c = random_homing(g, 0, false, 0);
+  c.index_period = 4000;  // the index half a revolution (2000 pulses) past the release
+  c.request.max_index_travel = 500;
+  const HomingSimResult r = run_homing_sim(c);
+  EXPECT_FALSE(r.homed);
+  EXPECT_NE(r.error.find("max_index_travel"), std::string::npos) << r.error;
+  EXPECT_NE(r.error.find("no encoder index"), std::string::npos) << r.error;
 }
 
 TEST(HomingLong, HundredRandomHomingsInRtlLockstepLandOnTheSwitchReleaseExactly) {

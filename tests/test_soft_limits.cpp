@@ -239,7 +239,9 @@ void run_soft_stream(std::mt19937_64& g, int i) {
       if (cut) break;
     }
   }
-  if (!started) ASSERT_EQ(b.write(reg_addr("CMD"), field_mask("CMD", "START")), kOkay);
+  if (!started) {
+    ASSERT_EQ(b.write(reg_addr("CMD"), field_mask("CMD", "START")), kOkay);
+  }
   run_until(b, 40'000'000, [&] { return !b.out().busy; });
   b.idle(10);
   ASSERT_FALSE(b.failed()) << b.error();

@@ -30,11 +30,16 @@ MoveRequest move_of(const HomingRequest& r, int64_t distance, double speed) {
   return m;
 }
 
-std::variant<Plan, Error> plan_leg(const HomingRequest& r, bool seek, const PulseTiming& timing, Clock clock) {
-  const int64_t d = seek ? r.direction * r.max_travel : -r.direction * r.max_backoff;
-  const PlanResult p = Planner{clock}.plan(move_of(r, d, seek ? r.seek_speed : r.latch_speed), timing);
+enum class Leg { Seek, Backoff, Index };
+
+std::variant<Plan, Error> plan_leg(const HomingRequest& r, Leg leg, const PulseTiming& timing, Clock clock) {
+  const int64_t d = leg == Leg::Seek      ? r.direction * r.max_travel
+                    : leg == Leg::Backoff ? -r.direction * r.max_backoff
+                                          : -r.direction * r.max_index_travel;
+  const PlanResult p = Planner{clock}.plan(move_of(r, d, leg == Leg::Seek ? r.seek_speed : r.latch_speed), timing);
   if (const Error* e = std::get_if<Error>(&p)) {
-    return Error{e->parameter, fmt::format("{} move: {}", seek ? "seek" : "back-off", e->message)};
+    const char* name = leg == Leg::Seek ? "seek" : leg == Leg::Backoff ? "back-off" : "index";
+    return Error{e->parameter, fmt::format("{} move: {}", name, e->message)};
   }
   return std::get<Plan>(p);
 }
@@ -84,7 +89,7 @@ class Session {
         if (status & bit(hw::StatusDoneBit)) return false;
         auto er = read(hw::RegErr, leg);
         const uint32_t err = std::holds_alternative<uint32_t>(er) ? std::get<uint32_t>(er) : 0;
-        return Error{"board", fmt::format("the {} move {} without the home switch: STATUS=0x{:08x} ERR=0x{:08x} "
+        return Error{"board", fmt::format("the {} move {} before the latch captured: STATUS=0x{:08x} ERR=0x{:08x} "
                                           "(disabled, e-stopped, a limit or a fault)",
                                           leg, ever_busy ? "stopped" : "was refused", status, err)};
       }
@@ -130,6 +135,10 @@ std::optional<Error> check_homing_request(const HomingRequest& r, const PulseTim
     return Error{"max_backoff",
                  fmt::format("max_backoff={} pulses: needs 1 .. {}", r.max_backoff, PlannerLimits::kMaxDistance)};
   }
+  if (r.max_index_travel < 0 || r.max_index_travel > PlannerLimits::kMaxDistance) {
+    return Error{"max_index_travel", fmt::format("max_index_travel={} pulses: needs 0 (no index) .. {}",
+                                                 r.max_index_travel, PlannerLimits::kMaxDistance)};
+  }
   if (r.offset < -PlannerLimits::kMaxPosition || r.offset > PlannerLimits::kMaxPosition) {
     return Error{"offset", fmt::format("offset={} pulses: needs -{} .. {}", r.offset, PlannerLimits::kMaxPosition,
                                        PlannerLimits::kMaxPosition)};
@@ -137,8 +146,9 @@ std::optional<Error> check_homing_request(const HomingRequest& r, const PulseTim
   if (!std::isfinite(r.poll_period) || r.poll_period <= 0 || r.poll_period > kMaxPollPeriod) {
     return Error{"poll_period", fmt::format("poll_period={} s: needs > 0 and <= {}", r.poll_period, kMaxPollPeriod)};
   }
-  for (bool seek : {true, false}) {
-    auto p = plan_leg(r, seek, timing, clock);
+  for (Leg leg : {Leg::Seek, Leg::Backoff, Leg::Index}) {
+    if (leg == Leg::Index && r.max_index_travel == 0) continue;
+    auto p = plan_leg(r, leg, timing, clock);
     if (Error* e = std::get_if<Error>(&p)) return *e;
   }
   return std::nullopt;
@@ -146,8 +156,8 @@ std::optional<Error> check_homing_request(const HomingRequest& r, const PulseTim
 
 HomingOutcome home(RegisterPort& port, const HomingRequest& req, const PulseTiming& timing, Clock clock) {
   if (auto e = check_homing_request(req, timing, clock)) return *e;
-  const Plan seek = std::get<Plan>(plan_leg(req, true, timing, clock));
-  const Plan backoff = std::get<Plan>(plan_leg(req, false, timing, clock));
+  const Plan seek = std::get<Plan>(plan_leg(req, Leg::Seek, timing, clock));
+  const Plan backoff = std::get<Plan>(plan_leg(req, Leg::Backoff, timing, clock));
   Session s(port, req);
   HomingResult out;
   out.offset = req.offset;
@@ -197,10 +207,30 @@ HomingOutcome home(RegisterPort& port, const HomingRequest& req, const PulseTimi
   auto lp = s.read(hw::RegLatchPulse, "the zero");
   if (const Error* e = std::get_if<Error>(&lp)) return *e;
   out.latch_pulse = int32_t(std::get<uint32_t>(lp));
-  out.home_ref = out.seek_stop + out.latch_pulse;
+  out.release_ref = out.seek_stop + out.latch_pulse;
+  out.home_ref = out.release_ref;
   ref = s.read(hw::RegRefPos, "the zero");
   if (const Error* e = std::get_if<Error>(&ref)) return *e;
   out.backoff_stop = int32_t(std::get<uint32_t>(ref));
+  if (req.max_index_travel == 0) return out;
+
+  // 4. on to the encoder index, latched on Z rising
+  const Plan creep = std::get<Plan>(plan_leg(req, Leg::Index, timing, clock));
+  const uint32_t index_rise = bit(hw::LatchRiseBit) | (uint32_t(hw::LatchSrcIndex) << hw::LatchSrcLsb);
+  if (auto e = s.write(hw::RegLatchCfg, index_rise, "the index move")) return *e;
+  r = s.run_until_latched(creep, timing, "index");
+  if (const Error* e = std::get_if<Error>(&r)) return *e;
+  if (!std::get<bool>(r)) {
+    return Error{"max_index_travel",
+                 fmt::format("max_index_travel={} pulses: no encoder index pulse past the release", req.max_index_travel)};
+  }
+  lp = s.read(hw::RegLatchPulse, "the index move");
+  if (const Error* e = std::get_if<Error>(&lp)) return *e;
+  auto le = s.read(hw::RegLatchEnc, "the index move");
+  if (const Error* e = std::get_if<Error>(&le)) return *e;
+  out.on_index = true;
+  out.home_ref = out.backoff_stop + int32_t(std::get<uint32_t>(lp));
+  out.index_enc = int32_t(std::get<uint32_t>(le));
   return out;
 }
 

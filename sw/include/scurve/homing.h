@@ -9,7 +9,12 @@
 //      the release (LATCH_CFG.FALL); when it has captured, CMD.STOP;
 //   3. zero: the release point, in REF_POS coordinates, is the back-off's
 //      start plus LATCH_PULSE (PULSE_COUNT restarts at each START); the
-//      machine position is REF_POS - home_ref + offset.
+//      machine position is REF_POS - home_ref + offset;
+//   4. optionally (max_index_travel > 0) on to the encoder index: a move on
+//      at the latch speed with the latch armed on the index rising
+//      (LATCH_CFG.SRC = index); the zero is then the index point, whose
+//      position does not depend on the switch's repeatability (the classic
+//      switch-plus-index home of a servo axis).
 //
 // Why on the host: the timing-critical part (the capture of the count in
 // the clock the filtered edge arrives) is the hardware latch; what is left
@@ -55,16 +60,20 @@ struct HomingRequest {
   double j_max = 0;            // pulses/s^3 of both moves
   int64_t max_travel = 0;      // pulses the seek may run without reaching the switch
   int64_t max_backoff = 0;     // pulses the back-off may run without the switch releasing
-  int64_t offset = 0;          // machine position of the release point
+  int64_t offset = 0;          // machine position of the zero point (the release, or the index)
+  int64_t max_index_travel = 0;  // 0: the zero is the release; > 0: pulses the axis may creep on to the index
   double poll_period = 1e-3;   // s between STATUS reads while a move runs
 };
 
 struct HomingResult {
-  int64_t home_ref = 0;        // REF_POS of the release point (the board's coordinates)
+  int64_t home_ref = 0;        // REF_POS of the zero point: the release or, with the index, the index point
   int64_t seek_stop = 0;       // REF_POS where the seek came to rest
   int64_t backoff_stop = 0;    // REF_POS where the back-off came to rest
   int64_t latch_pulse = 0;     // LATCH_PULSE as read (pulses since the back-off's START)
   bool seek_skipped = false;   // the switch was already active: no seek
+  bool on_index = false;       // home_ref is the encoder index point (step 4)
+  int64_t release_ref = 0;     // REF_POS of the release point
+  int64_t index_enc = 0;       // LATCH_ENC at the index (the encoder's count there)
   int64_t offset = 0;
   // Machine position of a REF_POS value.
   int64_t machine_position(int64_t ref_pos) const { return ref_pos - home_ref + offset; }
