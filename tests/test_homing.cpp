@@ -47,6 +47,18 @@ HomingSimConfig random_homing(std::mt19937_64& g, int i, bool lockstep, uint32_t
   return c;
 }
 
+// A valid request with round numbers (for the checks and the scripted board).
+scurve::HomingRequest plain_request() {
+  scurve::HomingRequest r;
+  r.seek_speed = 20000;
+  r.latch_speed = 1000;
+  r.a_max = 1e6;
+  r.j_max = 1e9;
+  r.max_travel = 10000;
+  r.max_backoff = 1000;
+  return r;
+}
+
 void expect_homed(const HomingSimResult& r) {
   EXPECT_TRUE(r.homed) << r.error;
   EXPECT_TRUE(r.error.empty()) << r.error;
@@ -148,13 +160,7 @@ TEST(Homing, NoSwitchWithinMaxTravelIsAnErrorNamingItAndTheAxisIsAtRest) {
 
 TEST(Homing, BadRequestsAreRefusedNamingTheField) {
   const scurve::PulseTiming t{};
-  scurve::HomingRequest ok;
-  ok.seek_speed = 20000;
-  ok.latch_speed = 1000;
-  ok.a_max = 1e6;
-  ok.j_max = 1e9;
-  ok.max_travel = 10000;
-  ok.max_backoff = 1000;
+  const scurve::HomingRequest ok = plain_request();
   EXPECT_FALSE(scurve::check_homing_request(ok, t).has_value());
   struct Bad {
     const char* field;
@@ -217,13 +223,7 @@ TEST(Homing, KeepsTheClosedLoopModeAndTakesTheZeroFromTheLatchOnAScriptedBoard) 
     }
     void wait(double) override {}
   } port;
-  scurve::HomingRequest r;
-  r.seek_speed = 20000;
-  r.latch_speed = 1000;
-  r.a_max = 1e6;
-  r.j_max = 1e9;
-  r.max_travel = 10000;
-  r.max_backoff = 1000;
+  scurve::HomingRequest r = plain_request();
   r.offset = 50;
   const scurve::HomingOutcome o = scurve::home(port, r, scurve::PulseTiming{});
   ASSERT_TRUE(std::holds_alternative<scurve::HomingResult>(o)) << std::get<scurve::Error>(o).message;
