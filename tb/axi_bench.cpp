@@ -184,7 +184,8 @@ std::pair<uint32_t, uint8_t> AxiMaster::read(uint32_t addr) {
 
 // ---- UART host ------------------------------------------------------------------
 
-UartHost::UartHost(RtlBoard& board, int clks_per_bit) : b_(board), bit100_(5 * clks_per_bit) {
+UartHost::UartHost(RtlBoard& board, int clks_per_bit)
+    : b_(board), bit100_(5 * clks_per_bit), line_(bit100_) {
   set_timing(PulseTiming{});
 }
 
@@ -194,54 +195,26 @@ void UartHost::set_timing(const PulseTiming& t) {
 }
 
 void UartHost::tick() {
-  b_.tick100(line_, true, estop, enc_ab & 1, (enc_ab >> 1) & 1, 0, enc_z);
+  b_.tick100(line_.tx_level(), true, estop, enc_ab & 1, (enc_ab >> 1) & 1, 0, enc_z);
   const RtlBoard::Pins p = b_.pins();
   pins_.on_clock(b_.clocks100(), p.step, p.dir, false, 0);
-  // receiver: sample at the middle of each bit
-  if (rx_state_ == 0) {
-    if (!p.uart_tx) {
-      rx_state_ = 1;
-      rx_cnt_ = bit100_ / 2;
-      rx_bit_ = -1;  // start bit
-    }
-  } else if (--rx_cnt_ <= 0) {
-    rx_cnt_ = bit100_;
-    if (rx_bit_ < 0) {
-      if (p.uart_tx) rx_state_ = 0;  // glitch
-      rx_bit_ = 0;
-      rx_byte_ = 0;
-    } else if (rx_bit_ < 8) {
-      rx_byte_ = uint8_t(rx_byte_ | (p.uart_tx ? 1 : 0) << rx_bit_);
-      ++rx_bit_;
-    } else {
-      if (p.uart_tx) rx_.push_back(rx_byte_);  // good stop bit
-      rx_state_ = 0;
-    }
-  }
+  line_.clock(p.uart_tx);
 }
 
 void UartHost::idle(uint64_t clocks100) {
-  line_ = true;
   for (uint64_t i = 0; i < clocks100; ++i) tick();
 }
 
 std::vector<uint8_t> UartHost::transact(const std::vector<uint8_t>& frame, size_t expect, int timeout_bits) {
-  rx_.clear();
-  for (uint8_t byte : frame) {
-    const int bits[10] = {0, byte & 1, byte >> 1 & 1, byte >> 2 & 1, byte >> 3 & 1,
-                          byte >> 4 & 1, byte >> 5 & 1, byte >> 6 & 1, byte >> 7 & 1, 1};
-    for (int b : bits) {
-      line_ = b != 0;
-      for (int i = 0; i < bit100_; ++i) tick();
-    }
-  }
-  line_ = true;
-  size_t have = rx_.size();
+  (void)line_.take_received();
+  for (uint8_t byte : frame) line_.send(byte);
+  while (line_.sending()) tick();
+  size_t have = line_.received_count();
   int64_t quiet = 0;
-  while (rx_.size() < expect && quiet < int64_t(timeout_bits) * bit100_) {
+  while (line_.received_count() < expect && quiet < int64_t(timeout_bits) * bit100_) {
     tick();
-    if (rx_.size() != have || rx_state_ != 0) {
-      have = rx_.size();
+    if (line_.received_count() != have || line_.receiving()) {
+      have = line_.received_count();
       quiet = 0;
     } else {
       ++quiet;
@@ -249,7 +222,7 @@ std::vector<uint8_t> UartHost::transact(const std::vector<uint8_t>& frame, size_
   }
   // let a last stop bit finish
   for (int i = 0; i < bit100_; ++i) tick();
-  return rx_;
+  return line_.take_received();
 }
 
 namespace {

@@ -20,6 +20,7 @@
 #include "plant.h"
 #include "reg_encode.h"
 #include "rtl_axi_axis.h"
+#include "uart_line.h"
 
 namespace sc {
 
@@ -175,14 +176,8 @@ class UartHost {
  private:
   void tick();
   RtlBoard& b_;
-  int bit100_;          // pin clocks per bit
-  bool line_ = true;    // level driven on uart_rx
-  // receiver state
-  int rx_state_ = 0;    // 0 idle, 1 in a byte
-  int64_t rx_cnt_ = 0;
-  int rx_bit_ = 0;
-  uint8_t rx_byte_ = 0;
-  std::vector<uint8_t> rx_;
+  int bit100_;  // pin clocks per bit
+  UartLine line_;
   PinMonitor pins_{PinRules{PulseTiming{}, false, StepAccounting::None}};
 };
 

@@ -22,32 +22,17 @@ void add_homing_command(CLI::App& app, HomingCli& h) {
   CLI::App* c = app.add_subcommand(
       "home", "home an axis in simulation: seek the home switch, back off slowly, latch the release, set the zero");
   h.cmd = c;
-  int_flag(c, "--direction", h.direction, -1, 1, "where the home switch lies: -1 (default) or 1");
+  scurve::cli::add_homing_flags(c, h.seq);
   int_flag(c, "--switch-at", h.switch_at, -1'000'000'000, 1'000'000'000,
            "the switch's edge, pulses from the start (default 1500 toward --direction; on the other side the axis "
            "starts on the switch)");
-  real_flag(c, "--seek-speed", h.seek_speed, "seek speed toward the switch, pulses/s (default 20000)");
-  real_flag(c, "--latch-speed", h.latch_speed,
-            "back-off speed off the switch, pulses/s (default: half the speed that keeps the zero exact)");
-  real_flag(c, "--a-max", h.a_max, "acceleration of the seek and back-off, pulses/s^2 (default 1e6)");
-  real_flag(c, "--j-max", h.j_max, "jerk of the seek and back-off, pulses/s^3 (default 1e9)");
   real_flag(c, "--stop-jerk", h.stop_jerk, "STOP_JERK, pulses/s^3 (default --j-max)");
   real_flag(c, "--stop-acc", h.stop_acc, "STOP_ACC, pulses/s^2 (default --a-max)");
-  int_flag(c, "--max-travel", h.max_travel, -(int64_t(1) << 62), int64_t(1) << 62,
-           "pulses the seek may run (default 20000)");
-  int_flag(c, "--max-backoff", h.max_backoff, -(int64_t(1) << 62), int64_t(1) << 62,
-           "pulses the back-off may run (default 2000)");
-  int_flag(c, "--offset", h.offset, -(int64_t(1) << 62), int64_t(1) << 62,
-           "machine position of the zero point: the release, or the index (default 0)");
   int_flag(c, "--index-period", h.index_period, 0, 1'000'000'000,
            "an encoder with an index on the simulated shaft: counts per revolution, one count per pulse (default 0: "
-           "none)");
+           "none; with one, --max-index-travel defaults to a revolution)");
   int_flag(c, "--index-at", h.index_at, -1'000'000'000, 1'000'000'000,
            "a count where the index is high, the same for every run (default: half a revolution past --switch-at)");
-  int_flag(c, "--max-index-travel", h.max_index_travel, -(int64_t(1) << 62), int64_t(1) << 62,
-           "home on the index: pulses the axis may creep on past the release to find it (default: one revolution "
-           "with --index-period, else 0: the zero is the release)");
-  real_flag(c, "--poll-period", h.poll_period, "seconds between STATUS reads while a move runs (default 0.001)");
   int_flag(c, "--debounce", h.debounce, 0, (1 << scurve::hw::DebounceW) - 1,
            "SW_CFG.DEBOUNCE, clocks (default 2000 = 100 us)");
   int_flag(c, "--bounce", h.bounce, 0, 1'000'000, "contact bounce on every change of the switch, clocks (default 0)");
@@ -63,8 +48,11 @@ void add_homing_command(CLI::App& app, HomingCli& h) {
 }
 
 int run_homing_cli(const HomingCli& h) {
-  if (h.direction == 0) return scurve::cli::bad_input("--direction=0: needs -1 or 1");
   const scurve::PulseTiming timing = scurve::cli::to_timing(h.timing);
+  const double default_latch =
+      std::min(h.seq.seek_speed, std::floor(scurve::exact_latch_speed(h.debounce, h.bounce) / 2));
+  const auto request = scurve::cli::to_homing_request(h.cmd, h.seq, default_latch, h.index_period);
+  if (const scurve::Error* e = std::get_if<scurve::Error>(&request)) return scurve::cli::bad_input(e->message);
   HomingSimConfig base;
   base.timing = timing;
   base.debounce = h.debounce;
@@ -73,25 +61,15 @@ int run_homing_cli(const HomingCli& h) {
   base.noise_clocks = h.noise_clocks;
   base.lockstep = h.engine == "lockstep";
   base.seed = h.seed;
-  base.switch_at = h.cmd->count("--switch-at") > 0 ? h.switch_at : h.direction * h.switch_at;
-  scurve::HomingRequest& r = base.request;
-  r.direction = h.direction;
-  r.seek_speed = h.seek_speed;
-  r.latch_speed = h.latch_speed > 0 ? h.latch_speed
-                                    : std::min(h.seek_speed, std::floor(scurve::exact_latch_speed(h.debounce, h.bounce) / 2));
-  r.a_max = h.a_max;
-  r.j_max = h.j_max;
-  r.max_travel = h.max_travel;
-  r.max_backoff = h.max_backoff;
-  r.offset = h.offset;
+  base.request = std::get<scurve::HomingRequest>(request);
+  const scurve::HomingRequest& r = base.request;
+  base.switch_at = h.cmd->count("--switch-at") > 0 ? h.switch_at : r.direction * h.switch_at;
   base.index_period = h.index_period;
   // One index on the shaft for every run (the switch positions vary): by
   // default half a revolution past the first run's switch.
-  base.index_at = h.cmd->count("--index-at") > 0 ? h.index_at : base.switch_at - h.direction * (h.index_period / 2);
-  r.max_index_travel = h.cmd->count("--max-index-travel") > 0 ? h.max_index_travel : h.index_period;
-  r.poll_period = h.poll_period;
-  base.stop_jerk = h.stop_jerk > 0 ? h.stop_jerk : h.j_max;
-  base.stop_acc = h.stop_acc > 0 ? h.stop_acc : h.a_max;
+  base.index_at = h.cmd->count("--index-at") > 0 ? h.index_at : base.switch_at - r.direction * (h.index_period / 2);
+  base.stop_jerk = h.stop_jerk > 0 ? h.stop_jerk : r.j_max;
+  base.stop_acc = h.stop_acc > 0 ? h.stop_acc : r.a_max;
   if (auto e = scurve::check_homing_request(r, timing)) return scurve::cli::bad_input(e->message);
   const auto stop_limits = scurve::encode_stop_limits(base.stop_jerk, base.stop_acc);
   if (const scurve::Error* e = std::get_if<scurve::Error>(&stop_limits)) return scurve::cli::bad_input(e->message);

@@ -5,6 +5,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "scurve/cli/homing_flags.h"
 #include "scurve/cli/move_flags.h"
 
 namespace sc {
@@ -12,12 +13,10 @@ namespace sc {
 struct HomingCli {
   CLI::App* cmd = nullptr;
   scurve::cli::MoveFlags timing;  // pulse timing, --json, --json-out
-  int direction = -1;
+  scurve::cli::HomingFlags seq;   // the sequence's flags, shared with scurve board home
   int64_t switch_at = 1500;       // on the direction's side unless --switch-at is given
-  double seek_speed = 20000, latch_speed = 0, a_max = 1e6, j_max = 1e9;
-  double stop_jerk = 0, stop_acc = 0, poll_period = 1e-3;
-  int64_t max_travel = 20000, max_backoff = 2000, offset = 0;
-  int64_t index_period = 0, index_at = 0, max_index_travel = 0;
+  double stop_jerk = 0, stop_acc = 0;
+  int64_t index_period = 0, index_at = 0;
   uint32_t debounce = 2000, bounce = 0, noise_clocks = 10;
   double noise_rate = 0;
   int runs = 1;

@@ -4,6 +4,8 @@
 //   scurve regs (same move flags) [--uart] [--no-start] [--closed-loop] [--json]   register writes
 //   scurve stream FILE [--engine ...] [--json]   a stream of moves with look-ahead junctions
 //   scurve home [--switch-at N] [--runs N] [--engine ...] [--json]   homing against a switch in the plant
+//   scurve virtual-board [--pty-link PATH] [--speed X]   the board top behind a pseudo-terminal
+//   scurve board --port DEV info|status|run|stream|stop|estop|clear|home|watch   a board over its UART
 // plan and regs are the host commands (sw/, scurve::host_cli); sim, regress,
 // diff run the RTL and the model.
 // Exit codes: 0 ok, 1 a check failed, 2 bad input (one line on stderr).
@@ -13,9 +15,6 @@
 #include <CLI/CLI.hpp>
 #include <atomic>
 #include <cstdio>
-#include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <iostream>
 #include <mutex>
 #include <nlohmann/json.hpp>
@@ -33,6 +32,7 @@
 #include "homing_cli.h"
 #include "scurve/reg_encode.h"
 #include "tool_commands.h"
+#include "virtual_board.h"
 
 namespace {
 
@@ -103,16 +103,9 @@ int run_stream_cli(const std::string& file, const std::string& engine, bool clos
   if (closed_loop && engine == "model-fast") {
     return bad_input("--engine model-fast: the closed-loop axis has no fast-forward (use lockstep, rtl or model)");
   }
-  std::ifstream in(file);
-  if (!std::filesystem::is_regular_file(file) || !in) return bad_input(fmt::format("FILE={}: cannot read", file));
-  std::stringstream ss;
-  ss << in.rdbuf();
-  StreamRequest req;
-  try {
-    req = parse_stream_json(ss.str());
-  } catch (const input::Error& e) {
-    return bad_input(fmt::format("{}: {}", file, e.what()));
-  }
+  auto loaded = scurve::cli::load_stream_file(file);
+  if (const std::string* e = std::get_if<std::string>(&loaded)) return bad_input(*e);
+  const StreamRequest& req = std::get<StreamRequest>(loaded);
   const PulseTiming timing = to_model(scurve::cli::to_timing(f));
   auto planned = plan_stream(req, timing);
   if (const scurve::Error* e = std::get_if<scurve::Error>(&planned)) return bad_input(e->message);
@@ -209,6 +202,10 @@ int main(int argc, char** argv) {
   HomingCli home;
   add_homing_command(app, home);
 
+  // ---- virtual-board: the board top behind a pseudo-terminal ---------------------
+  VirtualBoardCli virtual_board;
+  add_virtual_board_command(app, virtual_board);
+
   auto tools = add_tool_commands(app);  // diff, regress (tb/tools/tool_commands.h)
 
   if (const auto rc = scurve::cli::parse_command_line(app, argc, argv)) return *rc;
@@ -218,6 +215,8 @@ int main(int argc, char** argv) {
   if (int rc = 0; host->run(&rc)) return rc;
 
   if (*home.cmd) return run_homing_cli(home);
+
+  if (*virtual_board.cmd) return run_virtual_board_cli(virtual_board);
 
   if (*stream_cmd) return run_stream_cli(stream_file, stream_engine, stream_closed_loop, tf);
 

@@ -21,19 +21,11 @@ void PlannedStream::add(const scurve::StreamedMove& m, bool last_of_stream) {
 }
 
 std::variant<PlannedStream, scurve::Error> plan_stream(const StreamRequest& request, const PulseTiming& timing) {
-  scurve::StreamPlanner sp(model_clock(), to_host(timing), request.limits);
-  std::vector<scurve::StreamedMove> planned;
-  for (size_t i = 0; i < request.moves.size(); ++i) {
-    if (auto e = sp.append(request.moves[i])) {
-      return scurve::Error{e->parameter, fmt::format("moves[{}]: {}", i, e->message)};
-    }
-    for (scurve::StreamedMove& m : sp.take_ready()) planned.push_back(std::move(m));
-  }
-  if (auto e = sp.flush()) return *e;
-  for (scurve::StreamedMove& m : sp.take_ready()) planned.push_back(std::move(m));
+  auto planned = scurve::plan_whole_stream(model_clock(), to_host(timing), request.limits, request.moves);
+  if (const scurve::Error* e = std::get_if<scurve::Error>(&planned)) return *e;
   PlannedStream s;
-  for (size_t i = 0; i < planned.size(); ++i) s.add(planned[i], i + 1 == planned.size());
-  s.moves = std::move(planned);
+  s.moves = std::move(std::get<std::vector<scurve::StreamedMove>>(planned));
+  for (size_t i = 0; i < s.moves.size(); ++i) s.add(s.moves[i], i + 1 == s.moves.size());
   return s;
 }
 

@@ -14,12 +14,14 @@
 #include <vector>
 
 #include "planner.h"
+#include "scurve/cli/stream_file.h"
 #include "scurve/stream_planner.h"
 #include "sim_run.h"
-#include "stream_json.h"
 
 namespace sc {
 
+using scurve::cli::parse_stream_json;
+using scurve::cli::StreamRequest;
 
 // Planned moves, their rows as FIFO words (the last row of the last move
 // ends the stream) and each move's end position (the running sum).

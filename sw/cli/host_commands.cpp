@@ -2,6 +2,7 @@
 
 #include <iostream>
 
+#include "scurve/cli/board_cli.h"
 #include "scurve/cli/move_flags.h"
 #include "scurve/cli/plan_report.h"
 #include "scurve/cli/regs_cli.h"
@@ -23,6 +24,8 @@ class HostCommandsImpl : public HostCommands {
     add_clock_flag(regs_cmd_, rf_);
     add_output_flags(regs_cmd_, rf_);
     add_regs_flags(regs_cmd_, regs_flags_);
+
+    board_ = add_board_command(app);
   }
 
   bool run(int* rc) const override {
@@ -34,7 +37,7 @@ class HostCommandsImpl : public HostCommands {
       *rc = run_regs();
       return true;
     }
-    return false;
+    return board_->run(rc);
   }
 
  private:
@@ -63,6 +66,7 @@ class HostCommandsImpl : public HostCommands {
   CLI::App* regs_cmd_ = nullptr;
   MoveFlags pf_, rf_;
   RegsCliFlags regs_flags_;
+  std::unique_ptr<BoardCommand> board_;
 };
 
 }  // namespace

@@ -329,4 +329,18 @@ std::vector<double> StreamPlanner::queued_junctions() const {
   return v;
 }
 
+std::variant<std::vector<StreamedMove>, Error> plan_whole_stream(Clock clock, PulseTiming timing,
+                                                                 const StreamLimits& limits,
+                                                                 const std::vector<StreamMove>& moves) {
+  StreamPlanner sp(clock, timing, limits);
+  std::vector<StreamedMove> planned;
+  for (size_t i = 0; i < moves.size(); ++i) {
+    if (auto e = sp.append(moves[i])) return Error{e->parameter, fmt::format("moves[{}]: {}", i, e->message)};
+    for (StreamedMove& m : sp.take_ready()) planned.push_back(std::move(m));
+  }
+  if (auto e = sp.flush()) return *e;
+  for (StreamedMove& m : sp.take_ready()) planned.push_back(std::move(m));
+  return planned;
+}
+
 }  // namespace scurve

@@ -7,16 +7,16 @@
 #include <string>
 
 #include "fuzz_check.h"
+#include "scurve/cli/stream_file.h"
 #include "scurve/cli/user_input.h"
 #include "scurve/stream_planner.h"
-#include "stream_json.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);
-  sc::StreamRequest req;
+  scurve::cli::StreamRequest req;
   try {
-    req = sc::parse_stream_json(text);
-  } catch (const sc::input::Error& e) {
+    req = scurve::cli::parse_stream_json(text);
+  } catch (const scurve::input::Error& e) {
     fuzz::one_line_message(e.what());
     return 0;
   }

@@ -42,12 +42,14 @@ if(SC_SANITIZE)
 endif()
 add_test(NAME tools.output_files_whole_or_refused
   COMMAND ${SC_TESTS_DIR}/output_files_test.sh $<TARGET_FILE:scurve> $<TARGET_FILE:sc_bench> ${pin_bench})
+add_test(NAME tools.board_driver_over_a_pty
+  COMMAND ${SC_TESTS_DIR}/board_pty_test.sh $<TARGET_FILE:scurve> ${PROJECT_SOURCE_DIR})
 add_test(NAME tools.regress_shards_cover_list
   COMMAND ${SC_SYSTEM_PYTHON} ${SC_TESTS_DIR}/systemc/check_regress.py shards $<TARGET_FILE:scurve>
           ${SC_TESTS_DIR}/systemc/shard_list.json ${CMAKE_BINARY_DIR}/regress-shards)
 set_tests_properties(tools.cli_contract tools.cli_contract_closed_loop tools.cli_bad_input_closed_loop tools.cli_clock_hz
                      tools.regs_cli_uart_frames tools.regs_cli_closed_loop tools.output_files_whole_or_refused
-                     tools.regress_shards_cover_list PROPERTIES LABELS tools TIMEOUT 600)
+                     tools.regress_shards_cover_list tools.board_driver_over_a_pty PROPERTIES LABELS tools TIMEOUT 600)
 # Under the sanitizers its bench runs take minutes (about 250 s in all). In
 # the default build it is an `extended` test (CI's stage after the default
 # suite), since it runs there anyway, instrumented.

@@ -37,20 +37,9 @@
 #include <variant>
 
 #include "scurve/planner.h"
+#include "scurve/register_port.h"
 
 namespace scurve {
-
-// The board as the host sees it: register reads and writes (an Error when
-// the access failed: a bus error, no answer) and the passing of time.
-class RegisterPort {
- public:
-  virtual ~RegisterPort() = default;
-  virtual std::optional<Error> write(uint32_t addr, uint32_t data) = 0;
-  virtual std::variant<uint32_t, Error> read(uint32_t addr) = 0;
-  // Let `seconds` of board time pass (a real board: sleep; a simulation:
-  // run the clocks).
-  virtual void wait(double seconds) = 0;
-};
 
 struct HomingRequest {
   int direction = -1;          // where the home switch lies: -1 negative, +1 positive

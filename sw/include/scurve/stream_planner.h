@@ -27,6 +27,7 @@
 #include <deque>
 #include <memory>
 #include <optional>
+#include <variant>
 #include <vector>
 
 #include "scurve/planner.h"
@@ -139,5 +140,12 @@ class StreamPlanner {
   uint64_t next_index_ = 0;
   i128 appended_end_ = 0;  // start_position + the distances appended so far
 };
+
+// A whole stream at once: every move appended, then flushed. The planned
+// moves in order, or the first Error, its message prefixed with the move's
+// place ("moves[3]: ...").
+std::variant<std::vector<StreamedMove>, Error> plan_whole_stream(Clock clock, PulseTiming timing,
+                                                                 const StreamLimits& limits,
+                                                                 const std::vector<StreamMove>& moves);
 
 }  // namespace scurve

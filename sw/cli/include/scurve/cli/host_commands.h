@@ -1,6 +1,7 @@
-// The host commands of `scurve`: plan (segment table) and regs (register
-// writes / UART frames). They need nothing but the host library; the full
-// project's `scurve` registers them next to its simulation commands.
+// The host commands of `scurve`: plan (segment table), regs (register
+// writes / UART frames) and board (a board driven over its UART). They
+// need nothing but the host library; the full project's `scurve` registers
+// them next to its simulation commands.
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -15,7 +16,7 @@ class HostCommands {
   virtual bool run(int* exit_code) const = 0;
 };
 
-// Adds `plan` and `regs` to app; call before app.parse().
+// Adds `plan`, `regs` and `board` to app; call before app.parse().
 std::unique_ptr<HostCommands> add_host_commands(CLI::App& app);
 
 }  // namespace scurve::cli

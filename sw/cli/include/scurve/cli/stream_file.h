@@ -1,14 +1,15 @@
-// Stream files of `scurve stream FILE`: parsed through the validation layer
-// (every number checked in one place, errors naming the place). Links
-// without Verilator or SystemC (the sanitizer build and the fuzz harness).
+// Stream files of `scurve stream FILE` (simulation) and `scurve board
+// stream FILE` (a board): parsed through the validation layer (every number
+// checked in one place, errors naming the place).
 #pragma once
 
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "scurve/stream_planner.h"
 
-namespace sc {
+namespace scurve::cli {
 
 // The stream file of `scurve stream`: {"limits": {"a_max", "j_max", "v_max"},
 // "moves": [{"distance", "v_cruise", "v_junction_max"}, ...]} (the junction
@@ -22,5 +23,8 @@ struct StreamRequest {
   std::vector<scurve::StreamMove> moves;
 };
 StreamRequest parse_stream_json(const std::string& text);
+// Reads and parses the file: the request, or one line naming the file and
+// the place ("FILE=s.json: cannot read", "s.json: moves[3].v_cruise=...").
+std::variant<StreamRequest, std::string> load_stream_file(const std::string& path);
 
-}  // namespace sc
+}  // namespace scurve::cli

@@ -1,12 +1,15 @@
-#include "stream_json.h"
+#include "scurve/cli/stream_file.h"
 
 #include <fmt/format.h>
 
+#include <filesystem>
+#include <fstream>
 #include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "scurve/cli/user_input.h"
 
-namespace sc {
+namespace scurve::cli {
 
 StreamRequest parse_stream_json(const std::string& text) {
   nlohmann::json j;
@@ -20,12 +23,12 @@ StreamRequest parse_stream_json(const std::string& text) {
   StreamRequest r;
   json_object("stream", j);
   json_known_keys("stream", j, {"_comment", "limits", "moves", "soft_limits", "start_position"});
-  if (!j.contains("limits")) throw Error("limits", "missing", "needs {\"a_max\", \"j_max\", \"v_max\"}");
-  if (!j.contains("moves")) throw Error("moves", "missing", "needs an array of moves");
+  if (!j.contains("limits")) throw input::Error("limits", "missing", "needs {\"a_max\", \"j_max\", \"v_max\"}");
+  if (!j.contains("moves")) throw input::Error("moves", "missing", "needs an array of moves");
   const nlohmann::json& l = json_object("limits", j["limits"]);
   json_known_keys("limits", l, {"a_max", "j_max", "v_max"});
   for (const char* k : {"a_max", "j_max", "v_max"}) {
-    if (!l.contains(k)) throw Error(std::string("limits.") + k, "missing", "required");
+    if (!l.contains(k)) throw input::Error(std::string("limits.") + k, "missing", "required");
   }
   r.limits.a_max = json_real("limits.a_max", l["a_max"], 0, kAny);
   r.limits.j_max = json_real("limits.j_max", l["j_max"], 0, kAny);
@@ -37,7 +40,9 @@ StreamRequest parse_stream_json(const std::string& text) {
   if (j.contains("soft_limits")) {
     const nlohmann::json& w = json_object("soft_limits", j["soft_limits"]);
     json_known_keys("soft_limits", w, {"min", "max", "axis"});
-    if (!w.contains("min") && !w.contains("max")) throw Error("soft_limits", shown(w), "needs \"min\" and/or \"max\"");
+    if (!w.contains("min") && !w.contains("max")) {
+      throw input::Error("soft_limits", shown(w), "needs \"min\" and/or \"max\"");
+    }
     scurve::SoftLimits sl;
     if (w.contains("min")) sl.min_pos = json_int("soft_limits.min", w["min"], -kPos, kPos);
     if (w.contains("max")) sl.max_pos = json_int("soft_limits.max", w["max"], -kPos, kPos);
@@ -46,19 +51,19 @@ StreamRequest parse_stream_json(const std::string& text) {
                            scurve::SoftLimits::kMaxAxisName);
     }
     if (sl.min_pos && sl.max_pos && *sl.min_pos > *sl.max_pos) {
-      throw Error("soft_limits.min", std::to_string(*sl.min_pos),
+      throw input::Error("soft_limits.min", std::to_string(*sl.min_pos),
                   fmt::format("must be <= soft_limits.max={}", *sl.max_pos));
     }
     r.limits.soft_limits = sl;
   }
   const nlohmann::json& ms = json_array("moves", j["moves"]);
-  if (ms.empty()) throw Error("moves", "[]", "needs at least one move");
+  if (ms.empty()) throw input::Error("moves", "[]", "needs at least one move");
   for (size_t i = 0; i < ms.size(); ++i) {
     const std::string at = fmt::format("moves[{}]", i);
     const nlohmann::json& m = json_object(at, ms[i]);
     json_known_keys(at, m, {"distance", "v_cruise", "v_junction_max"});
-    if (!m.contains("distance")) throw Error(at + ".distance", "missing", "required");
-    if (!m.contains("v_cruise")) throw Error(at + ".v_cruise", "missing", "required");
+    if (!m.contains("distance")) throw input::Error(at + ".distance", "missing", "required");
+    if (!m.contains("v_cruise")) throw input::Error(at + ".v_cruise", "missing", "required");
     scurve::StreamMove mv;
     mv.distance = json_int(at + ".distance", m["distance"], -scurve::PlannerLimits::kMaxDistance,
                            scurve::PlannerLimits::kMaxDistance);
@@ -70,4 +75,18 @@ StreamRequest parse_stream_json(const std::string& text) {
   return r;
 }
 
-}  // namespace sc
+std::variant<StreamRequest, std::string> load_stream_file(const std::string& path) {
+  std::ifstream in(path);
+  if (!std::filesystem::is_regular_file(path) || !in) {
+    return fmt::format("FILE={}: cannot read", input::printable(path));
+  }
+  std::stringstream ss;
+  ss << in.rdbuf();
+  try {
+    return parse_stream_json(ss.str());
+  } catch (const input::Error& e) {
+    return fmt::format("{}: {}", input::printable(path), e.what());
+  }
+}
+
+}  // namespace scurve::cli

@@ -1,0 +1,388 @@
+#include "scurve/cli/board_cli.h"
+
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <thread>
+
+#include "scurve/board.h"
+#include "scurve/cli/homing_flags.h"
+#include "scurve/cli/move_flags.h"
+#include "scurve/cli/stream_file.h"
+#include "scurve/hw/params.h"
+
+namespace scurve::cli {
+
+namespace {
+
+nlohmann::json status_json(const BoardStatus& s) {
+  return {{"ref_pos", s.ref_pos},
+          {"enc_pos", s.enc_pos},
+          {"pulse_count", s.pulse_count},
+          {"follow_err", s.follow_err},
+          {"boundary_pos", s.boundary_pos},
+          {"move_index", s.move_index},
+          {"phase", phase_name(s.phase())},
+          {"busy", s.busy()},
+          {"done", s.done()},
+          {"enabled", s.enabled()},
+          {"closed_loop", s.closed_loop()},
+          {"fifo_level", s.fifo_level()},
+          {"faults", s.faults()},
+          {"registers",
+           {{"CTRL", s.ctrl}, {"STATUS", s.status}, {"ERR", s.err}, {"FIFO_STATUS", s.fifo_status},
+            {"IRQ_STATUS", s.irq_status}}}};
+}
+
+std::string status_table(const BoardStatus& s) {
+  const std::vector<std::string> f = s.faults();
+  return fmt::format(
+      "REF_POS {}  ENC_POS {}  PULSE_COUNT {}  FOLLOW_ERR {}\n"
+      "phase {}  {}{}  {}  FIFO {}  moves {}  BOUNDARY_POS {}\n"
+      "faults: {}\n",
+      s.ref_pos, s.enc_pos, s.pulse_count, s.follow_err, phase_name(s.phase()),
+      s.busy() ? "busy" : "idle", s.done() ? ", done" : "", s.enabled() ? "enabled" : "disabled", s.fifo_level(),
+      s.move_index, s.boundary_pos, f.empty() ? "none" : fmt::format("{}", fmt::join(f, ", ")));
+}
+
+nlohmann::json link_json(const LinkStats& l) {
+  return {{"accesses", l.accesses}, {"frames", l.frames},           {"retries", l.retries},
+          {"timeouts", l.timeouts}, {"bad_responses", l.bad_responses}, {"crc_rejects", l.crc_rejects},
+          {"discarded", l.discarded}};
+}
+
+class BoardCommandImpl : public BoardCommand {
+ public:
+  explicit BoardCommandImpl(CLI::App& app) {
+    cmd_ = app.add_subcommand("board", "drive a board (or the virtual board) over its UART");
+    cmd_->require_subcommand(1);
+    cmd_->add_option("--port", port_, "the board's serial device (/dev/ttyUSB1, the virtual board's pty)")
+        ->required();
+    int_flag(cmd_, "--baud", link_.baud, 1, 100'000'000, "line rate of the board's UART (default 115200)");
+    real_flag(cmd_, "--timeout-ms", timeout_ms_, "wait for each answer, ms (default 200)");
+    int_flag(cmd_, "--retries", link_.retries, 0, 1'000'000,
+             "tries again after a timeout or a garbled answer (default 3)");
+    real_flag(cmd_, "--clock-hz", clock_hz_, "the board's system clock, Hz (default 20e6)");
+    cmd_->add_flag("--json", json_, "JSON on stdout");
+
+    info_ = sub("info", "identify the board: ID, register map version, axes, closed loop");
+    status_ = sub("status", "one reading of the axis: positions, phase, FIFO, faults");
+    run_ = sub("run", "plan a move, load it, start it, wait for the end and check it");
+    add_move_flags(run_, move_);
+    run_->add_flag("--closed-loop", closed_loop_, "run it closed loop (the servo axis)");
+    run_->add_flag("--no-wait", no_wait_, "return once started");
+    real_flag(run_, "--timeout", run_timeout_, "seconds the move may take (default 120)", 0, 1e6);
+    stream_ = sub("stream", "plan a stream file with look-ahead junctions and run it, the FIFO kept topped up");
+    stream_->add_option("FILE", stream_file_, "stream file (docs/streaming.md)")->required();
+    add_timing_flags(stream_, stream_timing_);
+    stream_->add_flag("--closed-loop", closed_loop_, "run it closed loop (the servo axis)");
+    real_flag(stream_, "--timeout", run_timeout_, "seconds the stream may take (default 120)", 0, 1e6);
+    stop_ = sub("stop", "controlled stop (CMD.STOP), then wait for rest");
+    estop_ = sub("estop", "e-stop (CMD.ESTOP): the axis stops at once and is disabled until `clear`");
+    clear_ = sub("clear", "clear every ERR and IRQ_STATUS flag (after an e-stop or a fault)");
+    home_ = sub("home", "home the axis: seek the home switch, back off slowly, latch the release, set the zero");
+    add_homing_flags(home_, home_flags_);
+    add_timing_flags(home_, home_timing_);
+    watch_ = sub("watch", "a live status line: position, speed, phase, FIFO level, faults");
+    real_flag(watch_, "--interval", watch_interval_, "seconds between readings (default 0.2)", 0.001, 3600);
+    int_flag(watch_, "--count", watch_count_, 0, 1'000'000'000, "readings, then exit (default 0: until Ctrl-C)");
+  }
+
+  bool run(int* rc) const override {
+    if (!*cmd_) return false;
+    *rc = run_selected();
+    return true;
+  }
+
+ private:
+  CLI::App* sub(const char* name, const char* what) {
+    CLI::App* c = cmd_->add_subcommand(name, what);
+    c->fallthrough();  // --port and the link flags may come after the action
+    return c;
+  }
+
+  // One line on stderr, the exit code for it.
+  static int fail(const Error& e) {
+    std::cerr << "error: " << input::printable(e.message) << "\n";
+    return board_exit_code(e);
+  }
+
+  int run_selected() const {
+    LinkOptions lo = link_;
+    lo.timeout = timeout_ms_ / 1e3;
+    if (auto e = check_link_options(lo)) return fail(*e);
+    if (std::string e = check_clock_flag(clock_hz_); !e.empty()) return bad_input(e);
+    auto opened = open_serial_port({port_, lo.baud});
+    if (const Error* e = std::get_if<Error>(&opened)) return fail(*e);
+    std::unique_ptr<ByteChannel> line = std::move(std::get<std::unique_ptr<ByteChannel>>(opened));
+    UartLink link(*line, lo);
+    Board board(link, Clock{clock_hz_});
+    auto info = board.identify();
+    if (const Error* e = std::get_if<Error>(&info)) return fail(*e);
+    Session s{board, link, std::get<BoardInfo>(info)};
+    if (*info_) return do_info(s);
+    if (*status_) return do_status(s);
+    if (*run_) return do_run(s);
+    if (*stream_) return do_stream(s);
+    if (*stop_) return do_stop(s);
+    if (*estop_) return do_simple(s, board.estop(), "estop");
+    if (*clear_) return do_simple(s, board.clear_faults(), "clear");
+    if (*home_) return do_home(s);
+    if (*watch_) return do_watch(s);
+    return bad_input("board: an action is required");
+  }
+
+  struct Session {
+    Board& board;
+    UartLink& link;
+    BoardInfo info;
+  };
+
+  int emit(const Session& s, nlohmann::json j, const std::string& text, int rc) const {
+    if (json_) {
+      j["port"] = port_;
+      j["link"] = link_json(s.link.stats());
+      std::cout << j.dump(2) << "\n";
+    } else {
+      std::cout << text;
+    }
+    return rc;
+  }
+
+  int do_info(Session& s) const {
+    const BoardInfo& i = s.info;
+    return emit(s,
+                {{"id", i.id}, {"version", fmt::format("{}.{}", i.version_major, i.version_minor)},
+                 {"axes", i.axes}, {"closed_loop", i.closed_loop}},
+                fmt::format("board on {}: ID 0x{:08X}, register map {}.{}, {} axis, {}\n", port_, i.id,
+                            i.version_major, i.version_minor, i.axes,
+                            i.closed_loop ? "closed-loop servo axis" : "open-loop axis"),
+                0);
+  }
+
+  int do_status(Session& s) const {
+    auto st = s.board.status();
+    if (const Error* e = std::get_if<Error>(&st)) return fail(*e);
+    const BoardStatus& b = std::get<BoardStatus>(st);
+    return emit(s, status_json(b), status_table(b), 0);
+  }
+
+  int do_simple(Session& s, std::optional<Error> e, const char* what) const {
+    if (e) return fail(*e);
+    auto st = s.board.status();
+    if (const Error* e2 = std::get_if<Error>(&st)) return fail(*e2);
+    const BoardStatus& b = std::get<BoardStatus>(st);
+    return emit(s, {{"action", what}, {"status", status_json(b)}}, fmt::format("{}: done\n{}", what, status_table(b)),
+                0);
+  }
+
+  int do_stop(Session& s) const {
+    if (auto e = s.board.stop()) return fail(*e);
+    auto st = s.board.wait_idle(run_timeout_);
+    if (const Error* e = std::get_if<Error>(&st)) return fail(*e);
+    const BoardStatus& b = std::get<BoardStatus>(st);
+    return emit(s, {{"action", "stop"}, {"status", status_json(b)}}, "stop: at rest\n" + status_table(b), 0);
+  }
+
+  // REF_POS now (the start of a move or stream).
+  static std::variant<int32_t, Error> ref_pos(Session& s) {
+    auto st = s.board.status();
+    if (const Error* e = std::get_if<Error>(&st)) return *e;
+    return std::get<BoardStatus>(st).ref_pos;
+  }
+
+  int do_run(Session& s) const {
+    auto r0 = ref_pos(s);
+    if (const Error* e = std::get_if<Error>(&r0)) return fail(*e);
+    const int32_t start_ref = std::get<int32_t>(r0);
+    MoveFlags f = move_;
+    f.clock_hz = clock_hz_;
+    f.start_pos = start_ref;  // the window is checked from where the axis is
+    const auto planned = plan_flags(f);
+    if (const Error* e = std::get_if<Error>(&planned)) return bad_input(e->message);
+    const Plan& plan = std::get<Plan>(planned);
+    const MoveRequest request = to_request(f);
+    BoardConfig cfg;
+    cfg.timing = to_timing(f);
+    cfg.closed_loop = closed_loop_;
+    cfg.stop = move_stop_limits(request, Clock{clock_hz_});
+    cfg.soft_limits = request.soft_limits;
+    if (auto e = s.board.configure(cfg)) return fail(*e);
+    if (auto e = s.board.load_move(plan)) return fail(*e);
+    if (auto e = s.board.start()) return fail(*e);
+    if (no_wait_) {
+      return emit(s, {{"action", "run"}, {"started", true}, {"distance", request.distance}},
+                  fmt::format("run: started, {} pulses\n", request.distance), 0);
+    }
+    auto st = s.board.wait_idle(run_timeout_);
+    if (const Error* e = std::get_if<Error>(&st)) return fail(*e);
+    const BoardStatus& b = std::get<BoardStatus>(st);
+    // The board's own account against the plan: the reference moved by the
+    // distance and, open loop, the pulses on the pin are the distance.
+    std::vector<std::string> problems;
+    for (const std::string& x : b.faults()) problems.push_back(x);
+    const int64_t moved = int64_t(b.ref_pos) - start_ref;
+    if (moved != request.distance) {
+      problems.push_back(fmt::format("REF_POS moved {} (planned {})", moved, request.distance));
+    }
+    if (!closed_loop_ && b.pulse_count != request.distance) {
+      problems.push_back(fmt::format("PULSE_COUNT {} (planned {})", b.pulse_count, request.distance));
+    }
+    if (!b.done()) problems.push_back("not DONE");
+    const bool pass = problems.empty();
+    nlohmann::json j = {{"action", "run"},        {"distance", request.distance}, {"start_ref", start_ref},
+                        {"duration_s", plan.duration_s}, {"pass", pass},          {"problems", problems},
+                        {"status", status_json(b)}};
+    std::string text = fmt::format("run: {} pulses in {:.6f} s planned\n{}", request.distance, plan.duration_s,
+                                   status_table(b));
+    if (!pass) {
+      std::cerr << "error: run: " << fmt::format("{}", fmt::join(problems, "; ")) << "\n";
+      text += "FAIL\n";
+    } else {
+      text += "PASS\n";
+    }
+    return emit(s, j, text, pass ? 0 : 1);
+  }
+
+  int do_stream(Session& s) const {
+    auto loaded = load_stream_file(stream_file_);
+    if (const std::string* e = std::get_if<std::string>(&loaded)) return bad_input(*e);
+    StreamRequest req = std::get<StreamRequest>(loaded);
+    auto r0 = ref_pos(s);
+    if (const Error* e = std::get_if<Error>(&r0)) return fail(*e);
+    req.limits.start_position = std::get<int32_t>(r0);  // the window is checked from where the axis is
+    const PulseTiming timing = to_timing(stream_timing_);
+    auto planned = plan_whole_stream(Clock{clock_hz_}, timing, req.limits, req.moves);
+    if (const Error* e = std::get_if<Error>(&planned)) return bad_input(e->message);
+    const auto& moves = std::get<std::vector<StreamedMove>>(planned);
+    BoardConfig cfg;
+    cfg.timing = timing;
+    cfg.closed_loop = closed_loop_;
+    cfg.stop = StopLimits{req.limits.j_max, req.limits.a_max};
+    cfg.soft_limits = req.limits.soft_limits;
+    if (auto e = s.board.configure(cfg)) return fail(*e);
+    const bool tty = isatty(2);
+    auto progress = [&](const BoardStatus& b) {
+      if (tty) std::fprintf(stderr, "\r[stream: move %u of %zu, FIFO %d]", b.move_index, moves.size(), b.fifo_level());
+    };
+    auto run = s.board.run_stream(moves, kOne / 2, run_timeout_, 0.005, progress);
+    if (tty) std::fputs("\n", stderr);
+    if (const Error* e = std::get_if<Error>(&run)) return fail(*e);
+    const StreamRunReport& r = std::get<StreamRunReport>(run);
+    return emit(s,
+                {{"action", "stream"},
+                 {"moves", r.moves},
+                 {"rows", r.rows},
+                 {"start_ref", r.start_ref},
+                 {"end_ref", r.end_ref},
+                 {"expected_end", r.expected_end},
+                 {"boundaries_checked", r.boundaries_checked},
+                 {"pass", true},
+                 {"status", status_json(r.final_status)}},
+                fmt::format("stream: {} moves, {} rows: REF_POS {} -> {} (planned {}), {} boundaries checked\nPASS\n",
+                            r.moves, r.rows, r.start_ref, r.end_ref, r.expected_end, r.boundaries_checked),
+                0);
+  }
+
+  int do_home(Session& s) const {
+    // The default latch speed keeps the zero exact for the board's own
+    // debounce (SW_CFG.DEBOUNCE) and a clean switch.
+    auto sw = s.link.read(hw::RegSwCfg);
+    if (const Error* e = std::get_if<Error>(&sw)) return fail(*e);
+    const uint32_t debounce = std::get<uint32_t>(sw) >> hw::SwDebounceLsb;
+    const Clock clock{clock_hz_};
+    const double default_latch =
+        std::min(home_flags_.seek_speed, std::floor(exact_latch_speed(debounce, 0, clock) / 2));
+    auto req = to_homing_request(home_, home_flags_, default_latch);
+    if (const Error* e = std::get_if<Error>(&req)) return bad_input(e->message);
+    const HomingRequest& r = std::get<HomingRequest>(req);
+    const PulseTiming timing = to_timing(home_timing_);
+    if (auto e = check_homing_request(r, timing, clock)) return bad_input(e->message);
+    auto st = s.board.status();
+    if (const Error* e = std::get_if<Error>(&st)) return fail(*e);
+    BoardConfig cfg;
+    cfg.timing = timing;
+    cfg.closed_loop = std::get<BoardStatus>(st).closed_loop();  // homes in the axis's mode
+    cfg.stop = StopLimits{r.j_max, r.a_max};
+    if (auto e = s.board.configure(cfg)) return fail(*e);
+    auto out = home(s.link, r, timing, clock);
+    if (const Error* e = std::get_if<Error>(&out)) return fail(*e);
+    const HomingResult& h = std::get<HomingResult>(out);
+    return emit(s,
+                {{"action", "home"},
+                 {"home_ref", h.home_ref},
+                 {"release_ref", h.release_ref},
+                 {"on_index", h.on_index},
+                 {"index_enc", h.index_enc},
+                 {"seek_stop", h.seek_stop},
+                 {"backoff_stop", h.backoff_stop},
+                 {"seek_skipped", h.seek_skipped},
+                 {"offset", h.offset},
+                 {"latch_speed", r.latch_speed}},
+                fmt::format("home: zero at REF_POS {} ({}), machine position {} there; at rest at REF_POS {}\n",
+                            h.home_ref, h.on_index ? "the encoder index" : "the switch release", h.offset,
+                            h.backoff_stop),
+                0);
+  }
+
+  int do_watch(Session& s) const {
+    using clk = std::chrono::steady_clock;
+    const bool tty = isatty(1);
+    std::optional<std::pair<clk::time_point, int32_t>> last;
+    for (int n = 0; watch_count_ == 0 || n < watch_count_; ++n) {
+      if (n > 0) std::this_thread::sleep_for(std::chrono::duration<double>(watch_interval_));
+      auto st = s.board.status();
+      if (const Error* e = std::get_if<Error>(&st)) {
+        if (tty) std::cout << "\n";
+        return fail(*e);
+      }
+      const BoardStatus& b = std::get<BoardStatus>(st);
+      const auto now = clk::now();
+      // Speed from two readings of REF_POS (host time between them).
+      double speed = 0;
+      if (last) speed = double(int32_t(uint32_t(b.ref_pos) - uint32_t(last->second))) /
+                        std::chrono::duration<double>(now - last->first).count();
+      last = {now, b.ref_pos};
+      const std::vector<std::string> f = b.faults();
+      if (json_) {
+        nlohmann::json j = status_json(b);
+        j["speed"] = speed;
+        std::cout << j.dump() << std::endl;  // JSON Lines
+        continue;
+      }
+      const std::string line = fmt::format(
+          "REF_POS {:>11}  ENC_POS {:>11}  speed {:>10.0f} p/s  {:<14} FIFO {:>2}  move {:>5}  faults: {}", b.ref_pos,
+          b.enc_pos, speed, phase_name(b.phase()), b.fifo_level(), b.move_index,
+          f.empty() ? "none" : fmt::format("{}", fmt::join(f, ",")));
+      std::cout << (tty ? "\r" : "") << line << (tty ? "\033[K" : "\n") << std::flush;
+    }
+    if (tty && !json_) std::cout << "\n";
+    return 0;
+  }
+
+  CLI::App* cmd_ = nullptr;
+  CLI::App *info_ = nullptr, *status_ = nullptr, *run_ = nullptr, *stream_ = nullptr, *stop_ = nullptr;
+  CLI::App *estop_ = nullptr, *clear_ = nullptr, *home_ = nullptr, *watch_ = nullptr;
+  std::string port_;
+  LinkOptions link_;
+  double timeout_ms_ = 200;
+  double clock_hz_ = Clock::kDefaultHz;
+  bool json_ = false;
+  MoveFlags move_, stream_timing_, home_timing_;
+  bool closed_loop_ = false, no_wait_ = false;
+  double run_timeout_ = 120;
+  std::string stream_file_;
+  HomingFlags home_flags_;
+  double watch_interval_ = 0.2;
+  int watch_count_ = 0;
+};
+
+}  // namespace
+
+std::unique_ptr<BoardCommand> add_board_command(CLI::App& app) { return std::make_unique<BoardCommandImpl>(app); }
+
+}  // namespace scurve::cli
