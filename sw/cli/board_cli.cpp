@@ -17,9 +17,7 @@
 
 namespace scurve::cli {
 
-namespace {
-
-nlohmann::json status_json(const BoardStatus& s) {
+nlohmann::json board_status_json(const BoardStatus& s) {
   return {{"ref_pos", s.ref_pos},
           {"enc_pos", s.enc_pos},
           {"pulse_count", s.pulse_count},
@@ -38,6 +36,114 @@ nlohmann::json status_json(const BoardStatus& s) {
             {"IRQ_STATUS", s.irq_status}}}};
 }
 
+nlohmann::json board_info_json(const BoardInfo& i) {
+  return {{"id", i.id},
+          {"version", fmt::format("{}.{}", i.version_major, i.version_minor)},
+          {"axes", i.axes},
+          {"closed_loop", i.closed_loop}};
+}
+
+nlohmann::json link_json(const LinkStats& l) {
+  return {{"accesses", l.accesses}, {"frames", l.frames},           {"retries", l.retries},
+          {"timeouts", l.timeouts}, {"bad_responses", l.bad_responses}, {"crc_rejects", l.crc_rejects},
+          {"discarded", l.discarded}};
+}
+
+namespace {
+
+// REF_POS now (the start of a move or stream).
+std::variant<int32_t, Error> ref_pos(Board& board) {
+  auto st = board.status();
+  if (const Error* e = std::get_if<Error>(&st)) return *e;
+  return std::get<BoardStatus>(st).ref_pos;
+}
+
+}  // namespace
+
+std::variant<nlohmann::json, Error> run_move_on_board(Board& board, MoveFlags f, bool closed_loop, bool wait,
+                                                      double timeout) {
+  auto r0 = ref_pos(board);
+  if (const Error* e = std::get_if<Error>(&r0)) return *e;
+  const int32_t start_ref = std::get<int32_t>(r0);
+  f.start_pos = start_ref;  // the window is checked from where the axis is
+  auto planned = plan_flags(f);
+  if (const Error* e = std::get_if<Error>(&planned)) {
+    return Error{e->parameter.empty() ? "move" : e->parameter, e->message};
+  }
+  const Plan& plan = std::get<Plan>(planned);
+  const MoveRequest request = to_request(f);
+  BoardConfig cfg;
+  cfg.timing = to_timing(f);
+  cfg.closed_loop = closed_loop;
+  cfg.stop = move_stop_limits(request, to_clock(f));
+  cfg.soft_limits = request.soft_limits;
+  if (auto e = board.configure(cfg)) return *e;
+  if (auto e = board.load_move(plan)) return *e;
+  if (auto e = board.start()) return *e;
+  nlohmann::json j = {{"action", "run"}, {"distance", request.distance}, {"start_ref", start_ref},
+                      {"duration_s", plan.duration_s}};
+  if (!wait) {
+    j["started"] = true;
+    return j;
+  }
+  auto st = board.wait_idle(timeout);
+  if (const Error* e = std::get_if<Error>(&st)) return *e;
+  const BoardStatus& b = std::get<BoardStatus>(st);
+  // The board's own account against the plan: the reference moved by the
+  // distance and, open loop, the pulses on the pin are the distance.
+  std::vector<std::string> problems = b.faults();
+  const int64_t moved = int64_t(b.ref_pos) - start_ref;
+  if (moved != request.distance) {
+    problems.push_back(fmt::format("REF_POS moved {} (planned {})", moved, request.distance));
+  }
+  if (!closed_loop && b.pulse_count != request.distance) {
+    problems.push_back(fmt::format("PULSE_COUNT {} (planned {})", b.pulse_count, request.distance));
+  }
+  if (!b.done()) problems.push_back("not DONE");
+  j["pass"] = problems.empty();
+  j["problems"] = problems;
+  j["status"] = board_status_json(b);
+  return j;
+}
+
+std::variant<nlohmann::json, Error> run_stream_on_board(
+    Board& board, const std::string& file, const PulseTiming& timing, bool closed_loop, double timeout,
+    const std::function<void(const BoardStatus&, size_t moves)>& progress) {
+  auto loaded = load_stream_file(file);
+  if (const std::string* e = std::get_if<std::string>(&loaded)) return Error{"FILE", *e};
+  StreamRequest req = std::get<StreamRequest>(loaded);
+  auto r0 = ref_pos(board);
+  if (const Error* e = std::get_if<Error>(&r0)) return *e;
+  req.limits.start_position = std::get<int32_t>(r0);  // the window is checked from where the axis is
+  auto planned = plan_whole_stream(board.clock(), timing, req.limits, req.moves);
+  if (const Error* e = std::get_if<Error>(&planned)) {
+    return Error{e->parameter.empty() ? "moves" : e->parameter, e->message};
+  }
+  const auto& moves = std::get<std::vector<StreamedMove>>(planned);
+  BoardConfig cfg;
+  cfg.timing = timing;
+  cfg.closed_loop = closed_loop;
+  cfg.stop = StopLimits{req.limits.j_max, req.limits.a_max};
+  cfg.soft_limits = req.limits.soft_limits;
+  if (auto e = board.configure(cfg)) return *e;
+  auto run = board.run_stream(moves, kOne / 2, timeout, 0.005, [&](const BoardStatus& b) {
+    if (progress) progress(b, moves.size());
+  });
+  if (const Error* e = std::get_if<Error>(&run)) return *e;
+  const StreamRunReport& r = std::get<StreamRunReport>(run);
+  return nlohmann::json{{"action", "stream"},
+                        {"moves", r.moves},
+                        {"rows", r.rows},
+                        {"start_ref", r.start_ref},
+                        {"end_ref", r.end_ref},
+                        {"expected_end", r.expected_end},
+                        {"boundaries_checked", r.boundaries_checked},
+                        {"pass", true},
+                        {"status", board_status_json(r.final_status)}};
+}
+
+namespace {
+
 std::string status_table(const BoardStatus& s) {
   const std::vector<std::string> f = s.faults();
   return fmt::format(
@@ -47,12 +153,6 @@ std::string status_table(const BoardStatus& s) {
       s.ref_pos, s.enc_pos, s.pulse_count, s.follow_err, phase_name(s.phase()),
       s.busy() ? "busy" : "idle", s.done() ? ", done" : "", s.enabled() ? "enabled" : "disabled", s.fifo_level(),
       s.move_index, s.boundary_pos, f.empty() ? "none" : fmt::format("{}", fmt::join(f, ", ")));
-}
-
-nlohmann::json link_json(const LinkStats& l) {
-  return {{"accesses", l.accesses}, {"frames", l.frames},           {"retries", l.retries},
-          {"timeouts", l.timeouts}, {"bad_responses", l.bad_responses}, {"crc_rejects", l.crc_rejects},
-          {"discarded", l.discarded}};
 }
 
 class BoardCommandImpl : public BoardCommand {
@@ -155,9 +255,7 @@ class BoardCommandImpl : public BoardCommand {
 
   int do_info(Session& s) const {
     const BoardInfo& i = s.info;
-    return emit(s,
-                {{"id", i.id}, {"version", fmt::format("{}.{}", i.version_major, i.version_minor)},
-                 {"axes", i.axes}, {"closed_loop", i.closed_loop}},
+    return emit(s, board_info_json(i),
                 fmt::format("board on {}: ID 0x{:08X}, register map {}.{}, {} axis, {}\n", port_, i.id,
                             i.version_major, i.version_minor, i.axes,
                             i.closed_loop ? "closed-loop servo axis" : "open-loop axis"),
@@ -168,7 +266,7 @@ class BoardCommandImpl : public BoardCommand {
     auto st = s.board.status();
     if (const Error* e = std::get_if<Error>(&st)) return fail(*e);
     const BoardStatus& b = std::get<BoardStatus>(st);
-    return emit(s, status_json(b), status_table(b), 0);
+    return emit(s, board_status_json(b), status_table(b), 0);
   }
 
   int do_simple(Session& s, std::optional<Error> e, const char* what) const {
@@ -176,8 +274,8 @@ class BoardCommandImpl : public BoardCommand {
     auto st = s.board.status();
     if (const Error* e2 = std::get_if<Error>(&st)) return fail(*e2);
     const BoardStatus& b = std::get<BoardStatus>(st);
-    return emit(s, {{"action", what}, {"status", status_json(b)}}, fmt::format("{}: done\n{}", what, status_table(b)),
-                0);
+    return emit(s, {{"action", what}, {"status", board_status_json(b)}},
+                fmt::format("{}: done\n{}", what, status_table(b)), 0);
   }
 
   int do_stop(Session& s) const {
@@ -185,106 +283,44 @@ class BoardCommandImpl : public BoardCommand {
     auto st = s.board.wait_idle(run_timeout_);
     if (const Error* e = std::get_if<Error>(&st)) return fail(*e);
     const BoardStatus& b = std::get<BoardStatus>(st);
-    return emit(s, {{"action", "stop"}, {"status", status_json(b)}}, "stop: at rest\n" + status_table(b), 0);
-  }
-
-  // REF_POS now (the start of a move or stream).
-  static std::variant<int32_t, Error> ref_pos(Session& s) {
-    auto st = s.board.status();
-    if (const Error* e = std::get_if<Error>(&st)) return *e;
-    return std::get<BoardStatus>(st).ref_pos;
+    return emit(s, {{"action", "stop"}, {"status", board_status_json(b)}}, "stop: at rest\n" + status_table(b), 0);
   }
 
   int do_run(Session& s) const {
-    auto r0 = ref_pos(s);
-    if (const Error* e = std::get_if<Error>(&r0)) return fail(*e);
-    const int32_t start_ref = std::get<int32_t>(r0);
     MoveFlags f = move_;
     f.clock_hz = clock_hz_;
-    f.start_pos = start_ref;  // the window is checked from where the axis is
-    const auto planned = plan_flags(f);
-    if (const Error* e = std::get_if<Error>(&planned)) return bad_input(e->message);
-    const Plan& plan = std::get<Plan>(planned);
-    const MoveRequest request = to_request(f);
-    BoardConfig cfg;
-    cfg.timing = to_timing(f);
-    cfg.closed_loop = closed_loop_;
-    cfg.stop = move_stop_limits(request, Clock{clock_hz_});
-    cfg.soft_limits = request.soft_limits;
-    if (auto e = s.board.configure(cfg)) return fail(*e);
-    if (auto e = s.board.load_move(plan)) return fail(*e);
-    if (auto e = s.board.start()) return fail(*e);
-    if (no_wait_) {
-      return emit(s, {{"action", "run"}, {"started", true}, {"distance", request.distance}},
-                  fmt::format("run: started, {} pulses\n", request.distance), 0);
-    }
-    auto st = s.board.wait_idle(run_timeout_);
+    auto r = run_move_on_board(s.board, f, closed_loop_, !no_wait_, run_timeout_);
+    if (const Error* e = std::get_if<Error>(&r)) return fail(*e);
+    const nlohmann::json& j = std::get<nlohmann::json>(r);
+    if (no_wait_) return emit(s, j, fmt::format("run: started, {} pulses\n", j["distance"].get<int64_t>()), 0);
+    const bool pass = j["pass"].get<bool>();
+    std::string text = fmt::format("run: {} pulses in {:.6f} s planned\n", j["distance"].get<int64_t>(),
+                                   j["duration_s"].get<double>());
+    auto st = s.board.status();
     if (const Error* e = std::get_if<Error>(&st)) return fail(*e);
-    const BoardStatus& b = std::get<BoardStatus>(st);
-    // The board's own account against the plan: the reference moved by the
-    // distance and, open loop, the pulses on the pin are the distance.
-    std::vector<std::string> problems;
-    for (const std::string& x : b.faults()) problems.push_back(x);
-    const int64_t moved = int64_t(b.ref_pos) - start_ref;
-    if (moved != request.distance) {
-      problems.push_back(fmt::format("REF_POS moved {} (planned {})", moved, request.distance));
-    }
-    if (!closed_loop_ && b.pulse_count != request.distance) {
-      problems.push_back(fmt::format("PULSE_COUNT {} (planned {})", b.pulse_count, request.distance));
-    }
-    if (!b.done()) problems.push_back("not DONE");
-    const bool pass = problems.empty();
-    nlohmann::json j = {{"action", "run"},        {"distance", request.distance}, {"start_ref", start_ref},
-                        {"duration_s", plan.duration_s}, {"pass", pass},          {"problems", problems},
-                        {"status", status_json(b)}};
-    std::string text = fmt::format("run: {} pulses in {:.6f} s planned\n{}", request.distance, plan.duration_s,
-                                   status_table(b));
+    text += status_table(std::get<BoardStatus>(st));
     if (!pass) {
+      const auto problems = j["problems"].get<std::vector<std::string>>();
       std::cerr << "error: run: " << fmt::format("{}", fmt::join(problems, "; ")) << "\n";
-      text += "FAIL\n";
-    } else {
-      text += "PASS\n";
     }
-    return emit(s, j, text, pass ? 0 : 1);
+    return emit(s, j, text + (pass ? "PASS\n" : "FAIL\n"), pass ? 0 : 1);
   }
 
   int do_stream(Session& s) const {
-    auto loaded = load_stream_file(stream_file_);
-    if (const std::string* e = std::get_if<std::string>(&loaded)) return bad_input(*e);
-    StreamRequest req = std::get<StreamRequest>(loaded);
-    auto r0 = ref_pos(s);
-    if (const Error* e = std::get_if<Error>(&r0)) return fail(*e);
-    req.limits.start_position = std::get<int32_t>(r0);  // the window is checked from where the axis is
-    const PulseTiming timing = to_timing(stream_timing_);
-    auto planned = plan_whole_stream(Clock{clock_hz_}, timing, req.limits, req.moves);
-    if (const Error* e = std::get_if<Error>(&planned)) return bad_input(e->message);
-    const auto& moves = std::get<std::vector<StreamedMove>>(planned);
-    BoardConfig cfg;
-    cfg.timing = timing;
-    cfg.closed_loop = closed_loop_;
-    cfg.stop = StopLimits{req.limits.j_max, req.limits.a_max};
-    cfg.soft_limits = req.limits.soft_limits;
-    if (auto e = s.board.configure(cfg)) return fail(*e);
     const bool tty = isatty(2);
-    auto progress = [&](const BoardStatus& b) {
-      if (tty) std::fprintf(stderr, "\r[stream: move %u of %zu, FIFO %d]", b.move_index, moves.size(), b.fifo_level());
+    auto progress = [&](const BoardStatus& b, size_t moves) {
+      if (tty) std::fprintf(stderr, "\r[stream: move %u of %zu, FIFO %d]", b.move_index, moves, b.fifo_level());
     };
-    auto run = s.board.run_stream(moves, kOne / 2, run_timeout_, 0.005, progress);
+    auto r = run_stream_on_board(s.board, stream_file_, to_timing(stream_timing_), closed_loop_, run_timeout_,
+                                 progress);
     if (tty) std::fputs("\n", stderr);
-    if (const Error* e = std::get_if<Error>(&run)) return fail(*e);
-    const StreamRunReport& r = std::get<StreamRunReport>(run);
-    return emit(s,
-                {{"action", "stream"},
-                 {"moves", r.moves},
-                 {"rows", r.rows},
-                 {"start_ref", r.start_ref},
-                 {"end_ref", r.end_ref},
-                 {"expected_end", r.expected_end},
-                 {"boundaries_checked", r.boundaries_checked},
-                 {"pass", true},
-                 {"status", status_json(r.final_status)}},
+    if (const Error* e = std::get_if<Error>(&r)) return fail(*e);
+    const nlohmann::json& j = std::get<nlohmann::json>(r);
+    return emit(s, j,
                 fmt::format("stream: {} moves, {} rows: REF_POS {} -> {} (planned {}), {} boundaries checked\nPASS\n",
-                            r.moves, r.rows, r.start_ref, r.end_ref, r.expected_end, r.boundaries_checked),
+                            j["moves"].get<uint64_t>(), j["rows"].get<uint64_t>(), j["start_ref"].get<int64_t>(),
+                            j["end_ref"].get<int64_t>(), j["expected_end"].get<int64_t>(),
+                            j["boundaries_checked"].get<uint64_t>()),
                 0);
   }
 
@@ -349,7 +385,7 @@ class BoardCommandImpl : public BoardCommand {
       last = {now, b.ref_pos};
       const std::vector<std::string> f = b.faults();
       if (json_) {
-        nlohmann::json j = status_json(b);
+        nlohmann::json j = board_status_json(b);
         j["speed"] = speed;
         std::cout << j.dump() << std::endl;  // JSON Lines
         continue;

@@ -7,10 +7,15 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <fmt/format.h>
+
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
+#include "scurve/board.h"
+#include "scurve/cli/board_cli.h"
 #include "scurve/cli/move_flags.h"
 #include "scurve/cli/plan_report.h"
 #include "scurve/cli/regs_cli.h"
@@ -80,6 +85,83 @@ Plan plan_kwargs(const char* fn, const py::kwargs& kw, cli::MoveFlags& f, cli::R
   return std::get<Plan>(std::move(r));
 }
 
+// A board over its UART: the driver of `scurve board`, the same checks and
+// the same errors (as scurve.Error, .parameter "port" for the line, "board"
+// for the board's refusals and faults).
+class PyBoard {
+ public:
+  PyBoard(const std::string& port, int baud, double timeout_ms, int retries, double clock_hz) : clock_hz_(clock_hz) {
+    LinkOptions o;
+    o.baud = baud;
+    o.timeout = timeout_ms / 1e3;
+    o.retries = retries;
+    if (auto e = check_link_options(o)) raise(e->parameter, e->message);
+    if (std::string e = cli::check_clock_flag(clock_hz); !e.empty()) raise("clock_hz", e);
+    auto opened = open_serial_port({port, baud});
+    if (auto* e = std::get_if<Error>(&opened)) raise(e->parameter, e->message);
+    line_ = std::move(std::get<std::unique_ptr<ByteChannel>>(opened));
+    link_ = std::make_unique<UartLink>(*line_, o);
+    board_ = std::make_unique<Board>(*link_, Clock{clock_hz});
+    auto info = board_->identify();
+    if (auto* e = std::get_if<Error>(&info)) raise(e->parameter, e->message);
+    info_ = std::get<BoardInfo>(info);
+  }
+
+  py::object info() const { return to_python(cli::board_info_json(info_)); }
+  py::object link() const { return to_python(cli::link_json(link_->stats())); }
+
+  py::object status() {
+    auto st = board_->status();
+    if (auto* e = std::get_if<Error>(&st)) raise(e->parameter, e->message);
+    return to_python(cli::board_status_json(std::get<BoardStatus>(st)));
+  }
+
+  py::object run(bool wait, double timeout, bool closed_loop, const py::kwargs& kw) {
+    CLI::App app;
+    cli::MoveFlags f;
+    cli::add_move_flags(&app, f);
+    if (std::string e = cli::parse_flags(app, flag_args(app, "run", kw)); !e.empty()) raise("", e);
+    f.clock_hz = clock_hz_;
+    auto r = cli::run_move_on_board(*board_, f, closed_loop, wait, timeout);
+    if (auto* e = std::get_if<Error>(&r)) raise(e->parameter, e->message);
+    const nlohmann::json& j = std::get<nlohmann::json>(r);
+    if (j.contains("pass") && !j["pass"].get<bool>()) {
+      raise("board", fmt::format("run: {}", fmt::join(j["problems"].get<std::vector<std::string>>(), "; ")));
+    }
+    return to_python(j);
+  }
+
+  py::object stream(const std::string& file, double timeout, bool closed_loop, const py::kwargs& kw) {
+    CLI::App app;
+    cli::MoveFlags f;
+    cli::add_timing_flags(&app, f);
+    if (std::string e = cli::parse_flags(app, flag_args(app, "stream", kw)); !e.empty()) raise("", e);
+    auto r = cli::run_stream_on_board(*board_, file, cli::to_timing(f), closed_loop, timeout);
+    if (auto* e = std::get_if<Error>(&r)) raise(e->parameter, e->message);
+    return to_python(std::get<nlohmann::json>(r));
+  }
+
+  py::object stop(double timeout) {
+    if (auto e = board_->stop()) raise(e->parameter, e->message);
+    auto st = board_->wait_idle(timeout);
+    if (auto* e = std::get_if<Error>(&st)) raise(e->parameter, e->message);
+    return to_python(cli::board_status_json(std::get<BoardStatus>(st)));
+  }
+  void estop() {
+    if (auto e = board_->estop()) raise(e->parameter, e->message);
+  }
+  void clear() {
+    if (auto e = board_->clear_faults()) raise(e->parameter, e->message);
+  }
+
+ private:
+  double clock_hz_;
+  std::unique_ptr<ByteChannel> line_;
+  std::unique_ptr<UartLink> link_;
+  std::unique_ptr<Board> board_;
+  BoardInfo info_;
+};
+
 }  // namespace
 
 PYBIND11_MODULE(scurve, m) {
@@ -135,4 +217,22 @@ PYBIND11_MODULE(scurve, m) {
         return py::bytes(reinterpret_cast<const char*>(bytes.data()), bytes.size());
       },
       py::arg("addr"), "The UART bridge's frame that reads addr.");
+
+  py::class_<PyBoard>(m, "Board",
+                      "A board (or `scurve virtual-board`) over its UART: Board(port, baud=115200, timeout_ms=200, "
+                      "retries=3, clock_hz=20e6) opens the port and identifies the board; every method raises "
+                      "scurve.Error as `scurve board` exits 1 or 2.")
+      .def(py::init<const std::string&, int, double, int, double>(), py::arg("port"), py::arg("baud") = 115200,
+           py::arg("timeout_ms") = 200.0, py::arg("retries") = 3, py::arg("clock_hz") = Clock::kDefaultHz)
+      .def("info", &PyBoard::info, "ID, register map version, axes, closed loop: the dict of `board info --json`")
+      .def("status", &PyBoard::status, "One reading: the dict of `board status --json`")
+      .def("link", &PyBoard::link, "The link's counters: frames, retries, timeouts, ...")
+      .def("run", &PyBoard::run, py::arg("wait") = true, py::arg("timeout") = 120.0, py::arg("closed_loop") = false,
+           "Plan a move (keyword arguments as for plan), load it, start it and, with wait, wait and check it: the "
+           "dict of `board run --json`; a check that fails raises scurve.Error")
+      .def("stream", &PyBoard::stream, py::arg("file"), py::arg("timeout") = 120.0, py::arg("closed_loop") = false,
+           "Run a stream file (pulse timing keyword arguments as for plan): the dict of `board stream --json`")
+      .def("stop", &PyBoard::stop, py::arg("timeout") = 120.0, "CMD.STOP, then wait for rest: the final status")
+      .def("estop", &PyBoard::estop, "CMD.ESTOP")
+      .def("clear", &PyBoard::clear, "Clear every ERR and IRQ_STATUS flag");
 }

@@ -50,6 +50,13 @@ add_test(NAME tools.regress_shards_cover_list
 set_tests_properties(tools.cli_contract tools.cli_contract_closed_loop tools.cli_bad_input_closed_loop tools.cli_clock_hz
                      tools.regs_cli_uart_frames tools.regs_cli_closed_loop tools.output_files_whole_or_refused
                      tools.regress_shards_cover_list tools.board_driver_over_a_pty PROPERTIES LABELS tools TIMEOUT 600)
+# Paper 000's group 1 over the pseudo-terminal: 278 M clocks of the board
+# top (minutes here): CI's extended stage, not the sanitizer build.
+if(NOT SC_SANITIZE)
+  add_test(NAME tools.board_paper_group_over_a_pty
+    COMMAND ${SC_TESTS_DIR}/board_pty_test.sh $<TARGET_FILE:scurve> ${PROJECT_SOURCE_DIR} paper)
+  set_tests_properties(tools.board_paper_group_over_a_pty PROPERTIES LABELS "tools;extended" TIMEOUT 2400)
+endif()
 # Under the sanitizers its bench runs take minutes (about 250 s in all). In
 # the default build it is an `extended` test (CI's stage after the default
 # suite), since it runs there anyway, instrumented.

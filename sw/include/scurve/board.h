@@ -188,6 +188,7 @@ class Board {
                                                   double timeout, double poll = 0.005,
                                                   const std::function<void(const BoardStatus&)>& progress = {});
   const BoardConfig& config() const { return cfg_; }
+  Clock clock() const { return clock_; }
 
  private:
   std::optional<Error> write(uint32_t addr, uint32_t data);

@@ -5,7 +5,14 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <functional>
 #include <memory>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <variant>
+
+#include "scurve/board.h"
+#include "scurve/cli/move_flags.h"
 
 namespace scurve::cli {
 
@@ -17,5 +24,20 @@ class BoardCommand {
 };
 
 std::unique_ptr<BoardCommand> add_board_command(CLI::App& app);
+
+// What `scurve board` and the Python bindings share: JSON of a reading, of
+// ID, of the link's counters; a planned move run on the board (configure:
+// pulse timing, the move's own stop limits, its window; load; start; unless
+// !wait, wait and check REF_POS, PULSE_COUNT open loop, DONE, no fault:
+// "pass" and "problems" in the report); a stream file run on the board. An
+// Error names the place (see scurve/board.h; a refused plan names its field).
+nlohmann::json board_status_json(const BoardStatus& s);
+nlohmann::json board_info_json(const BoardInfo& i);
+nlohmann::json link_json(const LinkStats& l);
+std::variant<nlohmann::json, Error> run_move_on_board(Board& board, MoveFlags f, bool closed_loop, bool wait,
+                                                      double timeout);
+std::variant<nlohmann::json, Error> run_stream_on_board(
+    Board& board, const std::string& file, const PulseTiming& timing, bool closed_loop, double timeout,
+    const std::function<void(const BoardStatus&, size_t moves)>& progress = {});
 
 }  // namespace scurve::cli
