@@ -206,14 +206,6 @@ std::vector<std::string> BoardStatus::faults() const {
   return out;
 }
 
-bool BoardStatus::motion_fault() const {
-  const uint32_t access = bit(hw::ErrRejectBit) | bit(hw::ErrBadAddrBit);
-  const uint32_t status_faults = bit(hw::StatusFaultTableBit) | bit(hw::StatusFaultOverrunBit) |
-                                 bit(hw::StatusFaultFerrBit) | bit(hw::StatusUnderrunBit) |
-                                 bit(hw::StatusDiscontBit) | bit(hw::StatusGuardBit);
-  return (err & ~access) != 0 || (status & status_faults) != 0;
-}
-
 int board_exit_code(const Error& e) { return e.parameter == "board" ? 1 : 2; }
 
 // ---- board -------------------------------------------------------------------------

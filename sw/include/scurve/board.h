@@ -125,9 +125,6 @@ struct BoardStatus {
   // The names of the set ERR flags and of the STATUS faults (FAULT_TABLE,
   // FAULT_OVERRUN, FAULT_FERR, GUARD, ...), in bit order.
   std::vector<std::string> faults() const;
-  // A fault that stopped or refused motion (every flag but the access
-  // errors REJECT and BAD_ACCESS).
-  bool motion_fault() const;
 };
 
 // What configure() writes; every value checked in one place (the host
