@@ -347,37 +347,45 @@ module sc_axi_regs #(
     endcase
   end
 
-  always_comb begin
-    status_word = '0;
-    status_word[sc_pkg::StatusPhaseLsb +: PhaseW]   = phase_i;
-    status_word[sc_pkg::StatusBusyBit]              = busy_eff;
-    status_word[sc_pkg::StatusDoneBit]              = done_i && !busy_eff;
-    status_word[sc_pkg::StatusEnBit]                = en_i;
-    status_word[sc_pkg::StatusFaultTableBit]        = fault_table_i;
-    status_word[sc_pkg::StatusFaultOverrunBit]      = fault_overrun_i;
-    status_word[sc_pkg::StatusEstopBit]             = err_estop_q;
-    status_word[sc_pkg::StatusErrBit]               = err_reject_q || err_bad_q || err_estop_q ||
-                                                      err_lneg_q || err_lpos_q || err_guard_q || err_soft_q;
-    status_word[sc_pkg::StatusFaultFerrBit]         = fault_ferr_i;
-    status_word[sc_pkg::StatusInPosBit]             = in_pos_i;
-    status_word[sc_pkg::StatusEncALsb +: 2]         = enc_ab_i;
-    status_word[sc_pkg::StatusSegIdxLsb +: SegIdxW] = seg_idx_i;
-    status_word[sc_pkg::StatusUnderrunBit]          = underrun_i;
-    status_word[sc_pkg::StatusDiscontBit]           = discont_i;
-    status_word[sc_pkg::StatusStoppingBit]          = stopping_i;
-    status_word[sc_pkg::StatusOvershootBit]         = overshoot_i;
-    status_word[sc_pkg::StatusSwLevelLsb +: SwW]    = sw_level_i;
-    status_word[sc_pkg::StatusLatchedBit]           = latched_q;
-    status_word[sc_pkg::StatusGuardBit]             = guard_i;
+  // STATUS and SW_CFG are packed in a block-local word and written once:
+  // Icarus 11 counts a constant part-select write as a read of the whole
+  // word, and the partial writes of a shared word woke the other blocks
+  // without end at time 0.
+  always_comb begin : pack_status_word
+    logic [31:0] w;
+    w = '0;
+    w[sc_pkg::StatusPhaseLsb +: PhaseW]   = phase_i;
+    w[sc_pkg::StatusBusyBit]              = busy_eff;
+    w[sc_pkg::StatusDoneBit]              = done_i && !busy_eff;
+    w[sc_pkg::StatusEnBit]                = en_i;
+    w[sc_pkg::StatusFaultTableBit]        = fault_table_i;
+    w[sc_pkg::StatusFaultOverrunBit]      = fault_overrun_i;
+    w[sc_pkg::StatusEstopBit]             = err_estop_q;
+    w[sc_pkg::StatusErrBit]               = err_reject_q || err_bad_q || err_estop_q ||
+                                            err_lneg_q || err_lpos_q || err_guard_q || err_soft_q;
+    w[sc_pkg::StatusFaultFerrBit]         = fault_ferr_i;
+    w[sc_pkg::StatusInPosBit]             = in_pos_i;
+    w[sc_pkg::StatusEncALsb +: 2]         = enc_ab_i;
+    w[sc_pkg::StatusSegIdxLsb +: SegIdxW] = seg_idx_i;
+    w[sc_pkg::StatusUnderrunBit]          = underrun_i;
+    w[sc_pkg::StatusDiscontBit]           = discont_i;
+    w[sc_pkg::StatusStoppingBit]          = stopping_i;
+    w[sc_pkg::StatusOvershootBit]         = overshoot_i;
+    w[sc_pkg::StatusSwLevelLsb +: SwW]    = sw_level_i;
+    w[sc_pkg::StatusLatchedBit]           = latched_q;
+    w[sc_pkg::StatusGuardBit]             = guard_i;
+    status_word = w;
   end
 
-  always_comb begin
-    sw_cfg_word = '0;
-    sw_cfg_word[sc_pkg::SwInvertLsb +: SwW]         = sw_inv_q;
-    sw_cfg_word[sc_pkg::SwLimEnBit]                 = lim_en_q;
-    sw_cfg_word[sc_pkg::SwLimHardBit]               = lim_hard_q;
-    sw_cfg_word[sc_pkg::SwSoftEnBit]                = soft_en_q;
-    sw_cfg_word[sc_pkg::SwDebounceLsb +: DebounceW] = sw_deb_q;
+  always_comb begin : pack_sw_cfg_word
+    logic [31:0] w;
+    w = '0;
+    w[sc_pkg::SwInvertLsb +: SwW]         = sw_inv_q;
+    w[sc_pkg::SwLimEnBit]                 = lim_en_q;
+    w[sc_pkg::SwLimHardBit]               = lim_hard_q;
+    w[sc_pkg::SwSoftEnBit]                = soft_en_q;
+    w[sc_pkg::SwDebounceLsb +: DebounceW] = sw_deb_q;
+    sw_cfg_word = w;
   end
   assign sw_cfg_new = wmerge(sw_cfg_word, wd, wmask);
 

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Installs every Debian package the project needs, when missing (Debian 12),
 # and the pinned Python tools from PyPI (scripts/python/requirements.txt:
-# FuseSoC) into .venv/ at the top of the tree. Idempotent and quiet when
+# FuseSoC, cocotb) into .venv/ at the top of the tree. Idempotent and quiet when
 # everything is present.
 set -euo pipefail
 pkgs=(

@@ -19,6 +19,8 @@
 #include "scurve/cli/move_flags.h"
 #include "scurve/cli/plan_report.h"
 #include "scurve/cli/regs_cli.h"
+#include "scurve/hw/regmap.h"
+#include "scurve/planner.h"
 #include "scurve/reg_encode.h"
 
 namespace py = pybind11;
@@ -198,6 +200,35 @@ PYBIND11_MODULE(scurve, m) {
       "Plan a move and return its register writes as `scurve regs --json` prints them: "
       "[{'addr', 'reg', 'data'}] (and 'frame' with uart=True); keyword arguments as for plan plus "
       "uart, no_start, closed_loop, guard, stop_at, stop_jerk, stop_acc.");
+
+  m.def(
+      "register_map",
+      [] {
+        static const char* const access_names[] = {"RO", "RW", "WO", "W1C"};
+        py::dict regs;
+        for (const hw::regmap::Reg& r : hw::regmap::kRegs) {
+          py::dict fields;
+          for (int i = 0; i < r.nfields; ++i) {
+            fields[r.fields[i].name] = py::dict(py::arg("lsb") = r.fields[i].lsb, py::arg("width") = r.fields[i].width,
+                                                py::arg("reset") = r.fields[i].reset);
+          }
+          regs[r.name] = py::dict(py::arg("addr") = r.addr, py::arg("access") = access_names[int(r.access)],
+                                  py::arg("mask") = r.mask, py::arg("reset") = r.reset, py::arg("servo") = r.servo,
+                                  py::arg("fields") = fields);
+        }
+        return regs;
+      },
+      "The host register map (generated from rtl/sc_pkg.sv, as docs/regmap.md): {name: {'addr', 'access', "
+      "'mask', 'reset', 'servo', 'fields': {name: {'lsb', 'width', 'reset'}}}}; 'servo' registers answer DECERR "
+      "in sc_axi_axis.");
+  m.def(
+      "phase_names",
+      [] {
+        py::dict names;
+        for (int code = 0; code <= int(Phase::PhStop); ++code) names[py::int_(code)] = phase_name(Phase(code));
+        return names;
+      },
+      "STATUS.PHASE codes and their names as plan() reports them: {0: 'idle', 1: 'acc-jerk-up', ...}.");
 
   m.def(
       "uart_write_frame",

@@ -145,5 +145,23 @@ class Bindings(unittest.TestCase):
         self.assertEqual(len(scurve.uart_read_frame(8)), 4)  # sync, command, word address, CRC
 
 
+    def test_register_map_matches_the_register_writes_and_the_plan(self):
+        regs = scurve.register_map()
+        writes = scurve.regs(distance=1000, v_cruise=3000, a_max=500, j_max=2500, closed_loop=True)
+        for w in writes:
+            self.assertEqual(regs[w["reg"]]["addr"], w["addr"], w["reg"])
+        self.assertEqual(regs["ID"]["fields"]["MAGIC"]["reset"], 0x5343)
+        self.assertEqual(regs["CL_STATUS"]["servo"], True)
+        self.assertEqual(regs["STATUS"]["access"], "RO")
+        self.assertEqual(len({r["addr"] for r in regs.values()}), len(regs))
+        for r in regs.values():
+            for f in r["fields"].values():
+                self.assertEqual(r["mask"] >> f["lsb"] & 1, 1)
+        names = scurve.phase_names()
+        for s in scurve.plan(distance=1000, v_cruise=3000, a_max=500, j_max=2500)["segments"]:
+            self.assertEqual(names[s["phase_code"]], s["phase"])
+        self.assertEqual((names[0], names[8]), ("idle", "done"))
+
+
 if __name__ == "__main__":
     unittest.main(argv=[sys.argv[0], "-v"])
