@@ -60,12 +60,18 @@ function(sc_verilate target)
   if(A_SYSTEMC)
     list(APPEND flags SYSTEMC)
   endif()
+  set(cover_args)
+  if(SC_COVERAGE)
+    # line, toggle and user coverage; SC_COVER enables the RTL's cover points
+    list(APPEND flags COVERAGE)
+    set(cover_args -DSC_COVER)
+  endif()
   sc_rtl_files(files ${A_TOP})
   verilate(${target} ${flags}
     SOURCES ${files}
     TOP_MODULE ${A_TOP}
     PREFIX ${A_PREFIX}
-    VERILATOR_ARGS -Wall ${SC_VERILATOR_WAIVER} --x-assign fast --x-initial fast
+    VERILATOR_ARGS -Wall ${SC_VERILATOR_WAIVER} --x-assign fast --x-initial fast ${cover_args}
     OPT_FAST ${fast}
     OPT_SLOW ${slow}
     OPT_GLOBAL ${A_OPT})

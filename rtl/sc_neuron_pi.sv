@@ -968,4 +968,25 @@ module sc_neuron_pi (
   assign wn_v2_o      = n_v2_q;
   assign state_o      = st;
 
+`ifdef SC_COVER
+  // Cover points (the coverage build, scripts/coverage.py): every micro-step in
+  // each loop (pairs no program reaches are excluded in
+  // scripts/coverage_exclusions.json, with the reason), the output clamp on
+  // both sides and each weight's clamp to its bounds, in each loop.
+  for (genvar u = 0; u <= int'(sc_pkg::UpcW8); u++) begin : g_cov_upc
+    for (genvar l = 0; l < 2; l++) begin : g_loop
+      c_step: cover property (@(posedge clk_i) rst_ni && upc_q == UpcW'(u) && sel_q == 1'(l));
+    end
+  end
+  for (genvar l = 0; l < 2; l++) begin : g_cov_loop
+    c_out_clamp_hi: cover property (@(posedge clk_i) rst_ni && sel_q == 1'(l) && upc_q == sc_pkg::UpcHi &&
+                                    !alu_n && !alu_z);
+    c_out_clamp_lo: cover property (@(posedge clk_i) rst_ni && sel_q == 1'(l) && upc_q == sc_pkg::UpcLo && alu_n);
+    c_w1_max: cover property (@(posedge clk_i) rst_ni && sel_q == 1'(l) && upc_q == sc_pkg::UpcW4 && over_q);
+    c_w1_min: cover property (@(posedge clk_i) rst_ni && sel_q == 1'(l) && upc_q == sc_pkg::UpcW4 && under_q);
+    c_w2_max: cover property (@(posedge clk_i) rst_ni && sel_q == 1'(l) && upc_q == sc_pkg::UpcW8 && over_q);
+    c_w2_min: cover property (@(posedge clk_i) rst_ni && sel_q == 1'(l) && upc_q == sc_pkg::UpcW8 && under_q);
+  end
+`endif
+
 endmodule

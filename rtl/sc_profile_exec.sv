@@ -428,4 +428,25 @@ module sc_profile_exec (
   assign phase_o        = phase_q;
   assign seg_idx_o      = idx_q;
 
+`ifdef SC_COVER
+  // Cover points (the coverage build, scripts/coverage.py): every phase code,
+  // every way a row starts and a run ends, both step directions.
+  for (genvar p = 0; p <= int'(sc_pkg::PhStop); p++) begin : g_cov_phase
+    c_phase: cover property (@(posedge clk_i) rst_ni && phase_q == PhaseW'(p));
+  end
+  c_start:          cover property (@(posedge clk_i) rst_ni && !run_q && load);
+  c_start_empty:    cover property (@(posedge clk_i) rst_ni && !run_q && start_i && fifo_empty);
+  c_row_chained:    cover property (@(posedge clk_i) rst_ni && boundary && load);
+  c_move_end:       cover property (@(posedge clk_i) rst_ni && move_done);
+  c_stream_end:     cover property (@(posedge clk_i) rst_ni && boundary && !load && ends);
+  c_stop_command:   cover property (@(posedge clk_i) rst_ni && stop_start && stop_i);
+  c_underrun:       cover property (@(posedge clk_i) rst_ni && underrun_d && !underrun_q);
+  c_discontinuity:  cover property (@(posedge clk_i) rst_ni && discont_d && !discont_q);
+  c_guard:          cover property (@(posedge clk_i) rst_ni && guard_d && !guard_q);
+  c_fault:          cover property (@(posedge clk_i) rst_ni && fault_d && !fault_q);
+  c_abort:          cover property (@(posedge clk_i) rst_ni && run_q && abort_i);
+  c_step_fwd:       cover property (@(posedge clk_i) rst_ni && step_req_q && step_fwd_q);
+  c_step_rev:       cover property (@(posedge clk_i) rst_ni && step_req_q && !step_fwd_q);
+`endif
+
 endmodule

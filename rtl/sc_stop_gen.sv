@@ -374,4 +374,20 @@ module sc_stop_gen (
   assign done_o      = done_q;
   assign overshoot_o = over_q;
 
+`ifdef SC_COVER
+  // Cover points (the coverage build, scripts/coverage.py): each choice of the
+  // next level, a start in each direction, the start-level division, the
+  // clamp at D and an overshoot.
+  c_start_fwd:  cover property (@(posedge clk_i) rst_ni && start_i && !vel_i[VelW-1]);
+  c_start_rev:  cover property (@(posedge clk_i) rst_ni && start_i && vel_i[VelW-1]);
+  c_up:         cover property (@(posedge clk_i) rst_ni && active_q && up_ok);
+  c_land:       cover property (@(posedge clk_i) rst_ni && active_q && !up_ok && land_ok);
+  c_hold:       cover property (@(posedge clk_i) rst_ni && active_q && !up_ok && !land_ok && hold_ok);
+  c_down:       cover property (@(posedge clk_i) rst_ni && active_q && !up_ok && !land_ok && !hold_ok);
+  c_division:   cover property (@(posedge clk_i) rst_ni && active_q && div_q);
+  c_clamp:      cover property (@(posedge clk_i) rst_ni && active_q && clamp_q);
+  c_done:       cover property (@(posedge clk_i) rst_ni && done_d && !done_q);
+  c_overshoot:  cover property (@(posedge clk_i) rst_ni && over_d && !over_q);
+`endif
+
 endmodule

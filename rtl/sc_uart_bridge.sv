@@ -279,4 +279,29 @@ module sc_uart_bridge #(
   assign tx_data_o  = tx_byte;
   assign crc_err_o  = crc_err_q;
 
+`ifdef SC_COVER
+  // Cover points (the coverage build, scripts/coverage.py): every transition
+  // of the frame FSM and every answer status.
+  logic cov_on, cov_in_frame;
+  assign cov_on       = rst_ni;
+  assign cov_in_frame = state_q == SCmd || state_q == SAddr || state_q == SData || state_q == SCrc;
+  c_sync:        cover property (@(posedge clk_i) cov_on && state_q == SSync && state_d == SCmd);
+  c_cmd_ok:      cover property (@(posedge clk_i) cov_on && state_q == SCmd && state_d == SAddr);
+  c_cmd_bad:     cover property (@(posedge clk_i) cov_on && state_q == SCmd && state_d == STx);
+  c_addr_write:  cover property (@(posedge clk_i) cov_on && state_q == SAddr && state_d == SData);
+  c_addr_read:   cover property (@(posedge clk_i) cov_on && state_q == SAddr && state_d == SCrc);
+  c_data_done:   cover property (@(posedge clk_i) cov_on && state_q == SData && state_d == SCrc);
+  c_crc_bad:     cover property (@(posedge clk_i) cov_on && state_q == SCrc && state_d == STx);
+  c_crc_write:   cover property (@(posedge clk_i) cov_on && state_q == SCrc && state_d == SWrite);
+  c_crc_read:    cover property (@(posedge clk_i) cov_on && state_q == SCrc && state_d == SRead);
+  c_write_done:  cover property (@(posedge clk_i) cov_on && state_q == SWrite && state_d == STx);
+  c_read_done:   cover property (@(posedge clk_i) cov_on && state_q == SRead && state_d == STx);
+  c_tx_done:     cover property (@(posedge clk_i) cov_on && state_q == STx && state_d == SSync);
+  c_timeout:     cover property (@(posedge clk_i) cov_on && cov_in_frame && !rx_valid_i && !rx_frame_err_i &&
+                                 idle_q == ToW'(TimeoutClks));
+  c_frame_err:   cover property (@(posedge clk_i) cov_on && cov_in_frame && rx_frame_err_i);
+  c_resp_slverr: cover property (@(posedge clk_i) cov_on && state_d == STx && state_q != STx && status_d == 8'd2);
+  c_resp_decerr: cover property (@(posedge clk_i) cov_on && state_d == STx && state_q != STx && status_d == 8'd3);
+`endif
+
 endmodule

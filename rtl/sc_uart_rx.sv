@@ -103,4 +103,16 @@ module sc_uart_rx #(
   assign data_o      = shift_q;
   assign frame_err_o = ferr_q;
 
+`ifdef SC_COVER
+  // Cover points (the coverage build, scripts/coverage.py): every transition.
+  logic cov_on;
+  assign cov_on = rst_ni;
+  c_start_bit:  cover property (@(posedge clk_i) cov_on && state_q == StIdle && state_d == StStart);
+  c_glitch:     cover property (@(posedge clk_i) cov_on && state_q == StStart && state_d == StIdle);
+  c_data:       cover property (@(posedge clk_i) cov_on && state_q == StStart && state_d == StData);
+  c_stop_bit:   cover property (@(posedge clk_i) cov_on && state_q == StData && state_d == StStop);
+  c_byte:       cover property (@(posedge clk_i) cov_on && state_q == StStop && state_d == StIdle && valid_d);
+  c_frame_err:  cover property (@(posedge clk_i) cov_on && state_q == StStop && state_d == StIdle && ferr_d);
+`endif
+
 endmodule

@@ -17,6 +17,7 @@ pkgs=(
   python3-venv
   gtkwave
   pybind11-dev python3-dev
+  lcov
 )
 missing=()
 for p in "${pkgs[@]}"; do

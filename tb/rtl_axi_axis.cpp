@@ -109,7 +109,10 @@ RtlBoard::RtlBoard() : ctx_(std::make_unique<VerilatedContext>()) {
   m_->eval();
 }
 
-RtlBoard::~RtlBoard() { m_->final(); }
+RtlBoard::~RtlBoard() {
+  m_->final();
+  coverage_collect(*ctx_);
+}
 
 void RtlBoard::tick100(bool uart_rx, bool rst_n, bool estop, bool enc_a, bool enc_b, uint8_t sw, bool enc_z) {
   m_->uart_rx_i = uart_rx;

@@ -13,6 +13,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "coverage_sink.h"
 #include "fixed_point.h"
 #include "fst_output.h"
 #include "profile_exec.h"
@@ -38,6 +39,7 @@ class VerilatedTop {
   ~VerilatedTop() {
     trace_abandon();
     m_.final();
+    coverage_collect(*ctx_);
   }
   VerilatedTop(const VerilatedTop&) = delete;
   VerilatedTop& operator=(const VerilatedTop&) = delete;
