@@ -986,4 +986,130 @@ module sc_axi_regs #(
   assign busy_o      = busy_eff;
   assign irq_o       = irq_q;
 
+`ifdef FORMAL
+  // ---- formal properties (scripts/formal.py, docs/formal.md) ----------------
+  // Slave side of AXI4-Lite, proven on this module alone: reset in the first
+  // clock only; every other input (the bus master, the core) is free, so the
+  // properties hold whatever the master does. The register map below is
+  // written out again from docs/regmap.md (word addresses, bytes 0x000-0x3FF),
+  // independent of the decode above.
+  localparam logic [1:0] FUnmapped = 2'd0, FReadOnly = 2'd1, FWritable = 2'd2;
+
+  function automatic logic [1:0] f_kind(input logic [AW-1:0] a);
+    logic [AW-1:0] w;
+    w = {a[AW-1:2], 2'b00};
+    f_kind = FUnmapped;
+    if (a[1:0] == 2'b00) begin
+      unique case (w)
+        10'h000, 10'h00C, 10'h014, 10'h018, 10'h01C, 10'h020, 10'h024, 10'h0CC, 10'h0F4,
+        10'h118, 10'h11C: f_kind = FReadOnly;
+        10'h004, 10'h008, 10'h010, 10'h028, 10'h02C, 10'h0F8, 10'h0FC: f_kind = FWritable;
+        default: begin
+          if ((w >= 10'h030 && w <= 10'h064) || (w >= 10'h100 && w <= 10'h128) ||
+              (w >= 10'h130 && w <= 10'h144)) begin
+            f_kind = FWritable;
+          end else if (Servo && w >= 10'h068 && w <= 10'h0C8) begin
+            f_kind = FWritable;   // closed-loop settings
+          end else if (Servo && w >= 10'h0D0 && w <= 10'h0F0) begin
+            f_kind = FReadOnly;   // closed-loop status
+          end
+        end
+      endcase
+    end
+  endfunction
+
+  logic          f_init_q = 1'b1;   // the first clock of every trace
+  logic [1:0]    f_aw_n_q, f_w_n_q; // AW / W accepted and not yet answered by a B handshake
+  logic          f_ar_n_q;          // AR accepted, R handshake not yet done
+  logic [AW-1:0] f_wr_addr_q, f_rd_addr_q;  // address of the last AW / AR accepted
+  logic          f_bvalid_prev_q, f_bready_prev_q, f_rvalid_prev_q, f_rready_prev_q, f_ar_hs_prev_q;
+  logic          f_both_prev_q;     // last clock: a whole write held, no response out
+  logic [1:0]    f_bresp_prev_q, f_rresp_prev_q;
+  logic [31:0]   f_rdata_prev_q;
+  logic          f_aw_hs, f_w_hs, f_b_hs, f_ar_hs, f_r_hs, f_b_new, f_r_new;
+
+  assign f_aw_hs = s_axi_awvalid_i && s_axi_awready_o;
+  assign f_w_hs  = s_axi_wvalid_i && s_axi_wready_o;
+  assign f_b_hs  = s_axi_bvalid_o && s_axi_bready_i;
+  assign f_ar_hs = s_axi_arvalid_i && s_axi_arready_o;
+  assign f_r_hs  = s_axi_rvalid_o && s_axi_rready_i;
+  // the first clock of a response (not one still waiting for READY)
+  assign f_b_new = s_axi_bvalid_o && !(f_bvalid_prev_q && !f_bready_prev_q);
+  assign f_r_new = s_axi_rvalid_o && !(f_rvalid_prev_q && !f_rready_prev_q);
+
+  always_comb begin
+    if (f_init_q) begin
+      a_reset_first: assume (!rst_ni);
+    end else begin
+      a_no_reset: assume (rst_ni);
+    end
+  end
+
+  always_ff @(posedge clk_i) begin
+    f_init_q <= 1'b0;
+    if (!rst_ni) begin
+      f_aw_n_q        <= '0;
+      f_w_n_q         <= '0;
+      f_ar_n_q        <= 1'b0;
+      f_wr_addr_q     <= '0;
+      f_rd_addr_q     <= '0;
+      f_bvalid_prev_q <= 1'b0;
+      f_bready_prev_q <= 1'b0;
+      f_rvalid_prev_q <= 1'b0;
+      f_rready_prev_q <= 1'b0;
+      f_ar_hs_prev_q  <= 1'b0;
+      f_both_prev_q   <= 1'b0;
+      f_bresp_prev_q  <= '0;
+      f_rresp_prev_q  <= '0;
+      f_rdata_prev_q  <= '0;
+    end else begin
+      f_aw_n_q        <= f_aw_n_q + 2'(f_aw_hs) - 2'(f_b_hs);
+      f_w_n_q         <= f_w_n_q + 2'(f_w_hs) - 2'(f_b_hs);
+      f_ar_n_q        <= f_ar_hs ? 1'b1 : (f_r_hs ? 1'b0 : f_ar_n_q);
+      if (f_aw_hs) f_wr_addr_q <= s_axi_awaddr_i;
+      if (f_ar_hs) f_rd_addr_q <= s_axi_araddr_i;
+      f_bvalid_prev_q <= s_axi_bvalid_o;
+      f_bready_prev_q <= s_axi_bready_i;
+      f_rvalid_prev_q <= s_axi_rvalid_o;
+      f_rready_prev_q <= s_axi_rready_i;
+      f_ar_hs_prev_q  <= f_ar_hs;
+      f_both_prev_q   <= aw_full_q && w_full_q && !s_axi_bvalid_o;
+      f_bresp_prev_q  <= s_axi_bresp_o;
+      f_rresp_prev_q  <= s_axi_rresp_o;
+      f_rdata_prev_q  <= s_axi_rdata_o;
+    end
+  end
+
+  always_comb begin
+    if (!f_init_q) begin
+      // -- group handshake: a VALID waits for its READY with its payload held
+      p_b_hold: assert (!(f_bvalid_prev_q && !f_bready_prev_q) ||
+                        (s_axi_bvalid_o && s_axi_bresp_o == f_bresp_prev_q));
+      p_r_hold: assert (!(f_rvalid_prev_q && !f_rready_prev_q) ||
+                        (s_axi_rvalid_o && s_axi_rresp_o == f_rresp_prev_q &&
+                         s_axi_rdata_o == f_rdata_prev_q));
+      // -- group response: no response without a request, one per request,
+      // and it comes: B the clock after AW and W are both held (no B pending),
+      // R the clock after the AR handshake
+      p_b_needs_req: assert (!s_axi_bvalid_o || (f_aw_n_q != '0 && f_w_n_q != '0));
+      p_b_prompt: assert (!f_both_prev_q || s_axi_bvalid_o);
+      p_r_needs_req: assert (!s_axi_rvalid_o || f_ar_n_q);
+      p_r_prompt: assert (!f_ar_hs_prev_q || f_r_new);
+      // helper invariants: at most one write held and one answered
+      inv_aw_n: assert (f_aw_n_q == 2'(aw_full_q) + 2'(s_axi_bvalid_o));
+      inv_w_n: assert (f_w_n_q == 2'(w_full_q) + 2'(s_axi_bvalid_o));
+      inv_ar_n: assert (f_ar_n_q == s_axi_rvalid_o);
+      inv_wr_addr: assert (!aw_full_q || f_wr_addr_q == awaddr_q);
+      // -- group decode: the response code of a new response from the address
+      p_b_slverr_ro: assert (!f_b_new || f_kind(f_wr_addr_q) != FReadOnly ||
+                             s_axi_bresp_o == RespSlvErr);
+      p_b_decerr: assert (!f_b_new || ((f_kind(f_wr_addr_q) == FUnmapped) ==
+                                       (s_axi_bresp_o == RespDecErr)));
+      p_b_no_exokay: assert (!s_axi_bvalid_o || s_axi_bresp_o != 2'b01);
+      p_r_resp: assert (!f_r_new || s_axi_rresp_o ==
+                        (f_kind(f_rd_addr_q) == FUnmapped ? RespDecErr : RespOkay));
+    end
+  end
+`endif
+
 endmodule

@@ -304,4 +304,145 @@ module sc_uart_bridge #(
   c_resp_decerr: cover property (@(posedge clk_i) cov_on && state_d == STx && state_q != STx && status_d == 8'd3);
 `endif
 
+`ifdef FORMAL
+  // ---- formal properties (scripts/formal.py, docs/formal.md) ----------------
+  // Input contract: reset in the first clock only; sc_uart_rx never raises
+  // rx_valid_i and rx_frame_err_i in the same clock. The bytes, their timing
+  // and the whole AXI slave side are free.
+  // The shadow keeps the last 8 received bytes (newest in [7:0]) and how many
+  // of them form one clean run: no framing error between them and no gap of
+  // more than TimeoutClks + 1 clocks from one to the next.
+  localparam int FGapW = ToW + 1;
+
+  logic             f_init_q = 1'b1;  // the first clock of every trace
+  logic [63:0]      f_bytes_q;
+  logic [3:0]       f_run_q;          // clean bytes in a row (saturating at 8)
+  logic             f_err_q;          // a framing error since the last byte
+  logic [FGapW-1:0] f_gap_q;          // clocks since the last byte (saturating)
+  logic             f_awvalid_prev_q, f_arvalid_prev_q;
+  logic [7:0]       f_b [8];          // f_b[i]: the i-th newest byte
+  // f_crc_win_q[j-1]: CRC-8 of the j newest bytes (j = 1..6), kept up to date
+  // byte by byte: the CRC of a window is crc8 of the CRC of the window one byte
+  // shorter and the new byte. f_crc6_q / f_crc2_q: the CRC of the 6 / 2 bytes
+  // before the newest one (what a write / read frame's last byte must be).
+  logic [6*8-1:0]   f_crc_win_q;
+  logic [7:0]       f_crc6_q, f_crc2_q;
+
+  // CRC-8 (0x07), the textbook bit-serial form (one message bit at a time into
+  // the top), written apart from crc8 above
+  function automatic logic [7:0] f_crc8(input logic [7:0] crc, input logic [7:0] d);
+    logic [7:0] c;
+    c = crc;
+    for (int i = 7; i >= 0; i--) begin
+      c = {c[6:0], 1'b0} ^ (8'h07 & {8{c[7] ^ d[i]}});
+    end
+    f_crc8 = c;
+  endfunction
+
+  (* anyseq *) logic [7:0] f_any_crc, f_any_byte;  // free values for p_crc8_ref
+
+  always_comb begin
+    for (int i = 0; i < 8; i++) f_b[i] = f_bytes_q[8*i +: 8];
+  end
+
+  always_comb begin
+    if (f_init_q) begin
+      a_reset_first: assume (!rst_ni);
+    end else begin
+      a_no_reset: assume (rst_ni);
+    end
+    a_rx_excl: assume (!(rx_valid_i && rx_frame_err_i));
+  end
+
+  always_ff @(posedge clk_i) begin
+    f_init_q <= 1'b0;
+    if (!rst_ni) begin
+      f_bytes_q        <= '0;
+      f_run_q          <= '0;
+      f_err_q          <= 1'b0;
+      f_gap_q          <= '1;
+      f_awvalid_prev_q <= 1'b0;
+      f_arvalid_prev_q <= 1'b0;
+      f_crc_win_q      <= '0;
+      f_crc6_q         <= '0;
+      f_crc2_q         <= '0;
+    end else begin
+      f_awvalid_prev_q <= m_axi_awvalid_o;
+      f_arvalid_prev_q <= m_axi_arvalid_o;
+      if (rx_valid_i) begin
+        f_bytes_q <= {f_bytes_q[55:0], rx_data_i};
+        f_crc_win_q[7:0] <= crc8(8'h00, rx_data_i);
+        for (int j = 1; j < 6; j++) begin
+          f_crc_win_q[8*j +: 8] <= crc8(f_crc_win_q[8*(j-1) +: 8], rx_data_i);
+        end
+        f_crc6_q  <= f_crc_win_q[8*5 +: 8];
+        f_crc2_q  <= f_crc_win_q[8*1 +: 8];
+        f_run_q   <= (f_err_q || f_gap_q > FGapW'(TimeoutClks + 1)) ? 4'd1 :
+                     (f_run_q == 4'd8 ? 4'd8 : f_run_q + 4'd1);
+        f_err_q   <= 1'b0;
+        f_gap_q   <= FGapW'(1);
+      end else begin
+        if (rx_frame_err_i) f_err_q <= 1'b1;
+        if (f_gap_q != '1) f_gap_q <= f_gap_q + FGapW'(1);
+      end
+    end
+  end
+
+  logic f_in_frame;
+  assign f_in_frame = state_q == SCmd || state_q == SAddr || state_q == SData || state_q == SCrc;
+
+  always_comb begin
+    if (!f_init_q) begin
+      // -- group frames: a register write (AWVALID rising) only right after 8
+      // clean bytes that are a write frame (A5 01 addr d0..d3 crc), with its
+      // address and data; a read (ARVALID rising) after a read frame (A5 02 addr crc)
+      p_write_frame: assert (!(m_axi_awvalid_o && !f_awvalid_prev_q) ||
+                             (f_run_q == 4'd8 && f_b[7] == ReqSync && f_b[6] == CmdWrite &&
+                              m_axi_awaddr_o == AW'({f_b[5], 2'b00}) &&
+                              m_axi_wdata_o == {f_b[1], f_b[2], f_b[3], f_b[4]} &&
+                              m_axi_wvalid_o && m_axi_wstrb_o == 4'hF));
+      p_read_frame: assert (!(m_axi_arvalid_o && !f_arvalid_prev_q) ||
+                            (f_run_q >= 4'd4 && f_b[3] == ReqSync && f_b[2] == CmdRead &&
+                             m_axi_araddr_o == AW'({f_b[1], 2'b00})));
+      p_axi_in_state: assert (!(m_axi_awvalid_o || m_axi_wvalid_o) || state_q == SWrite);
+      // -- group crc: ... and only when its last byte is the CRC-8 of the bytes
+      // after A5 (the running CRC of the parser tracks the shadow windows)
+      p_write_crc: assert (!(m_axi_awvalid_o && !f_awvalid_prev_q) || f_b[0] == f_crc6_q);
+      p_read_crc: assert (!(m_axi_arvalid_o && !f_arvalid_prev_q) || f_b[0] == f_crc2_q);
+      inv_crc_cmd: assert (state_q != SCmd || crc_q == 8'h00);
+      inv_crc_addr: assert (state_q != SAddr || crc_q == f_crc_win_q[7:0]);
+      inv_crc_data: assert (state_q != SData || crc_q == f_crc_win_q[8*(3'd1 + 3'(dcnt_q)) +: 8]);
+      inv_crc_end: assert (state_q != SCrc || crc_q == (is_write_q ? f_crc_win_q[8*5 +: 8]
+                                                                   : f_crc_win_q[8*1 +: 8]));
+      // -- helper invariants: the parser state against the shadow bytes
+      inv_run: assert (f_run_q <= 4'd8);
+      inv_frame_clean: assert (!f_in_frame || (!f_err_q && f_gap_q <= FGapW'(TimeoutClks + 1) &&
+                                               idle_q <= ToW'(TimeoutClks) &&
+                                               FGapW'(idle_q) + FGapW'(1) == f_gap_q));
+      inv_state: assert (state_q <= STx && (state_q != SWrite || is_write_q) &&
+                         (state_q != SRead || !is_write_q));
+      inv_cmd: assert (state_q != SCmd || (f_run_q >= 4'd1 && f_b[0] == ReqSync));
+      inv_addr: assert (state_q != SAddr ||
+                        (f_run_q >= 4'd2 && f_b[1] == ReqSync && is_write_q == (f_b[0] == CmdWrite) &&
+                         (f_b[0] == CmdWrite || f_b[0] == CmdRead)));
+      inv_data: assert (state_q != SData ||
+                        (is_write_q && f_run_q >= 4'd3 + 4'(dcnt_q) &&
+                         f_b[4'd2 + 4'(dcnt_q)] == ReqSync && f_b[4'd1 + 4'(dcnt_q)] == CmdWrite &&
+                         addr_q == f_b[dcnt_q] &&
+                         (dcnt_q != 2'd0 || data_q == '0) &&
+                         (dcnt_q != 2'd1 || data_q == {f_b[0], 24'h0}) &&
+                         (dcnt_q != 2'd2 || data_q == {f_b[0], f_b[1], 16'h0}) &&
+                         (dcnt_q != 2'd3 || data_q == {f_b[0], f_b[1], f_b[2], 8'h0})));
+      inv_at_crc: assert (state_q != SCrc ||
+                          (is_write_q ? (f_run_q >= 4'd7 && f_b[6] == ReqSync && f_b[5] == CmdWrite &&
+                                         addr_q == f_b[4] && data_q == {f_b[0], f_b[1], f_b[2], f_b[3]})
+                                      : (f_run_q >= 4'd3 && f_b[2] == ReqSync && f_b[1] == CmdRead &&
+                                         addr_q == f_b[0])));
+      // -- group crc8: the CRC function the frame check uses is the protocol's
+      // CRC-8 (polynomial 0x07, MSB first, see the header), for every input
+      p_crc8_ref: assert (crc8(f_any_crc, f_any_byte) == f_crc8(f_any_crc, f_any_byte));
+    end
+  end
+`endif
+
 endmodule

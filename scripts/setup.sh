@@ -6,7 +6,7 @@
 set -euo pipefail
 pkgs=(
   build-essential cmake python3
-  verilator iverilog yosys
+  verilator iverilog yosys z3
   libsystemc-dev
   libfmt-dev libcli11-dev nlohmann-json3-dev
   libgtest-dev googletest libbenchmark-dev

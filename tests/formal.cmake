@@ -1,0 +1,30 @@
+# Formal proofs (scripts/formal.py, docs/formal.md): one test per property
+# group, formal.<group>, and one that runs the group against a deliberately
+# broken copy of its module and passes only when the proof fails there,
+# formal.<group>_fails_when_broken. Label `formal`; the groups that take more
+# than a few seconds (the AXI register file and the queue bound of the step
+# generator, 10 s to about 2 min each) also carry `extended`, so the default
+# suite keeps the fast ones (about 20 s in all, run one after another).
+set(SC_FORMAL_FAST
+  step_gen_pulse_timing step_gen_dir_timing step_gen_count
+  quad_decoder_count quad_decoder_illegal quad_decoder_filter
+  uart_bridge_frames uart_bridge_crc uart_bridge_crc8)
+set(SC_FORMAL_SLOW
+  step_gen_overrun
+  axi_regs_handshake axi_regs_response axi_regs_decode axi_regs_decode_axis)
+
+foreach(group IN LISTS SC_FORMAL_FAST SC_FORMAL_SLOW)
+  set(cmd ${Python3_EXECUTABLE} ${PROJECT_SOURCE_DIR}/scripts/formal.py --group ${group}
+          --build-dir ${CMAKE_BINARY_DIR}/formal)
+  add_test(NAME formal.${group} COMMAND ${cmd})
+  add_test(NAME formal.${group}_fails_when_broken COMMAND ${cmd} --broken)
+  if(group IN_LIST SC_FORMAL_SLOW)
+    set(labels "formal;extended")
+    set(timeout 900)
+  else()
+    set(labels formal)
+    set(timeout 300)
+  endif()
+  set_tests_properties(formal.${group} formal.${group}_fails_when_broken
+                       PROPERTIES LABELS "${labels}" TIMEOUT ${timeout})
+endforeach()
