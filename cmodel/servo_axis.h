@@ -94,6 +94,7 @@ class ServoAxis {
   const StepNco& nco() const { return nco_; }
   const StepGen& step_gen() const { return core_.step_gen(); }
   NeuronPi& mutable_ctl() { return ctl_; }
+  AxisCore& mutable_core() { return core_; }  // for fault-injection tests only
 
   // Register-stage view of a configuration (what the RTL's _q flops hold).
   static ServoConfig registered(const ServoConfig& c);

@@ -395,6 +395,9 @@ int run_closed_loop_cli(ClosedLoopCli f, const std::vector<std::pair<std::string
       o.stop_at = stops[i].at_clock;
       o.stop_jerk = stops[i].codes.jerk;
       o.stop_acc = stops[i].codes.acc;
+      // The comparison shows how far the loop falls behind without
+      // feed-forward (up to 57 pulses on paper group 2): no bound there.
+      if (f.compare && !o.ctl.ff) o.max_error_limit = 0.0;
       try {
         results[i] = run_closed_loop(plans[i], o);
       } catch (const input::Error& e) {

@@ -47,6 +47,8 @@ struct PaperRow {
 };
 inline constexpr PaperRow kPaperTable3[4] = {
     {15.6, 1.83, 0.0061}, {7.3, 0.653, 0.0022}, {25.3, 2.34, 0.0448}, {13.9, 1.68, 0.0056}};
+// The runner's tracking-error bounds are the smallest and the largest of them.
+static_assert(kPaperTable3[1].max_error == kMaxErrorWithFf && kPaperTable3[2].max_error == kMaxErrorWithoutFf);
 
 std::string closed_loop_table(const std::vector<ClosedLoopResult>& r);
 std::string table3_layout(const std::vector<ClosedLoopResult>& r);  // rows named groupN

@@ -442,6 +442,10 @@ ClosedLoopResult run_rows(RowJob job, const ClosedLoopOptions& opt) {
   if (stop.seen() && out.done) fail("a stopped move reads done");
   if (stop_taken && out.busy) fail("busy at the end of the run after the stop");
   if (res.fault_ferr) fail("following-error fault");
+  const double max_error_limit = opt.max_error_limit.value_or(default_max_error_limit(opt.ctl));
+  if (max_error_limit > 0 && res.max_error > max_error_limit) {
+    fail(fmt::format("max tracking error {:.3f} > {} pulses", res.max_error, max_error_limit));
+  }
   // A stop in the arming clocks drops the start: the controller never ran.
   const bool start_dropped = opt.stop_at && !out.done && !stop.seen() && res.pulses == 0;
   if (!stopped && !res.in_pos && opt.ctl.closed_loop && !start_dropped) fail(fmt::format("not in position within {} clocks", limit));

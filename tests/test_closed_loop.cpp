@@ -1,7 +1,9 @@
 // Closed loop through sc_servo_axis: RTL vs model lockstep with the plant
 // outside the DUT (short moves, several plants and controller settings,
 // noisy/glitchy encoder), the checker proven able to fail, the following-
-// error fault, and weight boundedness/convergence over a paper group.
+// error fault, the pin-timing and tracking bounds of a run, the
+// controller's corner paths, weight boundedness/convergence over a paper
+// group, and the quadrature decoder's RTL against its model.
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
@@ -11,7 +13,10 @@
 #include <random>
 
 #include "closed_loop_run.h"
+#include "lockstep.h"
 #include "plant.h"
+#include "quad_decoder.h"
+#include "rtl_servo.h"
 #include "scenarios.h"
 #include "scurve/reg_encode.h"
 
@@ -92,6 +97,10 @@ TEST(ClosedLoopLockstep, ShortMovesMatchEveryClock) {
     if (noisy_enc) {
       EXPECT_TRUE(r.in_pos) << c.name;
       EXPECT_LE(std::abs(r.final_error), 1) << c.name;
+      // Everything else as in pass(): pin timing, tracking bound, no fault.
+      for (const std::string& f : r.failures) {
+        if (f.rfind("final error ", 0) != 0) ADD_FAILURE() << c.name << ": " << f;
+      }
     } else {
       EXPECT_TRUE(r.pass()) << c.name << ": " << (r.failures.empty() ? "" : r.failures.front());
       EXPECT_EQ(r.final_error, 0) << c.name;
@@ -211,6 +220,9 @@ MoveRequest fast_backward_move() {
 // and the rotor's lag, never caught up at that rate, reaches ~500 pulses.
 constexpr double kFastMoveULim = 200000;
 constexpr double kFastMoveFerrLim = 2000;
+// Its tracking bound: the rotor's lag at 200k pulses/s, 495 pulses measured
+// in closed loop (172 in the open-loop mode), plus a fifth.
+constexpr double kFastMoveMaxError = 600;
 
 PulseTiming long_dir_setup() {
   PulseTiming t;
@@ -234,6 +246,7 @@ void expect_long_dir_setup_move_exact(bool closed_loop) {
   o.ctl.closed_loop = closed_loop;
   o.ctl.u_lim = kFastMoveULim;
   o.ctl.ferr_lim = kFastMoveFerrLim;
+  o.max_error_limit = kFastMoveMaxError;
   const Plan plan = plan_with(fast_backward_move(), o.timing);
   ASSERT_FALSE(plan.segments.empty());
   const ClosedLoopResult r = run_closed_loop(plan, o);
@@ -392,11 +405,14 @@ TEST(ClosedLoopWeights, BoundedAndConvergingOverPaperGroup1) {
   const ClosedLoopResult r = run_closed_loop(plan_or_die(paper_group(1)), o);
   ASSERT_TRUE(r.pass()) << r.failures.front();
   ASSERT_GT(r.weights.size(), 1000u);
+  // Each weight against its own bound (w_p1 <= 0.5 is the one that binds here).
+  const double w_max[4] = {o.ctl.w_p1_max, o.ctl.w_p2_max, o.ctl.w_v1_max, o.ctl.w_v2_max};
+  const char* w_name[4] = {"w_p1", "w_p2", "w_v1", "w_v2"};
   for (const WeightSample& s : r.weights) {
     for (int i = 0; i < 4; ++i) {
-      ASSERT_GE(s.w[i], o.ctl.w_min);
-      ASSERT_LE(s.w[i], std::max({o.ctl.w_p1_max, o.ctl.w_p2_max, o.ctl.w_v1_max, o.ctl.w_v2_max}));
-      ASSERT_LE(std::fabs(s.wn[i]), 1.0);
+      ASSERT_GE(s.w[i], o.ctl.w_min) << w_name[i] << " at " << s.t << " s";
+      ASSERT_LE(s.w[i], w_max[i]) << w_name[i] << " at " << s.t << " s";
+      ASSERT_LE(std::fabs(s.wn[i]), 1.0) << w_name[i] << " at " << s.t << " s";
     }
   }
   auto change = [&](double t0, double t1) {
@@ -462,6 +478,183 @@ TEST(ClosedLoopStop, StopsAtRandomTimesSettleInPositionWhereTheReferenceRested) 
     }
   }
   EXPECT_GE(taken, runs - 2) << "most stops must land inside the moves";
+}
+
+// The closed-loop runner's pin monitor fails the run on the pin timing: a
+// STEP pulse one clock longer than PULSE_TIME.HIGH, and DIR turned within
+// the hold time after a rising edge (injected into the model's step
+// generator on the model engine: the pins then break the rule RTL and model
+// would share).
+TEST(ClosedLoopPins, ALongerStepPulseOrAnEarlyDirTurnFailsTheRun) {
+  const Plan plan = plan_or_die(short_move(600, 0, 3000, 0));
+  for (const bool widen : {true, false}) {
+    ClosedLoopOptions o;
+    o.engine = ClEngine::ModelOnly;
+    o.tail_s = 0.01;
+    bool done = false;
+    o.inject = [&](uint64_t, ServoAxis& m) {
+      StepGen::State& sg = m.mutable_core().step_gen().mutable_state();
+      if (done || sg.count < 100) return;  // well into the move
+      if (widen && sg.step && sg.high_left == 2) {
+        ++sg.high_left;
+        done = true;
+      } else if (!widen && !sg.step && sg.pend == 0 && sg.since_rise > o.timing.high &&
+                 sg.since_rise + 10 < o.timing.hold) {
+        sg.dir = !sg.dir;  // turned back by the generator once the hold is over
+        sg.since_dir = 1;
+        done = true;
+      }
+    };
+    const ClosedLoopResult r = run_closed_loop(plan, o);
+    const char* what = widen ? "longer pulse" : "early DIR turn";
+    ASSERT_TRUE(done) << what;
+    EXPECT_FALSE(r.pass()) << what;
+    const std::string rule = widen ? fmt::format("STEP high {} != {} clocks", o.timing.high + 1, o.timing.high)
+                                   : std::string("DIR hold ");
+    bool found = false;
+    for (const std::string& f : r.failures) {
+      found = found || (f.rfind("pins: ", 0) == 0 && f.find(rule) != std::string::npos);
+    }
+    EXPECT_TRUE(found) << what << ": " << (r.failures.empty() ? "passed" : r.failures.front());
+  }
+}
+
+// The tracking bound fails a run that tracks worse than it: the default
+// bound holds on the short move (1.7 pulses measured), a bound below what
+// it reaches fails it with the figure.
+TEST(ClosedLoopTracking, MaxErrorAboveTheBoundFailsTheRun) {
+  const Plan plan = plan_or_die(short_move(600, 0, 3000, 0));
+  ClosedLoopOptions o;
+  o.engine = ClEngine::ModelOnly;
+  o.tail_s = 0.01;
+  const ClosedLoopResult r = run_closed_loop(plan, o);
+  ASSERT_TRUE(r.pass()) << r.failures.front();
+  EXPECT_LT(r.max_error, kMaxErrorWithFf);
+  EXPECT_GT(r.max_error, 0.5);
+  o.max_error_limit = 0.5;
+  const ClosedLoopResult tight = run_closed_loop(plan, o);
+  ASSERT_EQ(tight.failures.size(), 1u) << (tight.failures.empty() ? "passed" : tight.failures.back());
+  EXPECT_EQ(tight.failures.front(), fmt::format("max tracking error {:.3f} > 0.5 pulses", r.max_error));
+}
+
+// The controller's corner paths at system level, RTL and model every clock:
+// unequal learning rates on all four weights (the defaults of the position
+// loop are equal, so swapped rates would not show) with the speed loop
+// learning too (no dead zone), and a backward move braking from a start
+// speed above the speed loop's limit: u sits at its negative clamp -u_lim
+// (exactly, never beyond) until the reference slows below it; every weight
+// moves, within its bounds; the axis ends in position.
+TEST(ClosedLoopLockstep, UnequalLearningRatesAndTheNegativeSpeedClampMatchEveryClock) {
+  MoveRequest req = short_move(-1500, 3400, 2500, 0);
+  req.a_max = 50000;
+  req.j_max = 5e6;
+  ClosedLoopOptions o;
+  o.engine = ClEngine::Lockstep;
+  o.tail_s = 0.01;
+  o.ctl.eta_p1 = 0.35;
+  o.ctl.eta_p2 = 0.05;
+  o.ctl.eta_v1 = 0.02;
+  o.ctl.eta_v2 = 0.25;
+  o.ctl.learn_dz_v = 0;
+  o.ctl.u_lim = 3300;  // pulses/s: below the start speed
+  o.ctl.v_lim = 500;
+  // The reference starts at 3400 pulses/s with the rotor at rest and the
+  // rate clamped below it: the rotor falls behind by 6.3 pulses (measured).
+  o.max_error_limit = 10;
+  ServoConfig cfg;
+  ASSERT_EQ(to_servo_config(o.ctl, o.plant, o.timing, cfg), "");
+  const int32_t u_min = -int32_t(cfg.ctl.u_lim);
+  int32_t lowest_u = 0;
+  uint64_t clamped = 0;
+  const int32_t w_first[4] = {cfg.ctl.w_p1, cfg.ctl.w_p2, cfg.ctl.w_v1, cfg.ctl.w_v2};
+  int32_t w_last[4] = {0, 0, 0, 0};
+  o.inject = [&](uint64_t, ServoAxis& m) {
+    const NeuronPi::State& c = m.ctl().state();
+    if (!c.active) return;
+    lowest_u = std::min(lowest_u, c.u);
+    clamped += c.u == u_min;
+    const int32_t w[4] = {c.lp[0].w1, c.lp[0].w2, c.lp[1].w1, c.lp[1].w2};
+    std::copy(w, w + 4, w_last);
+  };
+  const ClosedLoopResult r = run_closed_loop(plan_or_die(req), o);
+  EXPECT_EQ(r.mismatches, 0u) << r.first_mismatch;
+  EXPECT_TRUE(r.pass()) << (r.failures.empty() ? "" : r.failures.front());
+  EXPECT_EQ(lowest_u, u_min) << "u must reach -u_lim and stop there";
+  EXPECT_GT(clamped, 1000u) << "clocks at the negative clamp";
+  const char* w_name[4] = {"w_p1", "w_p2", "w_v1", "w_v2"};
+  const int32_t w_max[4] = {cfg.ctl.w_p1_max, cfg.ctl.w_p2_max, cfg.ctl.w_v1_max, cfg.ctl.w_v2_max};
+  for (int i = 0; i < 4; ++i) {
+    EXPECT_NE(w_last[i], w_first[i]) << w_name[i] << " never learned";
+    EXPECT_GE(w_last[i], cfg.ctl.w_min) << w_name[i];
+    EXPECT_LE(w_last[i], w_max[i]) << w_name[i];
+  }
+  std::printf("max_err %.3f, final %lld, u at -u_lim for %llu clocks, weights %d %d %d %d -> %d %d %d %d\n",
+              r.max_error, (long long)r.final_error, (unsigned long long)clamped, w_first[0], w_first[1], w_first[2],
+              w_first[3], w_last[0], w_last[1], w_last[2], w_last[3]);
+}
+
+// A and B of the four quadrature states, in counting order.
+constexpr bool kGrayA[4] = {false, true, true, false};
+constexpr bool kGrayB[4] = {false, false, true, true};
+
+// The RTL decoder against the model every clock, through the Verilated
+// sc_servo_axis (its decoder outputs enc_pos_o, enc_illegal_o, enc_index_o
+// and every other output compared; the axis idle): for every filter length,
+// random A/B/Z streams walking both ways with random dwell, glitches on each
+// channel shorter and longer than the filter, illegal jumps (A and B at
+// once) and index pulses.
+TEST(QuadDecoderLockstep, RandomEncoderStreamsMatchTheRtlEveryClock) {
+  std::mt19937_64 rng(17);
+  for (unsigned filt = 0; filt <= QuadDecoder::kFiltMask; ++filt) {
+    ServoInputs in;
+    in.cfg.ctl.enc_filt = uint8_t(filt);
+    RtlServo rtl;
+    rtl.reset();
+    ServoAxis model;
+    Lockstep<ServoOutputs> chk(&render_servo);
+    uint64_t clock = 0;
+    int64_t pos = 0;
+    auto drive = [&](bool a, bool b, bool z, int clocks) {
+      for (int k = 0; k < clocks && !chk.should_stop(); ++k) {
+        in.enc_a = a;
+        in.enc_b = b;
+        in.enc_z = z;
+        rtl.step(in);
+        model.step(in);
+        chk.compare(clock++, rtl.outputs(), model.outputs());
+      }
+    };
+    auto settle = [&](int clocks) {
+      const unsigned ph = unsigned(pos) & 3;
+      drive(kGrayA[ph], kGrayB[ph], pos % 40 == 5, clocks);
+    };
+    int glitches = 0, jumps = 0;
+    for (int i = 0; i < 2500 && !chk.should_stop(); ++i) {
+      const unsigned what = unsigned(rng() % 20);
+      if (what < 14) {  // one count either way
+        pos += (rng() & 1) ? 1 : -1;
+        settle(1 + int(rng() % (filt + 4)));
+      } else if (what < 17) {  // a glitch on A, B or Z, then back
+        const unsigned ph = unsigned(pos) & 3;
+        bool a = kGrayA[ph], b = kGrayB[ph], z = pos % 40 == 5;
+        (what == 14 ? a : what == 15 ? b : z) ^= true;
+        drive(a, b, z, 1 + int(rng() % (filt + 3)));
+        settle(1 + int(rng() % (filt + 4)));
+        ++glitches;
+      } else if (what == 17) {  // two counts at once: an illegal transition
+        pos += 2;
+        settle(filt + 4);
+        ++jumps;
+      } else {
+        settle(int(rng() % 40));
+      }
+    }
+    settle(40);
+    ASSERT_TRUE(chk.errors().empty()) << "filter " << filt << ": " << chk.finish();
+    EXPECT_GT(chk.matched(), 10000u) << "filter " << filt;
+    EXPECT_GT(glitches, 100) << "filter " << filt;
+    EXPECT_GT(model.decoder().state().illegal, 0) << "filter " << filt << ": " << jumps << " jumps";
+  }
 }
 
 }  // namespace

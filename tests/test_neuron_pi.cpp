@@ -177,44 +177,73 @@ TEST(NeuronPi, DatapathFitsTheControlPeriod) {
   EXPECT_LT(NeuronPi::kBusyClocks, NeuronPi::kMinDiv);
 }
 
-// A large constant error drives the output into saturation. With Kb = 1 the
-// accumulator stays at the limit (back-calculation); with Kb = 0 it winds up
-// far beyond and takes much longer to come back once the error reverses.
+// Back-calculation with Kb = 1 removes the whole excess every period, so a
+// saturated loop's accumulator is its limit plus that period's increment
+// du = K (wn1 e + wn2 (e - e_prev)), never more: acc(k) = lim + du(k) once
+// the output is clamped. Both loops, both signs: a position error held at
+// +-199.5 counts clamps the position loop at v_lim (5 counts/period) in the
+// first period, and its output, held at +-5, clamps the speed loop at u_lim
+// (3) a few periods later. The first period carries the proportional kick
+// (e - e_prev = e: du = K_p e = 9.975); after it du = K_p wn_p1 e = 0.623 in
+// the position loop and K_v wn_v1 e_v = 0.4 in the speed loop (0.5 in its
+// first period). With Kb = 0 the accumulator winds up far beyond and takes
+// much longer to come back once the error reverses.
 TEST(NeuronPi, SaturationAndBackCalculationAntiWindup) {
-  auto run = [](uint32_t kb, int32_t& acc_peak, int& recover_periods) {
+  struct Run {
+    double first_acc_p = 0, max_acc_p = 0, max_acc_v = 0;  // |accumulator|, counts/period
+    double end_acc_p = 0, end_acc_v = 0, end_out_p = 0, end_u = 0;
+    int recover_periods = 0;
+  };
+  auto run = [](uint32_t kb, int sign) {
     NeuronConfig c = base_cfg();
     c.kb = kb;
     c.eta_p1 = c.eta_p2 = c.eta_v1 = c.eta_v2 = 0;
     c.v_lim = uint32_t(5.0 * kQ);
-    NeuronPi n;
+    c.u_lim = uint32_t(3.0 * kQ);
     NeuronPi::Inputs in;
-    in.start = true;
-    n.step(c, in);
-    in.start = false;
-    in.ref_int = 200;  // 200 counts of error, held
-    acc_peak = 0;
+    NeuronPi n = started(c, in);
+    in.ref_int = sign > 0 ? 200 : -199;  // P* - 1/2 = +-199.5 counts, held
+    Run r;
     for (int k = 0; k < 300; ++k) {
       run_period(n, c, in);
-      acc_peak = std::max(acc_peak, n.state().acc(0));
-      EXPECT_LE(n.state().out_p, int32_t(c.v_lim));
+      const double acc_p = n.state().acc(0) / kQ, acc_v = n.state().acc(1) / kQ;
+      if (k == 0) r.first_acc_p = acc_p;
+      r.max_acc_p = std::max(r.max_acc_p, std::fabs(acc_p));
+      r.max_acc_v = std::max(r.max_acc_v, std::fabs(acc_v));
+      EXPECT_LE(std::abs(n.state().out_p), int32_t(c.v_lim));
+      EXPECT_LE(std::abs(n.state().u), int32_t(c.u_lim));
+      if (kb != 0) {
+        if (k >= 1) EXPECT_LE(std::fabs(acc_p), 5.0 + 0.6235 + 1e-3) << "period " << k << ", sign " << sign;
+        EXPECT_LE(std::fabs(acc_v), 3.0 + 0.5 + 1e-3) << "period " << k << ", sign " << sign;
+      }
     }
-    EXPECT_EQ(n.state().out_p, int32_t(c.v_lim));
-    in.ref_int = -200;  // error reverses
-    recover_periods = 0;
-    while (n.state().out_p > 0 && recover_periods < 100000) {
+    r.end_acc_p = n.state().acc(0) / kQ;
+    r.end_acc_v = n.state().acc(1) / kQ;
+    r.end_out_p = n.state().out_p / kQ;
+    r.end_u = n.state().u / kQ;
+    in.ref_int = sign > 0 ? -199 : 200;  // the error reverses
+    while (sign * n.state().out_p > 0 && r.recover_periods < 100000) {
       run_period(n, c, in);
-      ++recover_periods;
+      ++r.recover_periods;
     }
+    return r;
   };
-  int32_t peak_aw = 0, peak_wu = 0;
-  int rec_aw = 0, rec_wu = 0;
-  run(uint32_t(1.0 * kC), peak_aw, rec_aw);
-  run(0, peak_wu, rec_wu);
-  EXPECT_LT(peak_aw, int32_t(12.0 * kQ));  // limit (5) + one period's increment at most
-  EXPECT_GT(peak_wu, int32_t(50.0 * kQ));  // winds up without back-calculation
-  EXPECT_LT(rec_aw * 5, rec_wu);
-  std::printf("peak accumulator: Kb=1 %.2f, Kb=0 %.2f counts/period; recovery %d vs %d periods\n", peak_aw / kQ,
-              peak_wu / kQ, rec_aw, rec_wu);
+  for (const int sign : {1, -1}) {
+    const Run aw = run(uint32_t(1.0 * kC), sign);
+    EXPECT_NEAR(aw.first_acc_p, sign * 9.975, 1e-3) << "sign " << sign << ": the first period's increment K_p e";
+    EXPECT_NEAR(aw.end_acc_p, sign * (5.0 + 0.6234), 1e-3) << "sign " << sign << ": v_lim + K_p wn_p1 e";
+    EXPECT_NEAR(aw.end_acc_v, sign * (3.0 + 0.4), 1e-3) << "sign " << sign << ": u_lim + K_v wn_v1 e_v";
+    EXPECT_EQ(aw.end_out_p, sign * 5.0);
+    EXPECT_EQ(aw.end_u, sign * 3.0);
+    const Run wu = run(0, sign);
+    EXPECT_GT(wu.max_acc_p, 50.0) << "sign " << sign << ": winds up without back-calculation";
+    EXPECT_GT(wu.max_acc_v, 50.0) << "sign " << sign << ": winds up without back-calculation";
+    EXPECT_LT(aw.recover_periods * 5, wu.recover_periods) << "sign " << sign;
+    std::printf("sign %+d: peak accumulator Kb=1 %.3f / %.3f, Kb=0 %.1f / %.1f counts/period (position / speed); "
+                "recovery %d vs %d periods\n",
+                sign, aw.max_acc_p, aw.max_acc_v, wu.max_acc_p, wu.max_acc_v, aw.recover_periods,
+                wu.recover_periods);
+  }
 }
 
 TEST(NeuronPi, WeightsStayWithinBounds) {
@@ -228,17 +257,23 @@ TEST(NeuronPi, WeightsStayWithinBounds) {
   NeuronPi::Inputs in;
   NeuronPi n = started(c, in);
   std::mt19937 rng(5);
+  // Each weight against its own bound (all four differ), each reaching it.
+  const int32_t w_max[4] = {c.w_p1_max, c.w_p2_max, c.w_v1_max, c.w_v2_max};
+  const char* w_name[4] = {"w_p1", "w_p2", "w_v1", "w_v2"};
+  bool at_max[4] = {false, false, false, false};
   for (int k = 0; k < 500; ++k) {
     in.ref_int = int32_t(rng() % 400) - 200;
     run_period(n, c, in);
-    for (const auto& l : n.state().lp) {
-      for (int32_t w : {l.w1, l.w2}) {
-        ASSERT_GE(w, c.w_min);
-        ASSERT_LE(w, std::max({c.w_p1_max, c.w_p2_max, c.w_v1_max, c.w_v2_max}));
-      }
-      ASSERT_LE(std::abs(l.n1) + std::abs(l.n2), (1 << NWgtFrac) + 1);
+    const NeuronPi::State& st = n.state();
+    const int32_t w[4] = {st.lp[0].w1, st.lp[0].w2, st.lp[1].w1, st.lp[1].w2};
+    for (int i = 0; i < 4; ++i) {
+      ASSERT_GE(w[i], c.w_min) << w_name[i] << ", period " << k;
+      ASSERT_LE(w[i], w_max[i]) << w_name[i] << ", period " << k;
+      at_max[i] = at_max[i] || w[i] == w_max[i];
     }
+    for (const auto& l : st.lp) ASSERT_LE(std::abs(l.n1) + std::abs(l.n2), (1 << NWgtFrac) + 1);
   }
+  for (int i = 0; i < 4; ++i) EXPECT_TRUE(at_max[i]) << w_name[i] << " never reached its bound";
 }
 
 TEST(NeuronPi, DeadZoneStopsLearning) {

@@ -1,5 +1,8 @@
-// sc_quad_decoder: every legal and illegal transition, the glitch filter,
-// and the RTL against the model on random A/B streams.
+// The quadrature decoder model (QuadDecoder, the twin of sc_quad_decoder):
+// every legal and illegal transition, the glitch filter, the index. The RTL
+// against the model on random A/B/Z streams is QuadDecoderLockstep.* in
+// test_closed_loop.cpp (this file also builds without Verilator, for the
+// sanitizer stage).
 #include <gtest/gtest.h>
 
 #include <random>

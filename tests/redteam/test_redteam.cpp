@@ -135,15 +135,18 @@ TEST(RedTeam, F1_RestToRestWithHugeJerkIsPlannedNotBlamedOnDistance) {
 // F2: backward moves (DIR must flip) whose first steps come sooner than the
 // DIR setup time: the executor runs on, requests pile up in the 4-bit step
 // queue (+-7), overflow drops steps. RTL and model agree (0 mismatches), the
-// pins emit fewer than |distance| steps.
+// pins emit fewer than |distance| steps. Now every step is on the pins and
+// the whole run passes (pin timing, duty phases, limits, lockstep).
 TEST(RedTeam, F2_BackwardMoveWithLongDirSetupEmitsEveryStep) {
   const SimResult s = sim(move_request(-20000, 0, 200000, 0, 1e8, 1e11), PulseTiming{50, 50, 65535, 100});
   EXPECT_EQ(s.pulses, -20000) << s.failure_lines();
+  EXPECT_TRUE(s.pass()) << s.failure_lines();
 }
 TEST(RedTeam, F2_BackwardAtRateLimitWithModestSetupEmitsEveryStep) {
   const SimResult s = sim(move_request(-19, 2857142.8571428573, 2857142.8571428573, 2857142.8571428573, 59299052.318841696, 1e11),
                           PulseTiming{4, 3, 135, 44216});
   EXPECT_EQ(s.pulses, -19) << s.failure_lines();
+  EXPECT_TRUE(s.pass()) << s.failure_lines();
 }
 // Same cause, no loss: the queued steps leave back to back at 2x the planned
 // step rate, the sim fails its steady-cruise check.
