@@ -449,4 +449,87 @@ module sc_profile_exec (
   c_step_rev:       cover property (@(posedge clk_i) rst_ni && step_req_q && !step_fwd_q);
 `endif
 
+`ifdef FORMAL
+  // ---- formal properties (scripts/formal.py, docs/formal.md) ----------------
+  // Proven on this module with its sc_row_fifo and sc_stop_gen (read without
+  // FORMAL). Input contract: reset in the first clock only; every other input
+  // (rows, START, STOP, abort, limits, guards) is free in every clock. The
+  // properties need no reasoning about the wide arithmetic beyond the adders
+  // themselves, so they are proven on the full widths. Shadows (f_*) hold the
+  // outputs of the last clock.
+  logic                      f_init_q = 1'b1;  // the first clock of every trace
+  logic                      f_run_prev_q, f_fin_prev_q, f_start_prev_q, f_abort_run_q;
+  logic                      f_load_prev_q, f_disc_prev_q;
+  logic signed [PosIntW-1:0] f_pint_prev_q;
+  logic signed [VelW-1:0]    f_vel_prev_q, f_vel_end_q;
+  logic signed [AccW-1:0]    f_acc_prev_q, f_acc_end_q;
+  logic signed [JerkW-1:0]   f_jerk_prev_q;
+  logic                      f_head_cont, f_disc;
+
+  // The head row continues the motion: the spec of the continuity guard,
+  // written from the pins (v + a, a + j of this clock; ACC_STEP: velocity only).
+  assign f_head_cont = hd_vel0 == vel_o + VelW'(acc_o) &&
+                       (hd_acc0 == acc_o + AccW'(jerk_o) || hd_flags[sc_pkg::RowFlagAccStep]);
+  // A row ends (running, no stop, no abort, its last clock), the stream does
+  // not end there as planned, a row is queued and it does not continue.
+  assign f_disc = running_o && !stopping_o && !abort_i && left_q == SegClkW'(1) &&
+                  !flags_q[sc_pkg::RowFlagStreamEnd] && !fifo_empty && !f_head_cont;
+
+  always_comb begin
+    if (f_init_q) begin
+      a_reset_first: assume (!rst_ni);
+    end else begin
+      a_no_reset: assume (rst_ni);
+    end
+  end
+
+  always_ff @(posedge clk_i) begin
+    f_init_q       <= 1'b0;
+    f_run_prev_q   <= rst_ni && running_o;
+    f_fin_prev_q   <= rst_ni && finished_o;
+    f_start_prev_q <= start_i;
+    f_abort_run_q  <= rst_ni && running_o && abort_i;
+    f_load_prev_q  <= rst_ni && load;
+    f_disc_prev_q  <= rst_ni && f_disc;
+    f_pint_prev_q  <= rst_ni ? pos_int_o : '0;
+    f_vel_prev_q   <= vel_o;
+    f_acc_prev_q   <= acc_o;
+    f_jerk_prev_q  <= jerk_o;
+    f_vel_end_q    <= vel_o + VelW'(acc_o);
+    f_acc_end_q    <= acc_o + AccW'(jerk_o);
+  end
+
+  always_comb begin
+    if (!f_init_q) begin
+      // -- group exec_steps: a step request only in the clock after a running
+      // clock; the position moves by exactly the request (at most one pulse per
+      // clock); once finished, nothing runs or steps until a START
+      p_step_after_run: assert (!step_req_o || f_run_prev_q);
+      p_pos_one: assert (pos_int_o == f_pint_prev_q +
+                         (step_req_o ? (step_fwd_o ? PosIntW'(1) : {PosIntW{1'b1}}) : PosIntW'(0)));
+      p_finished_idle: assert (!finished_o || !running_o);
+      p_done_quiet: assert (!(f_fin_prev_q && !f_start_prev_q) ||
+                            (finished_o && !running_o && !step_req_o));
+      // -- group exec_abort: abort_i while running stops everything the next
+      // clock: not running, no stop, no step request, v = a = j = 0, FIFO empty
+      p_abort_now: assert (!f_abort_run_q || (!running_o && !stopping_o && !step_req_o &&
+                                              vel_o == '0 && acc_o == '0 && jerk_o == '0 &&
+                                              fifo_level_o == '0));
+      // -- group exec_continuity: while running, v is always the integral of a
+      // (no velocity step at a row boundary, at a stop or anywhere), a the
+      // integral of the applied jerk except where a row flagged ACC_STEP was
+      // just loaded; a row that does not continue is not run: the controlled
+      // stop and discont_o follow at once, from the integrated state, the FIFO
+      // emptied; during a stop no row is queued
+      p_vel_cont: assert (!(f_run_prev_q && running_o) || vel_o == f_vel_end_q);
+      p_acc_cont: assert (!(f_run_prev_q && running_o) || acc_o == f_acc_end_q ||
+                          (f_load_prev_q && flags_q[sc_pkg::RowFlagAccStep]));
+      p_disc_stop: assert (!f_disc_prev_q || (running_o && stopping_o && discont_o &&
+                                              vel_o == f_vel_end_q && acc_o == f_acc_end_q &&
+                                              fifo_level_o == '0));
+      p_stop_empty: assert (!stopping_o || fifo_level_o == '0);
+    end
+  end
+`endif
+
 endmodule

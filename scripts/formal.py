@@ -47,6 +47,9 @@ class Group:
     induction: int = 0          # K for k-induction; 0 = bounded only
     depth: int = 0              # bounded depth (base case when induction > 0)
     files: list = field(default_factory=list)   # extra RTL files (submodules)
+    # submodules read without FORMAL: their own input contracts (assumptions)
+    # would otherwise constrain the proof's top from inside
+    plain_files: list = field(default_factory=list)
     params: dict = field(default_factory=dict)  # chparam overrides
     keep_assumes: list = field(default_factory=list)  # group-only assumptions kept
     mutation: tuple = ()        # (old text, new text, description)
@@ -201,6 +204,43 @@ GROUPS = [
                   "CRC polynomial 0x05"),
         broken_depth=2),
 ]
+
+# sc_profile_exec: its FIFO and stop generator, without their own FORMAL sections
+EXEC_SUBS = ["sc_row_fifo.sv", "sc_stop_gen.sv"]
+GROUPS += [
+    Group(
+        name="exec_steps", module="sc_profile_exec", plain_files=EXEC_SUBS,
+        what="a step request only the clock after a running clock; the position moves by exactly "
+             "the request (<= 1 pulse per clock); once finished nothing runs or steps until START",
+        asserts=["p_step_after_run", "p_pos_one", "p_finished_idle", "p_done_quiet"],
+        induction=2, depth=2,
+        mutation=("          if (!load && ends) begin\n            run_d      = 1'b0;",
+                  "          if (!load && ends) begin\n            run_d      = 1'b1;",
+                  "the stream end leaves the integrator running"),
+        broken_depth=5),
+    Group(
+        name="exec_abort", module="sc_profile_exec", plain_files=EXEC_SUBS,
+        what="abort_i while running: the next clock not running, no step request, v = a = j = 0, "
+             "FIFO empty",
+        asserts=["p_abort_now"],
+        induction=2, depth=2,
+        mutation=("      if (abort_i) begin\n        run_d   = 1'b0;",
+                  "      if (abort_i) begin\n        run_d   = 1'b0;\n"
+                  "        step_req_d = pos_sum[FracBits+1] || pos_sum[FracBits];",
+                  "the abort clock still emits its step"),
+        broken_depth=5),
+    Group(
+        name="exec_continuity", module="sc_profile_exec", plain_files=EXEC_SUBS,
+        what="v always the integral of a, a of the jerk (ACC_STEP rows: a only); a row that does not "
+             "continue is not run: controlled stop + discont_o at once, FIFO emptied",
+        asserts=["p_vel_cont", "p_acc_cont", "p_disc_stop", "p_stop_empty"],
+        induction=2, depth=2,
+        mutation=("assign continues = hd_vel0 == vel_end && "
+                  "(hd_acc0 == acc_end || hd_flags[sc_pkg::RowFlagAccStep]);",
+                  "assign continues = hd_vel0 == vel_end;",
+                  "the guard checks the velocity only"),
+        broken_depth=5),
+]
 GROUP_NAMES = [g.name for g in GROUPS]
 
 
@@ -226,7 +266,7 @@ def run(cmd, log, timeout):
 def prepare(g, work, broken):
     """Copies the sources (mutated for --broken) into work; returns the smt2 path."""
     os.makedirs(work, exist_ok=True)
-    srcs = ["sc_pkg.sv", g.module + ".sv"] + g.files
+    srcs = ["sc_pkg.sv", g.module + ".sv"] + g.files + g.plain_files
     paths = []
     for s in srcs:
         text = open(os.path.join(RTL, s), encoding="utf-8").read()
@@ -245,7 +285,10 @@ def prepare(g, work, broken):
     asserts = [a for a in g.asserts if not (broken and a.startswith("inv_"))]
     keep = " ".join(f"c:{a}" for a in asserts)
     drop = [a for a in GROUP_ONLY_ASSUMES if a not in g.keep_assumes]
-    lines = [f"read_verilog -sv -formal -DFORMAL {' '.join(paths)}"]
+    n_formal = len(srcs) - len(g.plain_files)
+    lines = [f"read_verilog -sv -formal -DFORMAL {' '.join(paths[:n_formal])}"]
+    if g.plain_files:
+        lines.append(f"read_verilog -sv {' '.join(paths[n_formal:])}")
     for k, v in g.params.items():
         lines.append(f"chparam -set {k} {v} {g.module}")
     lines.append(f"prep -top {g.module}")

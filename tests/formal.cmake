@@ -8,7 +8,8 @@
 set(SC_FORMAL_FAST
   step_gen_pulse_timing step_gen_dir_timing step_gen_count
   quad_decoder_count quad_decoder_illegal quad_decoder_filter
-  uart_bridge_frames uart_bridge_crc uart_bridge_crc8)
+  uart_bridge_frames uart_bridge_crc uart_bridge_crc8
+  exec_steps exec_abort exec_continuity)
 set(SC_FORMAL_SLOW
   step_gen_overrun
   axi_regs_handshake axi_regs_response axi_regs_decode axi_regs_decode_axis)
