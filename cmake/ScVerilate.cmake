@@ -9,18 +9,36 @@
 # verilate() with the project's flags. Every --cc top goes into one library
 # (tb/sc_rtl), so the Verilator runtime is compiled once.
 
+# Mutation testing (scripts/mutation.py, docs/mutation.md): with
+# SC_RTL_FROZEN_DIR set, every top not named in SC_RTL_LIVE_TOPS is Verilated
+# from that unmodified copy of rtl/, so a mutant rebuilds only the tops its
+# tests run. Both empty (the default): every top from rtl/.
+set(SC_RTL_FROZEN_DIR "" CACHE PATH "mutation testing: Verilate the tops not in SC_RTL_LIVE_TOPS from here")
+set(SC_RTL_LIVE_TOPS "" CACHE STRING "mutation testing: the tops Verilated from rtl/ when SC_RTL_FROZEN_DIR is set")
+# Mutation testing: the Verilated code's optimisation level (empty: -O3);
+# a mutant's build is dominated by compiling its top.
+set(SC_VERILATE_OPT "" CACHE STRING "mutation testing: the Verilated code's -O level instead of -O3")
+
 set(SC_RTL_DIR ${PROJECT_SOURCE_DIR}/rtl)
 set(SC_RTL_DEPS ${PROJECT_SOURCE_DIR}/scripts/rtl_deps.py)
 set(SC_VERILATOR_WAIVER ${SC_RTL_DIR}/lint/verilator_waiver.vlt)
 # The lists are computed at configure time: re-configure when any RTL file
 # (a new instantiation) or the script changes.
 file(GLOB SC_RTL_ALL CONFIGURE_DEPENDS ${SC_RTL_DIR}/*.sv)
-set_property(DIRECTORY ${PROJECT_SOURCE_DIR} APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS
-             ${SC_RTL_ALL} ${SC_RTL_DEPS})
+# (Not in a mutation build, SC_RTL_FROZEN_DIR above: a mutant never changes an
+# instantiation, and re-configuring per mutant would cost more than its build.)
+if(NOT SC_RTL_FROZEN_DIR)
+  set_property(DIRECTORY ${PROJECT_SOURCE_DIR} APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS
+               ${SC_RTL_ALL} ${SC_RTL_DEPS})
+endif()
 
 function(sc_rtl_files out top)
+  set(dir ${SC_RTL_DIR})
+  if(ARGC GREATER 2)
+    set(dir ${ARGV2})
+  endif()
   execute_process(
-    COMMAND ${Python3_EXECUTABLE} ${SC_RTL_DEPS} ${SC_RTL_DIR} ${top}
+    COMMAND ${Python3_EXECUTABLE} ${SC_RTL_DEPS} ${dir} ${top}
     OUTPUT_VARIABLE files ERROR_VARIABLE err RESULT_VARIABLE rc
     OUTPUT_STRIP_TRAILING_WHITESPACE)
   if(rc)
@@ -42,6 +60,9 @@ function(sc_verilate target)
   endif()
   if(NOT A_OPT)
     set(A_OPT -O3)
+  endif()
+  if(SC_VERILATE_OPT)
+    set(A_OPT ${SC_VERILATE_OPT})
   endif()
   # The sanitizer build: the generated code and the Verilator runtime are not
   # ours to check and dominate its build time; compiled quickly and left
@@ -66,7 +87,11 @@ function(sc_verilate target)
     list(APPEND flags COVERAGE)
     set(cover_args -DSC_COVER)
   endif()
-  sc_rtl_files(files ${A_TOP})
+  if(SC_RTL_FROZEN_DIR AND NOT A_TOP IN_LIST SC_RTL_LIVE_TOPS)
+    sc_rtl_files(files ${A_TOP} ${SC_RTL_FROZEN_DIR})
+  else()
+    sc_rtl_files(files ${A_TOP})
+  endif()
   verilate(${target} ${flags}
     SOURCES ${files}
     TOP_MODULE ${A_TOP}
