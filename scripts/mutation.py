@@ -1,0 +1,554 @@
+#!/usr/bin/env python3
+"""Mutation testing of the RTL (docs/mutation.md).
+
+The catalogue of mutants is generated from rtl/*.sv (scripts/mutation_catalogue.py):
+operator swaps, constants off by one, negated conditions, swapped ternaries,
+dropped terms and stuck right-hand sides, outside comments and the FORMAL /
+SC_COVER code. Two campaigns run a sample of it:
+
+  rtl_only     the RTL is mutated, the C++ model is not: lockstep should kill it;
+  common_mode  the same change is made in the model's mirror statement: only the
+               independent checks (pin monitor, planner closed form, properties,
+               the model's closed-form fast path) can kill it.
+
+Each mutant is applied to a copy of the committed tree (never to rtl/ or cmodel/
+of the project), only the Verilated tops its tests run are rebuilt, and the
+area's fast tests run with a time limit.
+
+  scripts/mutation.py --list --area step_timing
+  scripts/mutation.py --list --campaign common_mode --file sc_step_gen
+  scripts/mutation.py --campaign rtl_only --area endpoint --sample 20 --seed 1 --json out.json
+"""
+
+from __future__ import annotations
+
+import argparse
+import dataclasses
+import fnmatch
+import json
+import os
+import random
+import re
+import shutil
+import subprocess
+import sys
+import time
+import xml.etree.ElementTree as ET
+from collections import Counter
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+import mutation_catalogue as mc  # noqa: E402
+
+ROOT = Path(__file__).resolve().parent.parent
+CAMPAIGNS = ("rtl_only", "common_mode")
+OUTCOMES = ("killed", "timeout", "build_error", "survived")
+
+
+@dataclasses.dataclass(frozen=True)
+class Stage:
+    binary: str
+    gtest_filter: str
+
+
+@dataclasses.dataclass(frozen=True)
+class Suite:
+    name: str
+    live_tops: tuple[str, ...]
+    stages: tuple[Stage, ...]
+
+
+# The fast tests per RTL area, quickest killers first (a mutant stops at its
+# first failing test). The full paper groups (11 minutes each) are left out.
+OPEN_LOOP = Suite("open_loop", ("sc_axis_core",), (
+    Stage("redteam_tests", "RedTeam.Lockstep*:RedTeam.F2_*:RedTeam.F3_*"),
+    Stage("core_tests", "Lockstep/RawTableSeed.*:Lockstep.DirSetupAndHold*:Lockstep.ReversalWithSteps*:"
+                        "Lockstep.StepQueuePeaks*:Lockstep.FullFifo*:Lockstep.RowPastAFullFifo*:StepQueue.*:"
+                        "ExecFastForward.*:CoreFastForward.*"),
+    Stage("stop_tests", "CoreStop.*"),
+    Stage("stream_tests", "StreamLockstep.*:StreamRun.*:StreamModel.*"),
+    Stage("core_tests", "Lockstep.SixtyRandom*:Lockstep.StopAtRandomTimes*"),
+))
+SERVO = Suite("servo", ("sc_servo_axis",), (
+    Stage("cl_tests", "ServoAxisPins.*:ClosedLoopLockstep.LongDirSetup*:ClosedLoopPins.*:ClosedLoopStop.*"),
+))
+SUITE_OF_MODULE = {
+    "sc_step_gen": OPEN_LOOP, "sc_axis_core": OPEN_LOOP, "sc_profile_exec": OPEN_LOOP, "sc_row_fifo": OPEN_LOOP,
+    "sc_stop_gen": OPEN_LOOP, "sc_step_nco": SERVO,
+}
+
+
+# ---- arguments -----------------------------------------------------------------------------------------------------
+
+def parse_args(argv: list[str]) -> argparse.Namespace:
+    p = argparse.ArgumentParser(description=__doc__.split("\n\n")[0],
+                                formatter_class=argparse.RawDescriptionHelpFormatter, epilog=__doc__)
+    p.add_argument("--root", type=Path, default=ROOT, help="project root (default: this script's tree)")
+    p.add_argument("--list", action="store_true", help="print the (filtered) catalogue and exit")
+    p.add_argument("--campaign", choices=CAMPAIGNS, default="rtl_only")
+    p.add_argument("--file", action="append", default=[],
+                   help="rtl file name or glob (sc_step_gen, sc_step_gen.sv, rtl/sc_*.sv); repeatable")
+    p.add_argument("--module", action="append", default=[], help="module name; repeatable")
+    p.add_argument("--operator", action="append", default=[], help=f"one of {', '.join(mc.OPERATORS)}; repeatable")
+    p.add_argument("--area", action="append", default=[], help=f"one of {', '.join(mc.AREAS)}; repeatable")
+    p.add_argument("--id", action="append", default=[], help="a mutant id (or glob); repeatable")
+    p.add_argument("--sample", type=int, help="run (or list) N mutants drawn with --seed")
+    p.add_argument("--seed", type=int, default=1)
+    p.add_argument("--work-dir", type=Path, help="copy of the tree and its build (default: <root>/build-mutation)")
+    p.add_argument("--jobs", type=int, default=2, help="build jobs (default 2)")
+    p.add_argument("--timeout-factor", type=float, default=4.0,
+                   help="a test stage times out after this many times its unmutated run (default 4)")
+    p.add_argument("--min-test-timeout", type=float, default=60.0, help="seconds (default 60)")
+    p.add_argument("--build-timeout", type=float, default=1200.0, help="seconds per build (default 1200)")
+    p.add_argument("--stage", action="append", default=[], metavar="BINARY:FILTER",
+                   help="test stage instead of the area's suite (with --live-tops); repeatable")
+    p.add_argument("--live-tops", help="comma-separated Verilated tops to rebuild per mutant (with --stage)")
+    p.add_argument("--resume", action="store_true", help="skip mutants already in the work dir's results")
+    p.add_argument("--json", type=Path, help="write the catalogue (--list) or the results as JSON")
+    p.add_argument("--junit", type=Path, help="write the results as JUnit XML")
+    p.add_argument("--min-kill-rate", type=float, default=0.0,
+                   help="exit 1 when the kill rate (percent, build errors excluded) is below this")
+    a = p.parse_args(argv)
+    if a.sample is not None and a.sample < 1:
+        p.error(f"--sample: {a.sample} is below the minimum 1")
+    if a.jobs < 1:
+        p.error(f"--jobs: {a.jobs} is below the minimum 1")
+    if a.timeout_factor <= 1.0:
+        p.error(f"--timeout-factor: {a.timeout_factor} must be above 1")
+    if a.min_test_timeout <= 0 or a.build_timeout <= 0:
+        p.error("--min-test-timeout / --build-timeout: must be above 0 seconds")
+    if not 0.0 <= a.min_kill_rate <= 100.0:
+        p.error(f"--min-kill-rate: {a.min_kill_rate} is outside 0..100")
+    for op in a.operator:
+        if op not in mc.OPERATORS:
+            p.error(f"--operator: '{op}' is not one of {', '.join(mc.OPERATORS)}")
+    for area in a.area:
+        if area not in mc.AREAS:
+            p.error(f"--area: '{area}' is not one of {', '.join(mc.AREAS)}")
+    for s in a.stage:
+        if ":" not in s or not s.split(":", 1)[0] or not s.split(":", 1)[1]:
+            p.error(f"--stage: '{s}' is not BINARY:FILTER")
+    if a.stage and not a.live_tops:
+        p.error("--stage: needs --live-tops (the tops its tests run)")
+    if not (a.root / "rtl").is_dir():
+        p.error(f"--root: {a.root} has no rtl/ directory")
+    rtl_files = sorted((a.root / "rtl").glob("*.sv"))
+    a.files = []
+    for f in a.file:
+        pat = Path(f).name
+        pat = pat if pat.endswith(".sv") or "*" in pat else pat + ".sv"
+        hits = [x for x in rtl_files if fnmatch.fnmatch(x.name, pat)]
+        if not hits:
+            p.error(f"--file: '{f}' matches no file in {a.root / 'rtl'}")
+        a.files += [str(x.relative_to(a.root)) for x in hits if str(x.relative_to(a.root)) not in a.files]
+    for m in a.module:
+        if not (a.root / "rtl" / f"{m}.sv").exists():
+            p.error(f"--module: '{m}' has no file rtl/{m}.sv")
+        rel = f"rtl/{m}.sv"
+        if rel not in a.files:
+            a.files.append(rel)
+    a.work_dir = (a.work_dir or a.root / "build-mutation").resolve()
+    return a
+
+
+# ---- selection -----------------------------------------------------------------------------------------------------
+
+def select(mutants: list[mc.Mutant], a: argparse.Namespace) -> list[mc.Mutant]:
+    out = [m for m in mutants if (not a.operator or m.operator in a.operator) and (not a.area or m.area in a.area)
+           and (not a.id or any(fnmatch.fnmatchcase(m.id, pat) for pat in a.id))]
+    if a.sample is not None and a.sample < len(out):
+        # sorted by id first: the sample depends on the catalogue, not on its order
+        out = sorted(random.Random(a.seed).sample(sorted(out, key=lambda m: m.id), a.sample),
+                     key=lambda m: (m.file, m.start, m.id))
+    return out
+
+
+def default_files(root: Path) -> list[str]:
+    return [f"rtl/{n}.sv" for n in ("sc_step_gen", "sc_step_nco", "sc_axis_core", "sc_profile_exec", "sc_row_fifo")
+            if (root / "rtl" / f"{n}.sv").exists()]
+
+
+# ---- the copy of the tree and its build ----------------------------------------------------------------------------
+
+class Workspace:
+    """<work>/src: the committed tree (git archive HEAD); <work>/rtl-frozen and
+    <work>/cmodel-pristine: its unmodified rtl/ and cmodel/ (the frozen tops are
+    Verilated from there, and every file is restored from there); <work>/build."""
+
+    def __init__(self, root: Path, work: Path, jobs: int):
+        self.root, self.work, self.jobs = root, work, jobs
+        self.src = work / "src"
+        self.frozen = work / "rtl-frozen"
+        self.pristine_model = work / "cmodel-pristine"
+        self.build = work / "build"
+        self.live_tops: tuple[str, ...] | None = None
+
+    def prepare(self) -> None:
+        """Brings the copy to the committed tree (HEAD), copying only the files
+        whose text changed, so an up-to-date build stays up to date."""
+        self.src.mkdir(parents=True, exist_ok=True)
+        log(f"syncing {self.src} with the committed tree (HEAD)")
+        archive = subprocess.run(["git", "-C", str(self.root), "archive", "HEAD"], check=True,
+                                 capture_output=True).stdout
+        fresh = self.work / "head.tmp"
+        shutil.rmtree(fresh, ignore_errors=True)
+        fresh.mkdir(parents=True)
+        subprocess.run(["tar", "-x", "-C", str(fresh)], input=archive, check=True)
+        sync_tree(fresh, self.src)
+        sync_tree(fresh / "rtl", self.frozen)
+        sync_tree(fresh / "cmodel", self.pristine_model)
+        shutil.rmtree(fresh)
+        self.restore_all()
+
+    def restore_all(self) -> None:
+        """Any file left mutated (an interrupted run) back to its committed text."""
+        for pristine_dir, live_dir in ((self.frozen, self.src / "rtl"), (self.pristine_model, self.src / "cmodel")):
+            for p in pristine_dir.rglob("*"):
+                if p.is_file():
+                    live = live_dir / p.relative_to(pristine_dir)
+                    if not live.exists() or live.read_bytes() != p.read_bytes():
+                        shutil.copy2(p, live)
+
+    def configure(self, live_tops: tuple[str, ...]) -> None:
+        if self.live_tops == live_tops and (self.build / "build.ninja").exists():
+            return
+        cache = self.build / "CMakeCache.txt"
+        want = ";".join(live_tops)
+        if cache.exists() and f"SC_RTL_LIVE_TOPS:STRING={want}\n" in cache.read_text() and \
+                (self.build / "build.ninja").exists():
+            self.live_tops = live_tops
+            return
+        log(f"configuring {self.build} (tops rebuilt per mutant: {', '.join(live_tops)})")
+        cmd = ["cmake", "-G", "Ninja", "-S", str(self.src), "-B", str(self.build),
+               # no LTO and -O1 Verilated code: a mutant's build is mostly its top's compile
+               "-DCMAKE_BUILD_TYPE=RelWithDebInfo", "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O2",
+               "-DSCURVE_PYTHON=OFF", f"-DSC_RTL_FROZEN_DIR={self.frozen}", f"-DSC_RTL_LIVE_TOPS={want}",
+               "-DSC_VERILATE_OPT=-O1"]
+        if shutil.which("ccache"):
+            cmd.append("-DCMAKE_CXX_COMPILER_LAUNCHER=ccache")
+        r = subprocess.run(cmd, capture_output=True, text=True)
+        if r.returncode:
+            raise RuntimeError(f"configure failed:\n{r.stdout[-3000:]}{r.stderr[-3000:]}")
+        self.live_tops = live_tops
+
+    def build_target(self, target: str, timeout: float) -> tuple[bool, str, float]:
+        t0 = time.monotonic()
+        try:
+            r = subprocess.run(["ninja", "-C", str(self.build), f"-j{self.jobs}", target], capture_output=True,
+                               text=True, timeout=timeout)
+        except subprocess.TimeoutExpired:
+            return False, f"build timed out after {timeout:.0f} s", time.monotonic() - t0
+        if r.returncode:
+            return False, first_error(r.stdout + r.stderr), time.monotonic() - t0
+        return True, "", time.monotonic() - t0
+
+    def run_stage(self, stage: Stage, timeout: float) -> tuple[str, str, float]:
+        """(passed | failed | timeout, first failing test or message, seconds)."""
+        exe = self.build / "bin" / stage.binary
+        t0 = time.monotonic()
+        cmd = [str(exe), f"--gtest_filter={stage.gtest_filter}", "--gtest_fail_fast", "--gtest_brief=1"]
+        try:
+            r = subprocess.run(cmd, cwd=self.build / "tests", capture_output=True, text=True, timeout=timeout,
+                               errors="replace")
+        except subprocess.TimeoutExpired as e:
+            out = (e.stdout or b"").decode(errors="replace") if isinstance(e.stdout, bytes) else (e.stdout or "")
+            running = re.findall(r"\[ RUN      \] (\S+)", out)
+            return "timeout", f"{stage.binary} {running[-1] if running else stage.gtest_filter}", \
+                time.monotonic() - t0
+        dt = time.monotonic() - t0
+        if r.returncode == 0:
+            return "passed", "", dt
+        failed = re.search(r"\[  FAILED  \] (\S+)", r.stdout)
+        if failed:
+            return "failed", f"{stage.binary} {failed.group(1)}", dt
+        running = re.findall(r"\[ RUN      \] (\S+)", r.stdout)
+        where = running[-1] if running else stage.gtest_filter
+        return "failed", f"{stage.binary} {where} (exit {r.returncode})", dt
+
+
+def sync_tree(src: Path, dst: Path) -> None:
+    """dst becomes a copy of src; unchanged files keep their time stamps."""
+    dst.mkdir(parents=True, exist_ok=True)
+    for p in src.rglob("*"):
+        q = dst / p.relative_to(src)
+        if p.is_dir():
+            q.mkdir(exist_ok=True)
+        elif not q.exists() or q.read_bytes() != p.read_bytes():
+            shutil.copy2(p, q)
+            os.utime(q)  # newer than the build's outputs
+    for q in sorted(dst.rglob("*"), reverse=True):
+        if not (src / q.relative_to(dst)).exists():
+            shutil.rmtree(q) if q.is_dir() else q.unlink()
+
+
+def first_error(log_text: str) -> str:
+    for line in log_text.splitlines():
+        if re.search(r"%Error|%Warning|error:|Error \d", line):
+            return line.strip()[:200]
+    lines = [x for x in log_text.splitlines() if x.strip()]
+    return lines[-1][:200] if lines else "build failed"
+
+
+def log(msg: str) -> None:
+    print(msg, flush=True)
+
+
+# ---- running -------------------------------------------------------------------------------------------------------
+
+@dataclasses.dataclass
+class Result:
+    id: str
+    campaign: str
+    area: str
+    operator: str
+    file: str
+    outcome: str
+    detail: str
+    build_s: float
+    test_s: float
+    diff: str
+    model_diff: str = ""
+
+    def to_json(self) -> dict:
+        return dataclasses.asdict(self)
+
+
+def suite_for(m: mc.Mutant, a: argparse.Namespace) -> Suite:
+    if a.stage:
+        return Suite("custom", tuple(t.strip() for t in a.live_tops.split(",")),
+                     tuple(Stage(*s.split(":", 1)) for s in a.stage))
+    suite = SUITE_OF_MODULE.get(m.module)
+    if suite is None:
+        raise SystemExit(f"mutation.py: no fast suite for module {m.module}: give --stage BINARY:FILTER "
+                         f"and --live-tops")
+    return suite
+
+
+def baseline(ws: Workspace, suite: Suite, a: argparse.Namespace) -> dict[Stage, float]:
+    """The suite on the unmutated copy: it must pass; its times set the limits."""
+    times: dict[Stage, float] = {}
+    for st in suite.stages:
+        ok, msg, bt = ws.build_target(st.binary, a.build_timeout * 3)
+        if not ok:
+            raise SystemExit(f"mutation.py: the unmutated copy does not build ({st.binary}): {msg}")
+        status, detail, tt = ws.run_stage(st, 3600)
+        if status != "passed":
+            raise SystemExit(f"mutation.py: the unmutated copy fails its suite: {detail}")
+        times[st] = tt
+        log(f"  baseline {st.binary} [{st.gtest_filter[:60]}]: build {bt:.0f} s, tests {tt:.1f} s")
+    return times
+
+
+def run_mutant(ws: Workspace, m: mc.Mutant, pairing: mc.Pairing | None, suite: Suite, times: dict[Stage, float],
+               a: argparse.Namespace, campaign: str) -> Result:
+    rtl_path = ws.src / m.file
+    rtl_text = rtl_path.read_text()
+    diff = m.diff(rtl_text)
+    saved: list[tuple[Path, str]] = []
+    model_diff = ""
+    build_s = test_s = 0.0
+    try:
+        saved.append((rtl_path, mc.apply_edit(rtl_path, m.start, m.end, m.original, m.replacement)))
+        if pairing is not None:
+            mp = ws.src / pairing.model_file
+            saved.append((mp, mc.apply_edit(mp, pairing.start, pairing.end, pairing.original, pairing.replacement)))
+            model_diff = f"{pairing.model_file}:{pairing.line}: {pairing.original!r} -> {pairing.replacement!r}"
+        built: set[str] = set()
+        for st in suite.stages:
+            if st.binary not in built:
+                ok, msg, bt = ws.build_target(st.binary, a.build_timeout)
+                build_s += bt
+                if not ok:
+                    return Result(m.id, campaign, m.area, m.operator, m.file, "build_error", msg, build_s, test_s,
+                                  diff, model_diff)
+                built.add(st.binary)
+            limit = max(a.min_test_timeout, a.timeout_factor * times[st])
+            status, detail, tt = ws.run_stage(st, limit)
+            test_s += tt
+            if status == "failed":
+                return Result(m.id, campaign, m.area, m.operator, m.file, "killed", detail, build_s, test_s, diff,
+                              model_diff)
+            if status == "timeout":
+                return Result(m.id, campaign, m.area, m.operator, m.file, "timeout", detail, build_s, test_s, diff,
+                              model_diff)
+        return Result(m.id, campaign, m.area, m.operator, m.file, "survived", "", build_s, test_s, diff, model_diff)
+    finally:
+        for path, text in saved:
+            path.write_text(text)
+
+
+# ---- reporting -----------------------------------------------------------------------------------------------------
+
+def rate(c: Counter) -> str:
+    scored = c["killed"] + c["timeout"] + c["survived"]
+    return f"{100.0 * (c['killed'] + c['timeout']) / scored:5.1f}%" if scored else "    -"
+
+
+def kill_rate(results: list[Result]) -> float | None:
+    c = Counter(r.outcome for r in results)
+    scored = c["killed"] + c["timeout"] + c["survived"]
+    return 100.0 * (c["killed"] + c["timeout"]) / scored if scored else None
+
+
+def table(results: list[Result], key: str) -> str:
+    groups: dict[str, Counter] = {}
+    for r in results:
+        groups.setdefault(getattr(r, key), Counter())[r.outcome] += 1
+    total = Counter(r.outcome for r in results)
+    head = f"{key:<16} {'mutants':>7} {'killed':>7} {'timeout':>7} {'build':>7} {'survived':>8} {'kill rate':>9}"
+    lines = [head, "-" * len(head)]
+    for name in sorted(groups):
+        c = groups[name]
+        lines.append(f"{name:<16} {sum(c.values()):>7} {c['killed']:>7} {c['timeout']:>7} {c['build_error']:>7} "
+                     f"{c['survived']:>8} {rate(c):>9}")
+    lines.append(f"{'all':<16} {sum(total.values()):>7} {total['killed']:>7} {total['timeout']:>7} "
+                 f"{total['build_error']:>7} {total['survived']:>8} {rate(total):>9}")
+    return "\n".join(lines)
+
+
+def report(results: list[Result], campaign: str) -> str:
+    out = [f"campaign {campaign}: {len(results)} mutants (kill rate = killed and timed out over all but build "
+           f"errors)", "", table(results, "area"), "", table(results, "operator")]
+    if results:
+        per = [r.build_s + r.test_s for r in results]
+        out += ["", f"per mutant: mean {sum(per) / len(per):.0f} s (build {sum(r.build_s for r in results) / len(per):.0f}"
+                    f" s, tests {sum(r.test_s for r in results) / len(per):.0f} s), max {max(per):.0f} s"]
+    surv = [r for r in results if r.outcome == "survived"]
+    if surv:
+        out += ["", f"survivors ({len(surv)}):"]
+        for r in surv:
+            out.append(f"  {r.id}")
+            out += [f"      {line}" for line in r.diff.splitlines()]
+            if r.model_diff:
+                out.append(f"      model: {r.model_diff}")
+    builds = [r for r in results if r.outcome == "build_error"]
+    if builds:
+        out += ["", f"build/lint errors ({len(builds)}, not counted as kills):"]
+        out += [f"  {r.id}: {r.detail}" for r in builds]
+    return "\n".join(out)
+
+
+def write_junit(path: Path, results: list[Result], campaign: str) -> None:
+    suite = ET.Element("testsuite", name=f"mutation.{campaign}", tests=str(len(results)),
+                       failures=str(sum(r.outcome == "survived" for r in results)),
+                       skipped=str(sum(r.outcome == "build_error" for r in results)),
+                       time=f"{sum(r.build_s + r.test_s for r in results):.1f}")
+    for r in results:
+        case = ET.SubElement(suite, "testcase", classname=f"mutation.{campaign}.{r.area}", name=r.id,
+                             time=f"{r.build_s + r.test_s:.1f}")
+        if r.outcome == "survived":
+            ET.SubElement(case, "failure", message="mutant survived").text = r.diff + \
+                ("\nmodel: " + r.model_diff if r.model_diff else "")
+        elif r.outcome == "build_error":
+            ET.SubElement(case, "skipped", message=f"build/lint error: {r.detail}")
+        else:
+            ET.SubElement(case, "system-out").text = f"{r.outcome}: {r.detail}"
+    root = ET.Element("testsuites")
+    root.append(suite)
+    ET.ElementTree(root).write(path, encoding="utf-8", xml_declaration=True)
+
+
+# ---- main ----------------------------------------------------------------------------------------------------------
+
+def list_catalogue(a: argparse.Namespace) -> int:
+    files = a.files or default_files(a.root)
+    mutants = select(mc.catalogue(a.root, files), a)
+    pairs = mc.pair_all(mutants, a.root) if a.campaign == "common_mode" else {}
+    rows = []
+    for m in mutants:
+        row = m.to_json()
+        if pairs:
+            p = pairs[m.id]
+            row["pairing"] = p.to_json()
+            extra = f"  -> {p.model_file}:{p.line} {p.original!r} -> {p.replacement!r}" if p.status == "paired" \
+                else f"  unpaired: {p.reason}"
+        else:
+            extra = ""
+        print(f"{m.id:<72} {m.area:<16}{extra}")
+        rows.append(row)
+    c = Counter(m.area for m in mutants)
+    summary = f"{len(mutants)} mutants ({', '.join(f'{k} {v}' for k, v in sorted(c.items()))})"
+    if pairs:
+        summary += f"; paired {sum(p.status == 'paired' for p in pairs.values())}, " \
+                   f"unpaired {sum(p.status != 'paired' for p in pairs.values())}"
+    print(summary)
+    if a.json:
+        a.json.write_text(json.dumps({"mutants": rows}, indent=1) + "\n")
+    return 0
+
+
+def main(argv: list[str]) -> int:
+    a = parse_args(argv)
+    if a.list:
+        return list_catalogue(a)
+    os.nice(10)  # the machine is shared with other builds
+    ws = Workspace(a.root, a.work_dir, a.jobs)
+    ws.prepare()
+    files = a.files or default_files(ws.src)
+    mutants = select(mc.catalogue(ws.src, files), a)
+    pairs: dict[str, mc.Pairing] = {}
+    if a.campaign == "common_mode":
+        pairs = mc.pair_all(mutants, ws.src)
+        unpaired = [m for m in mutants if pairs[m.id].status != "paired"]
+        mutants = [m for m in mutants if pairs[m.id].status == "paired"]
+        log(f"common-mode: {len(mutants)} paired mutants run, {len(unpaired)} unpaired listed "
+            f"(--list --campaign common_mode shows why)")
+        if a.sample is not None:
+            # the sample is drawn from the paired mutants
+            a_all = argparse.Namespace(**{**vars(a), "sample": None})
+            every = select(mc.catalogue(ws.src, files), a_all)
+            pairs = mc.pair_all(every, ws.src)
+            paired = [m for m in every if pairs[m.id].status == "paired"]
+            mutants = select(paired, a)
+    results_path = ws.work / f"results-{a.campaign}.jsonl"
+    done: dict[str, Result] = {}
+    if a.resume and results_path.exists():
+        for line in results_path.read_text().splitlines():
+            r = Result(**json.loads(line))
+            done[r.id] = r
+    results: list[Result] = []
+    by_suite: dict[Suite, list[mc.Mutant]] = {}
+    for m in mutants:
+        by_suite.setdefault(suite_for(m, a), []).append(m)
+    n_total, k = len(mutants), 0
+    log(f"campaign {a.campaign}: {n_total} mutants, work dir {ws.work}")
+    for suite, group in by_suite.items():
+        ws.configure(suite.live_tops)
+        todo = [m for m in group if m.id not in done]
+        results += [done[m.id] for m in group if m.id in done]
+        k += len(group) - len(todo)
+        if not todo:
+            continue
+        log(f"suite {suite.name}: unmutated run")
+        times = baseline(ws, suite, a)
+        for m in todo:
+            k += 1
+            r = run_mutant(ws, m, pairs.get(m.id), suite, times, a, a.campaign)
+            results.append(r)
+            with results_path.open("a") as f:
+                f.write(json.dumps(r.to_json()) + "\n")
+            log(f"[{k:>3}/{n_total}] {r.outcome:<11} {m.id}  ({r.build_s:.0f}+{r.test_s:.0f} s)"
+                + (f"  {r.detail}" if r.detail else ""))
+    log("")
+    log(report(results, a.campaign))
+    if a.json:
+        kr = kill_rate(results)
+        a.json.write_text(json.dumps({
+            "campaign": a.campaign, "sample": a.sample, "seed": a.seed, "files": files,
+            "kill_rate": kr, "results": [r.to_json() for r in results],
+            "by_area": {k2: dict(Counter(r.outcome for r in results if r.area == k2))
+                        for k2 in sorted({r.area for r in results})},
+            "by_operator": {k2: dict(Counter(r.outcome for r in results if r.operator == k2))
+                            for k2 in sorted({r.operator for r in results})},
+        }, indent=1) + "\n")
+    if a.junit:
+        write_junit(a.junit, results, a.campaign)
+    kr = kill_rate(results)
+    if kr is not None and kr < a.min_kill_rate:
+        log(f"kill rate {kr:.1f}% is below --min-kill-rate {a.min_kill_rate:.1f}%")
+        return 1
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))

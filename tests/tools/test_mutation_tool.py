@@ -1,0 +1,142 @@
+#!/usr/bin/env python3
+"""The mutation tool itself (scripts/mutation.py, scripts/mutation_catalogue.py):
+the catalogue is generated deterministically from the sources and skips the
+FORMAL code and comments, a known mutant applies and restores byte for byte,
+a known site pairs with its mirror statement in the model, a register
+transfer does not, and bad arguments are refused naming the parameter.
+
+    python3 tests/tools/test_mutation_tool.py [project root]
+"""
+
+import shutil
+import subprocess
+import sys
+import tempfile
+import unittest
+from pathlib import Path
+
+ROOT = Path(sys.argv.pop(1)).resolve() if len(sys.argv) > 1 else Path(__file__).resolve().parents[2]
+sys.path.insert(0, str(ROOT / "scripts"))
+import mutation_catalogue as mc  # noqa: E402
+
+STEP_GEN = "rtl/sc_step_gen.sv"
+# The pulse's minimum low time: a known site with a mirror in cmodel/step_gen.cpp.
+KNOWN_RTL = "low_cnt_q >= cfg_low_i"
+KNOWN_MODEL = "q_.low_cnt >= in.cfg.low"
+
+
+def offset_of(text: str, needle: str, sub: str) -> int:
+    at = text.index(needle)
+    return at + needle.index(sub)
+
+
+class Catalogue(unittest.TestCase):
+    def setUp(self):
+        self.text = (ROOT / STEP_GEN).read_text()
+        self.mutants = mc.catalogue(ROOT, [STEP_GEN])
+
+    def known(self, operator="relational"):
+        start = offset_of(self.text, KNOWN_RTL, ">=")
+        hits = [m for m in self.mutants if m.start == start and m.operator == operator]
+        self.assertEqual(len(hits), 1, f"one {operator} mutant of '{KNOWN_RTL}'")
+        return hits[0]
+
+    def test_generated_deterministically_with_unique_ids(self):
+        again = mc.catalogue(ROOT, [STEP_GEN])
+        self.assertEqual([m.id for m in self.mutants], [m.id for m in again])
+        self.assertEqual(len({m.id for m in self.mutants}), len(self.mutants), "ids are unique")
+        self.assertGreater(len(self.mutants), 50)
+        ops = {m.operator for m in self.mutants}
+        for op in ("arith", "relational", "equality", "logical", "constant", "negate_if", "swap_ternary",
+                   "drop_term", "stuck_0", "stuck_1"):
+            self.assertIn(op, ops)
+
+    def test_known_mutant_has_a_stable_id(self):
+        m = self.known()
+        line = self.text.count("\n", 0, m.start) + 1
+        col = m.start - (self.text.rfind("\n", 0, m.start) + 1) + 1
+        self.assertEqual(m.id, f"sc_step_gen.sv:{line}:{col}:relational:>=->>")
+        self.assertEqual(m.area, "step_timing")
+
+    def test_formal_code_and_comments_are_not_mutated(self):
+        lines = self.text.splitlines()
+        first = next(i for i, s in enumerate(lines, 1) if s.startswith("`ifdef FORMAL"))
+        last = next(i for i, s in enumerate(lines, 1) if i > first and s.startswith("`endif"))
+        for m in self.mutants:
+            self.assertFalse(first <= m.line <= last, f"{m.id} is in the FORMAL code")
+            self.assertFalse(lines[m.line - 1].lstrip().startswith("//"), f"{m.id} is in a comment")
+            code = lines[m.line - 1].split("//")[0]
+            self.assertGreaterEqual(len(code), m.col, f"{m.id} starts in a trailing comment")
+
+    def test_known_mutant_applies_and_restores_byte_for_byte(self):
+        m = self.known()
+        with tempfile.TemporaryDirectory() as tmp:
+            copy = Path(tmp) / "sc_step_gen.sv"
+            shutil.copy2(ROOT / STEP_GEN, copy)
+            before = copy.read_bytes()
+            previous = mc.apply_edit(copy, m.start, m.end, m.original, m.replacement)
+            mutated = copy.read_text()
+            self.assertIn("low_cnt_q > cfg_low_i", mutated)
+            self.assertNotIn(KNOWN_RTL, mutated)
+            self.assertEqual(len(mutated), len(previous) - 1)
+            copy.write_text(previous)
+            self.assertEqual(copy.read_bytes(), before)
+            # a second application on the mutated text is refused, not stacked
+            mc.apply_edit(copy, m.start, m.end, m.original, m.replacement)
+            with self.assertRaises(RuntimeError):
+                mc.apply_edit(copy, m.start, m.end, m.original, m.replacement)
+        self.assertEqual((ROOT / STEP_GEN).read_text(), self.text, "the source tree is untouched")
+
+    def test_sample_is_deterministic(self):
+        def listing(seed):
+            r = subprocess.run([sys.executable, str(ROOT / "scripts/mutation.py"), "--root", str(ROOT), "--list",
+                                "--file", "sc_step_gen", "--sample", "7", "--seed", str(seed)],
+                               capture_output=True, text=True, check=True)
+            return r.stdout
+        self.assertEqual(listing(3), listing(3))
+        self.assertNotEqual(listing(3), listing(4))
+        self.assertIn("7 mutants", listing(3))
+
+
+class Pairing(unittest.TestCase):
+    def test_known_site_pairs_with_its_mirror_statement(self):
+        mutants = mc.catalogue(ROOT, [STEP_GEN])
+        text = (ROOT / STEP_GEN).read_text()
+        start = offset_of(text, KNOWN_RTL, ">=")
+        m = next(x for x in mutants if x.start == start and x.operator == "relational")
+        pairs = mc.pair_all(mutants, ROOT)
+        p = pairs[m.id]
+        self.assertEqual(p.status, "paired", p.reason)
+        self.assertEqual(p.model_file, "cmodel/step_gen.cpp")
+        model = (ROOT / p.model_file).read_text()
+        self.assertEqual(p.start, offset_of(model, KNOWN_MODEL, ">="))
+        self.assertEqual((p.original, p.replacement), (">=", ">"))
+
+    def test_register_transfer_is_unpaired_with_a_reason(self):
+        mutants = mc.catalogue(ROOT, [STEP_GEN])
+        text = (ROOT / STEP_GEN).read_text()
+        start = offset_of(text, "step_q       <= step_d;", "step_d")
+        m = next(x for x in mutants if x.start == start and x.operator == "stuck_0")
+        p = mc.pair_all(mutants, ROOT)[m.id]
+        self.assertEqual(p.status, "unpaired")
+        self.assertIn("register transfer", p.reason)
+
+
+class Arguments(unittest.TestCase):
+    def run_tool(self, *args):
+        return subprocess.run([sys.executable, str(ROOT / "scripts/mutation.py"), "--root", str(ROOT), *args],
+                              capture_output=True, text=True)
+
+    def test_bad_arguments_name_the_parameter_value_and_bound(self):
+        for args, words in ((["--list", "--sample", "0"], ["--sample", "0", "minimum 1"]),
+                            (["--list", "--operator", "flip"], ["--operator", "flip", "relational"]),
+                            (["--list", "--file", "sc_nothing"], ["--file", "sc_nothing"]),
+                            (["--list", "--min-kill-rate", "101"], ["--min-kill-rate", "101", "0..100"])):
+            r = self.run_tool(*args)
+            self.assertEqual(r.returncode, 2, args)
+            for w in words:
+                self.assertIn(w, r.stderr, args)
+
+
+if __name__ == "__main__":
+    unittest.main(verbosity=1)
