@@ -92,7 +92,7 @@ def parse_args(argv: list[str]) -> argparse.Namespace:
     p.add_argument("--operator", action="append", default=[], help=f"one of {', '.join(mc.OPERATORS)}; repeatable")
     p.add_argument("--area", action="append", default=[], help=f"one of {', '.join(mc.AREAS)}; repeatable")
     p.add_argument("--id", action="append", default=[], help="a mutant id (or glob); repeatable")
-    p.add_argument("--sample", type=int, help="run (or list) N mutants drawn with --seed")
+    p.add_argument("--sample", type=int, help="run (or list) N mutants per area, drawn with --seed")
     p.add_argument("--seed", type=int, default=1)
     p.add_argument("--work-dir", type=Path, help="copy of the tree and its build (default: <root>/build-mutation)")
     p.add_argument("--jobs", type=int, default=2, help="build jobs (default 2)")
@@ -153,14 +153,18 @@ def parse_args(argv: list[str]) -> argparse.Namespace:
 
 # ---- selection -----------------------------------------------------------------------------------------------------
 
-def select(mutants: list[mc.Mutant], a: argparse.Namespace) -> list[mc.Mutant]:
+def select(mutants: list[mc.Mutant], a: argparse.Namespace, sample: bool = True) -> list[mc.Mutant]:
+    """The filters, then (sample=True) --sample N mutants per area drawn with --seed."""
     out = [m for m in mutants if (not a.operator or m.operator in a.operator) and (not a.area or m.area in a.area)
            and (not a.id or any(fnmatch.fnmatchcase(m.id, pat) for pat in a.id))]
-    if a.sample is not None and a.sample < len(out):
+    if not sample or a.sample is None:
+        return out
+    picked: list[mc.Mutant] = []
+    for area in sorted({m.area for m in out}):
         # sorted by id first: the sample depends on the catalogue, not on its order
-        out = sorted(random.Random(a.seed).sample(sorted(out, key=lambda m: m.id), a.sample),
-                     key=lambda m: (m.file, m.start, m.id))
-    return out
+        pool = sorted((m for m in out if m.area == area), key=lambda m: m.id)
+        picked += pool if len(pool) <= a.sample else random.Random(f"{a.seed}:{area}").sample(pool, a.sample)
+    return sorted(picked, key=lambda m: (m.file, m.start, m.id))
 
 
 def default_files(root: Path) -> list[str]:
@@ -188,7 +192,9 @@ class Workspace:
         whose text changed, so an up-to-date build stays up to date."""
         self.src.mkdir(parents=True, exist_ok=True)
         log(f"syncing {self.src} with the committed tree (HEAD)")
-        archive = subprocess.run(["git", "-C", str(self.root), "archive", "HEAD"], check=True,
+        self.commit = subprocess.run(["git", "-C", str(self.root), "rev-parse", "HEAD"], check=True,
+                                     capture_output=True, text=True).stdout.strip()
+        archive = subprocess.run(["git", "-C", str(self.root), "archive", self.commit], check=True,
                                  capture_output=True).stdout
         fresh = self.work / "head.tmp"
         shutil.rmtree(fresh, ignore_errors=True)
@@ -325,7 +331,15 @@ def suite_for(m: mc.Mutant, a: argparse.Namespace) -> Suite:
 
 
 def baseline(ws: Workspace, suite: Suite, a: argparse.Namespace) -> dict[Stage, float]:
-    """The suite on the unmutated copy: it must pass; its times set the limits."""
+    """The suite on the unmutated copy: it must pass; its times set the limits.
+    Kept per commit and suite in <work>/baseline.json."""
+    key = f"{ws.commit}:{suite.name}:{','.join(suite.live_tops)}:" + \
+        ";".join(f"{st.binary}:{st.gtest_filter}" for st in suite.stages)
+    cache_path = ws.work / "baseline.json"
+    cache = json.loads(cache_path.read_text()) if cache_path.exists() else {}
+    if key in cache:
+        log("  baseline: the unmutated suite passed on this commit (baseline.json)")
+        return {st: t for st, t in zip(suite.stages, cache[key])}
     times: dict[Stage, float] = {}
     for st in suite.stages:
         ok, msg, bt = ws.build_target(st.binary, a.build_timeout * 3)
@@ -336,6 +350,8 @@ def baseline(ws: Workspace, suite: Suite, a: argparse.Namespace) -> dict[Stage, 
             raise SystemExit(f"mutation.py: the unmutated copy fails its suite: {detail}")
         times[st] = tt
         log(f"  baseline {st.binary} [{st.gtest_filter[:60]}]: build {bt:.0f} s, tests {tt:.1f} s")
+    cache[key] = [times[st] for st in suite.stages]
+    cache_path.write_text(json.dumps(cache, indent=1) + "\n")
     return times
 
 
@@ -452,8 +468,9 @@ def write_junit(path: Path, results: list[Result], campaign: str) -> None:
 
 def list_catalogue(a: argparse.Namespace) -> int:
     files = a.files or default_files(a.root)
-    mutants = select(mc.catalogue(a.root, files), a)
+    mutants = select(mc.catalogue(a.root, files), a, sample=False)
     pairs = mc.pair_all(mutants, a.root) if a.campaign == "common_mode" else {}
+    mutants = select(mutants, a)
     rows = []
     for m in mutants:
         row = m.to_json()
@@ -485,21 +502,16 @@ def main(argv: list[str]) -> int:
     ws = Workspace(a.root, a.work_dir, a.jobs)
     ws.prepare()
     files = a.files or default_files(ws.src)
-    mutants = select(mc.catalogue(ws.src, files), a)
+    mutants = select(mc.catalogue(ws.src, files), a, sample=False)
     pairs: dict[str, mc.Pairing] = {}
     if a.campaign == "common_mode":
+        # the sample is drawn from the paired mutants; the unpaired are listed by --list
         pairs = mc.pair_all(mutants, ws.src)
-        unpaired = [m for m in mutants if pairs[m.id].status != "paired"]
+        unpaired = sum(pairs[m.id].status != "paired" for m in mutants)
         mutants = [m for m in mutants if pairs[m.id].status == "paired"]
-        log(f"common-mode: {len(mutants)} paired mutants run, {len(unpaired)} unpaired listed "
-            f"(--list --campaign common_mode shows why)")
-        if a.sample is not None:
-            # the sample is drawn from the paired mutants
-            a_all = argparse.Namespace(**{**vars(a), "sample": None})
-            every = select(mc.catalogue(ws.src, files), a_all)
-            pairs = mc.pair_all(every, ws.src)
-            paired = [m for m in every if pairs[m.id].status == "paired"]
-            mutants = select(paired, a)
+        log(f"common-mode: {len(mutants)} mutants paired, {unpaired} unpaired "
+            f"(--list --campaign common_mode says why)")
+    mutants = select(mutants, a)
     results_path = ws.work / f"results-{a.campaign}.jsonl"
     done: dict[str, Result] = {}
     if a.resume and results_path.exists():
