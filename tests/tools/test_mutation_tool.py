@@ -95,7 +95,8 @@ class Catalogue(unittest.TestCase):
             return r.stdout
         self.assertEqual(listing(3), listing(3))
         self.assertNotEqual(listing(3), listing(4))
-        self.assertIn("7 mutants", listing(3))
+        # seven per area
+        self.assertIn("14 mutants (step_accounting 7, step_timing 7)", listing(3))
 
 
 class Pairing(unittest.TestCase):
