@@ -65,7 +65,7 @@ OPEN_LOOP = Suite("open_loop", ("sc_axis_core",), (
     Stage("core_tests", "Lockstep/RawTableSeed.*:Lockstep.DirSetupAndHold*:Lockstep.ReversalWithSteps*:"
                         "Lockstep.StepQueuePeaks*:Lockstep.FullFifo*:Lockstep.RowPastAFullFifo*:StepQueue.*:"
                         "ExecFastForward.*:CoreFastForward.*"),
-    Stage("stop_tests", "CoreStop.*"),
+    Stage("stop_tests", "CoreStop.*:MutationGaps.*"),
     Stage("stream_tests", "StreamLockstep.*:StreamRun.*:StreamModel.*"),
     Stage("core_tests", "Lockstep.SixtyRandom*:Lockstep.StopAtRandomTimes*"),
 ))
@@ -104,6 +104,8 @@ def parse_args(argv: list[str]) -> argparse.Namespace:
                    help="test stage instead of the area's suite (with --live-tops); repeatable")
     p.add_argument("--live-tops", help="comma-separated Verilated tops to rebuild per mutant (with --stage)")
     p.add_argument("--resume", action="store_true", help="skip mutants already in the work dir's results")
+    p.add_argument("--report", action="store_true",
+                   help="no run: the report of the selected mutants already in the work dir's results")
     p.add_argument("--json", type=Path, help="write the catalogue (--list) or the results as JSON")
     p.add_argument("--junit", type=Path, help="write the results as JUnit XML")
     p.add_argument("--min-kill-rate", type=float, default=0.0,
@@ -185,6 +187,9 @@ class Workspace:
         self.frozen = work / "rtl-frozen"
         self.pristine_model = work / "cmodel-pristine"
         self.build = work / "build"
+        # rtl/ and cmodel/ as committed, whatever a running campaign has applied to src/:
+        # the catalogue and the pairing are read from here
+        self.pristine = work / "pristine"
         self.live_tops: tuple[str, ...] | None = None
 
     def prepare(self) -> None:
@@ -204,6 +209,11 @@ class Workspace:
         sync_tree(fresh / "rtl", self.frozen)
         sync_tree(fresh / "cmodel", self.pristine_model)
         shutil.rmtree(fresh)
+        self.pristine.mkdir(exist_ok=True)
+        for name, target in (("rtl", self.frozen), ("cmodel", self.pristine_model)):
+            link = self.pristine / name
+            if not link.is_symlink():
+                link.symlink_to(target)
         self.restore_all()
 
     def restore_all(self) -> None:
@@ -500,13 +510,14 @@ def main(argv: list[str]) -> int:
         return list_catalogue(a)
     os.nice(10)  # the machine is shared with other builds
     ws = Workspace(a.root, a.work_dir, a.jobs)
-    ws.prepare()
-    files = a.files or default_files(ws.src)
-    mutants = select(mc.catalogue(ws.src, files), a, sample=False)
+    if not a.report:
+        ws.prepare()
+    files = a.files or default_files(ws.pristine)
+    mutants = select(mc.catalogue(ws.pristine, files), a, sample=False)
     pairs: dict[str, mc.Pairing] = {}
     if a.campaign == "common_mode":
         # the sample is drawn from the paired mutants; the unpaired are listed by --list
-        pairs = mc.pair_all(mutants, ws.src)
+        pairs = mc.pair_all(mutants, ws.pristine)
         unpaired = sum(pairs[m.id].status != "paired" for m in mutants)
         mutants = [m for m in mutants if pairs[m.id].status == "paired"]
         log(f"common-mode: {len(mutants)} mutants paired, {unpaired} unpaired "
@@ -514,23 +525,25 @@ def main(argv: list[str]) -> int:
     mutants = select(mutants, a)
     results_path = ws.work / f"results-{a.campaign}.jsonl"
     done: dict[str, Result] = {}
-    if a.resume and results_path.exists():
+    if (a.resume or a.report) and results_path.exists():
         for line in results_path.read_text().splitlines():
             r = Result(**json.loads(line))
             done[r.id] = r
     results: list[Result] = []
+    if a.report:
+        mutants = [m for m in mutants if m.id in done]
     by_suite: dict[Suite, list[mc.Mutant]] = {}
     for m in mutants:
         by_suite.setdefault(suite_for(m, a), []).append(m)
     n_total, k = len(mutants), 0
     log(f"campaign {a.campaign}: {n_total} mutants, work dir {ws.work}")
     for suite, group in by_suite.items():
-        ws.configure(suite.live_tops)
         todo = [m for m in group if m.id not in done]
         results += [done[m.id] for m in group if m.id in done]
         k += len(group) - len(todo)
         if not todo:
             continue
+        ws.configure(suite.live_tops)
         log(f"suite {suite.name}: unmutated run")
         times = baseline(ws, suite, a)
         for m in todo:
