@@ -276,7 +276,11 @@ class Workspace:
             return "passed", "", dt
         failed = re.search(r"\[  FAILED  \] (\S+)", r.stdout)
         if failed:
-            return "failed", f"{stage.binary} {failed.group(1)}", dt
+            # the first failure message says which check killed it (lockstep, pins, endpoint...)
+            why = re.search(r"(?:Failure|error)\n((?:.*\n){1,4})", r.stdout)
+            note = " | ".join(x.strip() for x in why.group(1).splitlines() if x.strip()) if why else ""
+            note = f": {note[:240]}" if note else ""
+            return "failed", f"{stage.binary} {failed.group(1)}{note}", dt
         running = re.findall(r"\[ RUN      \] (\S+)", r.stdout)
         where = running[-1] if running else stage.gtest_filter
         return "failed", f"{stage.binary} {where} (exit {r.returncode})", dt
