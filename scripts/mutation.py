@@ -484,6 +484,9 @@ def list_catalogue(a: argparse.Namespace) -> int:
     files = a.files or default_files(a.root)
     mutants = select(mc.catalogue(a.root, files), a, sample=False)
     pairs = mc.pair_all(mutants, a.root) if a.campaign == "common_mode" else {}
+    if pairs and a.sample is not None:
+        # as a run draws it: from the paired mutants (without --sample every mutant is listed, with its reason)
+        mutants = [m for m in mutants if pairs[m.id].status == "paired"]
     mutants = select(mutants, a)
     rows = []
     for m in mutants:
