@@ -441,8 +441,10 @@ def report(results: list[Result], campaign: str) -> str:
            f"errors)", "", table(results, "area"), "", table(results, "operator")]
     if results:
         per = [r.build_s + r.test_s for r in results]
-        out += ["", f"per mutant: mean {sum(per) / len(per):.0f} s (build {sum(r.build_s for r in results) / len(per):.0f}"
-                    f" s, tests {sum(r.test_s for r in results) / len(per):.0f} s), max {max(per):.0f} s"]
+        build = sum(r.build_s for r in results) / len(per)
+        tests = sum(r.test_s for r in results) / len(per)
+        out += ["", f"per mutant: mean {sum(per) / len(per):.0f} s (build {build:.0f} s, tests {tests:.0f} s), "
+                    f"max {max(per):.0f} s"]
     surv = [r for r in results if r.outcome == "survived"]
     if surv:
         out += ["", f"survivors ({len(surv)}):"]
