@@ -1,0 +1,320 @@
+// Directed tests for what the mutation campaigns (scripts/mutation.py,
+// docs/mutation.md) found the fast open-loop suite never drove:
+//  - STOP held as a level (as the limit switches drive the executor's stop
+//    input) instead of a one-clock pulse: the stop must not restart every clock;
+//  - a limit switch on the side of the motion, each side and both modes, at the
+//    core: motion (or an arming) into it stops, motion away from it runs to
+//    the exact end.
+//  - a STOP in the very clock a stream ends, a zero-length row met while
+//    moving, a START whose head row is over a guard limit.
+// RTL and model run in lockstep every clock; besides, each test checks a
+// property of its own (same rest as a pulsed STOP; the move stops short of
+// its end, or reaches it exactly), so a change made in RTL and model alike
+// fails it too.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+#include "lockstep.h"
+#include "planner.h"
+#include "rtl_core.h"
+#include "stop_harness.h"
+
+using namespace sc;
+using stoptest::ld;
+
+namespace {
+
+uint64_t jerk_lsb(ld j) { return uint64_t(j * stoptest::kLsb / (stoptest::kF * stoptest::kF * stoptest::kF)); }
+uint64_t acc_lsb(ld a) { return uint64_t(a * stoptest::kLsb / (stoptest::kF * stoptest::kF)); }
+
+// The core with a planned move loaded (not started), RTL and model in lockstep.
+struct LoadedCore {
+  RtlCore rtl;
+  AxisCore model;
+  LockstepChecker chk;
+  CoreInputs in;
+  uint64_t clock = 0;
+  Plan plan;
+  explicit LoadedCore(int64_t distance) {
+    rtl.reset();
+    MoveRequest req;
+    req.distance = distance;
+    req.v_cruise = 40000;
+    req.a_max = 4e6;
+    req.j_max = 4e9;
+    plan = std::get<Plan>(plan_move(req, PulseTiming{}));
+    in.enable = true;
+    in.cfg = PulseTiming{};
+    in.pos_frac0 = plan.pos_frac0;
+    in.stop_jerk = jerk_lsb(4e9);
+    in.stop_acc = acc_lsb(4e6);
+    for (const Row& r : move_rows(plan.segments)) {
+      CoreInputs w = in;
+      w.row_push = true;
+      w.row = r;
+      tick(w);
+    }
+  }
+  void tick(const CoreInputs& ci) {
+    rtl.step(ci);
+    model.step(ci);
+    chk.compare(clock++, rtl.outputs(), model.outputs());
+  }
+  void tick() { tick(in); }
+  CoreOutputs out() const { return rtl.outputs(); }
+  void start() {
+    CoreInputs s = in;
+    s.start = true;
+    tick(s);
+    tick();
+  }
+};
+
+std::string fmt_case(int dir, bool hard, bool same_side) {
+  return std::string(dir > 0 ? "forward" : "backward") + (hard ? ", hard limit" : ", controlled limit") +
+         (same_side ? " ahead" : " behind");
+}
+
+struct Rest {
+  uint64_t clock;
+  int32_t pos;
+  int32_t pulses;
+};
+
+// A move stopped `after` clocks from START; STOP held for `hold` clocks
+// (hold 0: until the axis rests).
+Rest stop_move(uint64_t after, uint64_t hold) {
+  LoadedCore c(3000);
+  c.start();
+  for (uint64_t i = 0; i < after; ++i) c.tick();
+  EXPECT_TRUE(c.out().busy);
+  const uint64_t t0 = c.clock;
+  c.in.stop = true;
+  bool stopping_seen = false;
+  while ((c.out().busy || c.clock < t0 + 4) && c.clock < t0 + 2'000'000) {
+    if (hold != 0 && c.clock >= t0 + hold) c.in.stop = false;
+    c.tick();
+    stopping_seen = stopping_seen || c.out().stopping;
+    if (!c.chk.errors().empty()) break;
+  }
+  c.in.stop = false;
+  for (int i = 0; i < 200; ++i) c.tick();
+  EXPECT_TRUE(stopping_seen) << "a controlled stop ran";
+  EXPECT_FALSE(c.out().busy) << "the stop ended";
+  EXPECT_EQ(c.out().ref_vel, 0);
+  EXPECT_EQ(c.out().ref_acc, 0);
+  EXPECT_TRUE(c.chk.errors().empty()) << c.chk.finish();
+  return {c.clock - t0, c.out().ref_pos_int, c.out().pulse_count};
+}
+
+}  // namespace
+
+// A STOP held high until the axis rests stops exactly like a one-clock STOP:
+// the same clock of rest, position and pulse count (from the acceleration,
+// the cruise and the deceleration of the move).
+TEST(MutationGaps, StopHeldAsALevelStopsLikeAOneClockStop) {
+  for (uint64_t after : {20'000u, 120'000u, 400'000u}) {
+    const Rest pulse = stop_move(after, 1);
+    const Rest level = stop_move(after, 0);
+    EXPECT_EQ(level.clock, pulse.clock) << "stop at " << after;
+    EXPECT_EQ(level.pos, pulse.pos) << "stop at " << after;
+    EXPECT_EQ(level.pulses, pulse.pulses) << "stop at " << after;
+    EXPECT_GT(pulse.pos, 0) << "stop at " << after;
+  }
+}
+
+// A limit that becomes active on the move's side while the core arms (DIR
+// held for a long setup) drops the start: the executor never runs, nothing
+// moves, the trip is reported on that side; with the limit on the other side
+// the move starts.
+TEST(MutationGaps, LimitActiveWhileArmingDropsTheStartTowardIt) {
+  for (int dir : {1, -1}) {
+    for (bool hard : {false, true}) {
+      for (bool same_side : {true, false}) {
+        const std::string what = fmt_case(dir, hard, same_side);
+        LoadedCore c(3000 * dir);
+        c.in.cfg.setup = 2000;
+        c.in.lim_hard = hard;
+        c.start();
+        for (int i = 0; i < 200; ++i) c.tick();
+        ASSERT_TRUE(c.out().busy) << what << ": arming";
+        ASSERT_EQ(c.out().phase, uint8_t(Phase::PhIdle)) << what << ": still arming";
+        const bool fwd_side = (dir > 0) == same_side;
+        c.in.lim_fwd = fwd_side;
+        c.in.lim_rev = !fwd_side;
+        bool trip = false, moved = false;
+        for (int i = 0; i < 6000; ++i) {
+          c.tick();
+          trip = trip || (fwd_side ? c.out().lim_trip_fwd : c.out().lim_trip_rev);
+          moved = moved || c.out().ref_vel != 0 || c.out().phase != uint8_t(Phase::PhIdle);
+        }
+        EXPECT_TRUE(c.chk.errors().empty()) << what << c.chk.finish();
+        if (same_side) {
+          EXPECT_TRUE(trip) << what;
+          EXPECT_FALSE(moved) << what << ": the executor must not start toward the limit";
+          EXPECT_FALSE(c.out().busy) << what << ": the start is dropped";
+          EXPECT_EQ(c.out().pulse_count, 0) << what;
+        } else {
+          EXPECT_FALSE(trip) << what;
+          EXPECT_TRUE(moved) << what << ": the move away from the limit starts";
+        }
+      }
+    }
+  }
+}
+
+// A limit active on the side the move heads to stops it short of its end
+// (controlled or, with lim_hard, at once) and reports the trip on that side
+// only; the limit on the other side changes nothing: the move ends exactly.
+TEST(MutationGaps, LimitOnTheSideOfTheMotionStopsItAndTheOtherSideDoesNot) {
+  for (int dir : {1, -1}) {
+    for (bool hard : {false, true}) {
+      for (bool same_side : {true, false}) {
+        LoadedCore c(3000 * dir);
+        c.in.lim_hard = hard;
+        c.start();
+        for (int i = 0; i < 60'000; ++i) c.tick();
+        ASSERT_TRUE(c.out().busy);
+        const bool fwd_side = (dir > 0) == same_side;
+        c.in.lim_fwd = fwd_side;
+        c.in.lim_rev = !fwd_side;
+        bool trip_fwd = false, trip_rev = false;
+        while ((c.out().busy || !c.out().done) && c.clock < 3'000'000 && c.chk.errors().empty()) {
+          c.tick();
+          trip_fwd = trip_fwd || c.out().lim_trip_fwd;
+          trip_rev = trip_rev || c.out().lim_trip_rev;
+          if (same_side && !c.out().busy) break;
+        }
+        const std::string what = fmt_case(dir, hard, same_side);
+        EXPECT_TRUE(c.chk.errors().empty()) << what << c.chk.finish();
+        EXPECT_FALSE(c.out().busy) << what;
+        if (same_side) {
+          EXPECT_EQ(fwd_side ? trip_fwd : trip_rev, true) << what << ": the trip on the side of the motion";
+          EXPECT_EQ(fwd_side ? trip_rev : trip_fwd, false) << what << ": no trip on the other side";
+          EXPECT_LT(std::abs(c.out().ref_pos_int), 3000) << what << ": stopped short of the end";
+          EXPECT_EQ(c.out().pulse_count, c.out().ref_pos_int) << what << ": every step on the pins";
+        } else {
+          EXPECT_FALSE(trip_fwd || trip_rev) << what << ": motion away from a limit runs";
+          EXPECT_TRUE(c.out().done) << what;
+          EXPECT_EQ(c.out().ref_pos_int, 3000 * dir) << what << ": the move ends exactly";
+          EXPECT_EQ(c.out().pulse_count, 3000 * dir) << what;
+        }
+      }
+    }
+  }
+}
+
+// A STOP that reaches the executor in the clock the stream ends as planned
+// changes nothing (sc_profile_exec): whichever clock around the end STOP
+// comes in, the axis rests on the move's end, no stop is left running, and the
+// FIFO takes the next move, which runs exactly.
+TEST(MutationGaps, StopAroundTheClockTheStreamEndsLeavesTheAxisReady) {
+  // the clock the executor's jerk goes to zero at the end (its last boundary)
+  uint64_t end_clock = 0;
+  {
+    LoadedCore c(200);
+    c.start();
+    bool jerk_seen = false;
+    while ((c.out().busy || !c.out().done) && c.clock < 2'000'000) {
+      c.tick();
+      if (c.out().ref_jerk != 0) jerk_seen = true;
+      if (jerk_seen && c.out().ref_jerk == 0 && c.out().ref_vel == 0 && end_clock == 0) end_clock = c.clock;
+    }
+    ASSERT_GT(end_clock, 0u);
+  }
+  for (uint64_t k = end_clock - 6; k <= end_clock + 2; ++k) {
+    LoadedCore c(200);
+    c.start();
+    while (c.clock < k) c.tick();
+    CoreInputs s = c.in;
+    s.stop = true;
+    c.tick(s);
+    while ((c.out().busy || c.out().stopping) && c.clock < k + 2'000'000) c.tick();
+    for (int i = 0; i < 50; ++i) c.tick();
+    const std::string at = "STOP at clock " + std::to_string(k) + " (stream end " + std::to_string(end_clock) + ")";
+    EXPECT_FALSE(c.out().stopping) << at << ": no stop left running";
+    EXPECT_FALSE(c.out().fifo_full) << at << ": the FIFO takes rows";
+    EXPECT_EQ(c.out().ref_vel, 0) << at;
+    const int32_t p0 = c.out().ref_pos_int;
+    EXPECT_EQ(c.out().pulse_count, p0) << at;
+    // the next move, from where the axis rests
+    for (const Row& r : move_rows(c.plan.segments)) {
+      CoreInputs w = c.in;
+      w.row_push = true;
+      w.row = r;
+      c.tick(w);
+    }
+    c.start();
+    while ((c.out().busy || !c.out().done) && c.clock < k + 4'000'000) c.tick();
+    EXPECT_TRUE(c.out().done) << at;
+    EXPECT_EQ(c.out().ref_pos_int - p0, 200) << at << ": the next move is exact";
+    EXPECT_TRUE(c.chk.errors().empty()) << at << c.chk.finish();
+  }
+}
+
+// A zero-length row met at a row boundary while moving is malformed: the axis
+// stops under control (no velocity step) and reports the table fault.
+TEST(MutationGaps, ZeroLengthRowMidMoveStopsUnderControl) {
+  LoadedCore probe(3000);
+  const std::vector<Row> rows = move_rows(probe.plan.segments);
+  ASSERT_GE(rows.size(), 4u);
+  for (size_t bad = 1; bad + 1 < rows.size(); ++bad) {
+    LoadedCore c(3000);
+    // reload the FIFO with row `bad` cut to zero clocks
+    CoreInputs f = c.in;
+    f.fifo_flush = true;
+    c.tick(f);
+    for (size_t i = 0; i < rows.size(); ++i) {
+      CoreInputs w = c.in;
+      w.row_push = true;
+      w.row = rows[i];
+      if (i == bad) w.row.seg.clocks = 0;
+      c.tick(w);
+    }
+    c.start();
+    bool stopping = false;
+    i128 worst_dv = 0, last_v = 0;
+    while ((c.out().busy || c.clock < 10) && c.clock < 4'000'000) {
+      c.tick();
+      stopping = stopping || c.out().stopping;
+      const i128 dv = c.out().ref_vel - last_v;
+      worst_dv = std::max(worst_dv, dv < 0 ? -dv : dv);
+      last_v = c.out().ref_vel;
+    }
+    const std::string what = "zero-length row " + std::to_string(bad);
+    EXPECT_TRUE(c.chk.errors().empty()) << what << c.chk.finish();
+    EXPECT_TRUE(c.out().fault_table) << what;
+    EXPECT_EQ(c.out().ref_vel, 0) << what;
+    // moving when the row came: a controlled stop, velocity continuous (per clock
+    // by at most the larger of the plan's and the stop's acceleration)
+    if (rows[bad].seg.vel0 != 0) {
+      EXPECT_TRUE(stopping) << what << ": a controlled stop";
+      EXPECT_LE(worst_dv, i128(acc_lsb(4e6)) * 2) << what << ": no velocity step";
+    }
+  }
+}
+
+// A START whose head row is over a guard limit is refused: nothing moves, the
+// guard flag is set and the rows are flushed.
+TEST(MutationGaps, StartWithTheHeadRowOverAGuardLimitIsRefused) {
+  LoadedCore c(3000);
+  const Row head = move_rows(c.plan.segments).front();
+  ASSERT_GT(head.seg.jerk, 1);
+  c.in.guard.jerk = uint64_t(head.seg.jerk / 2);
+  for (int i = 0; i < 4; ++i) c.tick();
+  c.start();
+  bool moved = false;
+  for (int i = 0; i < 4000; ++i) {
+    c.tick();
+    moved = moved || c.out().ref_vel != 0 || c.out().step;
+  }
+  EXPECT_TRUE(c.chk.errors().empty()) << c.chk.finish();
+  EXPECT_FALSE(moved) << "a head row over the jerk guard must not run";
+  EXPECT_TRUE(c.out().guard);
+  EXPECT_EQ(c.out().fifo_level, 0) << "what was queued behind it is flushed";
+  EXPECT_FALSE(c.out().busy);
+}
