@@ -341,4 +341,93 @@ module sc_axis_core #(
   assign ref_running_o = exec_running;
   assign step_busy_o   = sg_busy;
 
+`ifdef FORMAL
+  // ---- formal properties (scripts/formal.py, docs/formal.md) ----------------
+  // Proven on this module with ExtStep = 0 (the open-loop core of sc_axi_axis)
+  // and its submodules read without FORMAL. Input contract: reset in the
+  // first clock only; every other input is free in every clock (rows, START,
+  // STOP, abort, limits, timing configuration). Shadows (f_*) hold pins of the
+  // last clocks; f_*_p2 the value two clocks back.
+  logic f_init_q = 1'b1;  // the first clock of every trace
+  logic f_done_prev_q, f_start_ok_prev_q, f_step_prev_q;
+  logic f_abort_p1_q, f_abort_p2_q;
+  logic f_hard_fwd_p1_q, f_hard_fwd_p2_q, f_hard_rev_p1_q, f_hard_rev_p2_q;
+  logic f_soft_fwd_p1_q, f_soft_fwd_p2_q, f_soft_rev_p1_q, f_soft_rev_p2_q;
+  logic f_mv_fwd_prev_q, f_mv_rev_prev_q, f_stop_arm_prev_q;
+  logic f_rise;
+  localparam logic signed [sc_pkg::PendW-1:0] FPendMax = {1'b0, {(sc_pkg::PendW-1){1'b1}}};
+  localparam logic signed [sc_pkg::PendW-1:0] FPendMin = {1'b1, {(sc_pkg::PendW-1){1'b0}}};
+
+  assign f_rise = step_o && !f_step_prev_q;
+
+  always_comb begin
+    if (f_init_q) begin
+      a_reset_first: assume (!rst_ni);
+    end else begin
+      a_no_reset: assume (rst_ni);
+    end
+    // core_abort only (formal.py drops it elsewhere): sc_axi_regs never
+    // starts in the clock of an abort (CMD.ESTOP wins over START, the e-stop
+    // input cancels it); the core alone would arm such a START
+    a_abort_no_start: assume (!(abort_i && start_i));
+  end
+
+  always_ff @(posedge clk_i) begin
+    f_init_q          <= 1'b0;
+    f_done_prev_q     <= rst_ni && done_o;
+    f_start_ok_prev_q <= rst_ni && start_ok;
+    f_step_prev_q     <= rst_ni && step_o;
+    f_abort_p1_q      <= rst_ni && abort_i;
+    f_abort_p2_q      <= rst_ni && f_abort_p1_q;
+    f_hard_fwd_p1_q   <= rst_ni && lim_fwd_i && lim_hard_i;
+    f_hard_fwd_p2_q   <= rst_ni && f_hard_fwd_p1_q;
+    f_hard_rev_p1_q   <= rst_ni && lim_rev_i && lim_hard_i;
+    f_hard_rev_p2_q   <= rst_ni && f_hard_rev_p1_q;
+    f_soft_fwd_p1_q   <= rst_ni && lim_fwd_i && !lim_hard_i;
+    f_soft_fwd_p2_q   <= rst_ni && f_soft_fwd_p1_q;
+    f_soft_rev_p1_q   <= rst_ni && lim_rev_i && !lim_hard_i;
+    f_soft_rev_p2_q   <= rst_ni && f_soft_rev_p1_q;
+    f_mv_fwd_prev_q   <= rst_ni && ref_running_o && ref_vel_o > 0;
+    f_mv_rev_prev_q   <= rst_ni && ref_running_o && ref_vel_o < 0;
+    f_stop_arm_prev_q <= rst_ni && stop_q && arm_q;
+  end
+
+  always_comb begin
+    if (!f_init_q) begin
+      // -- group core_done: once done_o is up, and until a START is accepted,
+      // done_o stays, no step request reaches the step generator and STEP
+      // has no rising edge
+      p_done_quiet: assert (!(f_done_prev_q && !f_start_ok_prev_q) ||
+                            (done_o && !sg_req && !f_rise));
+      // -- group core_abort: abort_i (e-stop) two clocks back: the executor
+      // does not run and no step request reaches the step generator (STEP
+      // only completes steps already owed); the arming of a START is dropped
+      p_abort_2: assert (!f_abort_p2_q || (!ref_running_o && !sg_req && !exec_start_o && !arm_q));
+      // CMD.STOP (stop_i, registered) during the arming drops the START: the
+      // next clock nothing arms, runs or requests a step
+      p_stop_arm: assert (!f_stop_arm_prev_q || (!arm_q && !ref_running_o && !sg_req));
+      // -- group core_limits: an active limit on a side with lim_hard_i two
+      // clocks back: no step request toward that side; without lim_hard_i and
+      // the reference moving toward it in the last clock: the controlled
+      // stop runs (or the run has ended)
+      p_lim_hard_fwd: assert (!f_hard_fwd_p2_q || !(sg_req && sg_fwd));
+      p_lim_hard_rev: assert (!f_hard_rev_p2_q || !(sg_req && !sg_fwd));
+      p_lim_stop_fwd: assert (!(f_soft_fwd_p2_q && f_mv_fwd_prev_q) || stopping_o || !ref_running_o);
+      p_lim_stop_rev: assert (!(f_soft_rev_p2_q && f_mv_rev_prev_q) || stopping_o || !ref_running_o);
+      // -- group core_rate: the executor's steps never overflow the step
+      // generator's queue (no step dropped: the pins end on the reference)
+      p_no_overrun: assert (!sg_overrun);
+      // -- helper invariants: while arming the executor is idle and nothing
+      // is owed; a queue one past the trip level with the executor still
+      // active has the trip registered; a full queue has the executor stopped
+      inv_arm_idle: assert (!arm_q || (!exec_running && !exec_step_req && step_pending_o == '0));
+      inv_rate_near: assert (!((exec_running || exec_step_req) &&
+                               (step_pending_o > PendNearFull || step_pending_o < -PendNearFull)) ||
+                             rate_trip_q);
+      inv_rate_full: assert (!(step_pending_o == FPendMax || step_pending_o == FPendMin) ||
+                             (!exec_running && !exec_step_req));
+    end
+  end
+`endif
+
 endmodule

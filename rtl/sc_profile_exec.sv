@@ -459,12 +459,12 @@ module sc_profile_exec (
   // outputs of the last clock.
   logic                      f_init_q = 1'b1;  // the first clock of every trace
   logic                      f_run_prev_q, f_fin_prev_q, f_start_prev_q, f_abort_run_q;
-  logic                      f_load_prev_q, f_disc_prev_q;
+  logic                      f_load_prev_q, f_disc_prev_q, f_under_prev_q;
   logic signed [PosIntW-1:0] f_pint_prev_q;
   logic signed [VelW-1:0]    f_vel_prev_q, f_vel_end_q;
   logic signed [AccW-1:0]    f_acc_prev_q, f_acc_end_q;
   logic signed [JerkW-1:0]   f_jerk_prev_q;
-  logic                      f_head_cont, f_disc;
+  logic                      f_head_cont, f_disc, f_under;
 
   // The head row continues the motion: the spec of the continuity guard,
   // written from the pins (v + a, a + j of this clock; ACC_STEP: velocity only).
@@ -474,6 +474,11 @@ module sc_profile_exec (
   // not end there as planned, a row is queued and it does not continue.
   assign f_disc = running_o && !stopping_o && !abort_i && left_q == SegClkW'(1) &&
                   !flags_q[sc_pkg::RowFlagStreamEnd] && !fifo_empty && !f_head_cont;
+
+  // ... or no row is queued and the motion is not at rest (FIFO underrun).
+  assign f_under = running_o && !stopping_o && !abort_i && left_q == SegClkW'(1) &&
+                   !flags_q[sc_pkg::RowFlagStreamEnd] && fifo_empty &&
+                   !(vel_o + VelW'(acc_o) == '0 && acc_o + AccW'(jerk_o) == '0);
 
   always_comb begin
     if (f_init_q) begin
@@ -491,6 +496,7 @@ module sc_profile_exec (
     f_abort_run_q  <= rst_ni && running_o && abort_i;
     f_load_prev_q  <= rst_ni && load;
     f_disc_prev_q  <= rst_ni && f_disc;
+    f_under_prev_q <= rst_ni && f_under;
     f_pint_prev_q  <= rst_ni ? pos_int_o : '0;
     f_vel_prev_q   <= vel_o;
     f_acc_prev_q   <= acc_o;
@@ -520,13 +526,16 @@ module sc_profile_exec (
       // integral of the applied jerk except where a row flagged ACC_STEP was
       // just loaded; a row that does not continue is not run: the controlled
       // stop and discont_o follow at once, from the integrated state, the FIFO
-      // emptied; during a stop no row is queued
+      // emptied; likewise the stop and underrun_o when the FIFO ran dry while
+      // moving; during a stop no row is queued
       p_vel_cont: assert (!(f_run_prev_q && running_o) || vel_o == f_vel_end_q);
       p_acc_cont: assert (!(f_run_prev_q && running_o) || acc_o == f_acc_end_q ||
                           (f_load_prev_q && flags_q[sc_pkg::RowFlagAccStep]));
       p_disc_stop: assert (!f_disc_prev_q || (running_o && stopping_o && discont_o &&
                                               vel_o == f_vel_end_q && acc_o == f_acc_end_q &&
                                               fifo_level_o == '0));
+      p_under_stop: assert (!f_under_prev_q || (running_o && stopping_o && underrun_o &&
+                                                vel_o == f_vel_end_q && acc_o == f_acc_end_q));
       p_stop_empty: assert (!stopping_o || fifo_level_o == '0);
     end
   end

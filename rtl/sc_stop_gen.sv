@@ -390,4 +390,41 @@ module sc_stop_gen (
   c_overshoot:  cover property (@(posedge clk_i) rst_ni && over_d && !over_q);
 `endif
 
+`ifdef FORMAL
+  // ---- formal properties (scripts/formal.py, docs/formal.md) ----------------
+  // The decision of one clock of the stop, on the generator's mirrored level
+  // b (a = -b, or b after a mirror): the next level b1 is within J of b, at
+  // most D once b is, and nearer to 0 while b is beyond D. Input contract:
+  // reset in the first clock only; start_i, vel_i, acc_i and the limits free.
+  // Checked to a bounded depth from reset (docs/formal.md: z3 does not finish
+  // an induction step, or a bounded check past the first active clock, on
+  // these widths).
+  logic                 f_init_q = 1'b1;  // the first clock of every trace
+  logic signed [LW-1:0] f_babs, f_b1abs;
+
+  assign f_babs  = b < 0 ? -b : b;
+  assign f_b1abs = b1 < 0 ? -b1 : b1;
+
+  always_comb begin
+    if (f_init_q) begin
+      a_reset_first: assume (!rst_ni);
+    end else begin
+      a_no_reset: assume (rst_ni);
+    end
+  end
+
+  always_ff @(posedge clk_i) begin
+    f_init_q <= 1'b0;
+  end
+
+  always_comb begin
+    if (!f_init_q) begin
+      // -- group stop_gen_limits
+      p_level_step: assert (!active_q || (b1 <= b + j && b1 >= b - j));
+      p_acc_stay: assert (!(active_q && f_babs <= dl) || f_b1abs <= dl);
+      p_acc_down: assert (!(active_q && f_babs > dl) || f_b1abs < f_babs);
+    end
+  end
+`endif
+
 endmodule

@@ -28,6 +28,7 @@ import json
 import os
 import re
 import shutil
+import signal
 import subprocess
 import sys
 import time
@@ -57,7 +58,7 @@ class Group:
 
 
 # Assumptions that only some groups use; every other group drops them.
-GROUP_ONLY_ASSUMES = ["a_rate_gap"]
+GROUP_ONLY_ASSUMES = ["a_rate_gap", "a_abort_no_start"]
 
 # sc_step_gen: the pin shadows against the internal counters (induction needs them)
 STEP_INV = ["inv_high", "inv_low", "inv_prev", "inv_dir_age", "inv_rise_age"]
@@ -232,14 +233,74 @@ GROUPS += [
     Group(
         name="exec_continuity", module="sc_profile_exec", plain_files=EXEC_SUBS,
         what="v always the integral of a, a of the jerk (ACC_STEP rows: a only); a row that does not "
-             "continue is not run: controlled stop + discont_o at once, FIFO emptied",
-        asserts=["p_vel_cont", "p_acc_cont", "p_disc_stop", "p_stop_empty"],
+             "continue is not run: controlled stop + discont_o at once, FIFO emptied; "
+             "an underrun while moving: controlled stop + underrun_o at once",
+        asserts=["p_vel_cont", "p_acc_cont", "p_disc_stop", "p_under_stop", "p_stop_empty"],
         induction=2, depth=2,
         mutation=("assign continues = hd_vel0 == vel_end && "
                   "(hd_acc0 == acc_end || hd_flags[sc_pkg::RowFlagAccStep]);",
                   "assign continues = hd_vel0 == vel_end;",
                   "the guard checks the velocity only"),
         broken_depth=5),
+]
+
+# sc_axis_core (open loop, ExtStep = 0): executor, FIFO, stop and step generators without FORMAL
+CORE_SUBS = ["sc_profile_exec.sv", "sc_row_fifo.sv", "sc_stop_gen.sv", "sc_step_gen.sv"]
+GROUPS += [
+    Group(
+        name="core_done", module="sc_axis_core", plain_files=CORE_SUBS,
+        what="after done_o, until a START is accepted: done_o stays, no step request, no STEP edge",
+        asserts=["p_done_quiet"],
+        induction=2, depth=2,
+        mutation=("assign busy_o     = exec_running || exec_step_req || sg_busy",
+                  "assign busy_o     = exec_running || sg_busy",
+                  "done_o with the last step request still on its way"),
+        broken_depth=7),
+    Group(
+        name="core_abort", module="sc_axis_core", plain_files=CORE_SUBS,
+        what="abort_i (e-stop) -> 2 clocks later the executor is stopped, no step request, "
+             "no arming or start; STOP while arming drops the START",
+        asserts=["p_abort_2", "p_stop_arm", "inv_arm_idle"],
+        keep_assumes=["a_abort_no_start"],
+        induction=2, depth=2,
+        mutation=("assign exec_abort = abort_q || lim_abort",
+                  "assign exec_abort = lim_abort",
+                  "the e-stop does not reach the executor"),
+        broken_depth=6),
+    Group(
+        name="core_limits", module="sc_axis_core", plain_files=CORE_SUBS,
+        what="hard limit -> no step toward it 2 clocks later; soft (controlled) -> the stop runs",
+        asserts=["p_lim_hard_fwd", "p_lim_hard_rev", "p_lim_stop_fwd", "p_lim_stop_rev", "inv_arm_idle"],
+        induction=2, depth=2,
+        mutation=("(ref_moving && !ref_vel_o[sc_pkg::VelW-1]));",
+                  "(ref_moving && ref_vel_o[sc_pkg::VelW-1]));",
+                  "the + limit watches reverse motion"),
+        broken_depth=6),
+    Group(
+        name="core_rate", module="sc_axis_core", plain_files=CORE_SUBS,
+        what="the rate trip keeps every executor step in the step generator's queue: no overrun",
+        asserts=["p_no_overrun", "inv_arm_idle", "inv_rate_near", "inv_rate_full"],
+        induction=2, depth=2,
+        mutation=("localparam logic signed [sc_pkg::PendW-1:0] PendNearFull = "
+                  "sc_pkg::PendW'((1 << (sc_pkg::PendW - 1)) - 3);",
+                  "localparam logic signed [sc_pkg::PendW-1:0] PendNearFull = "
+                  "sc_pkg::PendW'((1 << (sc_pkg::PendW - 1)) - 1);",
+                  "the rate trip one step late"),
+        broken_depth=15),
+]
+
+# sc_stop_gen: bounded from reset (the decision of the first active clock of
+# every stop, from any start state and limits); z3 does not finish deeper
+GROUPS += [
+    Group(
+        name="stop_gen_limits", module="sc_stop_gen",
+        what="one clock of the stop: the level (a) moves by <= J; |a| <= D stays once reached, "
+             "above D |a| only falls",
+        asserts=["p_level_step", "p_acc_stay", "p_acc_down"],
+        depth=3,
+        mutation=("      bsum     = b + j;", "      bsum     = b + j + j;",
+                  "the level rises by 2 J"),
+        broken_depth=3),
 ]
 GROUP_NAMES = [g.name for g in GROUPS]
 
@@ -251,13 +312,17 @@ def die(msg):
 
 def run(cmd, log, timeout):
     """Runs cmd, appends its output to log; returns (rc, output)."""
+    # own process group: on a timeout the solver that yosys-smtbmc started
+    # is ended with it (killing smtbmc alone left z3 running)
+    p = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+                         start_new_session=True)
     try:
-        p = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
-                           timeout=timeout)
-        out, rc = p.stdout, p.returncode
-    except subprocess.TimeoutExpired as e:
-        out, rc = (e.stdout or b"").decode() if isinstance(e.stdout, bytes) else (e.stdout or ""), -1
-        out += f"\n[timeout after {timeout} s]\n"
+        out, _ = p.communicate(timeout=timeout)
+        rc = p.returncode
+    except subprocess.TimeoutExpired:
+        os.killpg(p.pid, signal.SIGKILL)
+        out, _ = p.communicate()
+        out, rc = (out or "") + f"\n[timeout after {timeout} s]\n", -1
     with open(log, "a", encoding="utf-8") as f:
         f.write("$ " + " ".join(cmd) + "\n" + out + "\n")
     return rc, out
