@@ -25,6 +25,7 @@ from __future__ import annotations
 import argparse
 import dataclasses
 import fnmatch
+import hashlib
 import json
 import os
 import random
@@ -43,6 +44,7 @@ import mutation_catalogue as mc  # noqa: E402
 ROOT = Path(__file__).resolve().parent.parent
 CAMPAIGNS = ("rtl_only", "common_mode")
 OUTCOMES = ("killed", "timeout", "build_error", "survived")
+BUILD_INPUTS = ("CMakeLists.txt", "cmake", "rtl", "cmodel", "sw", "tb", "tests")
 
 
 @dataclasses.dataclass(frozen=True)
@@ -197,9 +199,13 @@ class Workspace:
         whose text changed, so an up-to-date build stays up to date."""
         self.src.mkdir(parents=True, exist_ok=True)
         log(f"syncing {self.src} with the committed tree (HEAD)")
-        self.commit = subprocess.run(["git", "-C", str(self.root), "rev-parse", "HEAD"], check=True,
-                                     capture_output=True, text=True).stdout.strip()
-        archive = subprocess.run(["git", "-C", str(self.root), "archive", self.commit], check=True,
+        head = subprocess.run(["git", "-C", str(self.root), "rev-parse", "HEAD"], check=True,
+                              capture_output=True, text=True).stdout.strip()
+        # what the build and the tests are made of (a docs-only commit keeps the baseline)
+        trees = subprocess.run(["git", "-C", str(self.root), "rev-parse"] + [f"{head}:{p}" for p in BUILD_INPUTS],
+                               check=True, capture_output=True, text=True).stdout
+        self.commit = hashlib.sha1(trees.encode()).hexdigest()
+        archive = subprocess.run(["git", "-C", str(self.root), "archive", head], check=True,
                                  capture_output=True).stdout
         fresh = self.work / "head.tmp"
         shutil.rmtree(fresh, ignore_errors=True)
