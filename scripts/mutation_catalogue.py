@@ -23,6 +23,7 @@ SWAPS = {
     "&&": ("logical", "||"), "||": ("logical", "&&"),
     "&": ("bitwise", "|"), "|": ("bitwise", "&"),
 }
+SWAPS_BY_OP = {"arith", "relational", "equality", "logical", "bitwise"}
 OPERATORS = ("arith", "relational", "equality", "logical", "bitwise", "constant", "negate_if", "swap_ternary",
              "drop_not", "drop_term", "stuck_0", "stuck_1")
 DROPPABLE = ("+", "-", "&&", "||", "&", "|")
@@ -325,11 +326,6 @@ def cpp_regions(toks: list[Tok]) -> list[Region]:
             regions.append(Region(kind, lhs_ids[-1] if lhs_ids else "", i + 1, j))
             i = j
             continue
-        if t.kind == "op" and t.text == "(":
-            # an argument list may hold conditions written inline: look inside, but
-            # only for nested if/assignments via the main loop
-            i += 1
-            continue
         i += 1
     return regions
 
@@ -429,8 +425,8 @@ def excluded_tokens(toks: list[Tok], start: int, end: int) -> set[int]:
 
 
 def ternary_parts(toks: list[Tok], q: int, start: int, end: int) -> tuple[int, int, int, int] | None:
-    """(true_start, colon, false_end) around the '?' at q within [start, end):
-    returns (q + 1, colon, colon + 1, false_end)."""
+    """(true arm start, colon, false arm start, false arm end) of the ternary
+    whose '?' is at q, within [start, end); None when it is not one."""
     depth = 0
     nested = 0
     colon = None
@@ -466,20 +462,6 @@ def ternary_parts(toks: list[Tok], q: int, start: int, end: int) -> tuple[int, i
             false_end = j
             break
     return q + 1, colon, colon + 1, false_end
-
-
-def _group_end(toks: list[Tok], i: int, end: int) -> int:
-    """End of the bracket group (or region) that holds token i."""
-    depth = 0
-    for j in range(i, end):
-        tx = toks[j].text
-        if tx in OPEN:
-            depth += 1
-        elif tx in (")", "]", "}"):
-            if depth == 0:
-                return j
-            depth -= 1
-    return end
 
 
 def _is_constant_expr(toks: list[Tok], start: int, end: int) -> bool:
@@ -765,15 +747,12 @@ def pair(mutant: Mutant, root: Path, index: ModelIndex | None = None, min_radius
     toks = lex_sv(text)
     rs, re_ = mutant.region
     norm = normalise(toks, rs, re_, False)
-    region_is_assign = mutant.operator in ("stuck_0",) or any(
-        r.start == rs and r.kind in ("assign", "param") for r in sv_regions(toks) if r.start == rs)
     kinds = {r.start: r for r in sv_regions(toks)}
     reg = kinds.get(rs)
     if reg is not None and reg.kind in ("assign", "param", "port") and reg.lhs and not reg.lhs.startswith("{"):
         norm = [(_norm_name(reg.lhs), -1), ("=", -1)] + norm
     elif reg is not None and reg.kind == "cond":
         norm = [("if", -1)] + norm
-    del region_is_assign
     words_all = [w for w, _ in norm]
     if len(words_all) == 3 and words_all[1] == "=" and words_all[0] == words_all[2]:
         return Pairing(mutant.id, None, "unpaired",
@@ -871,8 +850,6 @@ def _model_edit(m: Mutant, text: str, toks: list[Tok], r: Region, idx: list[int]
         return a, b, "0"
     return f"operator {m.operator} has no model form"
 
-
-SWAPS_BY_OP = {"arith", "relational", "equality", "logical", "bitwise"}
 
 
 def pair_all(mutants: list[Mutant], root: Path) -> dict[str, Pairing]:
