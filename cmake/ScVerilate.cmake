@@ -83,9 +83,16 @@ function(sc_verilate target)
   endif()
   set(cover_args)
   if(SC_COVERAGE)
-    # line, toggle and user coverage; SC_COVER enables the RTL's cover points
-    list(APPEND flags COVERAGE)
+    # The kinds of SC_COVERAGE_KINDS (line, toggle, user); SC_COVER enables
+    # the RTL's cover points. Toggle points make a run ~20x slower, line and
+    # user ones barely: scripts/coverage.py builds them apart.
     set(cover_args -DSC_COVER)
+    foreach(kind IN LISTS SC_COVERAGE_KINDS)
+      if(NOT kind MATCHES "^(line|toggle|user)$")
+        message(FATAL_ERROR "SC_COVERAGE_KINDS: '${kind}' is not one of line, toggle, user")
+      endif()
+      list(APPEND cover_args --coverage-${kind})
+    endforeach()
   endif()
   if(SC_RTL_FROZEN_DIR AND NOT A_TOP IN_LIST SC_RTL_LIVE_TOPS)
     sc_rtl_files(files ${A_TOP} ${SC_RTL_FROZEN_DIR})

@@ -163,6 +163,9 @@ class UartHost {
   UartResponse read(uint32_t addr);
   // Keep the clock running with the line idle.
   void idle(uint64_t clocks100);
+  // The PC's line, to queue line faults before a transact() (pin clocks).
+  UartLine& line() { return line_; }
+  int pin_clocks_per_bit() const { return bit100_; }
   bool estop = false;
   uint8_t enc_ab = 0;  // encoder pins: bit 0 = A, bit 1 = B
   bool enc_z = false;  // encoder index pin

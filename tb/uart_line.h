@@ -14,7 +14,12 @@ class UartLine {
  public:
   explicit UartLine(int clocks_per_bit) : per_bit_(clocks_per_bit) {}
 
-  void send(uint8_t byte) { queue_.push_back(byte); }
+  void send(uint8_t byte) { queue_.push_back({byte, true, 0}); }
+  // Line faults: a byte whose stop bit is low (the receiver's framing error;
+  // the line then idles high for a bit), and the line pulled low for
+  // `clocks` clocks (a glitch, too short for a start bit) then high for a bit.
+  void send_with_low_stop_bit(uint8_t byte) { queue_.push_back({byte, false, 0}); }
+  void send_glitch(int clocks) { queue_.push_back({0, true, clocks}); }
   // The level to drive on the board's uart_rx this clock.
   bool tx_level() const { return tx_level_; }
   // Ends the clock: `board_tx` is the board's uart_tx level seen in it.
@@ -39,16 +44,28 @@ class UartLine {
         tx_level_ = true;
         return;
       }
-      tx_byte_ = queue_.front();
+      tx_ = queue_.front();
       queue_.pop_front();
       tx_bit_ = 0;
-      tx_left_ = per_bit_;
+      tx_left_ = tx_.glitch_clocks > 0 ? tx_.glitch_clocks : per_bit_;
     }
-    // bit 0 start, 1..8 data (LSB first), 9 stop
-    tx_level_ = tx_bit_ == 0 ? false : tx_bit_ == 9 ? true : ((tx_byte_ >> (tx_bit_ - 1)) & 1) != 0;
+    if (tx_.glitch_clocks > 0) {  // bit 0 the glitch, bit 1 the line high again
+      tx_level_ = tx_bit_ != 0;
+      if (--tx_left_ == 0) {
+        tx_left_ = per_bit_;
+        if (++tx_bit_ > 1) tx_bit_ = -1;
+      }
+      return;
+    }
+    // bit 0 start, 1..8 data (LSB first), 9 stop, 10 idle after a low stop bit
+    const int last = tx_.stop_level ? 9 : 10;
+    tx_level_ = tx_bit_ == 0    ? false
+                : tx_bit_ == 9  ? tx_.stop_level
+                : tx_bit_ == 10 ? true
+                                : ((tx_.byte >> (tx_bit_ - 1)) & 1) != 0;
     if (--tx_left_ == 0) {
       tx_left_ = per_bit_;
-      if (++tx_bit_ > 9) tx_bit_ = -1;
+      if (++tx_bit_ > last) tx_bit_ = -1;
     }
   }
 
@@ -79,11 +96,16 @@ class UartLine {
   }
 
   int per_bit_;
-  std::deque<uint8_t> queue_;
+  struct Symbol {
+    uint8_t byte;
+    bool stop_level;
+    int glitch_clocks;  // > 0: a glitch, no byte
+  };
+  std::deque<Symbol> queue_;
   bool tx_level_ = true;
   int tx_bit_ = -1;  // -1 idle
   int tx_left_ = 0;
-  uint8_t tx_byte_ = 0;
+  Symbol tx_{0, true, 0};
   int rx_bit_ = -2;  // -2 idle, -1 start bit, 0..7 data, 8 stop
   int rx_left_ = 0;
   uint8_t rx_byte_ = 0;

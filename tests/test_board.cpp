@@ -570,6 +570,43 @@ TEST(BoardUart, CorruptedFramesAreRejectedWithNothingWritten) {
   EXPECT_EQ(r.data, 0x0badf00du);
 }
 
+// Faults on the line itself, below the frame: a low pulse too short for a
+// start bit is ignored, and a byte with a low stop bit (a framing error)
+// inside a frame drops the frame unanswered, whatever its CRC; either way
+// nothing is written and the next clean frame is answered.
+TEST(BoardUart, LineGlitchesAndFramingErrorsWriteNothingAndTheNextFrameWorks) {
+  Board bd;
+  const uint32_t a = reg_addr("SEG_CLOCKS");
+  ASSERT_EQ(bd.host.write(a, 0x12345678u).status, kOkay);
+  const int bit = bd.host.pin_clocks_per_bit();
+  // glitches of a quarter and a third of a bit before a clean write frame
+  bd.host.line().send_glitch(bit / 4);
+  bd.host.line().send_glitch(bit / 3);
+  UartResponse r = parse_uart_response(bd.host.transact(frame(uart_write_frame(a, 0x0badf00du)), 3), false);
+  ASSERT_TRUE(r.ok) << r.error;
+  EXPECT_EQ(r.status, kOkay);
+  EXPECT_EQ(bd.host.read(a).data, 0x0badf00du);
+  // a framing error on each byte after the sync byte of a write frame
+  const std::vector<uint8_t> f = frame(uart_write_frame(a, 0x11223344u));
+  for (size_t bad = 1; bad < f.size(); ++bad) {
+    for (size_t i = bad + 1; i < f.size(); ++i) ASSERT_NE(f[i], 0xA5) << "a later byte would open a frame";
+    for (size_t i = 0; i < f.size(); ++i) {
+      if (i == bad) {
+        bd.host.line().send_with_low_stop_bit(f[i]);
+      } else {
+        bd.host.line().send(f[i]);
+      }
+    }
+    EXPECT_TRUE(bd.host.transact({}, 1, 2 * UartTimeoutBits).empty()) << "byte " << bad << ": answered";
+    EXPECT_EQ(bd.host.read(a).data, 0x0badf00du) << "byte " << bad << ": the broken frame wrote";
+  }
+  // a framing error on the sync byte: no frame opens, the next one works
+  bd.host.line().send_with_low_stop_bit(0xA5);
+  EXPECT_TRUE(bd.host.transact({}, 1, 2 * UartTimeoutBits).empty());
+  ASSERT_EQ(bd.host.write(a, 0x5eed5eedu).status, kOkay);
+  EXPECT_EQ(bd.host.read(a).data, 0x5eed5eedu);
+}
+
 // The encoder pins reach the closed-loop axis's quadrature decoder: a Gray
 // sequence on Pmod JB counts up and down, read back over the UART; the
 // index pin latches the count it came with.
