@@ -814,6 +814,9 @@ def _model_edit(m: Mutant, text: str, toks: list[Tok], r: Region, idx: list[int]
             return t.start, t.end, "false" if t.text == "true" else "true"
         if t.kind != "num":
             return f"model token '{t.text}' is not a literal"
+        if "'1" in (m.original, m.replacement):
+            # '1 is all ones of the RTL width; the model's literal would only move by one
+            return "'0 / '1 of a multi-bit signal has no width-exact model literal"
         delta = int(_num_value(m.replacement) if m.replacement not in ("'1",) else "1") - \
             int(_num_value(m.original)) if m.original not in ("'1",) else -1
         try:
