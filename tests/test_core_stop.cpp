@@ -16,6 +16,7 @@
 #include "pin_monitor.h"
 #include "planner.h"
 #include "rtl_core.h"
+#include "loaded_core.h"
 #include "sim_run.h"
 #include "stop_harness.h"
 
@@ -41,8 +42,8 @@ ld log_uniform(std::mt19937_64& g, ld lo, ld hi) {
 }
 
 // Physical limits in executor LSBs at the model's clock.
-uint64_t jerk_lsb(ld j) { return uint64_t(j * stoptest::kLsb / (stoptest::kF * stoptest::kF * stoptest::kF)); }
-uint64_t acc_lsb(ld a) { return uint64_t(a * stoptest::kLsb / (stoptest::kF * stoptest::kF)); }
+using stoptest::acc_lsb;
+using stoptest::jerk_lsb;
 
 struct CampaignStats {
   int stops = 0, infeasible = 0, by_trigger[3] = {0, 0, 0};
@@ -195,41 +196,9 @@ void stop_campaign(int cases, uint64_t seed) {
               (unsigned long long)st.clocks, double(st.worst_excess));
 }
 
-// The core with rows loaded, started and running its first row.
-struct RunningCore {
-  RtlCore rtl;
-  AxisCore model;
-  LockstepChecker chk;
-  CoreInputs in;
-  uint64_t clock = 0;
-  Plan plan;
-  RunningCore() {
-    rtl.reset();
-    MoveRequest req;
-    req.distance = 3000;
-    req.v_cruise = 40000;
-    req.a_max = 4e5;
-    req.j_max = 4e7;
-    plan = std::get<Plan>(plan_move(req, PulseTiming{}));
-    in.enable = true;
-    in.cfg = PulseTiming{};
-    in.pos_frac0 = plan.pos_frac0;
-    in.stop_jerk = jerk_lsb(4e7);
-    in.stop_acc = acc_lsb(4e5);
-    for (const Row& r : move_rows(plan.segments)) {
-      CoreInputs w = in;
-      w.row_push = true;
-      w.row = r;
-      tick(w);
-    }
-  }
-  void tick(const CoreInputs& ci) {
-    rtl.step(ci);
-    model.step(ci);
-    chk.compare(clock++, rtl.outputs(), model.outputs());
-  }
-  void tick() { tick(in); }
-  CoreOutputs out() const { return rtl.outputs(); }
+// The core with rows loaded (3000 pulses at 4e5 pulses/s^2, 4e7 pulses/s^3).
+struct RunningCore : stoptest::LoadedCore {
+  RunningCore() : LoadedCore(3000, 4e5, 4e7) {}
 };
 
 }  // namespace

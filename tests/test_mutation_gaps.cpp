@@ -18,61 +18,16 @@
 #include <string>
 #include <vector>
 
-#include "lockstep.h"
-#include "planner.h"
-#include "rtl_core.h"
-#include "stop_harness.h"
+#include "loaded_core.h"
 
 using namespace sc;
 using stoptest::ld;
 
 namespace {
 
-uint64_t jerk_lsb(ld j) { return uint64_t(j * stoptest::kLsb / (stoptest::kF * stoptest::kF * stoptest::kF)); }
-uint64_t acc_lsb(ld a) { return uint64_t(a * stoptest::kLsb / (stoptest::kF * stoptest::kF)); }
-
-// The core with a planned move loaded (not started), RTL and model in lockstep.
-struct LoadedCore {
-  RtlCore rtl;
-  AxisCore model;
-  LockstepChecker chk;
-  CoreInputs in;
-  uint64_t clock = 0;
-  Plan plan;
-  explicit LoadedCore(int64_t distance) {
-    rtl.reset();
-    MoveRequest req;
-    req.distance = distance;
-    req.v_cruise = 40000;
-    req.a_max = 4e6;
-    req.j_max = 4e9;
-    plan = std::get<Plan>(plan_move(req, PulseTiming{}));
-    in.enable = true;
-    in.cfg = PulseTiming{};
-    in.pos_frac0 = plan.pos_frac0;
-    in.stop_jerk = jerk_lsb(4e9);
-    in.stop_acc = acc_lsb(4e6);
-    for (const Row& r : move_rows(plan.segments)) {
-      CoreInputs w = in;
-      w.row_push = true;
-      w.row = r;
-      tick(w);
-    }
-  }
-  void tick(const CoreInputs& ci) {
-    rtl.step(ci);
-    model.step(ci);
-    chk.compare(clock++, rtl.outputs(), model.outputs());
-  }
-  void tick() { tick(in); }
-  CoreOutputs out() const { return rtl.outputs(); }
-  void start() {
-    CoreInputs s = in;
-    s.start = true;
-    tick(s);
-    tick();
-  }
-};
+using stoptest::acc_lsb;
+using stoptest::jerk_lsb;
+using stoptest::LoadedCore;
 
 std::string fmt_case(int dir, bool hard, bool same_side) {
   return std::string(dir > 0 ? "forward" : "backward") + (hard ? ", hard limit" : ", controlled limit") +
