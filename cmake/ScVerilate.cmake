@@ -18,6 +18,9 @@ set(SC_RTL_LIVE_TOPS "" CACHE STRING "mutation testing: the tops Verilated from 
 # Mutation testing: the Verilated code's optimisation level (empty: -O3);
 # a mutant's build is dominated by compiling its top.
 set(SC_VERILATE_OPT "" CACHE STRING "mutation testing: the Verilated code's -O level instead of -O3")
+# A mutant that leaves a signal unread (a stuck right side, a dropped term)
+# is still a wrong design for the tests to find, not a build error.
+option(SC_VERILATE_WARN_NOT_FATAL "mutation testing: Verilator -Wall warnings do not stop the build" OFF)
 
 set(SC_RTL_DIR ${PROJECT_SOURCE_DIR}/rtl)
 set(SC_RTL_DEPS ${PROJECT_SOURCE_DIR}/scripts/rtl_deps.py)
@@ -81,6 +84,10 @@ function(sc_verilate target)
   if(A_SYSTEMC)
     list(APPEND flags SYSTEMC)
   endif()
+  set(warn_args)
+  if(SC_VERILATE_WARN_NOT_FATAL)
+    set(warn_args -Wno-fatal)
+  endif()
   set(cover_args)
   if(SC_COVERAGE)
     # The kinds of SC_COVERAGE_KINDS (line, toggle, user); SC_COVER enables
@@ -103,7 +110,7 @@ function(sc_verilate target)
     SOURCES ${files}
     TOP_MODULE ${A_TOP}
     PREFIX ${A_PREFIX}
-    VERILATOR_ARGS -Wall ${SC_VERILATOR_WAIVER} --x-assign fast --x-initial fast ${cover_args}
+    VERILATOR_ARGS -Wall ${SC_VERILATOR_WAIVER} --x-assign fast --x-initial fast ${warn_args} ${cover_args}
     OPT_FAST ${fast}
     OPT_SLOW ${slow}
     OPT_GLOBAL ${A_OPT})

@@ -237,7 +237,7 @@ class Workspace:
         cache = self.build / "CMakeCache.txt"
         want = ";".join(live_tops)
         if cache.exists() and f"SC_RTL_LIVE_TOPS:STRING={want}\n" in cache.read_text() and \
-                (self.build / "build.ninja").exists():
+                "SC_VERILATE_WARN_NOT_FATAL:BOOL=ON\n" in cache.read_text() and (self.build / "build.ninja").exists():
             self.live_tops = live_tops
             return
         log(f"configuring {self.build} (tops rebuilt per mutant: {', '.join(live_tops)})")
@@ -245,7 +245,8 @@ class Workspace:
                # no LTO and -O1 Verilated code: a mutant's build is mostly its top's compile
                "-DCMAKE_BUILD_TYPE=RelWithDebInfo", "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O2",
                "-DSCURVE_PYTHON=OFF", f"-DSC_RTL_FROZEN_DIR={self.frozen}", f"-DSC_RTL_LIVE_TOPS={want}",
-               "-DSC_VERILATE_OPT=-O1"]
+               # a mutant that leaves a signal unread is a mutant, not a lint error
+               "-DSC_VERILATE_OPT=-O1", "-DSC_VERILATE_WARN_NOT_FATAL=ON"]
         if shutil.which("ccache"):
             cmd.append("-DCMAKE_CXX_COMPILER_LAUNCHER=ccache")
         r = subprocess.run(cmd, capture_output=True, text=True)
