@@ -186,6 +186,13 @@ module sc_step_gen (
   logic                      f_last_fwd_q;  // direction of the last request
   logic [FW-1:0]             f_gap_min, f_lo_wait, f_setup_wait, f_flip_wait, f_rem;
 
+  // Drain: an owed step is taken within f_take_max clocks of the last rising
+  // edge or request. With no request, the at most 8 owed steps are all taken
+  // and STEP is low within 8 x f_take_max + cfg_high clocks (with
+  // sc_axis_core's p_abort_2: the e-stop's bound).
+  logic [FW-1:0]             f_event_q;     // clocks since the last rise or request (saturating)
+  logic [FW-1:0]             f_take_max;
+
   assign f_rise    = step_q && !f_step_prev_q;
   assign f_fall    = !step_q && f_step_prev_q;
   assign f_dir_chg = dir_q != f_dir_prev_q;
@@ -240,6 +247,14 @@ module sc_step_gen (
   end
 
   always_ff @(posedge clk_i) begin
+    if (!rst_ni || step_req_i || rise) begin
+      f_event_q <= FW'(1);
+    end else if (f_event_q != '1) begin
+      f_event_q <= f_event_q + FW'(1);
+    end
+  end
+
+  always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
       f_gap_q      <= '1;
       f_last_fwd_q <= 1'b1;
@@ -268,6 +283,9 @@ module sc_step_gen (
     f_flip_wait  = f_max(step_q ? FW'(high_left_q) : '0, f_sub0(FW'(cfg_hold_i), FW'(since_rise_q))) +
                    f_max(FW'(cfg_setup_i), FW'(1));
     f_rem        = (pend_q == '0 || !dir_ok) ? f_max(f_flip_wait, f_lo_wait) : f_max(f_lo_wait, f_setup_wait);
+    // the worst f_rem (DIR to turn: high or hold, then setup; or high, then low), and one clock
+    f_take_max   = f_max(FW'(cfg_high_i), FW'(cfg_hold_i)) + f_max(FW'(cfg_setup_i), FW'(1)) +
+                   FW'(cfg_high_i) + FW'(cfg_low_i);
   end
 
   // expected queue and count after this clock, from the pins of the last one
@@ -310,6 +328,11 @@ module sc_step_gen (
                              pending_o == (f_last_fwd_q ? PendW'(1) : {PendW{1'b1}}));
       inv_queue_deadline: assert (pending_o == '0 ||
                                   (FW+1)'(f_gap_q) + (FW+1)'(f_rem) <= (FW+1)'(f_gap_min));
+      // -- group drain: an owed step is taken within f_take_max clocks of the
+      // last rise or request; why: the clocks still needed fall by one per clock
+      p_take_within: assert (pending_o == '0 || f_event_q <= f_take_max);
+      inv_take_deadline: assert (pending_o == '0 ||
+                                 (FW+1)'(f_event_q) + (FW+1)'(f_rem) <= (FW+1)'(f_take_max));
       // -- helper invariants (internal counters against the pin shadows)
       inv_high: assert (step_q ? (f_hi_q < FHiW'(cfg_high_i) && high_left_q != '0 &&
                                   FHiW'(high_left_q) == FHiW'(cfg_high_i) - f_hi_q)

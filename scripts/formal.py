@@ -107,6 +107,16 @@ GROUPS = [
                   "no room for a forward step in the queue"),
         broken_depth=12),
     Group(
+        name="step_gen_drain", module="sc_step_gen",
+        what="an owed step is taken within max(high,hold)+max(setup,1)+high+low clocks of the last rising edge "
+             "or request (with core_abort: the e-stop's bound)",
+        asserts=["p_take_within", "inv_take_deadline"] + STEP_INV,
+        induction=2, depth=2,
+        mutation=("(have_steps ? !dir_ok : (dir_hint_valid_i && dir_hint_i != dir_q));",
+                  "(have_steps ? 1'b0 : (dir_hint_valid_i && dir_hint_i != dir_q));",
+                  "DIR never turns toward an owed step"),
+        broken_depth=12),
+    Group(
         name="quad_decoder_count", module="sc_quad_decoder", files=["sc_sync.sv"],
         what="the count moves by at most one per clock: +1/-1 for a forward/backward Gray step "
              "of the filtered A/B, else not",

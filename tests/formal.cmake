@@ -12,7 +12,7 @@ set(SC_FORMAL_FAST
   uart_bridge_frames uart_bridge_crc uart_bridge_crc8
   exec_steps exec_abort exec_continuity stop_gen_limits)
 set(SC_FORMAL_SLOW
-  step_gen_overrun
+  step_gen_overrun step_gen_drain
   axi_regs_handshake axi_regs_response axi_regs_decode axi_regs_decode_axis
   core_done core_abort core_limits core_rate)
 
