@@ -5,6 +5,7 @@ floors.
 
   scripts/coverage.py [--build-dir build-cov] [--jobs N] [--skip-build] [--skip-run]
                       [--kinds line,user,toggle] [--json FILE] [--html DIR] [--tests REGEX]
+                      [--profile full|ci] [--per-test] [--minimize FILE]
 
 Two coverage builds, because toggle points make a simulation about 20 times
 slower and line and user points barely:
@@ -22,15 +23,26 @@ slower and line and user points barely:
    scripts/coverage_exclusions.json (each with its reason), and checks the
    floors of the kinds measured: 95 % line, 90 % toggle, every cover point
    hit.
+
+--profile ci (the CI stage) instead builds once with all three kinds and runs
+only the tests of scripts/coverage_ci.json: a subset of the default
+regression chosen (--minimize) to hit every point its candidates hit. A
+subset's coverage is a lower bound of the whole regression's, so floors that
+hold on it hold on the regression. --per-test runs each test with its own
+counters (and times it); --minimize FILE then picks, greedily by new points
+per second, tests until they hit everything the candidates hit together, and
+writes them to FILE.
 """
 import argparse
 import json
 import os
 import re
+import shutil
 import subprocess
 import sys
 import time
 from collections import defaultdict
+from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -68,6 +80,41 @@ PHASES = [
     ("toggle", "toggle", "toggle", ("toggle",), ["-R", TOGGLE_TESTS],
      ["core_tests", "stop_tests", "cl_tests", "board_tests"]),
 ]
+
+
+# The CI profile: one build with every kind, the selection of CI_SELECTION.
+# Its candidates (for --minimize): the toggle runs and the short lockstep
+# streams, stops and directed tests that reach the executor's stream paths.
+CI_SELECTION = ROOT / "scripts" / "coverage_ci.json"
+CI_CANDIDATES = TOGGLE_TESTS + "|" + "|".join([
+    r"core\.Stream(Lockstep|Run)\.",
+    r"core\.MutationGaps\.",
+    r"core\.Lockstep\.(StopAtRandomTimes|RandomRawTables)",
+    r"closed_loop\.(ClosedLoopStop|ClosedLoopPins|ServoAxisPins)\.",
+    r"board\.(HomeLatch|SoftLimit|RegisterFuzz)\.",
+])
+
+
+def ci_phase(per_test):
+    """The CI profile's one phase: the committed selection, or with
+    --per-test (to choose it) every candidate."""
+    if per_test:
+        return ("ci", "ci", "line;user;toggle", ("line", "user", "toggle"), ["-R", CI_CANDIDATES],
+                ["core_tests", "stop_tests", "stream_tests", "cl_tests", "board_tests"])
+    try:
+        sel = json.loads(CI_SELECTION.read_text(encoding="utf-8"))
+        tests, targets = sel["tests"], sel["targets"]
+    except (OSError, ValueError, KeyError) as e:
+        fail(f"{CI_SELECTION}: {e}")
+    if not tests:
+        fail(f"{CI_SELECTION}: 'tests' is empty")
+    return ("ci", "ci", "line;user;toggle", ("line", "user", "toggle"),
+            ["-R", "^(" + "|".join(ctest_escape(t) for t in tests) + ")$"], targets)
+
+
+def ctest_escape(name):
+    """A test name as a literal in ctest's (CMake's) regular expressions."""
+    return re.sub(r"([.\[\]()*+?^$|\\])", r"\\\1", name)
 
 
 def fail(msg, code=2):
@@ -149,23 +196,32 @@ def instance_free(points):
     return merged
 
 
+def classify(ident, rules):
+    """(kind, module, what, where, rule) of an instance-free point; kind None
+    for a point that is no line, toggle or user point."""
+    f = dict(ident)
+    page = f.get("page", "")
+    kind = page.split("/")[0].removeprefix("v_")
+    if kind == "branch":
+        kind = "line"   # Verilator 5.006 writes an if's arms as 'v_branch' points: they are lines
+    if kind not in FLOORS:
+        return None, None, None, None, None
+    module = page.split("/", 1)[1] if "/" in page else "?"
+    what = f.get("gen") or f.get("o", "")
+    where = f"{f.get('f', '?')}:{f.get('l', '?')}"
+    rule = next((r for r in rules if r["type"] == kind and r["module_re"].fullmatch(module)
+                 and r["point_re"].search(what)), None)
+    return kind, module, what, where, rule
+
+
 def summarize(points, rules):
     """{type: {module: [hit, total]}} after exclusions; the misses by type."""
     table = defaultdict(lambda: defaultdict(lambda: [0, 0]))
     misses = defaultdict(list)
     for ident, count in instance_free(points).items():
-        f = dict(ident)
-        page = f.get("page", "")
-        kind = page.split("/")[0].removeprefix("v_")
-        if kind == "branch":
-            kind = "line"   # Verilator 5.006 writes an if's arms as 'v_branch' points: they are lines
-        if kind not in FLOORS:
+        kind, module, what, where, rule = classify(ident, rules)
+        if kind is None:
             continue
-        module = page.split("/", 1)[1] if "/" in page else "?"
-        what = f.get("gen") or f.get("o", "")
-        where = f"{f.get('f', '?')}:{f.get('l', '?')}"
-        rule = next((r for r in rules if r["type"] == kind and r["module_re"].fullmatch(module)
-                     and r["point_re"].search(what)), None)
         if rule:
             rule["matched"] += 1
             continue
@@ -176,6 +232,99 @@ def summarize(points, rules):
         else:
             misses[kind].append(f"{module} {where} {what}")
     return table, misses
+
+
+def hit_points(dat_files, rules):
+    """The counted (not excluded) points that these counter files hit."""
+    points = {}
+    for path in dat_files:
+        for key, count in read_points(path).items():
+            points[key] = points.get(key, 0) + count
+    hits = set()
+    for ident, count in instance_free(points).items():
+        if count > 0:
+            kind, _, _, _, rule = classify(ident, rules)
+            if kind is not None and rule is None:
+                hits.add(ident)
+    return hits
+
+
+def list_tests(build, selection):
+    """{name: binary} of the tests ctest selects (ctest --show-only=json-v1)."""
+    r = subprocess.run(["ctest", "--test-dir", str(build), "--show-only=json-v1", *selection],
+                       capture_output=True, text=True)
+    if r.returncode:
+        fail(f"ctest --show-only in {build} failed: {r.stderr.strip()}")
+    return {t["name"]: Path(t["command"][0]).name for t in json.loads(r.stdout)["tests"]}
+
+
+def run_per_test(build, raw, selection, jobs):
+    """Each selected test alone, with its own counter directory; their times."""
+    tests = list_tests(build, selection)
+    if not tests:
+        fail(f"the selection {selection} names no test in {build}")
+    times = {}
+    failed = []
+
+    def one(item):
+        i, name = item
+        out = raw / f"t{i:04d}"
+        out.mkdir(parents=True, exist_ok=True)
+        t = time.monotonic()
+        r = subprocess.run(["ctest", "--test-dir", str(build), "--output-on-failure", "-R", f"^{ctest_escape(name)}$"],
+                           env=dict(os.environ, SC_COVERAGE_DIR=str(out)), capture_output=True, text=True)
+        return name, out.name, time.monotonic() - t, r
+
+    with ThreadPoolExecutor(max_workers=jobs) as pool:
+        for n, (name, sub, seconds, r) in enumerate(pool.map(one, enumerate(sorted(tests))), 1):
+            ok = r.returncode == 0 and "No tests were found" not in r.stdout
+            print(f"[{n}/{len(tests)}] {'ok  ' if ok else 'FAIL'} {seconds:7.1f} s  {name}", flush=True)
+            if not ok:
+                failed.append(name)
+                print(r.stdout[-3000:], flush=True)
+            times[name] = {"dir": sub, "seconds": round(seconds, 2), "binary": tests[name]}
+    (raw / "tests.json").write_text(json.dumps(times, indent=1) + "\n", encoding="utf-8")
+    if failed:
+        fail(f"{len(failed)} tests failed under coverage: {', '.join(failed[:5])}: fix that first")
+
+
+def minimize(raw, rules, out):
+    """Greedy set cover: tests by most new points per second until they hit
+    every point the candidates hit together; then each pick that the others
+    make redundant is dropped again. Writes the selection to `out`."""
+    try:
+        times = json.loads((raw / "tests.json").read_text(encoding="utf-8"))
+    except (OSError, ValueError) as e:
+        fail(f"--minimize needs the --per-test counters of {raw}: {e}")
+    hits = {name: hit_points(sorted((raw / t["dir"]).glob("*.dat")), rules) for name, t in times.items()}
+    universe = set().union(*hits.values())
+    chosen, covered = [], set()
+    while covered != universe:
+        name = max((n for n in hits if n not in chosen),
+                   key=lambda n: (len(hits[n] - covered) / max(times[n]["seconds"], 0.5), n))
+        chosen.append(name)
+        covered |= hits[name]
+    for name in reversed(list(chosen)):
+        rest = set().union(*(hits[n] for n in chosen if n != name))
+        if rest == universe:
+            chosen.remove(name)
+    kinds = defaultdict(int)
+    for ident in universe:
+        kinds[classify(ident, rules)[0]] += 1
+    selection = {
+        "about": "The CI coverage selection (scripts/coverage.py --profile ci): tests of the default regression "
+                 "chosen by scripts/coverage.py --profile ci --per-test --minimize to hit every point their "
+                 "candidates hit. Regenerate it when the RTL or the tests change and the CI floors fail.",
+        "tests": sorted(chosen),
+        "targets": sorted({times[n]["binary"] for n in chosen}),
+        "points_hit": dict(sorted(kinds.items())),
+        "candidates": len(times),
+        "seconds_candidates": round(sum(t["seconds"] for t in times.values()), 1),
+        "seconds_selected": round(sum(times[n]["seconds"] for n in chosen), 1),
+    }
+    out.write_text(json.dumps(selection, indent=2) + "\n", encoding="utf-8")
+    print(f"minimize: {len(chosen)} of {len(times)} tests hit all {len(universe)} points the candidates hit "
+          f"({selection['seconds_selected']} s of {selection['seconds_candidates']} s): {out}")
 
 
 def pct(hit, total):
@@ -195,6 +344,13 @@ def main():
     ap.add_argument("--exclusions", type=Path, default=ROOT / "scripts" / "coverage_exclusions.json")
     ap.add_argument("--json", type=Path, help="write the summary as JSON")
     ap.add_argument("--html", type=Path, help="HTML report directory (default BUILD/html)")
+    ap.add_argument("--profile", choices=("full", "ci"), default="full",
+                    help="full: the two builds over the default regression; ci: one build, the tests of "
+                         "scripts/coverage_ci.json")
+    ap.add_argument("--per-test", action="store_true",
+                    help="run each test alone with its own counters and time it (to --minimize)")
+    ap.add_argument("--minimize", type=Path, metavar="FILE",
+                    help="after a --per-test run, write the smallest quick selection that hits every point")
     args = ap.parse_args()
     if args.jobs < 1 or args.jobs > 256:
         fail(f"--jobs={args.jobs}: must be from 1 to 256")
@@ -204,6 +360,10 @@ def main():
             fail(f"--kinds={args.kinds}: '{k}' is not one of {', '.join(FLOORS)}")
     if not kinds:
         fail(f"--kinds={args.kinds!r}: names no kind")
+    if args.minimize and not args.per_test:
+        fail(f"--minimize={args.minimize}: needs --per-test (the counters of each test)")
+    if args.per_test and args.tests:
+        fail(f"--tests={args.tests}: not with --per-test, whose candidates are the phase's selection")
     rules = load_exclusions(args.exclusions)
     prefix = args.build_dir.resolve()
     report = prefix.parent / (prefix.name + "-report")
@@ -211,7 +371,8 @@ def main():
     t0 = time.monotonic()
 
     parts = []
-    for name, suffix, cmake_kinds, measures, selection, targets in PHASES:
+    phases = [ci_phase(args.per_test)] if args.profile == "ci" else PHASES
+    for name, suffix, cmake_kinds, measures, selection, targets in phases:
         if not set(measures) & set(kinds):
             continue
         build = prefix.parent / f"{prefix.name}-{suffix}"
@@ -225,15 +386,22 @@ def main():
                 fail(f"coverage build {build} failed")
         if not args.skip_run:
             print(f"== {name}: run", flush=True)
-            raw.mkdir(parents=True, exist_ok=True)
-            for old in raw.glob("*.dat"):
-                old.unlink()
+            if raw.exists():
+                shutil.rmtree(raw)
+            raw.mkdir(parents=True)
             sel = ["-R", args.tests] if args.tests else selection
-            env = dict(os.environ, SC_COVERAGE_DIR=str(raw))
-            rc = run(["ctest", "--test-dir", build, "-j", args.jobs, "--output-on-failure", *sel], env=env)
-            if rc:
-                fail(f"the regression failed under {name} coverage (ctest exit {rc}): fix that first")
-        found = sorted(raw.glob("*.dat"))
+            if args.per_test:
+                run_per_test(build, raw, sel, args.jobs)
+            else:
+                if not list_tests(build, sel):
+                    fail(f"the selection {sel} names no test in {build}")
+                env = dict(os.environ, SC_COVERAGE_DIR=str(raw))
+                rc = run(["ctest", "--test-dir", build, "-j", args.jobs, "--output-on-failure", *sel], env=env)
+                if rc:
+                    fail(f"the regression failed under {name} coverage (ctest exit {rc}): fix that first")
+        if args.minimize:
+            minimize(raw, rules, args.minimize)
+        found = sorted(raw.rglob("*.dat"))
         if not found:
             fail(f"no coverage counters in {raw}: run without --skip-run first")
         parts += found

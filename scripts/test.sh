@@ -2,7 +2,9 @@
 # The test command: install what is missing, build, run the default ctest
 # suite (every area except the nightly-size `long` campaigns). Writes
 # build/test-results.xml (JUnit). With SC_SANITIZE=1 (CI) it then runs the
-# `extended` tests of build/ (build/test-results-extended.xml), builds the
+# `extended` tests of build/ (build/test-results-extended.xml), the RTL
+# coverage floors on the CI selection (label coverage_ci: build/cov-ci/,
+# build/coverage-ci.json, build/test-results-coverage.xml), builds the
 # sanitizer configuration (build-san/: clang, ASan + UBSan; the Verilated
 # RTL compiled uninstrumented) and runs its suite: the unit tests, the tool
 # tests, the fuzz corpora and a 10 s fuzz run per harness
@@ -20,6 +22,7 @@ rc=0
 ctest --output-on-failure -j"$(nproc)" --output-junit test-results.xml -LE '^(long|extended)$' || rc=$?
 if [ "${SC_SANITIZE:-0}" = "1" ]; then
   ctest --output-on-failure -j"$(nproc)" --output-junit test-results-extended.xml -L '^extended$' || rc=$?
+  ctest --output-on-failure --output-junit test-results-coverage.xml -L '^coverage_ci$' || rc=$?
   "$here/scripts/build.sh" --sanitize
   cd "$here/build-san"
   # Stop at the first report; leaks count (LeakSanitizer).
