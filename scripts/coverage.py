@@ -26,15 +26,16 @@ slower and line and user points barely:
 
 --profile ci (the CI stage) instead builds once with all three kinds and runs
 only the tests of scripts/coverage_ci.json: a subset of the default
-regression chosen (--minimize) to hit every point its candidates hit. A
-subset's coverage is a lower bound of the whole regression's, so floors that
-hold on it hold on the regression. --per-test runs each test with its own
-counters (and times it); --minimize FILE then picks, greedily by new points
-per second, tests until they hit everything the candidates hit together, and
-writes them to FILE.
+regression. A subset's coverage is a lower bound of the whole regression's,
+so floors that hold on it hold on the regression. --per-test runs each
+candidate with its own counters (and times it); --minimize FILE then picks,
+greedily by new points per second, tests until they hit every cover point
+the candidates hit and line and toggle coverage --margin points above the
+floors, and writes them to FILE.
 """
 import argparse
 import json
+import math
 import os
 import re
 import shutil
@@ -250,12 +251,13 @@ def hit_points(dat_files, rules):
 
 
 def list_tests(build, selection):
-    """{name: binary} of the tests ctest selects (ctest --show-only=json-v1)."""
+    """{name: binary} of the tests ctest selects (ctest --show-only=json-v1;
+    a test whose binary is not built has no command: binary '')."""
     r = subprocess.run(["ctest", "--test-dir", str(build), "--show-only=json-v1", *selection],
                        capture_output=True, text=True)
     if r.returncode:
         fail(f"ctest --show-only in {build} failed: {r.stderr.strip()}")
-    return {t["name"]: Path(t["command"][0]).name for t in json.loads(r.stdout)["tests"]}
+    return {t["name"]: Path((t.get("command") or [""])[0]).name for t in json.loads(r.stdout)["tests"]}
 
 
 def run_per_test(build, raw, selection, jobs):
@@ -288,43 +290,74 @@ def run_per_test(build, raw, selection, jobs):
         fail(f"{len(failed)} tests failed under coverage: {', '.join(failed[:5])}: fix that first")
 
 
-def minimize(raw, rules, out):
-    """Greedy set cover: tests by most new points per second until they hit
-    every point the candidates hit together; then each pick that the others
-    make redundant is dropped again. Writes the selection to `out`."""
+def minimize(raw, rules, out, margin):
+    """Greedy selection: while a target is unmet, the test with the most
+    new points toward the unmet targets per second. The targets: every
+    cover point the candidates hit, and line and toggle coverage `margin`
+    percentage points above their floors (or all the candidates hit, if
+    less). A pick the later ones make redundant is dropped again. Writes the
+    selection to `out`."""
     try:
         times = json.loads((raw / "tests.json").read_text(encoding="utf-8"))
     except (OSError, ValueError) as e:
         fail(f"--minimize needs the --per-test counters of {raw}: {e}")
     hits = {name: hit_points(sorted((raw / t["dir"]).glob("*.dat")), rules) for name, t in times.items()}
-    universe = set().union(*hits.values())
+    points = {}
+    for t in times.values():
+        for path in (raw / t["dir"]).glob("*.dat"):
+            for key, count in read_points(path).items():
+                points[key] = points.get(key, 0) + count
+    table, _ = summarize(points, rules)
+    totals = {k: sum(c[1] for c in table[k].values()) for k in FLOORS}
+    kind_of = {}
+    for ident in set().union(*hits.values()):
+        kind_of[ident] = classify(ident, rules)[0]
+    reach = {k: sum(1 for i in kind_of if kind_of[i] == k) for k in FLOORS}
+    need = {k: min(reach[k], math.ceil(totals[k] * min(FLOORS[k] + margin, 100.0) / 100.0)) for k in FLOORS}
+    need["user"] = reach["user"]
+
+    def count(covered):
+        c = defaultdict(int)
+        for i in covered:
+            c[kind_of[i]] += 1
+        return c
+
+    def met(covered):
+        c = count(covered)
+        return all(c[k] >= need[k] for k in FLOORS)
+
     chosen, covered = [], set()
-    while covered != universe:
+    while not met(covered):
+        have = count(covered)
+        open_kinds = {k for k in FLOORS if have[k] < need[k]}
         name = max((n for n in hits if n not in chosen),
-                   key=lambda n: (len(hits[n] - covered) / max(times[n]["seconds"], 0.5), n))
+                   key=lambda n: (sum(1 for i in hits[n] - covered if kind_of[i] in open_kinds)
+                                  / max(times[n]["seconds"], 0.5), n))
         chosen.append(name)
         covered |= hits[name]
-    for name in reversed(list(chosen)):
+    for name in sorted(chosen, key=lambda n: -times[n]["seconds"]):
         rest = set().union(*(hits[n] for n in chosen if n != name))
-        if rest == universe:
+        if met(rest):
             chosen.remove(name)
-    kinds = defaultdict(int)
-    for ident in universe:
-        kinds[classify(ident, rules)[0]] += 1
+    got = count(set().union(*(hits[n] for n in chosen)))
     selection = {
         "about": "The CI coverage selection (scripts/coverage.py --profile ci): tests of the default regression "
-                 "chosen by scripts/coverage.py --profile ci --per-test --minimize to hit every point their "
-                 "candidates hit. Regenerate it when the RTL or the tests change and the CI floors fail.",
+                 "chosen by scripts/coverage.py --profile ci --per-test --minimize FILE. Regenerate it when the "
+                 "RTL or the tests change and the CI floors fail.",
         "tests": sorted(chosen),
         "targets": sorted({times[n]["binary"] for n in chosen}),
-        "points_hit": dict(sorted(kinds.items())),
+        "margin_points": margin,
+        "percent": {k: round(pct(got[k], totals[k]), 2) for k in FLOORS},
+        "candidates_percent": {k: round(pct(reach[k], totals[k]), 2) for k in FLOORS},
         "candidates": len(times),
         "seconds_candidates": round(sum(t["seconds"] for t in times.values()), 1),
         "seconds_selected": round(sum(times[n]["seconds"] for n in chosen), 1),
     }
     out.write_text(json.dumps(selection, indent=2) + "\n", encoding="utf-8")
-    print(f"minimize: {len(chosen)} of {len(times)} tests hit all {len(universe)} points the candidates hit "
-          f"({selection['seconds_selected']} s of {selection['seconds_candidates']} s): {out}")
+    print(f"minimize: {len(chosen)} of {len(times)} tests, {selection['seconds_selected']} s of "
+          f"{selection['seconds_candidates']} s: " +
+          ", ".join(f"{k} {selection['percent'][k]} % (candidates {selection['candidates_percent'][k]} %)"
+                    for k in FLOORS) + f": {out}")
 
 
 def pct(hit, total):
@@ -350,7 +383,9 @@ def main():
     ap.add_argument("--per-test", action="store_true",
                     help="run each test alone with its own counters and time it (to --minimize)")
     ap.add_argument("--minimize", type=Path, metavar="FILE",
-                    help="after a --per-test run, write the smallest quick selection that hits every point")
+                    help="after a --per-test run, write a quick selection that holds the floors with --margin")
+    ap.add_argument("--margin", type=float, default=1.0,
+                    help="percentage points above the line and toggle floors the selection keeps (default 1)")
     args = ap.parse_args()
     if args.jobs < 1 or args.jobs > 256:
         fail(f"--jobs={args.jobs}: must be from 1 to 256")
@@ -400,7 +435,7 @@ def main():
                 if rc:
                     fail(f"the regression failed under {name} coverage (ctest exit {rc}): fix that first")
         if args.minimize:
-            minimize(raw, rules, args.minimize)
+            minimize(raw, rules, args.minimize, args.margin)
         found = sorted(raw.rglob("*.dat"))
         if not found:
             fail(f"no coverage counters in {raw}: run without --skip-run first")

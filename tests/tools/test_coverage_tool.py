@@ -28,10 +28,10 @@ def point(page, line, obj=""):
     return "".join(f"\x01{k}\x02{v}" for k, v in fields.items())
 
 
-def write_dat(path, hits):
-    """A counter file over six line points and one toggle point; `hits` are
-    the indices of the lines hit (6: the toggle point)."""
-    keys = [point("v_line/sc_x", i) for i in range(6)] + [point("v_toggle/sc_x", 9, "cnt_q[31]")]
+def write_dat(path, hits, lines=6):
+    """A counter file over `lines` line points and one toggle point; `hits`
+    are the indices of the points hit (`lines`: the toggle point)."""
+    keys = [point("v_line/sc_x", i) for i in range(lines)] + [point("v_toggle/sc_x", 999, "cnt_q[31]")]
     path.parent.mkdir(parents=True, exist_ok=True)
     path.write_text("# SystemC::Coverage-3\n" + "".join(f"C '{k}' {1 if i in hits else 0}\n"
                                                        for i, k in enumerate(keys)), encoding="utf-8")
@@ -48,28 +48,29 @@ class Escape(unittest.TestCase):
 
 
 class Minimize(unittest.TestCase):
-    def run_minimize(self, per_test, seconds, exclusions=None):
+    def run_minimize(self, per_test, seconds, exclusions=None, lines=6, margin=1.0):
         tmp = Path(tempfile.mkdtemp())
         raw = tmp / "raw"
         times = {}
         for i, (name, hits) in enumerate(per_test.items()):
-            write_dat(raw / f"t{i}" / "p.dat", hits)
+            write_dat(raw / f"t{i}" / "p.dat", hits, lines)
             times[name] = {"dir": f"t{i}", "seconds": seconds[name], "binary": f"{name.split('.')[0]}_tests"}
         (raw / "tests.json").write_text(json.dumps(times), encoding="utf-8")
         rules_file = tmp / "excl.json"
         rules_file.write_text(json.dumps({"exclusions": exclusions or []}), encoding="utf-8")
         out = tmp / "sel.json"
-        cov.minimize(raw, cov.load_exclusions(rules_file), out)
+        cov.minimize(raw, cov.load_exclusions(rules_file), out, margin)
         return json.loads(out.read_text(encoding="utf-8"))
 
-    def test_every_point_the_candidates_hit_is_hit_by_the_selection(self):
+    def test_with_few_points_every_point_the_candidates_hit_is_hit(self):
         per_test = {"a.slow_all": {0, 1, 2, 3, 4}, "b.quick_low": {0, 1, 2}, "c.quick_high": {3, 4, 6},
                     "d.nothing_new": {1}}
         sel = self.run_minimize(per_test, {"a.slow_all": 100, "b.quick_low": 1, "c.quick_high": 1,
                                            "d.nothing_new": 0.1})
         self.assertEqual(sel["tests"], ["b.quick_low", "c.quick_high"])
         self.assertEqual(sel["targets"], ["b_tests", "c_tests"])
-        self.assertEqual(sel["points_hit"], {"line": 5, "toggle": 1})
+        self.assertEqual(sel["percent"], {"line": 83.33, "toggle": 100.0, "user": 100.0})
+        self.assertEqual(sel["candidates_percent"], sel["percent"])
 
     def test_a_pick_made_redundant_by_later_picks_is_dropped(self):
         # Greedy first takes the cheap middle test, which the two others then cover.
@@ -82,6 +83,17 @@ class Minimize(unittest.TestCase):
         excl = [{"type": "toggle", "module": ".*", "point": r"cnt_q\[31\]", "reason": "test"}]
         sel = self.run_minimize(per_test, {"a.lines": 1, "b.toggle_only": 1}, excl)
         self.assertEqual(sel["tests"], ["a.lines"])
+
+
+    def test_the_margin_above_the_floor_decides_whether_a_slow_last_point_is_taken(self):
+        # 40 lines: 39 (97.5 %) in one second, the 40th only in a slow test.
+        per_test = {"a.most": set(range(39)), "b.last_line": {39}}
+        seconds = {"a.most": 1, "b.last_line": 100}
+        sel = self.run_minimize(per_test, seconds, lines=40, margin=1.0)   # needs 96 %: 39 lines
+        self.assertEqual(sel["tests"], ["a.most"])
+        self.assertEqual(sel["percent"]["line"], 97.5)
+        sel = self.run_minimize(per_test, seconds, lines=40, margin=5.0)   # needs 100 %
+        self.assertEqual(sel["tests"], ["a.most", "b.last_line"])
 
 
 class Arguments(unittest.TestCase):
