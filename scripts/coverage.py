@@ -398,6 +398,10 @@ def main():
         fail(f"--kinds={args.kinds!r}: names no kind")
     if args.minimize and not args.per_test:
         fail(f"--minimize={args.minimize}: needs --per-test (the counters of each test)")
+    if args.minimize and args.profile != "ci":
+        fail(f"--minimize={args.minimize}: chooses the CI selection: needs --profile ci")
+    if not 0.0 <= args.margin <= 10.0:
+        fail(f"--margin={args.margin}: must be from 0 to 10 percentage points")
     if args.per_test and args.tests:
         fail(f"--tests={args.tests}: not with --per-test, whose candidates are the phase's selection")
     rules = load_exclusions(args.exclusions)

@@ -106,6 +106,11 @@ class Arguments(unittest.TestCase):
     def test_minimize_without_per_test_is_refused(self):
         self.assertIn("--minimize=x.json: needs --per-test", self.refused("--minimize", "x.json"))
 
+    def test_minimize_outside_the_ci_profile_and_a_bad_margin_are_refused(self):
+        self.assertIn("needs --profile ci", self.refused("--per-test", "--minimize", "x.json"))
+        self.assertIn("--margin=11.0: must be from 0 to 10", self.refused("--margin", "11"))
+        self.assertIn("--margin=nan: must be from 0 to 10", self.refused("--margin", "nan"))
+
     def test_bad_jobs_and_kinds_are_refused_naming_the_value(self):
         self.assertIn("--jobs=0: must be from 1 to 256", self.refused("--jobs", "0"))
         self.assertIn("'branch' is not one of", self.refused("--kinds", "line,branch"))
