@@ -236,12 +236,17 @@ def summarize(points, rules):
     return table, misses
 
 
-def hit_points(dat_files, rules):
-    """The counted (not excluded) points that these counter files hit."""
+def read_all(dat_files):
+    """The counters of these files added up."""
     points = {}
     for path in dat_files:
         for key, count in read_points(path).items():
             points[key] = points.get(key, 0) + count
+    return points
+
+
+def hit_points(points, rules):
+    """The counted (not excluded) points that these counters hit."""
     hits = set()
     for ident, count in instance_free(points).items():
         if count > 0:
@@ -302,12 +307,12 @@ def minimize(raw, rules, out, margin):
         times = json.loads((raw / "tests.json").read_text(encoding="utf-8"))
     except (OSError, ValueError) as e:
         fail(f"--minimize needs the --per-test counters of {raw}: {e}")
-    hits = {name: hit_points(sorted((raw / t["dir"]).glob("*.dat")), rules) for name, t in times.items()}
-    points = {}
-    for t in times.values():
-        for path in (raw / t["dir"]).glob("*.dat"):
-            for key, count in read_points(path).items():
-                points[key] = points.get(key, 0) + count
+    points, hits = {}, {}
+    for name, t in times.items():
+        own = read_all(sorted((raw / t["dir"]).glob("*.dat")))
+        hits[name] = hit_points(own, rules)
+        for key, count in own.items():
+            points[key] = points.get(key, 0) + count
     table, _ = summarize(points, rules)
     totals = {k: sum(c[1] for c in table[k].values()) for k in FLOORS}
     kind_of = {}
