@@ -78,6 +78,11 @@ SUITE_OF_MODULE = {
     "sc_step_gen": OPEN_LOOP, "sc_axis_core": OPEN_LOOP, "sc_profile_exec": OPEN_LOOP, "sc_row_fifo": OPEN_LOOP,
     "sc_stop_gen": OPEN_LOOP, "sc_step_nco": SERVO,
 }
+# The open-loop modules sit inside sc_servo_axis as well, where some of their
+# logic only acts there (sc_axis_core's external step source, ExtStep = 1):
+# a mutant that survives the open-loop suite runs the servo suite before it
+# counts as a survivor.
+SECOND_SUITE_OF_MODULE = {m: SERVO for m, s in SUITE_OF_MODULE.items() if s is OPEN_LOOP}
 
 
 # ---- arguments -----------------------------------------------------------------------------------------------------
@@ -335,20 +340,32 @@ class Result:
     test_s: float
     diff: str
     model_diff: str = ""
+    suites: str = ""  # the suites run, in order ("" in results of older runs: the module's own suite)
 
     def to_json(self) -> dict:
         return dataclasses.asdict(self)
 
 
-def suite_for(m: mc.Mutant, a: argparse.Namespace) -> Suite:
+def suites_for(m: mc.Mutant, a: argparse.Namespace) -> list[Suite]:
+    """The suites a mutant runs, in order; a later one only for a survivor of the earlier."""
     if a.stage:
-        return Suite("custom", tuple(t.strip() for t in a.live_tops.split(",")),
-                     tuple(Stage(*s.split(":", 1)) for s in a.stage))
+        return [Suite("custom", tuple(t.strip() for t in a.live_tops.split(",")),
+                      tuple(Stage(*s.split(":", 1)) for s in a.stage))]
     suite = SUITE_OF_MODULE.get(m.module)
     if suite is None:
         raise SystemExit(f"mutation.py: no fast suite for module {m.module}: give --stage BINARY:FILTER "
                          f"and --live-tops")
-    return suite
+    second = SECOND_SUITE_OF_MODULE.get(m.module)
+    return [suite] + ([second] if second else [])
+
+
+def suites_run(r: Result, suites: list[Suite]) -> int:
+    """How many of the mutant's suites its result covers."""
+    names = r.suites.split(",") if r.suites else [suites[0].name]
+    n = 0
+    while n < len(suites) and n < len(names) and names[n] == suites[n].name:
+        n += 1
+    return n
 
 
 def baseline(ws: Workspace, suite: Suite, a: argparse.Namespace) -> dict[Stage, float]:
@@ -456,7 +473,7 @@ def report(results: list[Result], campaign: str) -> str:
     if surv:
         out += ["", f"survivors ({len(surv)}):"]
         for r in surv:
-            out.append(f"  {r.id}")
+            out.append(f"  {r.id}" + (f"  (suites: {r.suites})" if r.suites else ""))
             out += [f"      {line}" for line in r.diff.splitlines()]
             if r.model_diff:
                 out.append(f"      model: {r.model_diff}")
@@ -545,31 +562,40 @@ def main(argv: list[str]) -> int:
         for line in results_path.read_text().splitlines():
             r = Result(**json.loads(line))
             done[r.id] = r
-    results: list[Result] = []
     if a.report:
         mutants = [m for m in mutants if m.id in done]
-    by_suite: dict[Suite, list[mc.Mutant]] = {}
-    for m in mutants:
-        by_suite.setdefault(suite_for(m, a), []).append(m)
-    n_total, k = len(mutants), 0
+    suites = {m.id: suites_for(m, a) for m in mutants}
+    final: dict[str, Result] = {m.id: done[m.id] for m in mutants if m.id in done}
+    n_total = len(mutants)
     log(f"campaign {a.campaign}: {n_total} mutants, work dir {ws.work}")
-    for suite, group in by_suite.items():
-        todo = [m for m in group if m.id not in done]
-        results += [done[m.id] for m in group if m.id in done]
-        k += len(group) - len(todo)
-        if not todo:
-            continue
-        ws.configure(suite.live_tops)
-        log(f"suite {suite.name}: unmutated run")
-        times = baseline(ws, suite, a)
-        for m in todo:
-            k += 1
-            r = run_mutant(ws, m, pairs.get(m.id), suite, times, a, a.campaign)
-            results.append(r)
-            with results_path.open("a") as f:
-                f.write(json.dumps(r.to_json()) + "\n")
-            log(f"[{k:>3}/{n_total}] {r.outcome:<11} {m.id}  ({r.build_s:.0f}+{r.test_s:.0f} s)"
-                + (f"  {r.detail}" if r.detail else ""))
+    # Pass 0 runs each mutant's own suite; pass 1 the second suite of its survivors.
+    for level in range(max((len(v) for v in suites.values()), default=0)):
+        by_suite: dict[Suite, list[mc.Mutant]] = {}
+        for m in mutants:
+            r = final.get(m.id)
+            if level < len(suites[m.id]) and (r is None if level == 0 else
+                                             r.outcome == "survived" and suites_run(r, suites[m.id]) == level):
+                by_suite.setdefault(suites[m.id][level], []).append(m)
+        if a.report:
+            break
+        for suite, todo in by_suite.items():
+            ws.configure(suite.live_tops)
+            log(f"suite {suite.name}: unmutated run" + (f" (for the {len(todo)} survivors of the first suite)"
+                                                          if level else ""))
+            times = baseline(ws, suite, a)
+            for k, m in enumerate(todo, 1):
+                r = run_mutant(ws, m, pairs.get(m.id), suite, times, a, a.campaign)
+                before = final.get(m.id) if level else None
+                r.suites = ",".join(st.name for st in suites[m.id][:level + 1])
+                if before is not None:
+                    r.build_s += before.build_s
+                    r.test_s += before.test_s
+                final[m.id] = r
+                with results_path.open("a") as f:
+                    f.write(json.dumps(r.to_json()) + "\n")
+                log(f"[{k:>3}/{len(todo)} {suite.name}] {r.outcome:<11} {m.id}  ({r.build_s:.0f}+{r.test_s:.0f} s)"
+                    + (f"  {r.detail}" if r.detail else ""))
+    results = [final[m.id] for m in mutants if m.id in final]
     log("")
     log(report(results, a.campaign))
     if a.json:

@@ -123,6 +123,36 @@ class Pairing(unittest.TestCase):
         self.assertIn("register transfer", p.reason)
 
 
+class Suites(unittest.TestCase):
+    """Which fast suites a mutant runs: its module's, then, for a survivor of
+    an open-loop module, the servo suite (those modules sit in sc_servo_axis)."""
+
+    def setUp(self):
+        import mutation  # the runner; imported here, the catalogue tests do not need it
+        self.mut = mutation
+        self.args = mutation.parse_args(["--list"])
+        self.by_module = {}
+        for m in mc.catalogue(ROOT, ["rtl/sc_axis_core.sv", "rtl/sc_step_nco.sv"]):
+            self.by_module.setdefault(m.module, m)
+
+    def result(self, suites):
+        m = self.by_module["sc_axis_core"]
+        return self.mut.Result(m.id, "rtl_only", m.area, m.operator, m.file, "survived", "", 0, 0, "", "", suites)
+
+    def test_open_loop_modules_get_the_servo_suite_second(self):
+        names = [s.name for s in self.mut.suites_for(self.by_module["sc_axis_core"], self.args)]
+        self.assertEqual(names, ["open_loop", "servo"])
+        names = [s.name for s in self.mut.suites_for(self.by_module["sc_step_nco"], self.args)]
+        self.assertEqual(names, ["servo"])
+
+    def test_results_say_how_many_suites_they_cover(self):
+        suites = self.mut.suites_for(self.by_module["sc_axis_core"], self.args)
+        self.assertEqual(self.mut.suites_run(self.result(""), suites), 1)  # an older result: its module's suite
+        self.assertEqual(self.mut.suites_run(self.result("open_loop"), suites), 1)
+        self.assertEqual(self.mut.suites_run(self.result("open_loop,servo"), suites), 2)
+        self.assertEqual(self.mut.suites_run(self.result("servo"), suites), 0)  # not this mutant's order
+
+
 class Arguments(unittest.TestCase):
     def run_tool(self, *args):
         return subprocess.run([sys.executable, str(ROOT / "scripts/mutation.py"), "--root", str(ROOT), *args],
