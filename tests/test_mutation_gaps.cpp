@@ -3,8 +3,8 @@
 //  - STOP held as a level (as the limit switches drive the executor's stop
 //    input) instead of a one-clock pulse: the stop must not restart every clock;
 //  - a limit switch on the side of the motion, each side and both modes, at the
-//    core: motion (or an arming) into it stops, motion away from it runs to
-//    the exact end.
+//    core: motion (or an arming, or a START) into it stops or is refused,
+//    motion away from it runs to the exact end.
 //  - a STOP in the very clock a stream ends, a zero-length row met while
 //    moving, a START whose head row is over a guard limit.
 // RTL and model run in lockstep every clock; besides, each test checks a
@@ -116,6 +116,48 @@ TEST(MutationGaps, LimitActiveWhileArmingDropsTheStartTowardIt) {
         } else {
           EXPECT_FALSE(trip) << what;
           EXPECT_TRUE(moved) << what << ": the move away from the limit starts";
+        }
+      }
+    }
+  }
+}
+
+// A START toward a limit that is already active is refused in its own clock:
+// the core never arms (busy stays low), the trip shows on that side and
+// nothing moves; the START away from the limit runs to the exact end.
+TEST(MutationGaps, LimitAlreadyActiveRefusesTheStartTowardItWithoutArming) {
+  for (int dir : {1, -1}) {
+    for (bool hard : {false, true}) {
+      for (bool same_side : {true, false}) {
+        const std::string what = fmt_case(dir, hard, same_side);
+        LoadedCore c(3000 * dir);
+        c.in.lim_hard = hard;
+        const bool fwd_side = (dir > 0) == same_side;
+        c.in.lim_fwd = fwd_side;
+        c.in.lim_rev = !fwd_side;
+        for (int i = 0; i < 8; ++i) c.tick();  // through the limit inputs' registers
+        CoreInputs s = c.in;
+        s.start = true;
+        c.tick(s);
+        bool trip = c.out().lim_trip_fwd || c.out().lim_trip_rev, busy = false;
+        const bool trip_on_side = fwd_side ? c.out().lim_trip_fwd : c.out().lim_trip_rev;
+        while ((c.out().busy || !c.out().done) && c.clock < 3'000'000 && c.chk.errors().empty()) {
+          c.tick();
+          busy = busy || c.out().busy;
+          trip = trip || c.out().lim_trip_fwd || c.out().lim_trip_rev;
+          if (same_side && c.clock > 4000) break;
+        }
+        EXPECT_TRUE(c.chk.errors().empty()) << what << c.chk.finish();
+        if (same_side) {
+          EXPECT_TRUE(trip_on_side) << what << ": the refused START trips its side in its own clock";
+          EXPECT_FALSE(busy) << what << ": a refused START never arms";
+          EXPECT_EQ(c.out().ref_pos_int, 0) << what;
+          EXPECT_EQ(c.out().pulse_count, 0) << what;
+        } else {
+          EXPECT_FALSE(trip) << what << ": a START away from a limit runs";
+          EXPECT_TRUE(c.out().done) << what;
+          EXPECT_EQ(c.out().ref_pos_int, 3000 * dir) << what << ": the move ends exactly";
+          EXPECT_EQ(c.out().pulse_count, 3000 * dir) << what;
         }
       }
     }
