@@ -43,7 +43,10 @@ import mutation_catalogue as mc  # noqa: E402
 
 ROOT = Path(__file__).resolve().parent.parent
 CAMPAIGNS = ("rtl_only", "common_mode")
-OUTCOMES = ("killed", "timeout", "build_error", "survived")
+OUTCOMES = ("killed", "timeout", "build_error", "survived", "equivalent")
+# Survivors shown equivalent (they change nothing the design promises), each
+# with its reason: reported apart and left out of the kill rate.
+EQUIVALENT_FILE = Path("scripts/mutation_equivalent.json")
 BUILD_INPUTS = ("CMakeLists.txt", "cmake", "rtl", "cmodel", "sw", "tb", "tests")
 
 
@@ -433,6 +436,49 @@ def run_mutant(ws: Workspace, m: mc.Mutant, pairing: mc.Pairing | None, suite: S
 
 # ---- reporting -----------------------------------------------------------------------------------------------------
 
+@dataclasses.dataclass(frozen=True)
+class Equivalent:
+    id: str
+    diff: str          # the mutant's one-line diff when it was judged: a renumbered or edited site no longer matches
+    campaigns: tuple[str, ...]
+    reason: str
+
+
+def load_equivalents(root: Path) -> dict[str, Equivalent]:
+    path = root / EQUIVALENT_FILE
+    if not path.exists():
+        return {}
+    try:
+        entries = json.loads(path.read_text())["equivalent"]
+        out = {}
+        for e in entries:
+            out[e["id"]] = Equivalent(e["id"], e["diff"], tuple(e.get("campaigns", CAMPAIGNS)), e["reason"])
+            if not out[e["id"]].reason.strip() or not set(out[e["id"]].campaigns) <= set(CAMPAIGNS):
+                raise ValueError(f"entry {e['id']}: a reason and campaigns among {', '.join(CAMPAIGNS)}")
+        return out
+    except (ValueError, KeyError, TypeError) as e:
+        raise SystemExit(f"mutation.py: {path}: {e}")
+
+
+def classify(results: list[Result], equivalents: dict[str, Equivalent], mutants: dict[str, mc.Mutant],
+             pristine: Path) -> tuple[list[Result], list[str]]:
+    """Survivors listed as equivalent (same diff, this campaign) become
+    `equivalent`; entries whose site changed are returned as stale."""
+    stale = []
+    for e in equivalents.values():
+        m = mutants.get(e.id)
+        if m is not None and m.diff((pristine / m.file).read_text()) != e.diff:
+            stale.append(f"{e.id}: the site changed (was: {e.diff.splitlines()[0]})")
+    stale_ids = {x.split(": ", 1)[0] for x in stale}
+    out = []
+    for r in results:
+        e = equivalents.get(r.id)
+        if r.outcome == "survived" and e is not None and r.campaign in e.campaigns and r.id not in stale_ids:
+            r = dataclasses.replace(r, outcome="equivalent", detail=e.reason)
+        out.append(r)
+    return out, stale
+
+
 def rate(c: Counter) -> str:
     scored = c["killed"] + c["timeout"] + c["survived"]
     return f"{100.0 * (c['killed'] + c['timeout']) / scored:5.1f}%" if scored else "    -"
@@ -449,20 +495,18 @@ def table(results: list[Result], key: str) -> str:
     for r in results:
         groups.setdefault(getattr(r, key), Counter())[r.outcome] += 1
     total = Counter(r.outcome for r in results)
-    head = f"{key:<16} {'mutants':>7} {'killed':>7} {'timeout':>7} {'build':>7} {'survived':>8} {'kill rate':>9}"
+    head = (f"{key:<16} {'mutants':>7} {'killed':>7} {'timeout':>7} {'build':>7} {'equiv':>7} {'survived':>8} "
+            f"{'kill rate':>9}")
     lines = [head, "-" * len(head)]
-    for name in sorted(groups):
-        c = groups[name]
+    for name, c in sorted(groups.items()) + [("all", total)]:
         lines.append(f"{name:<16} {sum(c.values()):>7} {c['killed']:>7} {c['timeout']:>7} {c['build_error']:>7} "
-                     f"{c['survived']:>8} {rate(c):>9}")
-    lines.append(f"{'all':<16} {sum(total.values()):>7} {total['killed']:>7} {total['timeout']:>7} "
-                 f"{total['build_error']:>7} {total['survived']:>8} {rate(total):>9}")
+                     f"{c['equivalent']:>7} {c['survived']:>8} {rate(c):>9}")
     return "\n".join(lines)
 
 
-def report(results: list[Result], campaign: str) -> str:
+def report(results: list[Result], campaign: str, stale: list[str] | None = None) -> str:
     out = [f"campaign {campaign}: {len(results)} mutants (kill rate = killed and timed out over all but build "
-           f"errors)", "", table(results, "area"), "", table(results, "operator")]
+           f"errors and equivalent mutants)", "", table(results, "area"), "", table(results, "operator")]
     if results:
         per = [r.build_s + r.test_s for r in results]
         build = sum(r.build_s for r in results) / len(per)
@@ -477,6 +521,16 @@ def report(results: list[Result], campaign: str) -> str:
             out += [f"      {line}" for line in r.diff.splitlines()]
             if r.model_diff:
                 out.append(f"      model: {r.model_diff}")
+    equiv = [r for r in results if r.outcome == "equivalent"]
+    if equiv:
+        out += ["", f"equivalent ({len(equiv)}, {EQUIVALENT_FILE}; not counted):"]
+        for r in equiv:
+            out.append(f"  {r.id}")
+            out += [f"      {line}" for line in r.diff.splitlines()]
+            out.append(f"      why: {r.detail}")
+    if stale:
+        out += ["", f"stale entries of {EQUIVALENT_FILE} (not applied; judge the mutant again):"]
+        out += [f"  {x}" for x in stale]
     builds = [r for r in results if r.outcome == "build_error"]
     if builds:
         out += ["", f"build/lint errors ({len(builds)}, not counted as kills):"]
@@ -487,7 +541,7 @@ def report(results: list[Result], campaign: str) -> str:
 def write_junit(path: Path, results: list[Result], campaign: str) -> None:
     suite = ET.Element("testsuite", name=f"mutation.{campaign}", tests=str(len(results)),
                        failures=str(sum(r.outcome == "survived" for r in results)),
-                       skipped=str(sum(r.outcome == "build_error" for r in results)),
+                       skipped=str(sum(r.outcome in ("build_error", "equivalent") for r in results)),
                        time=f"{sum(r.build_s + r.test_s for r in results):.1f}")
     for r in results:
         case = ET.SubElement(suite, "testcase", classname=f"mutation.{campaign}.{r.area}", name=r.id,
@@ -497,6 +551,8 @@ def write_junit(path: Path, results: list[Result], campaign: str) -> None:
                 ("\nmodel: " + r.model_diff if r.model_diff else "")
         elif r.outcome == "build_error":
             ET.SubElement(case, "skipped", message=f"build/lint error: {r.detail}")
+        elif r.outcome == "equivalent":
+            ET.SubElement(case, "skipped", message=f"equivalent: {r.detail}")
         else:
             ET.SubElement(case, "system-out").text = f"{r.outcome}: {r.detail}"
     root = ET.Element("testsuites")
@@ -541,6 +597,7 @@ def main(argv: list[str]) -> int:
     a = parse_args(argv)
     if a.list:
         return list_catalogue(a)
+    equivalents = load_equivalents(a.root)  # a bad file fails now, not after the campaign
     os.nice(10)  # the machine is shared with other builds
     ws = Workspace(a.root, a.work_dir, a.jobs)
     if not a.report:
@@ -595,9 +652,10 @@ def main(argv: list[str]) -> int:
                     f.write(json.dumps(r.to_json()) + "\n")
                 log(f"[{k:>3}/{len(todo)} {suite.name}] {r.outcome:<11} {m.id}  ({r.build_s:.0f}+{r.test_s:.0f} s)"
                     + (f"  {r.detail}" if r.detail else ""))
-    results = [final[m.id] for m in mutants if m.id in final]
+    results, stale = classify([final[m.id] for m in mutants if m.id in final], equivalents,
+                              {m.id: m for m in mutants}, ws.pristine)
     log("")
-    log(report(results, a.campaign))
+    log(report(results, a.campaign, stale))
     if a.json:
         kr = kill_rate(results)
         a.json.write_text(json.dumps({

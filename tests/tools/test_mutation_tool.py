@@ -153,6 +153,44 @@ class Suites(unittest.TestCase):
         self.assertEqual(self.mut.suites_run(self.result("servo"), suites), 0)  # not this mutant's order
 
 
+class Equivalents(unittest.TestCase):
+    """The list of equivalent survivors: each entry still names today's mutant,
+    and only a survivor whose diff matches is taken out of the kill rate."""
+
+    def setUp(self):
+        import mutation
+        self.mut = mutation
+        self.equivalents = mutation.load_equivalents(ROOT)
+        files = sorted({e.id.split(":", 1)[0] for e in self.equivalents.values()})
+        self.mutants = {m.id: m for m in mc.catalogue(ROOT, [f"rtl/{f}" for f in files])}
+
+    def test_every_entry_names_a_mutant_of_the_catalogue_with_its_diff(self):
+        self.assertTrue(self.equivalents, "the list has entries")
+        for e in self.equivalents.values():
+            self.assertIn(e.id, self.mutants, "a mutant of today's catalogue")
+            m = self.mutants[e.id]
+            self.assertEqual(m.diff((ROOT / m.file).read_text()), e.diff, f"{e.id}: judged on this diff")
+            self.assertGreater(len(e.reason), 40, f"{e.id}: a reason")
+
+    def test_only_a_matching_survivor_becomes_equivalent(self):
+        e = next(iter(self.equivalents.values()))
+        m = self.mutants[e.id]
+
+        def result(outcome, campaign="rtl_only"):
+            return self.mut.Result(m.id, campaign, m.area, m.operator, m.file, outcome, "", 0, 0, e.diff)
+        out, stale = self.mut.classify([result("survived"), result("killed")], self.equivalents, self.mutants, ROOT)
+        self.assertEqual([r.outcome for r in out], ["equivalent", "killed"])
+        self.assertEqual(stale, [])
+        self.assertEqual(self.mut.kill_rate(out), 100.0)
+        moved = {e.id: self.mut.Equivalent(e.id, e.diff.replace("+ ", "+ x "), e.campaigns, e.reason)}
+        out, stale = self.mut.classify([result("survived")], moved, self.mutants, ROOT)
+        self.assertEqual(out[0].outcome, "survived", "a stale entry is not applied")
+        self.assertEqual(len(stale), 1)
+        only_common = {e.id: self.mut.Equivalent(e.id, e.diff, ("common_mode",), e.reason)}
+        out, _ = self.mut.classify([result("survived")], only_common, self.mutants, ROOT)
+        self.assertEqual(out[0].outcome, "survived", "an entry applies to its campaigns only")
+
+
 class Arguments(unittest.TestCase):
     def run_tool(self, *args):
         return subprocess.run([sys.executable, str(ROOT / "scripts/mutation.py"), "--root", str(ROOT), *args],
