@@ -439,7 +439,7 @@ def run_mutant(ws: Workspace, m: mc.Mutant, pairing: mc.Pairing | None, suite: S
 @dataclasses.dataclass(frozen=True)
 class Equivalent:
     id: str
-    diff: str          # the mutant's one-line diff when it was judged: a renumbered or edited site no longer matches
+    diff: str          # the mutant's one-line diff as judged: it finds the mutant when lines move; an edited site is stale
     campaigns: tuple[str, ...]
     reason: str
 
@@ -460,23 +460,39 @@ def load_equivalents(root: Path) -> dict[str, Equivalent]:
         raise SystemExit(f"mutation.py: {path}: {e}")
 
 
-def classify(results: list[Result], equivalents: dict[str, Equivalent], mutants: dict[str, mc.Mutant],
-             pristine: Path) -> tuple[list[Result], list[str]]:
-    """Survivors listed as equivalent (same diff, this campaign) become
-    `equivalent`; entries whose site changed are returned as stale."""
-    stale = []
+def match_equivalents(equivalents: dict[str, Equivalent], pristine: Path) -> tuple[dict[str, Equivalent], list[str]]:
+    """Today's mutant id of each entry: the one mutant of its file and operator
+    that makes the entry's diff (ids follow line numbers; the diff does not).
+    An entry that matches none or several is stale."""
+    active: dict[str, Equivalent] = {}
+    stale: list[str] = []
+    texts: dict[str, str] = {}
+    catalogues: dict[str, list[mc.Mutant]] = {}
     for e in equivalents.values():
-        m = mutants.get(e.id)
-        if m is not None and m.diff((pristine / m.file).read_text()) != e.diff:
-            stale.append(f"{e.id}: the site changed (was: {e.diff.splitlines()[0]})")
-    stale_ids = {x.split(": ", 1)[0] for x in stale}
+        file, _line, _col, operator = e.id.split(":", 4)[:4]
+        rel = f"rtl/{file}"
+        if rel not in catalogues:
+            exists = (pristine / rel).exists()
+            catalogues[rel] = mc.catalogue(pristine, [rel]) if exists else []
+            texts[rel] = (pristine / rel).read_text() if exists else ""
+        hits = [m for m in catalogues[rel] if m.operator == operator and m.diff(texts[rel]) == e.diff]
+        if len(hits) == 1:
+            active[hits[0].id] = e
+        else:
+            stale.append(f"{e.id}: {'no' if not hits else len(hits)} mutant(s) of {rel} make this diff "
+                         f"({e.diff.splitlines()[0]})")
+    return active, stale
+
+
+def classify(results: list[Result], active: dict[str, Equivalent]) -> list[Result]:
+    """Survivors matched by an entry of their campaign become `equivalent`."""
     out = []
     for r in results:
-        e = equivalents.get(r.id)
-        if r.outcome == "survived" and e is not None and r.campaign in e.campaigns and r.id not in stale_ids:
+        e = active.get(r.id)
+        if r.outcome == "survived" and e is not None and r.campaign in e.campaigns:
             r = dataclasses.replace(r, outcome="equivalent", detail=e.reason)
         out.append(r)
-    return out, stale
+    return out
 
 
 def rate(c: Counter) -> str:
@@ -652,8 +668,8 @@ def main(argv: list[str]) -> int:
                     f.write(json.dumps(r.to_json()) + "\n")
                 log(f"[{k:>3}/{len(todo)} {suite.name}] {r.outcome:<11} {m.id}  ({r.build_s:.0f}+{r.test_s:.0f} s)"
                     + (f"  {r.detail}" if r.detail else ""))
-    results, stale = classify([final[m.id] for m in mutants if m.id in final], equivalents,
-                              {m.id: m for m in mutants}, ws.pristine)
+    active, stale = match_equivalents(equivalents, ws.pristine)
+    results = classify([final[m.id] for m in mutants if m.id in final], active)
     log("")
     log(report(results, a.campaign, stale))
     if a.json:
