@@ -123,7 +123,7 @@ TEST(MutationGaps, LimitActiveWhileArmingDropsTheStartTowardIt) {
 }
 
 // A START toward a limit that is already active is refused in its own clock:
-// the core never arms (busy stays low), the trip shows on that side and
+// the core never arms (busy stays low), the trip shows on that side only and
 // nothing moves; the START away from the limit runs to the exact end.
 TEST(MutationGaps, LimitAlreadyActiveRefusesTheStartTowardItWithoutArming) {
   for (int dir : {1, -1}) {
@@ -139,17 +139,20 @@ TEST(MutationGaps, LimitAlreadyActiveRefusesTheStartTowardItWithoutArming) {
         CoreInputs s = c.in;
         s.start = true;
         c.tick(s);
-        bool trip = c.out().lim_trip_fwd || c.out().lim_trip_rev, busy = false;
         const bool trip_on_side = fwd_side ? c.out().lim_trip_fwd : c.out().lim_trip_rev;
+        bool trip_other_side = fwd_side ? c.out().lim_trip_rev : c.out().lim_trip_fwd;
+        bool trip = trip_on_side || trip_other_side, busy = false;
         while ((c.out().busy || !c.out().done) && c.clock < 3'000'000 && c.chk.errors().empty()) {
           c.tick();
           busy = busy || c.out().busy;
           trip = trip || c.out().lim_trip_fwd || c.out().lim_trip_rev;
+          trip_other_side = trip_other_side || (fwd_side ? c.out().lim_trip_rev : c.out().lim_trip_fwd);
           if (same_side && c.clock > 4000) break;
         }
         EXPECT_TRUE(c.chk.errors().empty()) << what << c.chk.finish();
         if (same_side) {
           EXPECT_TRUE(trip_on_side) << what << ": the refused START trips its side in its own clock";
+          EXPECT_FALSE(trip_other_side) << what << ": and only its side";
           EXPECT_FALSE(busy) << what << ": a refused START never arms";
           EXPECT_EQ(c.out().ref_pos_int, 0) << what;
           EXPECT_EQ(c.out().pulse_count, 0) << what;
