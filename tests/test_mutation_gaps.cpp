@@ -6,7 +6,8 @@
 //    core: motion (or an arming, or a START) into it stops or is refused,
 //    motion away from it runs to the exact end.
 //  - a STOP in the very clock a stream ends, a zero-length row met while
-//    moving, a START whose head row is over a guard limit.
+//    moving, the FIFO running dry at rest and at cruise speed, a START whose
+//    head row is over a guard limit.
 // RTL and model run in lockstep every clock; besides, each test checks a
 // property of its own (same rest as a pulsed STOP; the move stops short of
 // its end, or reaches it exactly), so a change made in RTL and model alike
@@ -294,6 +295,71 @@ TEST(MutationGaps, ZeroLengthRowMidMoveStopsUnderControl) {
     if (rows[bad].seg.vel0 != 0) {
       EXPECT_TRUE(stopping) << what << ": a controlled stop";
       EXPECT_LE(worst_dv, i128(acc_lsb(4e6)) * 2) << what << ": no velocity step";
+    }
+  }
+}
+
+// The FIFO running dry at the end of a row is decided by the end state alone:
+// at rest (v = a = 0) the stream ends as planned, also without the
+// STREAM_END flag (no stop, no underrun, the move exact); still moving, also
+// at constant speed (a = 0, the end of a cruise row), it is an underrun: a
+// controlled stop without a velocity step, every step on the pins.
+TEST(MutationGaps, FifoRunningDryEndsTheStreamOnlyAtRest) {
+  const auto reload = [](LoadedCore& c, const std::vector<Row>& rows) {
+    CoreInputs f = c.in;
+    f.fifo_flush = true;
+    c.tick(f);
+    for (const Row& r : rows) {
+      CoreInputs w = c.in;
+      w.row_push = true;
+      w.row = r;
+      c.tick(w);
+    }
+  };
+  for (int dir : {1, -1}) {
+    const std::string way = dir > 0 ? "forward" : "backward";
+    {
+      LoadedCore c(3000 * dir);
+      reload(c, move_rows(c.plan.segments, /*stream_end=*/false));
+      c.start();
+      bool stopping = false;
+      while ((c.out().busy || !c.out().done) && c.clock < 3'000'000) {
+        c.tick();
+        stopping = stopping || c.out().stopping;
+      }
+      EXPECT_TRUE(c.chk.errors().empty()) << way << c.chk.finish();
+      EXPECT_TRUE(c.out().done) << way << ": the rows end at rest: the stream ends";
+      EXPECT_FALSE(stopping || c.out().underrun) << way << ": no stop, no underrun";
+      EXPECT_EQ(c.out().ref_pos_int, 3000 * dir) << way;
+      EXPECT_EQ(c.out().pulse_count, 3000 * dir) << way;
+    }
+    {
+      LoadedCore c(3000 * dir);
+      std::vector<Row> rows = move_rows(c.plan.segments, /*stream_end=*/false);
+      const auto cruise = std::find_if(rows.begin(), rows.end(), [](const Row& r) {
+        return r.seg.jerk == 0 && r.seg.acc0 == 0 && r.seg.vel0 != 0;
+      });
+      ASSERT_NE(cruise, rows.end()) << way << ": the move has a cruise row";
+      rows.erase(cruise + 1, rows.end());
+      reload(c, rows);
+      c.start();
+      bool stopping = false;
+      i128 worst_dv = 0, last_v = 0;
+      while ((c.out().busy || !c.out().done) && c.clock < 3'000'000) {
+        c.tick();
+        stopping = stopping || c.out().stopping;
+        const i128 dv = c.out().ref_vel - last_v;
+        worst_dv = std::max(worst_dv, dv < 0 ? -dv : dv);
+        last_v = c.out().ref_vel;
+        if (!c.out().busy && c.out().ref_vel == 0 && c.clock > 100) break;
+      }
+      EXPECT_TRUE(c.chk.errors().empty()) << way << c.chk.finish();
+      EXPECT_TRUE(c.out().underrun) << way << ": dry at cruise speed is an underrun";
+      EXPECT_TRUE(stopping) << way << ": a controlled stop";
+      EXPECT_LE(worst_dv, i128(acc_lsb(4e6)) * 2) << way << ": no velocity step";
+      EXPECT_EQ(c.out().ref_vel, 0) << way;
+      EXPECT_EQ(c.out().pulse_count, c.out().ref_pos_int) << way << ": every step on the pins";
+      EXPECT_GT(c.out().ref_pos_int * dir, 0) << way;
     }
   }
 }
