@@ -338,14 +338,15 @@ def run(cmd, log, timeout):
     return rc, out
 
 
-def prepare(g, work, broken):
-    """Copies the sources (mutated for --broken) into work; returns the smt2 path."""
+def prepare(g, work, broken, mutate=True):
+    """Copies the sources (mutated for --broken unless not mutate) into work;
+    returns the smt2 path."""
     os.makedirs(work, exist_ok=True)
     srcs = ["sc_pkg.sv", g.module + ".sv"] + g.files + g.plain_files
     paths = []
     for s in srcs:
         text = open(os.path.join(RTL, s), encoding="utf-8").read()
-        if broken and s == g.module + ".sv":
+        if broken and mutate and s == g.module + ".sv":
             old, new, _ = g.mutation
             n = text.count(old)
             if n != 1:
@@ -386,8 +387,11 @@ def failed_asserts(out):
     return sorted(set(re.findall(r"Assert failed in \S+: (\S+)", out)))
 
 
-def prove(g, build, broken, timeout):
-    work = os.path.join(build, g.name + ("_broken" if broken else ""))
+def prove(g, build, broken, timeout, as_is=False):
+    """broken: the group's mutation, a bounded check must fail. as_is: the
+    same bounded check on the RTL as it is (a mutant's), passing = no
+    counterexample from reset within the broken depth."""
+    work = os.path.join(build, g.name + ("_broken" if broken else "_as_is" if as_is else ""))
     if os.path.isdir(work):
         shutil.rmtree(work)
     os.makedirs(work)
@@ -396,7 +400,7 @@ def prove(g, build, broken, timeout):
     res = {"group": g.name, "module": g.module, "what": g.what, "log": log,
            "broken": broken}
     try:
-        ys, smt2 = prepare(g, work, broken)
+        ys, smt2 = prepare(g, work, broken or as_is, mutate=not as_is)
     except (RuntimeError, OSError) as e:
         res.update(result="ERROR", detail=str(e), time_s=round(time.monotonic() - t0, 2),
                    method="-")
@@ -408,7 +412,22 @@ def prove(g, build, broken, timeout):
                    method="-")
         return res
     smtbmc = ["yosys-smtbmc", "-s", "z3", "--unroll"]
-    if broken:
+    if as_is:
+        depth = g.broken_depth
+        res["method"] = f"bounded depth {depth}"
+        vcd = os.path.join(work, "cex.vcd")
+        rc, out = run(smtbmc + ["-t", str(depth), "--dump-vcd", vcd, smt2], log, timeout)
+        fails = failed_asserts(out)
+        if "Status: FAILED" in out and fails:
+            step = re.findall(r"Checking assertions in step (\d+)", out)
+            res.update(result="FAIL", ok=False, failed=fails,
+                       detail=f"counterexample at step {step[-1] if step else '?'}: " + ", ".join(fails)
+                              + f" (trace {vcd})")
+        elif "Status: PASSED" in out:
+            res.update(result="PASSED", ok=True, detail=f"no counterexample within {depth} clocks")
+        else:
+            res.update(result="ERROR", ok=False, detail="smtbmc: " + out.strip()[-300:])
+    elif broken:
         depth = g.broken_depth
         res["method"] = f"bounded depth {depth}"
         res["mutation"] = g.mutation[2]
@@ -476,7 +495,12 @@ def main():
     ap.add_argument("--timeout", type=int, default=600,
                     help="seconds per solver run (default 600)")
     ap.add_argument("--list", action="store_true", help="list the groups and exit")
+    ap.add_argument("--check-as-is", action="store_true",
+                    help="a bounded check of each group's properties (helpers left out) to its broken-variant "
+                         "depth on the RTL as it is; for scripts/mutation.py, which mutates the RTL first")
     a = ap.parse_args()
+    if a.broken and a.check_as_is:
+        die("--check-as-is: not with --broken (that applies the group's own mutation)")
 
     if a.list:
         for g in GROUPS:
@@ -502,7 +526,7 @@ def main():
     for i, g in enumerate(groups, 1):
         tag = " (broken: " + g.mutation[2] + ")" if a.broken else ""
         print(f"[{i}/{len(groups)}] {g.name}{tag} ...", flush=True)
-        r = prove(g, build, a.broken, a.timeout)
+        r = prove(g, build, a.broken, a.timeout, as_is=a.check_as_is)
         rows.append(r)
         mark = "ok" if r.get("ok") else "NOT OK"
         print(f"      {r['result']} - {r['method']}, {r['time_s']:.1f} s  [{mark}]"

@@ -39,6 +39,7 @@ from collections import Counter
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
+import formal  # noqa: E402  (the property groups per module)
 import mutation_catalogue as mc  # noqa: E402
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -86,6 +87,14 @@ SUITE_OF_MODULE = {
 # a mutant that survives the open-loop suite runs the servo suite before it
 # counts as a survivor.
 SECOND_SUITE_OF_MODULE = {m: SERVO for m, s in SUITE_OF_MODULE.items() if s is OPEN_LOOP}
+# Last, a survivor of the simulations meets the module's formal properties:
+# scripts/formal.py --check-as-is, a bounded check of every group of the
+# module from reset on the mutated RTL (a counterexample kills; a solver
+# timeout or error proves nothing and does not).
+FORMAL_STAGE = "formal.py"
+FORMAL_SUITE_OF_MODULE = {
+    m: Suite(f"formal_{m}", (), (Stage(FORMAL_STAGE, ",".join(g.name for g in formal.GROUPS if g.module == m)),))
+    for m in sorted({g.module for g in formal.GROUPS})}
 
 
 # ---- arguments -----------------------------------------------------------------------------------------------------
@@ -273,8 +282,38 @@ class Workspace:
             return False, first_error(r.stdout + r.stderr), time.monotonic() - t0
         return True, "", time.monotonic() - t0
 
+    def run_formal(self, stage: Stage, timeout: float) -> tuple[str, str, float]:
+        """The module's property groups on the mutated copy: failed on a
+        counterexample; inconclusive on a solver timeout or error."""
+        out = self.work / "formal.json"
+        out.unlink(missing_ok=True)
+        cmd = [sys.executable, str(self.src / "scripts" / "formal.py"), "--check-as-is", "--build-dir",
+               str(self.work / "formal"), "--json", str(out), "--timeout", str(max(1, int(timeout)))]
+        for g in stage.gtest_filter.split(","):
+            cmd += ["--group", g]
+        t0 = time.monotonic()
+        try:
+            subprocess.run(cmd, capture_output=True, text=True, timeout=timeout + 60)
+        except subprocess.TimeoutExpired:
+            return "inconclusive", "formal: timed out", time.monotonic() - t0
+        dt = time.monotonic() - t0
+        try:
+            rows = json.loads(out.read_text())["groups"]
+        except (OSError, ValueError, KeyError):
+            return "inconclusive", "formal: no results", dt
+        failed = [r for r in rows if r.get("result") == "FAIL"]
+        if failed:
+            r = failed[0]
+            return "failed", f"formal {r['group']}: {r.get('detail', '')[:200]}", dt
+        unsure = [r["group"] for r in rows if r.get("result") != "PASSED"]
+        if unsure:
+            return "inconclusive", f"formal: no verdict for {', '.join(unsure)}", dt
+        return "passed", "", dt
+
     def run_stage(self, stage: Stage, timeout: float) -> tuple[str, str, float]:
-        """(passed | failed | timeout, first failing test or message, seconds)."""
+        """(passed | failed | timeout | inconclusive, first failing test or message, seconds)."""
+        if stage.binary == FORMAL_STAGE:
+            return self.run_formal(stage, timeout)
         exe = self.build / "bin" / stage.binary
         t0 = time.monotonic()
         cmd = [str(exe), f"--gtest_filter={stage.gtest_filter}", "--gtest_fail_fast", "--gtest_brief=1"]
@@ -358,8 +397,8 @@ def suites_for(m: mc.Mutant, a: argparse.Namespace) -> list[Suite]:
     if suite is None:
         raise SystemExit(f"mutation.py: no fast suite for module {m.module}: give --stage BINARY:FILTER "
                          f"and --live-tops")
-    second = SECOND_SUITE_OF_MODULE.get(m.module)
-    return [suite] + ([second] if second else [])
+    more = [x for x in (SECOND_SUITE_OF_MODULE.get(m.module), FORMAL_SUITE_OF_MODULE.get(m.module)) if x]
+    return [suite] + more
 
 
 def suites_run(r: Result, suites: list[Suite]) -> int:
@@ -383,7 +422,7 @@ def baseline(ws: Workspace, suite: Suite, a: argparse.Namespace) -> dict[Stage, 
         return {st: t for st, t in zip(suite.stages, cache[key])}
     times: dict[Stage, float] = {}
     for st in suite.stages:
-        ok, msg, bt = ws.build_target(st.binary, a.build_timeout * 3)
+        ok, msg, bt = (True, "", 0.0) if st.binary == FORMAL_STAGE else ws.build_target(st.binary, a.build_timeout * 3)
         if not ok:
             raise SystemExit(f"mutation.py: the unmutated copy does not build ({st.binary}): {msg}")
         status, detail, tt = ws.run_stage(st, 3600)
@@ -412,7 +451,7 @@ def run_mutant(ws: Workspace, m: mc.Mutant, pairing: mc.Pairing | None, suite: S
             model_diff = f"{pairing.model_file}:{pairing.line}: {pairing.original!r} -> {pairing.replacement!r}"
         built: set[str] = set()
         for st in suite.stages:
-            if st.binary not in built:
+            if st.binary not in built and st.binary != FORMAL_STAGE:
                 ok, msg, bt = ws.build_target(st.binary, a.build_timeout)
                 build_s += bt
                 if not ok:
@@ -439,7 +478,7 @@ def run_mutant(ws: Workspace, m: mc.Mutant, pairing: mc.Pairing | None, suite: S
 @dataclasses.dataclass(frozen=True)
 class Equivalent:
     id: str
-    diff: str          # the mutant's one-line diff as judged: it finds the mutant when lines move; an edited site is stale
+    diff: str          # the one-line diff as judged: finds the mutant when lines move; an edited site is stale
     campaigns: tuple[str, ...]
     reason: str
 
@@ -637,6 +676,7 @@ def main(argv: list[str]) -> int:
             done[r.id] = r
     if a.report:
         mutants = [m for m in mutants if m.id in done]
+    active, stale = match_equivalents(equivalents, ws.pristine)
     suites = {m.id: suites_for(m, a) for m in mutants}
     final: dict[str, Result] = {m.id: done[m.id] for m in mutants if m.id in done}
     n_total = len(mutants)
@@ -647,13 +687,15 @@ def main(argv: list[str]) -> int:
         for m in mutants:
             r = final.get(m.id)
             if level < len(suites[m.id]) and (r is None if level == 0 else
-                                             r.outcome == "survived" and suites_run(r, suites[m.id]) == level):
+                                             r.outcome == "survived" and suites_run(r, suites[m.id]) == level
+                                             and m.id not in active):  # an equivalent one is judged
                 by_suite.setdefault(suites[m.id][level], []).append(m)
         if a.report:
             break
         for suite, todo in by_suite.items():
-            ws.configure(suite.live_tops)
-            log(f"suite {suite.name}: unmutated run" + (f" (for the {len(todo)} survivors of the first suite)"
+            if suite.live_tops:  # (a formal suite builds nothing)
+                ws.configure(suite.live_tops)
+            log(f"suite {suite.name}: unmutated run" + (f" (for the {len(todo)} survivors of the suites before)"
                                                           if level else ""))
             times = baseline(ws, suite, a)
             for k, m in enumerate(todo, 1):
@@ -668,7 +710,6 @@ def main(argv: list[str]) -> int:
                     f.write(json.dumps(r.to_json()) + "\n")
                 log(f"[{k:>3}/{len(todo)} {suite.name}] {r.outcome:<11} {m.id}  ({r.build_s:.0f}+{r.test_s:.0f} s)"
                     + (f"  {r.detail}" if r.detail else ""))
-    active, stale = match_equivalents(equivalents, ws.pristine)
     results = classify([final[m.id] for m in mutants if m.id in final], active)
     log("")
     log(report(results, a.campaign, stale))

@@ -124,8 +124,9 @@ class Pairing(unittest.TestCase):
 
 
 class Suites(unittest.TestCase):
-    """Which fast suites a mutant runs: its module's, then, for a survivor of
-    an open-loop module, the servo suite (those modules sit in sc_servo_axis)."""
+    """Which suites a mutant runs: its module's, then, for a survivor of an
+    open-loop module, the servo suite (those modules sit in sc_servo_axis),
+    then the module's formal property groups."""
 
     def setUp(self):
         import mutation  # the runner; imported here, the catalogue tests do not need it
@@ -141,7 +142,7 @@ class Suites(unittest.TestCase):
 
     def test_open_loop_modules_get_the_servo_suite_second(self):
         names = [s.name for s in self.mut.suites_for(self.by_module["sc_axis_core"], self.args)]
-        self.assertEqual(names, ["open_loop", "servo"])
+        self.assertEqual(names, ["open_loop", "servo", "formal_sc_axis_core"])
         names = [s.name for s in self.mut.suites_for(self.by_module["sc_step_nco"], self.args)]
         self.assertEqual(names, ["servo"])
 
@@ -151,6 +152,38 @@ class Suites(unittest.TestCase):
         self.assertEqual(self.mut.suites_run(self.result("open_loop"), suites), 1)
         self.assertEqual(self.mut.suites_run(self.result("open_loop,servo"), suites), 2)
         self.assertEqual(self.mut.suites_run(self.result("servo"), suites), 0)  # not this mutant's order
+        formal_stage = suites[-1].stages[0]
+        self.assertEqual(formal_stage.binary, self.mut.FORMAL_STAGE)
+        self.assertEqual(formal_stage.gtest_filter.split(","), ["core_done", "core_abort", "core_limits", "core_rate"])
+
+
+class FormalStage(unittest.TestCase):
+    """The formal stage on a mutated copy: the unmutated module passes, the
+    queue's full check dropped (a mutant no simulation reaches: both tops
+    keep the queue from filling) is caught by a property, with its name."""
+
+    def test_a_counterexample_kills_and_the_design_passes(self):
+        if shutil.which("yosys-smtbmc") is None or shutil.which("z3") is None:
+            self.skipTest("yosys-smtbmc and z3 are installed by scripts/setup.sh (the formal tests need them too)")
+        import mutation
+        stage = mutation.FORMAL_SUITE_OF_MODULE["sc_step_gen"].stages[0]
+        self.assertIn("step_gen_count", stage.gtest_filter.split(","))
+        one = mutation.Stage(mutation.FORMAL_STAGE, "step_gen_count")
+        with tempfile.TemporaryDirectory() as d:
+            ws = mutation.Workspace(ROOT, Path(d), 1)
+            for sub in ("scripts", "rtl"):
+                shutil.copytree(ROOT / sub, ws.src / sub, ignore=shutil.ignore_patterns("__pycache__"))
+            status, detail, _ = ws.run_formal(one, 120)
+            self.assertEqual((status, detail), ("passed", ""))
+            path = ws.src / STEP_GEN
+            text = path.read_text()
+            old = "req_blocked = pend_d == PendMax;"
+            self.assertEqual(text.count(old), 1)
+            path.write_text(text.replace(old, "req_blocked = '0;"))
+            status, detail, _ = ws.run_formal(one, 120)
+            self.assertEqual(status, "failed")
+            self.assertIn("formal step_gen_count: counterexample at step", detail)
+            self.assertIn("p_pend_account", detail)
 
 
 class Equivalents(unittest.TestCase):
