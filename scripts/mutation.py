@@ -13,7 +13,10 @@ SC_COVER code. Two campaigns run a sample of it:
 
 Each mutant is applied to a copy of the committed tree (never to rtl/ or cmodel/
 of the project), only the Verilated tops its tests run are rebuilt, and the
-area's fast tests run with a time limit.
+area's fast tests run with a time limit; a survivor of an open-loop module
+then runs the servo suite, and a survivor of the simulations the module's
+formal properties (formal.py --check-as-is). Survivors listed in
+scripts/mutation_equivalent.json are reported as equivalent.
 
   scripts/mutation.py --list --area step_timing
   scripts/mutation.py --list --campaign common_mode --file sc_step_gen
@@ -422,7 +425,9 @@ def baseline(ws: Workspace, suite: Suite, a: argparse.Namespace) -> dict[Stage, 
         return {st: t for st, t in zip(suite.stages, cache[key])}
     times: dict[Stage, float] = {}
     for st in suite.stages:
-        ok, msg, bt = (True, "", 0.0) if st.binary == FORMAL_STAGE else ws.build_target(st.binary, a.build_timeout * 3)
+        ok, msg, bt = True, "", 0.0
+        if st.binary != FORMAL_STAGE:
+            ok, msg, bt = ws.build_target(st.binary, a.build_timeout * 3)
         if not ok:
             raise SystemExit(f"mutation.py: the unmutated copy does not build ({st.binary}): {msg}")
         status, detail, tt = ws.run_stage(st, 3600)
@@ -681,7 +686,7 @@ def main(argv: list[str]) -> int:
     final: dict[str, Result] = {m.id: done[m.id] for m in mutants if m.id in done}
     n_total = len(mutants)
     log(f"campaign {a.campaign}: {n_total} mutants, work dir {ws.work}")
-    # Pass 0 runs each mutant's own suite; pass 1 the second suite of its survivors.
+    # Pass k runs the k-th suite of each mutant that survived the ones before (pass 0: every mutant).
     for level in range(max((len(v) for v in suites.values()), default=0)):
         by_suite: dict[Suite, list[mc.Mutant]] = {}
         for m in mutants:
