@@ -7,7 +7,7 @@
 //    motion away from it runs to the exact end.
 //  - a STOP in the very clock a stream ends, a zero-length row met while
 //    moving, the FIFO running dry at rest and at cruise speed, a START whose
-//    head row is over a guard limit.
+//    head row is over a guard limit, the EN pin from reset.
 // RTL and model run in lockstep every clock; besides, each test checks a
 // property of its own (same rest as a pulsed STOP; the move stops short of
 // its end, or reaches it exactly), so a change made in RTL and model alike
@@ -361,6 +361,27 @@ TEST(MutationGaps, FifoRunningDryEndsTheStreamOnlyAtRest) {
       EXPECT_EQ(c.out().pulse_count, c.out().ref_pos_int) << way << ": every step on the pins";
       EXPECT_GT(c.out().ref_pos_int * dir, 0) << way;
     }
+  }
+}
+
+// EN (the driver enable pin) is low from reset until enable_i is set, and
+// follows enable_i one clock later after that, in RTL and model; checked
+// against the inputs, not RTL against model, so a wrong reset value in both
+// fails it too.
+TEST(MutationGaps, EnableIsLowFromResetAndFollowsTheInputOneClockLater) {
+  RtlCore rtl;
+  AxisCore model;
+  rtl.reset();
+  CoreInputs in;
+  in.cfg = PulseTiming{};
+  bool prev_enable = false;
+  for (int clk = 0; clk < 64; ++clk) {
+    EXPECT_EQ(rtl.outputs().en, prev_enable) << "RTL, clock " << clk;
+    EXPECT_EQ(model.outputs().en, prev_enable) << "model, clock " << clk;
+    in.enable = clk >= 8 && clk < 40 && clk != 20;  // low after reset, on, one clock off, on, off
+    rtl.step(in);
+    model.step(in);
+    prev_enable = in.enable;
   }
 }
 
