@@ -67,6 +67,19 @@ Rest stop_move(uint64_t after, uint64_t hold) {
   return {c.clock - t0, c.out().ref_pos_int, c.out().pulse_count};
 }
 
+// Empties the FIFO (one clock) and pushes `rows`, one a clock.
+void reload(LoadedCore& c, const std::vector<Row>& rows) {
+  CoreInputs f = c.in;
+  f.fifo_flush = true;
+  c.tick(f);
+  for (const Row& r : rows) {
+    CoreInputs w = c.in;
+    w.row_push = true;
+    w.row = r;
+    c.tick(w);
+  }
+}
+
 }  // namespace
 
 // A STOP held high until the axis rests stops exactly like a one-clock STOP:
@@ -266,16 +279,9 @@ TEST(MutationGaps, ZeroLengthRowMidMoveStopsUnderControl) {
   for (size_t bad = 1; bad + 1 < rows.size(); ++bad) {
     LoadedCore c(3000);
     // reload the FIFO with row `bad` cut to zero clocks
-    CoreInputs f = c.in;
-    f.fifo_flush = true;
-    c.tick(f);
-    for (size_t i = 0; i < rows.size(); ++i) {
-      CoreInputs w = c.in;
-      w.row_push = true;
-      w.row = rows[i];
-      if (i == bad) w.row.seg.clocks = 0;
-      c.tick(w);
-    }
+    std::vector<Row> cut = rows;
+    cut[bad].seg.clocks = 0;
+    reload(c, cut);
     c.start();
     bool stopping = false;
     i128 worst_dv = 0, last_v = 0;
@@ -305,17 +311,6 @@ TEST(MutationGaps, ZeroLengthRowMidMoveStopsUnderControl) {
 // at constant speed (a = 0, the end of a cruise row), it is an underrun: a
 // controlled stop without a velocity step, every step on the pins.
 TEST(MutationGaps, FifoRunningDryEndsTheStreamOnlyAtRest) {
-  const auto reload = [](LoadedCore& c, const std::vector<Row>& rows) {
-    CoreInputs f = c.in;
-    f.fifo_flush = true;
-    c.tick(f);
-    for (const Row& r : rows) {
-      CoreInputs w = c.in;
-      w.row_push = true;
-      w.row = r;
-      c.tick(w);
-    }
-  };
   for (int dir : {1, -1}) {
     const std::string way = dir > 0 ? "forward" : "backward";
     {
