@@ -7,7 +7,9 @@
 //    motion away from it runs to the exact end.
 //  - a STOP in the very clock a stream ends, a zero-length row met while
 //    moving, the FIFO running dry at rest and at cruise speed, a START whose
-//    head row is over a guard limit, the EN pin from reset.
+//    head row is over a guard limit, the pins from reset;
+//  - which flag a broken stream sets, the row index of a stream, pulse
+//    times of zero with steps owed every clock.
 // RTL and model run in lockstep every clock; besides, each test checks a
 // property of its own (same rest as a pulsed STOP; the move stops short of
 // its end, or reaches it exactly), so a change made in RTL and model alike
@@ -15,11 +17,15 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <utility>
 #include <cstdlib>
 #include <string>
 #include <vector>
 
 #include "loaded_core.h"
+#include "pin_monitor.h"
+#include "sim_run.h"
 
 using namespace sc;
 using stoptest::ld;
@@ -359,11 +365,11 @@ TEST(MutationGaps, FifoRunningDryEndsTheStreamOnlyAtRest) {
   }
 }
 
-// EN (the driver enable pin) is low from reset until enable_i is set, and
-// follows enable_i one clock later after that, in RTL and model; checked
-// against the inputs, not RTL against model, so a wrong reset value in both
-// fails it too.
-TEST(MutationGaps, EnableIsLowFromResetAndFollowsTheInputOneClockLater) {
+// From reset STEP is low, DIR is high (forward) and EN (the driver enable
+// pin) is low until enable_i is set; EN then follows enable_i one clock
+// later. RTL and model are checked against these levels, not against each
+// other, so a wrong reset value in both fails it too.
+TEST(MutationGaps, PinsFromResetAreStepLowDirForwardEnLowAndEnFollowsItsInput) {
   RtlCore rtl;
   AxisCore model;
   rtl.reset();
@@ -371,8 +377,11 @@ TEST(MutationGaps, EnableIsLowFromResetAndFollowsTheInputOneClockLater) {
   in.cfg = PulseTiming{};
   bool prev_enable = false;
   for (int clk = 0; clk < 64; ++clk) {
-    EXPECT_EQ(rtl.outputs().en, prev_enable) << "RTL, clock " << clk;
-    EXPECT_EQ(model.outputs().en, prev_enable) << "model, clock " << clk;
+    for (const auto& [who, o] : {std::pair{"RTL", rtl.outputs()}, std::pair{"model", model.outputs()}}) {
+      EXPECT_EQ(o.en, prev_enable) << who << ", clock " << clk;
+      EXPECT_FALSE(o.step) << who << ", clock " << clk;
+      EXPECT_TRUE(o.dir) << who << ", clock " << clk << ": DIR idles forward (no move commanded)";
+    }
     in.enable = clk >= 8 && clk < 40 && clk != 20;  // low after reset, on, one clock off, on, off
     rtl.step(in);
     model.step(in);
@@ -399,4 +408,125 @@ TEST(MutationGaps, StartWithTheHeadRowOverAGuardLimitIsRefused) {
   EXPECT_TRUE(c.out().guard);
   EXPECT_EQ(c.out().fifo_level, 0) << "what was queued behind it is flushed";
   EXPECT_FALSE(c.out().busy);
+}
+
+// A stream that breaks sets the one flag of its cause and no other: the FIFO
+// running dry while moving (UNDERRUN), a row that does not continue the
+// motion (DISCONTINUITY), a row over a guard limit (GUARD); each ends in a
+// controlled stop at rest with every step on the pins.
+TEST(MutationGaps, EachStreamBreakSetsTheFlagOfItsCauseOnly) {
+  enum Cause { Underrun, Discontinuity, Guard };
+  for (const Cause cause : {Underrun, Discontinuity, Guard}) {
+    const char* name = cause == Underrun ? "underrun" : cause == Discontinuity ? "discontinuity" : "guard";
+    LoadedCore c(3000);
+    std::vector<Row> rows = move_rows(c.plan.segments);
+    const auto cruise = std::find_if(rows.begin(), rows.end(), [](const Row& r) {
+      return r.seg.jerk == 0 && r.seg.acc0 == 0 && r.seg.vel0 != 0;
+    });
+    ASSERT_NE(cruise, rows.end()) << name << ": the move has a cruise row";
+    if (cause == Underrun) {
+      rows.erase(cruise + 1, rows.end());  // dry at the end of the cruise
+    } else if (cause == Discontinuity) {
+      (cruise + 1)->seg.vel0 -= 1;  // one LSB off the cruise row's end speed
+    } else {
+      const i128 v = cruise->seg.vel0;  // the cruise row starts above the velocity guard
+      c.in.guard.vel = u128(v - 1);
+    }
+    reload(c, rows);
+    c.start();
+    bool stopping = false;
+    while ((c.out().busy || !c.out().done) && c.clock < 3'000'000) {
+      c.tick();
+      stopping = stopping || c.out().stopping;
+      if (!c.out().busy && c.out().ref_vel == 0 && c.clock > 100) break;
+    }
+    EXPECT_TRUE(c.chk.errors().empty()) << name << c.chk.finish();
+    EXPECT_TRUE(stopping) << name << ": a controlled stop";
+    EXPECT_EQ(c.out().underrun, cause == Underrun) << name;
+    EXPECT_EQ(c.out().discont, cause == Discontinuity) << name;
+    EXPECT_EQ(c.out().guard, cause == Guard) << name;
+    EXPECT_FALSE(c.out().fault_table) << name;
+    EXPECT_EQ(c.out().ref_vel, 0) << name;
+    EXPECT_EQ(c.out().pulse_count, c.out().ref_pos_int) << name << ": every step on the pins";
+    EXPECT_GT(c.out().ref_pos_int, 0) << name;
+  }
+}
+
+// The row index (STATUS.SEG_IDX) counts the rows of the running move from 0
+// and starts again at 0 with the next move of the stream: each index is
+// shown for exactly its row's clocks (from the row lengths, not the model).
+TEST(MutationGaps, RowIndexCountsTheRowsOfEachMoveForTheirClocks) {
+  LoadedCore c(3000);
+  std::vector<Row> rows = move_rows(c.plan.segments, /*stream_end=*/false);
+  const std::vector<Row> second = move_rows(c.plan.segments);
+  rows.insert(rows.end(), second.begin(), second.end());
+  ASSERT_LE(rows.size(), size_t(32)) << "both moves fit the FIFO";
+  reload(c, rows);
+  c.start();
+  // (index, clocks shown) runs while the stream runs
+  std::vector<std::pair<int, uint64_t>> runs;
+  while ((c.out().busy || !c.out().done) && c.clock < 4'000'000) {
+    c.tick();
+    if (!c.out().busy) break;
+    const int idx = c.out().seg_idx;
+    if (runs.empty() || runs.back().first != idx) runs.emplace_back(idx, 0);
+    ++runs.back().second;
+  }
+  EXPECT_TRUE(c.chk.errors().empty()) << c.chk.finish();
+  EXPECT_EQ(c.out().ref_pos_int, 6000) << "both moves ran to their end";
+  const size_t n = second.size();
+  ASSERT_EQ(runs.size(), 2 * n) << "one run of the index per row";
+  for (size_t k = 0; k < runs.size(); ++k) {
+    EXPECT_EQ(runs[k].first, int(k % n)) << "row " << k;
+    // the first run also shows the clocks between START and the first row
+    if (k > 0) {
+      EXPECT_EQ(runs[k].second, rows[k].seg.clocks) << "row " << k;
+    }
+  }
+}
+
+// PULSE_TIME HIGH = LOW = 0 act as one clock: with steps owed faster than the
+// pins can take them (one a clock; the step-rate guard stops the executor)
+// every pulse is high exactly one clock and low at least one, and the pins'
+// rising edges are the reference position at rest: no two steps merge.
+TEST(MutationGaps, ZeroPulseTimesActAsOneClockAndMergeNoSteps) {
+  for (const int sign : {1, -1}) {
+    const std::string what = sign > 0 ? "forward" : "backward";
+    RtlCore rtl;
+    rtl.reset();
+    AxisCore model;
+    LockstepChecker chk;
+    const PulseTiming zero{0, 0, 0, 0};
+    PinMonitor pins(PinRules{PulseTiming{1, 1, 0, 0}, false, StepAccounting::ReferencePosition});
+    Segment s;
+    s.phase = Phase::PhCruise;
+    s.clocks = 400;
+    s.vel0 = sign * i128(kOne - 1);  // a carry every clock
+    CoreInputs in;
+    in.enable = true;
+    in.cfg = zero;
+    uint64_t clock = 0;
+    auto tick = [&](const CoreInputs& ci) {
+      rtl.step(ci);
+      model.step(ci);
+      chk.compare(clock, rtl.outputs(), model.outputs());
+      pins.on_clock(clock, rtl.outputs());
+      ++clock;
+    };
+    for (const CoreInputs& ci : load_sequence(std::vector<Segment>{s}, kOne / 2, in)) {
+      tick(ci);
+      in = ci;
+    }
+    in.start = false;
+    for (int k = 0; k < 2000 && (rtl.outputs().busy || clock < 100); ++k) tick(in);
+    pins.finish(clock);
+    const CoreOutputs end = rtl.outputs();
+    EXPECT_TRUE(chk.errors().empty()) << what << chk.finish();
+    for (const std::string& e : pins.errors()) ADD_FAILURE() << what << ": " << e;
+    EXPECT_FALSE(end.busy) << what;
+    EXPECT_TRUE(end.fault_overrun) << what << ": the step-rate guard stopped the executor";
+    EXPECT_GT(std::abs(end.ref_pos_int), 2) << what;
+    EXPECT_EQ(pins.net_steps(), end.ref_pos_int) << what << ": a step merged or lost";
+    EXPECT_EQ(end.pulse_count, end.ref_pos_int) << what;
+  }
 }
