@@ -331,6 +331,72 @@ TEST(ServoAxisPins, LongDirSetupOpenLoopStepEdgesSumToDistance) { expect_pins_ma
 
 TEST(ServoAxisPins, LongDirSetupClosedLoopStepEdgesSumToDistance) { expect_pins_match_distance(true); }
 
+// Once the reference rests, the controller's rate command u alone moves the
+// axis; with no step owed, DIR is pre-positioned to the sign of u (as soon
+// as the hold time since the last STEP rise allows), so a correction step
+// after a reversal does not wait for the DIR setup time. Judged on the
+// model's pins against u, not against the RTL: every clock after a clock
+// with u != 0 of the same sign as now, nothing owed, STEP low and the hold
+// time served shows DIR at that sign. The move's settling reverses (the
+// rotor's lag overshoots), so DIR must turn to u at least once.
+TEST(ServoAxisPins, DirFollowsTheRateCommandOnceTheReferenceRests) {
+  const PulseTiming t = long_dir_setup();
+  const Plan plan = plan_with(fast_backward_move(), t);
+  ASSERT_FALSE(plan.segments.empty());
+  ControllerParams p;
+  p.u_lim = kFastMoveULim;
+  p.ferr_lim = kFastMoveFerrLim;
+  const PlantConfig pc;
+  ServoInputs in;
+  ASSERT_EQ(to_servo_config(p, pc, t, in.cfg), "");
+  ServoAxis m;
+  Plant plant(pc, ClkHz);
+  ServoOutputs prev = m.outputs();
+  uint64_t clk = 0, last_rise = 0, checked = 0, turned = 0, late = 0;
+  std::string first_late;
+  bool risen = false;
+  auto clock = [&](const ServoInputs& si) {
+    m.step(si);
+    const ServoOutputs o = m.outputs();
+    ++clk;
+    if (o.step && !prev.step) {
+      last_rise = clk;
+      risen = true;
+    }
+    const bool hold_served = !risen || clk - 1 >= last_rise + t.hold;
+    if (prev.ref_done && prev.ctl_active && prev.u != 0 && (prev.u > 0) == (o.u > 0) && o.u != 0 &&
+        prev.step_pending == 0 && !prev.step && hold_served) {
+      ++checked;
+      turned += prev.dir != (prev.u > 0);
+      if (o.dir != (prev.u > 0) && late++ == 0) first_late = fmt::format("clock {}: u {}, DIR {}", clk, prev.u, o.dir);
+    }
+    prev = o;
+    plant.clock(o.step, o.dir);
+    in.enc_a = plant.enc_a();
+    in.enc_b = plant.enc_b();
+    in.enc_z = plant.enc_z();
+  };
+  for (const Row& r : move_rows(plan.segments)) {
+    ServoInputs w = in;
+    w.row_push = true;
+    w.row = r;
+    clock(w);
+  }
+  in.pos_frac0 = plan.pos_frac0;
+  ServoInputs st = in;
+  st.start = true;
+  clock(st);
+  const uint64_t limit = plan.total_clocks + uint64_t(2 * ClkHz);
+  for (uint64_t n = 0; n < limit && !m.outputs().done; ++n) clock(in);
+  for (uint64_t n = 0; n < ClkHz / 100; ++n) clock(in);
+  EXPECT_TRUE(m.outputs().done);
+  std::printf("DIR against u: %llu clocks checked, %llu turns\n", (unsigned long long)checked,
+              (unsigned long long)turned);
+  EXPECT_EQ(late, 0u) << "DIR not pre-positioned to u, first at " << first_late;
+  EXPECT_GT(checked, 1000u) << "the settling must be judged";
+  EXPECT_GT(turned, 0u) << "the settling must reverse";
+}
+
 // The default gains at every accepted control rate (the ends of the
 // --ctl-rate range and rates between): the defaults for the rate keep the
 // loop's gains per second (scurve::controller_defaults), so the move ends
