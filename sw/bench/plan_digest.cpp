@@ -5,6 +5,11 @@
 //   plan_digest --slowest N      the N slowest plan() / plan_from() requests
 //   plan_digest --combined       one hash over all lines
 //   plan_digest --expect HEX     exit 1 unless the combined hash is HEX
+//   plan_digest --durations FILE one line per request / stream move: its duration in clocks (or the
+//                                error's parameter), to compare the time-optimality of two planners
+//   plan_digest --compare FILE   this planner's durations against FILE's: faster / equal / slower
+//                                counts, accepted <-> refused and error parameter changes; exit 1 on
+//                                a slower result or a changed outcome
 // PLAN_DIGEST_N sets the number of random requests per clock rate (4000).
 // The set: random_request() requests (accepted or not) through plan(), the
 // same requests through plan_from() from exact start states, and random
@@ -140,6 +145,63 @@ uint64_t digest(const StreamedMove& m) {
   return h.h;
 }
 
+// "<kind> <hz> <i> ok <clocks> v_end=<v_end_actual>" or "<kind> <hz> <i> err <parameter>".
+std::string duration_line(const char* kind, double hz, int i, const PlanResult& r) {
+  char buf[256];
+  if (const auto* e = std::get_if<Error>(&r)) {
+    std::snprintf(buf, sizeof buf, "%s %g %d err %s", kind, hz, i, e->parameter.c_str());
+  } else {
+    const Plan& p = std::get<Plan>(r);
+    std::snprintf(buf, sizeof buf, "%s %g %d ok %llu v_end=%.17g", kind, hz, i, (unsigned long long)p.total_clocks,
+                  p.v_end_actual);
+  }
+  return buf;
+}
+
+// Compares duration lines (same requests, same order) of FILE (before) and `now`.
+int compare_durations(const std::string& file, const std::vector<std::string>& now,
+                      const std::vector<std::string>& what) {
+  std::ifstream f(file);
+  std::string l;
+  size_t k = 0, faster = 0, equal = 0, slower = 0, changed = 0, shown = 0;
+  long long saved = 0;
+  const auto split = [](const std::string& s) {
+    std::vector<std::string> w;
+    size_t i = 0;
+    while (i < s.size()) {
+      const size_t j = std::min(s.find(' ', i), s.size());
+      w.push_back(s.substr(i, j - i));
+      i = j + 1;
+    }
+    return w;
+  };
+  while (std::getline(f, l) && k < now.size()) {
+    const auto a = split(l), b = split(now[k]);
+    const bool ok_a = a.size() > 4 && a[3] == "ok", ok_b = b.size() > 4 && b[3] == "ok";
+    const bool is_end = a.size() > 2 && a[2] == "end";
+    if (is_end || !ok_a || !ok_b) {
+      if (l != now[k]) {
+        ++changed;
+        if (shown++ < 20) std::printf("CHANGED: %s -> %s  %s\n", l.c_str(), now[k].c_str(), what[k].c_str());
+      }
+    } else {
+      const long long ca = std::atoll(a[4].c_str()), cb = std::atoll(b[4].c_str());
+      if (cb < ca) ++faster;
+      if (cb == ca) ++equal;
+      if (cb > ca) {
+        ++slower;
+        if (shown++ < 20) std::printf("SLOWER: %s -> %s  %s\n", l.c_str(), now[k].c_str(), what[k].c_str());
+      }
+      saved += ca - cb;
+    }
+    ++k;
+  }
+  if (k != now.size()) ++changed;
+  std::printf("%zu results: %zu faster (%lld clocks in all), %zu equal, %zu slower, %zu outcome changes\n", k,
+              faster, saved, equal, slower, changed);
+  return slower || changed ? 1 : 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -150,6 +212,7 @@ int main(int argc, char** argv) {
   const int n_requests = n_env ? std::atoi(n_env) : 4000;
 
   std::vector<std::string> lines, what;  // what: the request of each line
+  std::vector<std::string> durations;     // --durations: one per line of `lines`
   std::vector<Timed> times;
   char buf[128];
 
@@ -165,6 +228,7 @@ int main(int argc, char** argv) {
       double t1 = cpu_seconds();
       std::snprintf(buf, sizeof buf, "plan %g %d %016llx", hz, i, (unsigned long long)digest(r));
       lines.push_back(buf);
+      durations.push_back(duration_line("plan", hz, i, r));
       what.push_back(describe(rr));
       times.push_back({(t1 - t0) * 1e6, std::string("plan ") + (std::holds_alternative<Plan>(r) ? "ok  " : "err ") +
                                             describe(rr)});
@@ -181,6 +245,7 @@ int main(int argc, char** argv) {
       t1 = cpu_seconds();
       std::snprintf(buf, sizeof buf, "from %g %d %016llx", hz, i, (unsigned long long)digest(rf));
       lines.push_back(buf);
+      durations.push_back(duration_line("from", hz, i, rf));
       std::snprintf(buf, sizeof buf, " v0=%.17g", v);
       what.push_back(describe(rr) + buf);
       times.push_back({(t1 - t0) * 1e6, std::string("from ") + (std::holds_alternative<Plan>(rf) ? "ok  " : "err ") +
@@ -207,12 +272,17 @@ int main(int argc, char** argv) {
       for (size_t k = 0; k < out.size(); ++k) {
         std::snprintf(buf, sizeof buf, "stream %d %zu %016llx", run, k, (unsigned long long)digest(out[k]));
         lines.push_back(buf);
+        std::snprintf(buf, sizeof buf, "stream %d %zu ok %llu v_out=%.17g", run, k,
+                      (unsigned long long)(out[k].end_clock - out[k].start_clock), out[k].v_out);
+        durations.push_back(buf);
         what.push_back("stream move");
       }
       Hash h;
       h.str(err);
       std::snprintf(buf, sizeof buf, "stream %d end %zu %016llx", run, out.size(), (unsigned long long)h.h);
       lines.push_back(buf);
+      std::snprintf(buf, sizeof buf, "stream %d end %zu", run, out.size());
+      durations.push_back(buf + (err.empty() ? std::string() : " err " + err));
       what.push_back("stream end");
       ++run;
     }
@@ -230,6 +300,13 @@ int main(int argc, char** argv) {
     }
     return 0;
   }
+  if (mode == "--durations") {
+    std::ofstream f(file);
+    for (const auto& l : durations) f << l << "\n";
+    std::printf("wrote %zu durations to %s\n", durations.size(), file.c_str());
+    return 0;
+  }
+  if (mode == "--compare") return compare_durations(file, durations, what);
   if (mode == "--write") {
     std::ofstream f(file);
     for (const auto& l : lines) f << l << "\n";
