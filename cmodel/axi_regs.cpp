@@ -273,10 +273,20 @@ void AxiRegs::step(const AxiIn& in, const RegsSide& side, const CoreOutputs& cor
         case RegFifoLow:
           d.low_water = uint8_t(field(wmerge(uint32_t(q.low_water) << FifoLowLsb, wd, wmask), FifoLowLsb, RowLevelW));
           break;
-        case RegPulseTime:
-          d.cfg.high = uint16_t(field(wmerge(uint32_t(q.cfg.high) << PulseHighLsb, wd, wmask), PulseHighLsb, PulseTimeW));
-          d.cfg.low = uint16_t(field(wmerge(uint32_t(q.cfg.low) << PulseLowLsb, wd, wmask), PulseLowLsb, PulseTimeW));
+        case RegPulseTime: {
+          const uint32_t old_w = (uint32_t(q.cfg.high) << PulseHighLsb) | (uint32_t(q.cfg.low) << PulseLowLsb);
+          const uint32_t w = wmerge(old_w, wd, wmask);
+          const uint16_t high = uint16_t(field(w, PulseHighLsb, PulseTimeW));
+          const uint16_t low = uint16_t(field(w, PulseLowLsb, PulseTimeW));
+          if (high == 0 || low == 0) {
+            d.bresp = kSlvErr;  // a pulse time of 0 clocks: nothing changes
+            set_reject = true;
+          } else {
+            d.cfg.high = high;
+            d.cfg.low = low;
+          }
           break;
+        }
         case RegDirTime:
           d.cfg.setup = uint16_t(field(wmerge(uint32_t(q.cfg.setup) << DirSetupLsb, wd, wmask), DirSetupLsb, PulseTimeW));
           d.cfg.hold = uint16_t(field(wmerge(uint32_t(q.cfg.hold) << DirHoldLsb, wd, wmask), DirHoldLsb, PulseTimeW));

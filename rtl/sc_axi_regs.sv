@@ -293,6 +293,7 @@ module sc_axi_regs #(
   logic                      latched_q, latched_d, latch_cap;
   logic signed [sc_pkg::PosIntW-1:0] latch_pulse_q, latch_pulse_d, latch_enc_q, latch_enc_d;
   logic [31:0]               sw_cfg_word, sw_cfg_new;  // SW_CFG as read, and as a write would leave it
+  logic [31:0]               pulse_new;  // PULSE_TIME as a write would leave it
 
   // ---- decode --------------------------------------------------------------
   logic        busy_eff;
@@ -388,6 +389,7 @@ module sc_axi_regs #(
     sw_cfg_word = w;
   end
   assign sw_cfg_new = wmerge(sw_cfg_word, wd, wmask);
+  assign pulse_new  = wmerge(32'(high_q) << sc_pkg::PulseHighLsb | 32'(low_q) << sc_pkg::PulseLowLsb, wd, wmask);
 
   // position latch: an edge of the filtered home, probe or index level, armed
   always_comb begin
@@ -679,10 +681,14 @@ module sc_axi_regs #(
           AFifoLow: low_water_d = RowLevelW'(wmerge(32'(low_water_q) << sc_pkg::FifoLowLsb, wd, wmask)
                                              >> sc_pkg::FifoLowLsb);
           APulseTime: begin
-            high_d = PulseTimeW'(wmerge(32'(high_q) << sc_pkg::PulseHighLsb, wd, wmask)
-                                 >> sc_pkg::PulseHighLsb);
-            low_d  = PulseTimeW'(wmerge(32'(low_q) << sc_pkg::PulseLowLsb, wd, wmask)
-                                 >> sc_pkg::PulseLowLsb);
+            if (pulse_new[sc_pkg::PulseHighLsb +: PulseTimeW] == '0 ||
+                pulse_new[sc_pkg::PulseLowLsb +: PulseTimeW] == '0) begin
+              bresp_d    = RespSlvErr;  // a pulse time of 0 clocks: nothing changes
+              set_reject = 1'b1;
+            end else begin
+              high_d = pulse_new[sc_pkg::PulseHighLsb +: PulseTimeW];
+              low_d  = pulse_new[sc_pkg::PulseLowLsb +: PulseTimeW];
+            end
           end
           ADirTime: begin
             setup_d = PulseTimeW'(wmerge(32'(setup_q) << sc_pkg::DirSetupLsb, wd, wmask)
@@ -1108,6 +1114,9 @@ module sc_axi_regs #(
       p_b_no_exokay: assert (!s_axi_bvalid_o || s_axi_bresp_o != 2'b01);
       p_r_resp: assert (!f_r_new || s_axi_rresp_o ==
                         (f_kind(f_rd_addr_q) == FUnmapped ? RespDecErr : RespOkay));
+      // -- group pulse_time: the step generator's input contract (sc_step_gen's
+      // a_cfg_min) holds whatever the master writes
+      p_pulse_nonzero: assert (cfg_high_o != '0 && cfg_low_o != '0);
     end
   end
 `endif

@@ -186,6 +186,15 @@ GROUPS = [
                   "closed-loop status words decoded without Servo"),
         broken_depth=5),
     Group(
+        name="axi_regs_pulse_time", module="sc_axi_regs", params={"Servo": 1},
+        what="PULSE_TIME HIGH and LOW never 0 (sc_step_gen's input contract), whatever the master writes",
+        asserts=["p_pulse_nonzero"],
+        induction=2, depth=2,
+        mutation=("if (pulse_new[sc_pkg::PulseHighLsb +: PulseTimeW] == '0 ||",
+                  "if (1'b0 &&",
+                  "a PULSE_TIME write of HIGH = 0 taken"),
+        broken_depth=5),
+    Group(
         name="uart_bridge_frames", module="sc_uart_bridge", params={"TimeoutClks": 5},
         what="AXI write/read only right after a clean, whole write/read frame (8/4 bytes, "
              "no framing error, no timeout gap), with its address and data",

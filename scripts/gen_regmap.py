@@ -360,6 +360,7 @@ def doc(params, words, enums=None):
            "Writes to PULSE_TIME, DIR_TIME, POS_FRAC0_*, STOP_JERK_*, STOP_ACC_*, SW_CFG, GUARD_*, CMD.START and "
            "CMD.FLUSH while "
            "STATUS.BUSY is set are refused: SLVERR, ERR.REJECT set, the running move is not touched. "
+           "So is a PULSE_TIME write that would leave HIGH or LOW at 0 (the register keeps its value). "
            "CMD.START is also refused while ERR.ESTOP is set or CTRL.ENABLE is 0. The row staging "
            "registers (SEG_*) and ROW_PUSH stay open while busy: the host appends rows to the "
            f"{p['RowFifoDepth']}-row FIFO while the axis runs; a ROW_PUSH to a full FIFO answers "

@@ -13,7 +13,7 @@ set(SC_FORMAL_FAST
   exec_steps exec_abort exec_continuity stop_gen_limits)
 set(SC_FORMAL_SLOW
   step_gen_overrun step_gen_drain
-  axi_regs_handshake axi_regs_response axi_regs_decode axi_regs_decode_axis
+  axi_regs_handshake axi_regs_response axi_regs_decode axi_regs_decode_axis axi_regs_pulse_time
   core_done core_abort core_limits core_rate)
 
 foreach(group IN LISTS SC_FORMAL_FAST SC_FORMAL_SLOW)

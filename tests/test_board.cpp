@@ -2,9 +2,11 @@
 //   AxiRegs.*   AXI4-Lite master on sc_axi_axis, RTL and model in lockstep
 //   BoardUart.* UART host on the Verilated board top (sc_board_top)
 //   BoardLong.* a paper group (30,000 pulses, ~14 s of motion) over AXI
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "axi_bench.h"
@@ -58,8 +60,10 @@ TEST(AxiRegs, ResetValuesReservedBitsAndAccessTypes) {
                                              : 0xffffffffu;
       EXPECT_EQ(b.write(r.addr, ones), kOkay) << n;
       EXPECT_EQ(b.read(r.addr).first, r.mask & ones) << n << ": all-ones must read back as the implemented bits";
-      EXPECT_EQ(b.write(r.addr, 0), kOkay) << n;
-      EXPECT_EQ(b.read(r.addr).first, 0u) << n;
+      // PULSE_TIME HIGH = 0 or LOW = 0 is refused (below): its smallest legal value
+      const uint32_t low = n == "PULSE_TIME" ? (1u << PulseHighLsb) | (1u << PulseLowLsb) : 0u;
+      EXPECT_EQ(b.write(r.addr, low), kOkay) << n;
+      EXPECT_EQ(b.read(r.addr).first, low) << n;
     } else if (r.access == regmap::Access::RO) {
       const uint32_t before = b.read(r.addr).first;
       EXPECT_EQ(b.write(r.addr, ~before), kSlvErr) << n << ": write to a read-only register";
@@ -79,6 +83,21 @@ TEST(AxiRegs, ResetValuesReservedBitsAndAccessTypes) {
   EXPECT_EQ(b.read(reg_addr("LATCH_CFG")).first, field_mask("LATCH_CFG", "RISE"));
   EXPECT_TRUE(b.read(reg_addr("ERR")).first & field_mask("ERR", "REJECT"));
   EXPECT_EQ(b.write(reg_addr("ERR"), field_mask("ERR", "REJECT")), kOkay);
+  // a pulse time of 0 clocks is refused and changes nothing, also when the
+  // byte strobes leave the other half as it is
+  const uint32_t pulse = (7u << PulseHighLsb) | (9u << PulseLowLsb);
+  EXPECT_EQ(b.write(reg_addr("PULSE_TIME"), pulse), kOkay);
+  for (const auto& [data, strobes] : {std::pair{0u, 0xfu}, std::pair{9u << PulseLowLsb, 0xfu},
+                                      std::pair{7u << PulseHighLsb, 0xfu}, std::pair{0u, 0x3u},
+                                      std::pair{0u, 0xcu}}) {
+    const std::string what = fmt::format("PULSE_TIME = {:#010x}, WSTRB {:#x}", data, strobes);
+    EXPECT_EQ(b.write(reg_addr("PULSE_TIME"), data, strobes), kSlvErr) << what;
+    EXPECT_EQ(b.read(reg_addr("PULSE_TIME")).first, pulse) << what;
+    EXPECT_TRUE(b.read(reg_addr("ERR")).first & field_mask("ERR", "REJECT")) << what;
+    EXPECT_EQ(b.write(reg_addr("ERR"), field_mask("ERR", "REJECT")), kOkay);
+  }
+  EXPECT_EQ(b.write(reg_addr("PULSE_TIME"), 5u << PulseLowLsb, 0xcu), kOkay) << "LOW alone to 5";
+  EXPECT_EQ(b.read(reg_addr("PULSE_TIME")).first, (7u << PulseHighLsb) | (5u << PulseLowLsb));
   // byte strobes: only the selected bytes change
   EXPECT_EQ(b.write(reg_addr("SEG_CLOCKS"), 0x11223344u), kOkay);
   EXPECT_EQ(b.write(reg_addr("SEG_CLOCKS"), 0xaabbccddu, 0x5), kOkay);
