@@ -5,12 +5,14 @@
 //   plan_digest --slowest N      the N slowest plan() / plan_from() requests
 //   plan_digest --combined       one hash over all lines
 //   plan_digest --expect HEX     exit 1 unless the combined hash is HEX
-//   plan_digest --durations FILE one line per request / stream move: its duration in clocks (or the
-//                                error's parameter), to compare the time-optimality of two planners
+//   plan_digest --durations FILE one line per request: its duration in clocks (or the error's
+//                                parameter), per stream move its end clock from the stream's start,
+//                                to compare the time-optimality of two planners
 //   plan_digest --compare FILE   this planner's durations against FILE's: faster / equal / slower
 //                                counts, accepted <-> refused and error parameter changes; exit 1 on
 //                                a slower result or a changed outcome
-// PLAN_DIGEST_N sets the number of random requests per clock rate (4000).
+// PLAN_DIGEST_N sets the number of random requests per clock rate (4000),
+// PLAN_DIGEST_SHOW how many differences --compare lists (20).
 // The set: random_request() requests (accepted or not) through plan(), the
 // same requests through plan_from() from exact start states, and random
 // streams through StreamPlanner. Each hash covers the whole result: every
@@ -165,6 +167,8 @@ int compare_durations(const std::string& file, const std::vector<std::string>& n
   std::string l;
   size_t k = 0, faster = 0, equal = 0, slower = 0, changed = 0, shown = 0;
   long long saved = 0;
+  const char* show_env = std::getenv("PLAN_DIGEST_SHOW");  // how many differences to list (20)
+  const size_t show = show_env ? size_t(std::atoll(show_env)) : 20;
   const auto split = [](const std::string& s) {
     std::vector<std::string> w;
     size_t i = 0;
@@ -182,7 +186,7 @@ int compare_durations(const std::string& file, const std::vector<std::string>& n
     if (is_end || !ok_a || !ok_b) {
       if (l != now[k]) {
         ++changed;
-        if (shown++ < 20) std::printf("CHANGED: %s -> %s  %s\n", l.c_str(), now[k].c_str(), what[k].c_str());
+        if (shown++ < show) std::printf("CHANGED: %s -> %s  %s\n", l.c_str(), now[k].c_str(), what[k].c_str());
       }
     } else {
       const long long ca = std::atoll(a[4].c_str()), cb = std::atoll(b[4].c_str());
@@ -190,7 +194,7 @@ int compare_durations(const std::string& file, const std::vector<std::string>& n
       if (cb == ca) ++equal;
       if (cb > ca) {
         ++slower;
-        if (shown++ < 20) std::printf("SLOWER: %s -> %s  %s\n", l.c_str(), now[k].c_str(), what[k].c_str());
+        if (shown++ < show) std::printf("SLOWER: %s -> %s  %s\n", l.c_str(), now[k].c_str(), what[k].c_str());
       }
       saved += ca - cb;
     }
@@ -246,7 +250,7 @@ int main(int argc, char** argv) {
       std::snprintf(buf, sizeof buf, "from %g %d %016llx", hz, i, (unsigned long long)digest(rf));
       lines.push_back(buf);
       durations.push_back(duration_line("from", hz, i, rf));
-      std::snprintf(buf, sizeof buf, " v0=%.17g", v);
+      std::snprintf(buf, sizeof buf, " v0=%.17g frac=%s", v, to_hex_u128(st.frac, 80).c_str());
       what.push_back(describe(rr) + buf);
       times.push_back({(t1 - t0) * 1e6, std::string("from ") + (std::holds_alternative<Plan>(rf) ? "ok  " : "err ") +
                                             describe(rr) + buf});
@@ -272,8 +276,10 @@ int main(int argc, char** argv) {
       for (size_t k = 0; k < out.size(); ++k) {
         std::snprintf(buf, sizeof buf, "stream %d %zu %016llx", run, k, (unsigned long long)digest(out[k]));
         lines.push_back(buf);
+        // A streamed move's end clock from the stream's start: its own duration
+        // depends on the fraction where the previous move ended.
         std::snprintf(buf, sizeof buf, "stream %d %zu ok %llu v_out=%.17g", run, k,
-                      (unsigned long long)(out[k].end_clock - out[k].start_clock), out[k].v_out);
+                      (unsigned long long)out[k].end_clock, out[k].v_out);
         durations.push_back(buf);
         what.push_back("stream move");
       }
