@@ -204,6 +204,7 @@ struct Candidate {
   i128 gain = 0;  // travel of the two transitions
   bool feasible = false;
   bool too_far = false;
+  bool partial = false;  // probe stopped after t1: gain is t1's only
 };
 
 // Plateau v1 (LSB) between the transitions vs -> v1 -> ve. Feasible when a
@@ -211,11 +212,17 @@ struct Candidate {
 // gain < hi, and with no plateau speed the gain itself must be >= lo.
 // probe: the caller keeps only feasible candidates, so an infeasible one may
 // stop early, without t2 or gain, once the first transition alone is too
-// far or covers the window (the second one's gain is >= 0).
+// far or covers the window (the second one's gain is >= 0): then gain is the
+// first transition's alone (partial).
 Candidate evaluate(i128 vs, i128 v1_lsb, i128 ve, const TravelWindow& w, const Limits& lim, bool probe = false) {
   Candidate c;
   c.t1 = transition_to(vs, v1_lsb, lim);
-  if (probe && (c.t1.too_far || c.t1.gain >= w.hi)) return c;
+  if (probe && (c.t1.too_far || c.t1.gain >= w.hi)) {
+    c.too_far = c.t1.too_far;
+    c.gain = c.t1.gain;  // (a lower bound)
+    c.partial = true;
+    return c;
+  }
   c.t2 = transition_to(c.t1.v_end, ve, lim);
   c.too_far = c.t1.too_far || c.t2.too_far;
   if (c.too_far) return c;
@@ -225,36 +232,143 @@ Candidate evaluate(i128 vs, i128 v1_lsb, i128 ve, const TravelWindow& w, const L
   return c;
 }
 
-// The plateau (pulses/s) whose closed-form travel vs -> p -> ve is `aim`.
-double closed_form_plateau(i128 vs, i128 ve, i128 aim, double v_lo, double v_hi, const Limits& lim) {
-  const double a = double(lim.a_max);
-  const double j_up = lim.trapezoid ? 0.0 : double(std::min(lim.j_acc_in, lim.j_acc_out));
-  const double j_down = lim.trapezoid ? 0.0 : double(std::min(lim.j_dec_in, lim.j_dec_out));
-  const double x = double(vs), y = double(ve), target = double(aim), scale = lim.units.vel;
-  const auto travel = [&](double p) {
-    const double pl = p * scale;
-    return closed_form_travel(x, pl, a, pl >= x ? j_up : j_down) +
-           closed_form_travel(pl, y, a, y >= pl ? j_up : j_down);
-  };
-  double lo = v_lo, hi = v_hi;
-  for (int i = 0; i < 60 && hi - lo > 1e-9 * hi; ++i) {
-    const double mid = 0.5 * (lo + hi);
-    (travel(mid) <= target ? lo : hi) = mid;
-  }
-  return lo;
+// The ramps of a transition: with the same ramps, its realised changes of
+// velocity lie one shortfall bound (a clock at the peak) apart.
+struct Shape {
+  uint64_t clocks = 0;
+  int64_t jerk = 0, peak = 0;
+  bool operator==(const Shape& o) const { return clocks == o.clocks && jerk == o.jerk && peak == o.peak; }
+};
+Shape shape_of(const Transition& t) {
+  if (t.rows.empty()) return {};
+  const Row& r = *t.rows.begin();
+  return {r.clocks, r.jerk, int64_t(t.shortfall_bound)};
 }
 
-// The plateau walk's factors 0.97^k, k = 1..kWalkSteps: std::pow's values,
-// computed once (a pow call per step cost as much as the step's arithmetic).
-constexpr int kWalkSteps = 2000;
-double walk_factor(int k) {
-  static const std::array<double, kWalkSteps + 1> table = [] {
-    std::array<double, kWalkSteps + 1> t{};
-    for (int i = 0; i <= kWalkSteps; ++i) t[size_t(i)] = std::pow(0.97, i);
-    return t;
-  }();
-  return table[size_t(k)];
+// The cruise that places the travel in the window: the largest travel <= aim
+// (or the smallest >= lo if that is below lo).
+uint64_t cruise_clocks(i128 gain, i128 plateau, const TravelWindow& w) {
+  if (plateau > 0 && w.aim > gain) {
+    i128 n = (w.aim - gain) / plateau;
+    if (gain + n * plateau < w.lo) ++n;  // (plateau < 1 pulse: still < hi)
+    return uint64_t(n);
+  }
+  if (plateau > 0 && gain < w.lo) return uint64_t((w.lo - gain + plateau - 1) / plateau);
+  return 0;
 }
+
+// The duration of a feasible candidate, its cruise included.
+uint64_t candidate_clocks(const Candidate& c, const TravelWindow& w) {
+  uint64_t n = cruise_clocks(c.gain, c.t1.v_end, w);
+  for (const Row& r : c.t1.rows) n += r.clocks;
+  for (const Row& r : c.t2.rows) n += r.clocks;
+  return n;
+}
+
+// The continuous travel vs -> p -> ve (LSB) as a function of the plateau p
+// (LSB per clock), with its slope: the estimate the exact plateau search
+// starts from and corrects. The integer ramps and floored jerks of the exact
+// transitions make it an estimate only.
+class TravelModel {
+ public:
+  TravelModel(i128 vs, i128 ve, const Limits& lim)
+      : x_(double(vs)), y_(double(ve)), a_(double(lim.a_max)), trapezoid_(lim.trapezoid),
+        acc_(lim.trapezoid ? Jerks{} : Jerks(lim.j_acc_in, lim.j_acc_out)),
+        dec_(lim.trapezoid ? Jerks{} : Jerks(lim.j_dec_in, lim.j_dec_out)) {}
+
+  // Travel of vs -> p (first) and p -> ve (second), and the slope of their
+  // sum (or of the first alone) in p.
+  double travel(double p, double* first = nullptr, double* slope = nullptr, double* first_slope = nullptr) const {
+    double d1, d2;
+    const double t1 = p >= x_ ? from_fixed(x_, shape(p - x_, acc_), +1, d1)
+                              : from_fixed(x_, shape(x_ - p, dec_), -1, d1);
+    const double t2 = p >= y_ ? from_plateau(p, shape(p - y_, dec_), -1, d2)
+                              : from_plateau(p, shape(y_ - p, acc_), +1, d2);
+    if (first) *first = t1;
+    if (slope) *slope = d1 + d2;
+    if (first_slope) *first_slope = d1;
+    return t1 + t2;
+  }
+
+  // The u in [0, u_max] whose plateau least + sign * u travels `target` (u_max
+  // if even that travels less): safeguarded Newton. first_only: the travel
+  // of vs -> p alone (a single transition to the end speed p).
+  double solve(double target, double least, double sign, double u_max, bool first_only = false,
+               double start = -1) const {
+    const auto f_of = [&](double u, double& slope) {
+      double first, d, d1;
+      const double all = travel(least + sign * u, &first, &d, &d1);
+      slope = sign * (first_only ? d1 : d);
+      return (first_only ? first : all) - target;
+    };
+    double lo = 0, hi = u_max, slope, u = start;
+    if (!(start > 0 && start < u_max)) {
+      // Cold start: the travel above the least one grows about as u^2
+      // (u^1.5 without a_max), so this guess lies just above the root.
+      double s_hi;
+      const double f_hi = f_of(hi, s_hi);
+      if (f_hi <= 0) return hi;
+      const double f_0 = f_of(0, slope);
+      if (f_0 >= 0) return 0;
+      // The quadratic through f(0), f(hi) and f'(hi): exact while a_max is
+      // reached throughout (the travel is then quadratic in the plateau).
+      const double c = (s_hi * hi - (f_hi - f_0)) / (hi * hi), b = s_hi - 2 * c * hi;
+      const double disc = b * b - 4 * c * f_0;
+      u = c > 0 && disc >= 0 ? -2 * f_0 / (b + std::sqrt(disc)) : -1;
+      if (!(u > 0 && u < hi)) u = hi * std::sqrt(-f_0 / (f_hi - f_0));
+    }
+    for (int i = 0; i < 40; ++i) {
+      const double f = f_of(u, slope);
+      if (f == 0) return u;
+      (f > 0 ? hi : lo) = u;
+      double next = slope > 0 ? u - f / slope : lo;
+      if (std::abs(next - u) <= 1e-11 * std::abs(least + sign * u) + 0.5) return std::clamp(next, lo, hi);
+      if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+      u = next;
+    }
+    return lo;
+  }
+
+ private:
+  struct Jerks {
+    double j_in = 0, j_out = 0, k = 0, c3 = 0;  // k = 1/j_in + 1/j_out; c3: rel = A^3 c3 without a cruise
+    Jerks() = default;
+    Jerks(int64_t in, int64_t out)
+        : j_in(double(in)), j_out(double(out)), k(1.0 / j_in + 1.0 / j_out),
+          c3(1.0 / (6 * j_in * j_in) + 1.0 / (2 * j_in * j_out) + 1.0 / (3 * j_out * j_out)) {}
+  };
+  // A speed change by dv >= 0 starting at rest: its duration T, its travel
+  // rel, and their slopes in dv.
+  struct Shape {
+    double T, rel, dT, drel;
+  };
+  Shape shape(double dv, const Jerks& j) const {
+    if (trapezoid_) return {dv / a_, 0.5 * dv * dv / a_, 1.0 / a_, dv / a_};
+    if (dv >= 0.5 * a_ * a_ * j.k) {  // a_max reached: rising, constant, falling
+      const double t_a = a_ / j.j_in, t_b = a_ / j.j_out, t_c = (dv - 0.5 * a_ * a_ * j.k) / a_;
+      const double dv1 = 0.5 * a_ * t_a, dv2 = dv1 + a_ * t_c;
+      const double rel = a_ * t_a * t_a / 6 + dv1 * t_c + 0.5 * a_ * t_c * t_c + dv2 * t_b + a_ * t_b * t_b / 3;
+      return {t_a + t_c + t_b, rel, 1.0 / a_, dv2 / a_ + t_b};
+    }
+    const double A = std::sqrt(2.0 * dv / j.k);
+    return {A * j.k, A * A * A * j.c3, A > 0 ? 1.0 / A : 0.0, 3.0 * A * j.c3 / j.k};
+  }
+  // Travel from the fixed speed s toward the plateau (s = vs; dir +1 speeding
+  // up) and its slope in the plateau.
+  static double from_fixed(double s, const Shape& sh, int dir, double& slope) {
+    slope = dir * (s * sh.dT + dir * sh.drel);
+    return s * sh.T + dir * sh.rel;
+  }
+  // Travel from the plateau p toward the fixed end speed, and its slope in p.
+  static double from_plateau(double p, const Shape& sh, int dir, double& slope) {
+    slope = sh.T - dir * (p * sh.dT + dir * sh.drel);
+    return p * sh.T + dir * sh.rel;
+  }
+
+  double x_, y_, a_;
+  bool trapezoid_;
+  Jerks acc_, dec_;
+};
 
 }  // namespace
 
@@ -284,57 +398,143 @@ Limits make_limits(const MoveRequest& req, const PulseTiming& timing, Clock cloc
   return lim;
 }
 
-std::variant<Solved, Unsolvable> solve_profile(i128 vs, double v_start, double v_cruise, i128 ve, double v_end,
-                                               const TravelWindow& w, const Limits& lim) {
+// The plateau search stops once its bracket is this narrow (relative, as a
+// power of two): the duration is flat in the plateau there.
+constexpr int kBracketBits = 24;
+// At most this many exact candidates in the search (a bracket that narrows
+// more slowly ends with the best one found).
+constexpr int kSearchProbes = 12;
+
+std::variant<Solved, Unsolvable> solve_profile(i128 vs, double v_cruise, i128 ve, const TravelWindow& w,
+                                               const Limits& lim) {
   const auto to_lsb = [&](double v) { return std::min(i128(std::floor(v * lim.units.vel)), lim.v_rate); };
   // ---- choose the plateau velocity ---------------------------------------
-  // The plateau is the cruise speed if the distance allows it; otherwise the
-  // feasible plateau closest to v_cruise, searched toward max(v_start, v_end)
-  // (the plateau that needs the least distance).
-  const double v_far = std::max(v_start, v_end);
-  const i128 v_far_lsb = std::max(vs, ve);
-  // Streamed moves: the closed-form plateau first; the exact cruise candidate
-  // only when the closed form says it (nearly) fits.
-  double guess = 0;
-  bool try_cruise = true;
-  if (lim.bisect_plateau && v_far_lsb > 0 && v_cruise > v_far) {
-    guess = closed_form_plateau(vs, ve, w.aim, v_far, v_cruise, lim);
-    try_cruise = guess >= v_cruise * (1.0 - 1.0 / 64);
-  }
+  // The plateau is the cruise speed if the distance allows it; otherwise a
+  // plateau between v_cruise and max(vs, ve) (the plateau that needs the
+  // least travel) whose transitions cover about the aimed travel: the cruise
+  // covers the rest, and a higher plateau only travels further. The search
+  // runs along u >= 0, the distance of the plateau from the least-travel one
+  // toward v_cruise; the travel grows with u.
+  const i128 p_least = std::max(vs, ve);
+  const i128 p_cruise = to_lsb(v_cruise);
+  const bool up = p_cruise >= p_least;
+  const i128 u_cruise = up ? p_cruise - p_least : p_least - p_cruise;
+  const auto plateau_at = [&](i128 u) { return up ? p_least + u : p_least - u; };
+  const TravelModel model(vs, ve, lim);
+  const double least = double(p_least), sign = up ? 1.0 : -1.0;
+  // Exact minus modelled travel of a candidate (of t1 alone if that is all the probe built).
+  const auto model_error = [&](const Candidate& t, double u) {
+    double first;
+    const double all = model.travel(least + sign * u, &first);
+    return double(t.gain) - (t.partial ? first : all);
+  };
+  // The travel the plateau's transitions aim for: the aimed travel (the
+  // move's own fastest plan), or for streamed moves the window's end. The
+  // model aims half a clock of the plateau speed short of it.
+  const i128 reach = lim.reach_window_end ? w.hi - 1 : w.aim;
+  const auto aim_at = [&](double u) { return double(reach) - 0.5 * std::max(1.0, least + sign * u); };
+
   Candidate c;
-  if (try_cruise) c = evaluate(vs, to_lsb(v_cruise), ve, w, lim, /*probe=*/true);
+  // Streamed moves above their cruise speed keep the least-travel plateau
+  // unless the cruise speed fits: no search.
+  const bool least_or_cruise = lim.least_above_cruise && !up;
+  // The exact cruise candidate first when the model says it (nearly) fits.
+  const double aim_cruise = aim_at(double(u_cruise));
+  const bool cruise_likely = model.travel(double(p_cruise)) <= aim_cruise * (1.0 + 1.0 / 64);
+  double u_model = cruise_likely ? double(u_cruise) : model.solve(aim_cruise, least, sign, double(u_cruise));
+  bool cruise_tried = false;
+  if (least_or_cruise || cruise_likely || u_model >= double(u_cruise) * (1.0 - 1.0 / 64)) {
+    c = evaluate(vs, p_cruise, ve, w, lim, /*probe=*/true);
+    cruise_tried = true;
+  }
   if (!c.feasible) {
-    // Walking up, a plateau never goes below max(vs, ve): the double speeds
-    // of an exact start state may round a few LSB under it.
-    const auto plateau_lsb = [&](double v) {
-      return v_cruise >= v_far ? std::max(to_lsb(v), v_far_lsb) : to_lsb(v);
-    };
-    double bad = v_cruise, good = -1;
-    Candidate good_c;
-    // Evaluates plateau v: a feasible one becomes `good`, else `bad`.
-    const auto try_plateau = [&](double v) {
-      Candidate t = evaluate(vs, plateau_lsb(v), ve, w, lim, /*probe=*/true);
-      const bool ok = t.feasible;
-      if (ok) {
-        good = v;
-        good_c = std::move(t);
-      } else {
-        bad = v;
+    // Exact candidates from the model's plateau: each one corrects the model
+    // by the exact travel it found, bracketed by the highest plateau that
+    // covers at most the aim (good) and the lowest that covers more (bad).
+    // The fastest feasible candidate is kept.
+    i128 good = -1, bad = u_cruise, floor_u = -1;  // floor_u: too small to move
+    // The realised plateaus of good and bad (-1: unknown), good's shortfall bound.
+    i128 good_plateau = 0, good_step = 0, bad_plateau = -1;
+    Shape good_shape{}, bad_shape{};
+    Candidate best;
+    uint64_t best_clocks = 0;
+    bool bad_seen = false;
+    if (cruise_likely) u_model = model.solve(aim_cruise, least, sign, double(u_cruise));
+    i128 u = i128(u_model);
+    for (int it = 0; it < kSearchProbes && !least_or_cruise; ++it) {
+      const i128 lo_u = std::max(good, floor_u);
+      // Done when the bracket is narrow (the duration is flat in the plateau
+      // there; only the integer rounding varies), or when no other candidate
+      // lies between (transitions that fall short of their target: one step
+      // of the good candidate's realised plateaus).
+      if (bad - lo_u <= std::max<i128>(1, plateau_at(bad) >> kBracketBits)) break;
+      if (good >= 0 && bad_plateau >= 0 && good_shape == bad_shape) {
+        const i128 gap = bad_plateau - good_plateau;
+        if ((gap < 0 ? -gap : gap) <= good_step) break;
       }
-      return ok;
-    };
-    // Streamed moves: first just below the closed-form plateau (usually
-    // feasible, and then the least-travel candidate is not needed).
-    if (lim.bisect_plateau && v_far_lsb > 0) {
-      if (guess == 0) guess = closed_form_plateau(vs, ve, w.aim, v_far, v_cruise, lim);
-      const double v = guess * (1.0 - 1.0 / 2048);
-      if (v > v_far && v < bad) {
-        try_plateau(v);
+      if (u <= lo_u || u >= bad) u = lo_u + (bad - lo_u) / 2;
+      Candidate t = evaluate(vs, plateau_at(u), ve, w, lim, /*probe=*/true);
+      const i128 gain = t.gain;
+      const bool feasible = t.feasible, known = !t.too_far;
+      const i128 plateau = t.t1.v_end, step = t.t1.shortfall_bound;
+      // Near enough: the cruise would be shorter than a clock (streamed
+      // moves: within 1/64 pulse of the window's end).
+      const i128 near = lim.reach_window_end ? std::max(plateau, i128(kOne) >> 6) : plateau;
+      const Shape shape = shape_of(t.t1);
+      const double off = known ? model_error(t, double(u)) : 0.0;
+      if (feasible) {
+        const uint64_t clocks = candidate_clocks(t, w);
+        if (!best.feasible || (lim.reach_window_end ? gain <= reach && u > good : clocks < best_clocks)) {
+          best = std::move(t);
+          best_clocks = clocks;
+        }
+      }
+      if (feasible && gain <= reach) {
+        good = u;
+        good_plateau = plateau;
+        good_step = step;
+        good_shape = shape;
+        if (reach - gain <= near) break;
+      } else if (known && gain > reach) {
+        bad = u;
+        bad_plateau = plateau;
+        bad_shape = shape;
+        bad_seen = true;
+      } else if (known) {
+        floor_u = u;  // (gain < lo with plateau 0)
+        u = -1;
+        continue;
+      } else {
+        bad = u;
+        bad_plateau = -1;
+        bad_seen = true;
+        u = -1;
+        continue;
+      }
+      u = i128(model.solve(aim_at(double(u)) - off, least, sign, double(u_cruise), false, double(u)));
+      if (u == good) ++u;
+    }
+    // A stop (vs = ve = 0) has no least-travel fallback, but a small enough
+    // plateau always fits: descend (bisect above a plateau too small to move).
+    for (int k = 0; k < 64 && !best.feasible && p_least == 0 && bad - std::max<i128>(floor_u, 0) > 1; ++k) {
+      const i128 u = floor_u >= 0 ? floor_u + (bad - floor_u) / 2 : bad / 8;
+      if (u <= 0) break;
+      Candidate t = evaluate(vs, plateau_at(u), ve, w, lim, /*probe=*/true);
+      if (t.feasible) {
+        best = std::move(t);
+      } else if (!t.too_far && t.gain < w.lo) {
+        floor_u = u;
+      } else {
+        bad = u;
       }
     }
-    const bool far_is_stop = v_far_lsb == 0;  // vs = ve = 0: a tiny plateau always fits
-    if (good < 0 && !far_is_stop) {  // (a stop has no least-travel fallback)
-      Candidate far = evaluate(vs, v_far_lsb, ve, w, lim);
+    if (!cruise_tried && (!bad_seen || !best.feasible)) {
+      Candidate t = evaluate(vs, p_cruise, ve, w, lim, /*probe=*/true);
+      if (t.feasible) best = std::move(t);
+    }
+    if (!best.feasible) {
+      if (p_least == 0) return Unsolvable{};  // vs = ve = 0: no least-travel fallback
+      Candidate far = evaluate(vs, p_least, ve, w, lim);
       if (!far.feasible) {
         Unsolvable why;
         why.end_unreachable = true;
@@ -342,49 +542,15 @@ std::variant<Solved, Unsolvable> solve_profile(i128 vs, double v_start, double v
         why.least_gain = far.gain;
         return why;
       }
-      if (lim.bisect_plateau) {
-        good = v_far;
-        good_c = std::move(far);
-      } else {
-        good_c = std::move(far);  // the walk's fallback (good stays < 0 until then)
-      }
+      best = std::move(far);
     }
-    if (lim.bisect_plateau && !far_is_stop) {
-      if (const double v = guess * (1.0 + 1.0 / 2048); v > good && v < bad) {
-        try_plateau(v);
-      }
-      // Bisect to 2^-10 of the plateau speed.
-      for (int it = 0; it < 40 && bad - good > std::ldexp(std::abs(bad), -10); ++it) {
-        const double mid = 0.5 * (bad + good);
-        try_plateau(mid);
-      }
-      bad = good;  // done: skip the walk and the fine bisection below
-    }
-    for (int k = 1; k <= kWalkSteps && good < 0; ++k) {
-      const double v = v_far + (v_cruise - v_far) * walk_factor(k);
-      if (try_plateau(v)) break;
-    }
-    if (good < 0 && !far_is_stop) good = v_far;  // good_c holds the least-travel candidate
-    if (good < 0) return Unsolvable{};
-    for (int it = 0; it < 80 && bad != good; ++it) {
-      const double mid = 0.5 * (bad + good);
-      if (mid == bad || mid == good) break;
-      try_plateau(mid);
-    }
-    c = std::move(good_c);
+    c = std::move(best);
   }
 
   // ---- fill: the cruise clocks place the travel in the window ------------
   Solved out;
   out.plateau = c.t1.v_end;
-  uint64_t n_cruise = 0;
-  if (out.plateau > 0 && w.aim > c.gain) {
-    i128 n = (w.aim - c.gain) / out.plateau;  // largest travel <= aim
-    if (c.gain + n * out.plateau < w.lo) ++n;  // (plateau < 1 pulse: still < hi)
-    n_cruise = uint64_t(n);
-  } else if (out.plateau > 0 && c.gain < w.lo) {
-    n_cruise = uint64_t((w.lo - c.gain + out.plateau - 1) / out.plateau);
-  }
+  const uint64_t n_cruise = cruise_clocks(c.gain, out.plateau, w);
   out.travel = c.gain + i128(n_cruise) * out.plateau;
   out.rows.reserve(c.t1.rows.size() + 1 + c.t2.rows.size());
   out.rows.assign(c.t1.rows.begin(), c.t1.rows.end());
@@ -394,6 +560,60 @@ std::variant<Solved, Unsolvable> solve_profile(i128 vs, double v_start, double v
   out.end_shortfall_bound = c.t2.shortfall_bound;
   if (out.rows.empty()) return Unsolvable{};
   return out;
+}
+
+std::optional<i128> reachable_end_speed(i128 vs, i128 ve, i128 p_cruise, const TravelWindow& w,
+                                        const Limits& lim) {
+  // End speed e = vs +- u. Its plan exists when the plateau max(vs, e) or the
+  // cruise speed fits (a move speeding up ends with a shortfall's tiny
+  // transition at the plateau max(vs, e), which the cruise plateau avoids);
+  // the lesser travel of the two grows with u, and u = |ve - vs| fits neither. The boundary is searched to the
+  // resolution of a double end speed: the plan's duration can depend
+  // strongly on the end speed there (a plateau below both ends).
+  const bool up = ve >= vs;
+  const i128 u_max = up ? ve - vs : vs - ve;
+  const auto end_at = [&](i128 u) { return up ? vs + u : vs - u; };
+  const TravelModel model(vs, vs, lim);
+  const double sign = up ? 1.0 : -1.0, from = double(vs), aim = double(w.hi - 1);
+  i128 good = -1, bad = u_max, g_good = 0, g_bad = 0;
+  bool bracketed = false;  // g_good and g_bad are exact travels
+  i128 u = i128(model.solve(aim, from, sign, double(u_max), /*first_only=*/true));
+  for (int it = 0; it < 48; ++it) {
+    const i128 tol = std::max<i128>(1, std::max(end_at(std::max<i128>(good, 0)), end_at(bad)) >> 50);
+    if (bad - good <= tol) break;
+    if (bracketed && good >= 0) {  // regula falsi, kept a sixteenth inside the bracket
+      const double f = (double(w.hi) - 0.5 - double(g_good)) / double(g_bad - g_good);
+      const i128 span = bad - good;
+      u = good + std::clamp(i128(double(span) * f), span / 16, span - span / 16);
+    }
+    if (u <= good || u >= bad) u = good + (bad - good) / 2;
+    const i128 e = end_at(u);
+    Candidate c = evaluate(vs, std::max(vs, e), e, w, lim);
+    if (!c.feasible && p_cruise != std::max(vs, e)) {
+      Candidate via_cruise = evaluate(vs, p_cruise, e, w, lim);
+      if (via_cruise.feasible || (!via_cruise.too_far && (c.too_far || via_cruise.gain < c.gain))) {
+        c = std::move(via_cruise);
+      }
+    }
+    if (c.feasible) {
+      good = u;
+      g_good = c.gain;
+    } else {
+      bad = u;
+      g_bad = c.too_far ? 0 : c.gain;
+    }
+    bracketed = good >= 0 && !c.too_far && g_bad > g_good;
+    if (!bracketed && !c.too_far) {  // the model of the single transition, corrected by this exact travel
+      double first;
+      model.travel(double(e), &first);
+      u = i128(model.solve(aim - (double(c.gain) - first), from, sign, double(u_max), true));
+      if (u == good) ++u;
+    } else if (!bracketed) {
+      u = -1;
+    }
+  }
+  if (good < 0) return std::nullopt;
+  return end_at(good);
 }
 
 std::vector<Segment> to_segments(const std::vector<Row>& rows, int dir) {
@@ -646,6 +866,10 @@ std::optional<PlanError> check_request(const MoveRequest& req, const PulseTiming
 
 }  // namespace
 
+// An adjusted end speed whose plan fails (a realised end speed off the
+// double grid, the row limit) is retried this much nearer v_start: u >> shift.
+constexpr int kRetryShift[4] = {40, 20, 10, 1};
+
 PlanResult Planner::plan(const MoveRequest& req, const PulseTiming& timing) const {
   const Clock clock = clock_;
   if (auto e = check_request(req, timing, clock)) return *e;
@@ -653,20 +877,29 @@ PlanResult Planner::plan(const MoveRequest& req, const PulseTiming& timing) cons
   PlanResult r = plan_magnitude(req, timing, req.v_end, clock, req.adjust_end_speed ? Detail::Message : Detail::Refine);
   if (std::holds_alternative<PlanError>(r) && req.adjust_end_speed &&
       std::get<PlanError>(r).parameter == "v_end" && req.v_end != req.v_start) {
-    // Bisect the end speed between v_start (always reachable) and v_end.
-    double ok = req.v_start, bad = req.v_end;
+    // The nearest reachable end speed (LSB), then the end speed in pulses/s
+    // that floors to it (or, on the double grid, next to it toward v_start).
+    const Limits lim = make_limits(req, timing, clock);
+    const double vel = lim.units.vel;
+    const i128 vs = std::min(i128(std::floor(req.v_start * vel)), lim.v_rate);
+    const i128 ve = std::min(i128(std::floor(req.v_end * vel)), lim.v_rate);
+    const i128 target = pulses_to_lsb(req.distance < 0 ? -req.distance : req.distance) + (i128(kOne) >> 1);
+    const TravelWindow window{target - i128(kOne) + 1, target, target - 1};
+    const bool up = ve >= vs;
     std::optional<Plan> best;
-    for (int it = 0; it < 64; ++it) {
-      const double mid = 0.5 * (ok + bad);
-      // Once ok and bad are neighbours the midpoint is one of them, whose
-      // outcome is known (planning is deterministic): nothing changes.
-      if (mid == bad || (mid == ok && best)) break;
-      PlanResult m = plan_magnitude(req, timing, mid, clock, Detail::Probe);
-      if (auto* p = std::get_if<Plan>(&m)) {
-        ok = mid;
-        best = std::move(*p);
-      } else {
-        bad = mid;
+    const i128 p_cruise = std::min(i128(std::floor(req.v_cruise * vel)), lim.v_rate);
+    if (const std::optional<i128> e = reachable_end_speed(vs, ve, p_cruise, window, lim)) {
+      // A few tries nearer v_start should the realised end speed not fit.
+      i128 u = up ? *e - vs : vs - *e;
+      for (int k = 0; k < 4 && !best; u -= std::max<i128>(1, u >> kRetryShift[k++])) {
+        if (u <= 0) break;
+        const i128 e_k = up ? vs + u : vs - u;
+        double v = double(e_k) / vel;
+        while (up ? i128(std::floor(v * vel)) > e_k : i128(std::floor(v * vel)) < e_k) {
+          v = std::nextafter(v, up ? 0.0 : HUGE_VAL);
+        }
+        PlanResult m = plan_magnitude(req, timing, v, clock, Detail::Probe);
+        if (auto* p = std::get_if<Plan>(&m)) best = std::move(*p);
       }
     }
     if (!best) {
@@ -734,7 +967,7 @@ PlanResult plan_magnitude(const MoveRequest& req, const PulseTiming& timing, dou
   // placed so p0 is smallest (the first step comes after almost one pulse).
   const TravelWindow window{target - i128(kOne) + 1, target, target - 1};
 
-  auto solved = solve_profile(vs, req.v_start, req.v_cruise, ve, v_end, window, lim);
+  auto solved = solve_profile(vs, req.v_cruise, ve, window, lim);
   if (const auto* why = std::get_if<Unsolvable>(&solved)) {
     if (detail == Detail::Probe) return PlanError{why->end_unreachable ? "v_end" : "distance", {}};
     if (!why->end_unreachable) {
@@ -751,10 +984,10 @@ PlanResult plan_magnitude(const MoveRequest& req, const PulseTiming& timing, dou
           return d <= PlannerLimits::kMaxDistance &&
                  std::holds_alternative<Plan>(plan_magnitude(r, timing, v_end, clock, Detail::Probe));
         };
-        // Local search from the estimate: the result is accepted and one
-        // pulse less is not.
-        for (int k = 0; k < 64 && min_dist > 1 && accepts(min_dist - 1); ++k) --min_dist;
-        for (int k = 0; k < 64 && !accepts(min_dist); ++k) ++min_dist;
+        // Local check of the exact estimate: the result is accepted and one
+        // pulse less is not (a few steps at most).
+        for (int k = 0; k < 4 && min_dist > 1 && accepts(min_dist - 1); ++k) --min_dist;
+        for (int k = 0; k < 4 && !accepts(min_dist); ++k) ++min_dist;
       }
       need = fmt::format("{}", min_dist);
     }
@@ -813,7 +1046,7 @@ PlanResult plan_continuation(const JunctionState& start, int64_t distance, doubl
   }
   const double v_start = vel_to_phys(vs, clock);
   const double v_end = vel_to_phys(ve, clock);
-  auto solved = solve_profile(vs, v_start, v_cruise, ve, v_end, window, lim);
+  auto solved = solve_profile(vs, v_cruise, ve, window, lim);
   if (const auto* why = std::get_if<Unsolvable>(&solved)) {
     if (!messages) return PlanError{why->end_unreachable ? "v_end" : "distance", {}};
     if (!why->end_unreachable) {
@@ -847,7 +1080,7 @@ PlanResult Planner::plan_from(const JunctionState& start, const MoveRequest& req
   const Limits lim = [&] {
     Limits l = make_limits(req, timing, clock_);
     l.exact_transitions = true;
-    l.bisect_plateau = true;
+    l.least_above_cruise = true;
     return l;
   }();
   const int dir = req.distance < 0 ? -1 : 1;
@@ -868,18 +1101,22 @@ PlanResult Planner::plan_from(const JunctionState& start, const MoveRequest& req
   const i128 ve = std::min(i128(std::floor(req.v_end * lim.units.vel)), lim.v_rate);
   PlanResult r = plan_continuation(start, req.distance, req.v_cruise, ve, lim, clock_);
   if (std::holds_alternative<PlanError>(r) && req.adjust_end_speed && std::get<PlanError>(r).parameter == "v_end") {
-    // Bisect the end speed (LSB) between the start speed (always reachable
-    // by a cruise) and the requested one.
-    i128 ok = speed, bad = ve;
+    // The nearest reachable end speed (a cruise at the start speed always is).
+    const int64_t dist = req.distance * dir;
+    const i128 f = i128(start.frac), one = i128(kOne);
+    const TravelWindow window = dir > 0 ? TravelWindow{dist * one - f, (dist + 1) * one - f, dist * one + one / 2 - f}
+                                        : TravelWindow{(dist - 1) * one + f + 1, dist * one + f + 1,
+                                                       dist * one - one / 2 + f};
     std::optional<Plan> best;
-    while (ok - bad > 1 || bad - ok > 1) {
-      const i128 mid = ok + (bad - ok) / 2;
-      PlanResult m = plan_continuation(start, req.distance, req.v_cruise, mid, lim, clock_, /*messages=*/false);
-      if (auto* p = std::get_if<Plan>(&m)) {
-        ok = mid;
-        best = std::move(*p);
-      } else {
-        bad = mid;
+    const i128 p_cruise = std::min(i128(std::floor(req.v_cruise * lim.units.vel)), lim.v_rate);
+    if (const std::optional<i128> e = reachable_end_speed(speed, ve, p_cruise, window, lim)) {
+      const bool up = ve >= speed;
+      i128 u = up ? *e - speed : speed - *e;
+      for (int k = 0; k < 4 && !best; u -= std::max<i128>(1, u >> kRetryShift[k++])) {
+        if (u <= 0) break;
+        PlanResult m = plan_continuation(start, req.distance, req.v_cruise, up ? speed + u : speed - u, lim, clock_,
+                                         /*messages=*/false);
+        if (auto* p = std::get_if<Plan>(&m)) best = std::move(*p);
       }
     }
     if (!best) {

@@ -89,11 +89,14 @@ struct Limits {
   // (a short jerk-limited tail absorbs the sub-clock shortfall), so the next
   // move starts from the speed the look-ahead planned.
   bool exact_transitions = false;
-  // Streamed moves: when the cruise speed does not fit, bisect the plateau
-  // between the least-travel one and v_cruise (to 2^-10) instead of walking
-  // down from v_cruise: a junction speed chosen at the edge of what the
-  // distance allows leaves the walk thousands of steps.
-  bool bisect_plateau = false;
+  // Moves from an exact state (plan_from, streams): a start or end speed
+  // above the cruise speed keeps the least-travel plateau unless the cruise
+  // speed fits.
+  bool least_above_cruise = false;
+  // Streamed moves: the plateau's transitions cover as much of the final
+  // pulse window as they can (the next move then has that much less to
+  // cover) instead of the move's own fastest plan.
+  bool reach_window_end = false;
 };
 
 // The request's limits in LSBs (a_max, jerks, the step-rate limit).
@@ -127,11 +130,19 @@ struct Unsolvable {
   i128 least_gain = 0;   // travel of the least-travel candidate
 };
 
-// Chooses the plateau (v_cruise if the window allows it, else the feasible
-// plateau closest to v_cruise, searched toward max(vs, ve)) and the cruise
-// length that places the travel in the window.
-std::variant<Solved, Unsolvable> solve_profile(i128 vs, double v_start, double v_cruise, i128 ve, double v_end,
-                                               const TravelWindow& w, const Limits& lim);
+// Chooses the plateau (v_cruise if the window allows it, else the plateau
+// between v_cruise and max(vs, ve) whose transitions cover about the aimed
+// travel: from the closed-form model, corrected by a few exact candidates)
+// and the cruise length that places the travel in the window.
+std::variant<Solved, Unsolvable> solve_profile(i128 vs, double v_cruise, i128 ve, const TravelWindow& w,
+                                               const Limits& lim);
+
+// Adjusted end speed (MoveRequest::adjust_end_speed): the end speed nearest
+// to ve (LSB) between vs and ve that a move within the window reaches, found
+// from the closed form and a few exact single transitions; none if only vs
+// itself remains (vs = 0: a move from rest to rest is planned instead).
+std::optional<i128> reachable_end_speed(i128 vs, i128 ve, i128 p_cruise, const TravelWindow& w,
+                                        const Limits& lim);
 
 // Splits rows to the hardware's clock field and mirrors them for direction.
 std::vector<Segment> to_segments(const std::vector<Row>& rows, int dir);

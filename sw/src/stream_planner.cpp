@@ -124,7 +124,8 @@ StreamPlanner::StreamPlanner(Clock clock, PulseTiming timing, StreamLimits limit
   req.j_max = limits.j_max;
   auto solver = std::make_shared<Solver>(Solver{detail::make_limits(req, timing, clock)});
   solver->lim.exact_transitions = true;  // junction speeds are met exactly
-  solver->lim.bisect_plateau = true;
+  solver->lim.least_above_cruise = true;
+  solver->lim.reach_window_end = true;
   solver_ = std::move(solver);
 }
 
