@@ -153,8 +153,12 @@ i128 StreamPlanner::grid(i128 top) {
 
 // Position LSBs covered while changing speed (the planner's own transition).
 i128 StreamPlanner::travel(i128 v_from, i128 v_to) const {
+  const u128 h = (u128(v_from) * 0x9E3779B97F4A7C15ull) ^ u128(v_to);
+  TravelMemo& m = travel_memo_[size_t(uint64_t(h ^ (h >> 64)) * 0x9E3779B97F4A7C15ull >> 56)];
+  if (m.from == v_from && m.to == v_to) return m.gain;
   const detail::Transition t = detail::transition_to(v_from, v_to, solver_->lim);
-  return t.too_far ? std::numeric_limits<i128>::max() : t.gain;
+  m = {v_from, v_to, t.too_far ? std::numeric_limits<i128>::max() : t.gain};
+  return m.gain;
 }
 
 // Highest entry speed that still reaches v_exit within `distance` pulses.

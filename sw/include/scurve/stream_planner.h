@@ -22,6 +22,7 @@
 // take_ready() and never change.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <deque>
@@ -139,6 +140,11 @@ class StreamPlanner {
   uint64_t clock_offset_ = 0;
   uint64_t next_index_ = 0;
   i128 appended_end_ = 0;  // start_position + the distances appended so far
+  // travel() of recent speed pairs: the junction passes ask for many again.
+  struct TravelMemo {
+    i128 from = -1, to = -1, gain = 0;
+  };
+  mutable std::array<TravelMemo, 256> travel_memo_{};
 };
 
 // A whole stream at once: every move appended, then flushed. The planned
