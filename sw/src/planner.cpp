@@ -33,6 +33,25 @@ constexpr double kFarPulses = 1e12;
 
 i128 row_gain(const Row& r) { return pos_gain(r.vel0, r.acc0, r.jerk, r.clocks); }
 
+// floor(num / den) for num >= 0, den > 0: the quotient in double, corrected
+// by one step either way (an integer division of 64 or 128 bits costs
+// several times as much); a division where the quotient is too large for
+// that.
+template <class T>
+T quotient(T num, int64_t den) {
+  const double qd = double(num) / double(den);
+  if (!(qd < 0x1p50)) return num / den;
+  T q = T(qd);
+  T rest = num - q * den;
+  if (rest < 0) {
+    --q;
+    rest += den;
+  } else if (rest >= den) {
+    ++q;
+  }
+  return q;
+}
+
 // Removes the last `rest` LSBs of a velocity change exactly, with acceleration
 // 0 at both ends, in at most three pulses (jerk <= j_lim, |a| <= a_max):
 //   k clocks at jerk x, k at -x          : x*k^2   (the bulk, k ~ sqrt(rest/j))
@@ -133,19 +152,19 @@ Transition make_transition(i128 v_a, i128 dv, int s, int64_t j_in, int64_t j_out
       // Ramp clocks: floor(a/j) keeps the jerk at exactly j (long ramps),
       // ceil(a/j) at a slightly lower jerk reaches nearer to a (ramps of a
       // few clocks); take whichever peaks higher.
-      const int64_t q = a / j_in;
+      const int64_t q = quotient(a, j_in);
       const int64_t n_floor = std::max<int64_t>(1, q);
       const int64_t n_ceil = q + (a != q * j_in);  // (a + j_in - 1) / j_in
-      const int64_t a_by_floor = a / n_floor;
-      const int64_t a_by_ceil = n_ceil == n_floor ? a_by_floor : a / n_ceil;
+      const int64_t a_by_floor = quotient(a, n_floor);
+      const int64_t a_by_ceil = n_ceil == n_floor ? a_by_floor : quotient(a, n_ceil);
       const int64_t a_floor = n_floor * std::min(j_in, a_by_floor);
       const int64_t a_ceil = n_ceil * a_by_ceil;
       const int64_t n1 = a_floor >= a_ceil ? n_floor : n_ceil;
       const int64_t j1 = std::min(j_in, a_floor >= a_ceil ? a_by_floor : a_by_ceil);
       const int64_t a1 = n1 * j1;  // realised peak, <= a
-      const int64_t q3 = a1 / j_out;
+      const int64_t q3 = quotient(a1, j_out);
       const int64_t n3 = q3 + (a1 != q3 * j_out);  // (a1 + j_out - 1) / j_out
-      const int64_t j3 = a1 / n3;
+      const int64_t j3 = quotient(a1, n3);
       const int64_t r = a1 - n3 * j3;  // first r clocks at j3+1: a ends at exactly 0
       Row rows[4];
       int n_rows = 0;
@@ -166,7 +185,7 @@ Transition make_transition(i128 v_a, i128 dv, int s, int64_t j_in, int64_t j_out
         a = std::clamp<int64_t>(int64_t(double(a) * shrink * 0.999), 1, a - 1);
         continue;
       }
-      rows[1].clocks = uint64_t((dv - dv_jerk) / a1);
+      rows[1].clocks = uint64_t(quotient(dv - dv_jerk, a1));
       t.shortfall_bound = a1;  // less than one more clock at the peak
       dv_done = dv_jerk + i128(rows[1].clocks) * a1;
       for (int i = 0; i < n_rows; ++i) {
@@ -272,9 +291,9 @@ uint64_t candidate_clocks(const Candidate& c, const TravelWindow& w) {
 class TravelModel {
  public:
   TravelModel(i128 vs, i128 ve, const Limits& lim)
-      : x_(double(vs)), y_(double(ve)), a_(double(lim.a_max)), trapezoid_(lim.trapezoid),
-        acc_(lim.trapezoid ? Jerks{} : Jerks(lim.j_acc_in, lim.j_acc_out)),
-        dec_(lim.trapezoid ? Jerks{} : Jerks(lim.j_dec_in, lim.j_dec_out)) {}
+      : x_(double(vs)), y_(double(ve)), a_(double(lim.a_max)), inv_a_(1.0 / a_), trapezoid_(lim.trapezoid),
+        acc_(lim.trapezoid ? Jerks{} : Jerks(lim.j_acc_in, lim.j_acc_out, a_)),
+        dec_(lim.trapezoid ? Jerks{} : Jerks(lim.j_dec_in, lim.j_dec_out, a_)) {}
 
   // Travel of vs -> p (first) and p -> ve (second), and the slope of their
   // sum (or of the first alone) in p.
@@ -330,12 +349,27 @@ class TravelModel {
   }
 
  private:
+  // One direction's constants (a = a_max; k = 1/j_in + 1/j_out).
   struct Jerks {
-    double j_in = 0, j_out = 0, k = 0, c3 = 0;  // k = 1/j_in + 1/j_out; c3: rel = A^3 c3 without a cruise
+    double thresh = 0;           // the velocity change that first reaches a
+    double half_ak = 0;          // a k / 2: T = dv / a + a k / 2 once a is reached
+    double t_b = 0, dv1 = 0;     // falling ramp time; the rising ramp's change
+    double rel0 = 0;             // the ramps' own travel terms once a is reached
+    double two_over_k = 0, k = 0, c3 = 0, c3_3_over_k = 0;  // below a: rel = A^3 c3
     Jerks() = default;
-    Jerks(int64_t in, int64_t out)
-        : j_in(double(in)), j_out(double(out)), k(1.0 / j_in + 1.0 / j_out),
-          c3(1.0 / (6 * j_in * j_in) + 1.0 / (2 * j_in * j_out) + 1.0 / (3 * j_out * j_out)) {}
+    Jerks(int64_t in, int64_t out, double a) {
+      const double j_in = double(in), j_out = double(out);
+      k = 1.0 / j_in + 1.0 / j_out;
+      thresh = 0.5 * a * a * k;
+      half_ak = 0.5 * a * k;
+      const double t_a = a / j_in;
+      t_b = a / j_out;
+      dv1 = 0.5 * a * t_a;
+      rel0 = a * t_a * t_a / 6 + a * t_b * t_b / 3;
+      two_over_k = 2.0 / k;
+      c3 = 1.0 / (6 * j_in * j_in) + 1.0 / (2 * j_in * j_out) + 1.0 / (3 * j_out * j_out);
+      c3_3_over_k = 3.0 * c3 / k;
+    }
   };
   // A speed change by dv >= 0 starting at rest: its duration T, its travel
   // rel, and their slopes in dv.
@@ -343,15 +377,15 @@ class TravelModel {
     double T, rel, dT, drel;
   };
   Shape shape(double dv, const Jerks& j) const {
-    if (trapezoid_) return {dv / a_, 0.5 * dv * dv / a_, 1.0 / a_, dv / a_};
-    if (dv >= 0.5 * a_ * a_ * j.k) {  // a_max reached: rising, constant, falling
-      const double t_a = a_ / j.j_in, t_b = a_ / j.j_out, t_c = (dv - 0.5 * a_ * a_ * j.k) / a_;
-      const double dv1 = 0.5 * a_ * t_a, dv2 = dv1 + a_ * t_c;
-      const double rel = a_ * t_a * t_a / 6 + dv1 * t_c + 0.5 * a_ * t_c * t_c + dv2 * t_b + a_ * t_b * t_b / 3;
-      return {t_a + t_c + t_b, rel, 1.0 / a_, dv2 / a_ + t_b};
+    if (trapezoid_) return {dv * inv_a_, 0.5 * dv * dv * inv_a_, inv_a_, dv * inv_a_};
+    if (dv >= j.thresh) {  // a_max reached: rising, constant, falling
+      const double t_c = dv * inv_a_ - j.half_ak;
+      const double dv2 = j.dv1 + a_ * t_c;
+      const double rel = j.rel0 + j.dv1 * t_c + 0.5 * a_ * t_c * t_c + dv2 * j.t_b;
+      return {dv * inv_a_ + j.half_ak, rel, inv_a_, dv2 * inv_a_ + j.t_b};
     }
-    const double A = std::sqrt(2.0 * dv / j.k);
-    return {A * j.k, A * A * A * j.c3, A > 0 ? 1.0 / A : 0.0, 3.0 * A * j.c3 / j.k};
+    const double A = std::sqrt(dv * j.two_over_k);
+    return {A * j.k, A * A * A * j.c3, A > 0 ? 1.0 / A : 0.0, A * j.c3_3_over_k};
   }
   // Travel from the fixed speed s toward the plateau (s = vs; dir +1 speeding
   // up) and its slope in the plateau.
@@ -365,7 +399,7 @@ class TravelModel {
     return p * sh.T + dir * sh.rel;
   }
 
-  double x_, y_, a_;
+  double x_, y_, a_, inv_a_;
   bool trapezoid_;
   Jerks acc_, dec_;
 };
@@ -630,9 +664,10 @@ std::vector<Segment> to_segments(const std::vector<Row>& rows, int dir) {
       s.acc0 = dir * r.acc0;
       s.vel0 = dir * r.vel0;
       segs.push_back(s);
+      r.clocks -= n;
+      if (r.clocks == 0) break;
       r.vel0 = vel_after(r.vel0, r.acc0, r.jerk, n);
       r.acc0 = int64_t(acc_after(r.acc0, r.jerk, n));
-      r.clocks -= n;
     }
   }
   return segs;
