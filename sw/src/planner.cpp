@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <type_traits>
 
 namespace scurve {
 
@@ -32,6 +33,7 @@ constexpr uint64_t kMaxRowClocks = (uint64_t(1) << SegClkW) - 1;
 constexpr double kFarPulses = 1e12;
 
 i128 row_gain(const Row& r) { return pos_gain(r.vel0, r.acc0, r.jerk, r.clocks); }
+
 
 // floor(num / den) for num >= 0, den > 0: the quotient in double, corrected
 // by one step either way (an integer division of 64 or 128 bits costs
@@ -64,6 +66,7 @@ template <class T>
 void append_exact_tail_in(RowList& rows, T rest, int s, int64_t j_lim, int64_t a_max, Phase ph_up,
                           Phase ph_down) {
   const T x_max = std::min<T>(j_lim, a_max);
+  constexpr bool kSmall = std::is_same_v<T, int64_t>;  // every divisor below fits 64 bits
   for (int iter = 0; iter < 64 && rest > 0; ++iter) {
     if (rest <= x_max) {
       rows.push_back({ph_up, 1, int64_t(s * rest), 0, 0});
@@ -72,14 +75,14 @@ void append_exact_tail_in(RowList& rows, T rest, int s, int64_t j_lim, int64_t a
     }
     const int64_t k = std::max<int64_t>(1, int64_t(std::sqrt(double(rest) / double(x_max))));
     if (k >= 3 && i128(k) * x_max <= a_max) {
-      const T x = std::min<T>(x_max, rest / (T(k) * k));
+      const T x = std::min<T>(x_max, kSmall ? quotient<T>(rest, k * k) : rest / (T(k) * k));
       rows.push_back({ph_up, uint64_t(k), int64_t(s * x), 0, 0});
       rows.push_back({ph_down, uint64_t(k), int64_t(-s * x), 0, 0});
       rest -= x * k * k;
       continue;
     }
-    const T m = (rest + x_max - 1) / x_max;
-    const T y = rest / m;
+    const T m = kSmall ? quotient<T>(rest + x_max - 1, int64_t(x_max)) : (rest + x_max - 1) / x_max;
+    const T y = kSmall ? quotient<T>(rest, int64_t(m)) : rest / m;
     rows.push_back({ph_up, 1, int64_t(s * y), 0, 0});
     if (m > 1) rows.push_back({ph_up == Phase::PhAccJerkUp ? Phase::PhAccConst : Phase::PhDecConst,
                                uint64_t(m - 1), 0, int64_t(s * y), 0});

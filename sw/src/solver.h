@@ -50,13 +50,11 @@ class RowList {
     return *this;
   }
   void push_back(const Row& r) {
-    if (n_ < kInline && heap_.empty()) {
+    if (n_ < kInline) [[likely]] {  // (n_ < kInline: never spilled)
       inline_[n_++] = r;
       return;
     }
-    if (heap_.empty()) heap_.assign(inline_, inline_ + n_);
-    heap_.push_back(r);
-    ++n_;
+    spill(r);
   }
   size_t size() const { return n_; }
   bool empty() const { return n_ == 0; }
@@ -66,6 +64,13 @@ class RowList {
   const Row* end() const { return begin() + n_; }
 
  private:
+  // The first row past kInline moves all rows to the heap.
+  [[gnu::noinline]] void spill(const Row& r) {
+    if (heap_.empty()) heap_.assign(inline_, inline_ + n_);
+    heap_.push_back(r);
+    ++n_;
+  }
+
   Row inline_[kInline];
   size_t n_ = 0;
   std::vector<Row> heap_;  // all rows once spilled
