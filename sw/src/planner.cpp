@@ -1203,7 +1203,8 @@ TableReport run_table(const std::vector<Segment>& rows, u128 pos_frac0, int dire
     upd_v(v_last);
     // v_{c+1} - v_c = a_c: while the acceleration keeps one sign over the
     // row, v is monotone and its extremes are the two ends above.
-    const i128 a_before_last = last > 0 ? acc_after(s.acc0, s.jerk, last - 1) : s.acc0;
+    const i128 a_last = acc_after(s.acc0, s.jerk, last);
+    const i128 a_before_last = last > 0 ? a_last - s.jerk : a_last;
     const bool monotone = (s.acc0 >= 0 && a_before_last >= 0) || (s.acc0 <= 0 && a_before_last <= 0);
     if (s.jerk != 0 && !monotone) {
       const double ks = 0.5 - double(s.acc0) / double(s.jerk);
@@ -1212,7 +1213,7 @@ TableReport run_table(const std::vector<Segment>& rows, u128 pos_frac0, int dire
       }
     }
     upd_a(s.acc0);
-    upd_a(acc_after(s.acc0, s.jerk, last));
+    upd_a(a_last);
     upd_j(s.jerk);
     if (have_prev) {  // per-clock differences across the reload
       upd_a(s.vel0 - prev_v);
@@ -1221,7 +1222,7 @@ TableReport run_table(const std::vector<Segment>& rows, u128 pos_frac0, int dire
     pos += pos_gain(s.vel0, s.acc0, s.jerk, n);
     rep.clocks += n;
     prev_v = v_last;
-    prev_a = int64_t(acc_after(s.acc0, s.jerk, last));
+    prev_a = int64_t(a_last);
     have_prev = true;
   }
   auto floor_div = [](i128 a) {

@@ -53,11 +53,12 @@ std::optional<Error> check_stream_config(Clock clock, const PulseTiming& timing,
   return detail::check_window_fields(l.soft_limits, l.start_position);
 }
 
-// Largest dv in [0, dv_max] whose closed-form travel from speed v is <= budget.
+// Largest dv in [0, dv_max] whose closed-form travel from speed v is <= budget
+// (to 1e-6: the guess of an exact search on a grid 2^-12 of the speed).
 double closed_form_dv(double v, double budget, double dv_max, double a, double j) {
   double lo = 0, hi = dv_max;
   if (detail::closed_form_travel(v, v + hi, a, j) <= budget) return hi;
-  for (int i = 0; i < 100 && hi - lo > 1e-9 * hi; ++i) {
+  for (int i = 0; i < 100 && hi - lo > 1e-6 * hi; ++i) {
     const double mid = 0.5 * (lo + hi);
     (detail::closed_form_travel(v, v + mid, a, j) <= budget ? lo : hi) = mid;
   }
@@ -146,9 +147,10 @@ std::optional<Error> StreamPlanner::check_move(const StreamMove& m) const {
 // Junction speeds found by search below `top` are multiples of this: the
 // power of two at or below top / 2^12 (about 0.01% to 0.02% of top).
 i128 StreamPlanner::grid(i128 top) {
-  i128 g = 1;
-  while ((g << 13) <= top) g <<= 1;
-  return g;
+  if (top < (i128(1) << 13)) return 1;
+  const u128 t = u128(top);
+  const int bits = t >> 64 ? 128 - __builtin_clzll(uint64_t(t >> 64)) : 64 - __builtin_clzll(uint64_t(t));
+  return i128(1) << (bits - 13);  // the least power of two with g * 2^13 > top
 }
 
 // Position LSBs covered while changing speed (the planner's own transition).
