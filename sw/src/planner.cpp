@@ -41,9 +41,10 @@ i128 row_gain(const Row& r) { return pos_gain(r.vel0, r.acc0, r.jerk, r.clocks);
 // that.
 template <class T>
 T quotient(T num, int64_t den) {
-  const double qd = double(num) / double(den);
+  // (128-bit conversions are library calls: through 64 bits where they fit)
+  const double qd = (num < T(INT64_MAX) ? double(int64_t(num)) : double(num)) / double(den);
   if (!(qd < 0x1p50)) return num / den;
-  T q = T(qd);
+  T q = T(int64_t(qd));
   T rest = num - q * den;
   if (rest < 0) {
     --q;
