@@ -714,9 +714,9 @@ int64_t needed_distance(i128 gain) {
   return int64_t(num <= 0 ? 0 : (num + i128(kOne) - 1) / i128(kOne));
 }
 
-// Refine: on an unreachable end speed, search the shortest distance the
-// planner accepts, so the message names the true minimum (the closed-form
-// estimate can be a pulse or two high). The search itself plans without it.
+// Refine: on an unreachable end speed, check the shortest distance the
+// planner accepts near the estimate from the least-travel candidate, so the
+// message names the true minimum. The check itself plans without it.
 // Probe: for the searches over end speed and distance, which only ask
 // whether a plan exists: errors carry the parameter but no message (the
 // message formatting costs more than an unreachable end speed's solve).
