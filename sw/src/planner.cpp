@@ -106,11 +106,11 @@ void append_exact_tail(RowList& rows, i128 rest, int s, int64_t j_lim, int64_t a
 // |a| rises, j_out while it falls; trapezoid: constant acceleration only.
 // The realised change never exceeds dv and falls short by less than one
 // clock at the peak acceleration; with `exact` it is exactly dv.
-Transition make_transition(i128 v_a, i128 dv, int s, int64_t j_in, int64_t j_out,
-                           int64_t a_max, bool trapezoid, bool exact, const Units& u) {
-  Transition t;
+// Built into t, a fresh Transition (a candidate's own: no copy of the rows).
+void make_transition(Transition& t, i128 v_a, i128 dv, int s, int64_t j_in, int64_t j_out, int64_t a_max,
+                     bool trapezoid, bool exact, const Units& u) {
   t.v_end = v_a;
-  if (dv <= 0) return t;
+  if (dv <= 0) return;
   const Phase ph_up = s > 0 ? Phase::PhAccJerkUp : Phase::PhDecJerkUp;
   const Phase ph_const = s > 0 ? Phase::PhAccConst : Phase::PhDecConst;
   const Phase ph_down = s > 0 ? Phase::PhAccJerkDown : Phase::PhDecJerkDown;
@@ -121,7 +121,7 @@ Transition make_transition(i128 v_a, i128 dv, int s, int64_t j_in, int64_t j_out
     const double secs = dvd / double(a_max) / u.f;
     if (secs * v_hi > kFarPulses) {
       t.too_far = true;
-      return t;
+      return;
     }
     // Fewest clocks at <= a_max; a change below one clock of a_max still
     // takes one clock (at a lower acceleration), it is never dropped.
@@ -145,7 +145,7 @@ Transition make_transition(i128 v_a, i128 dv, int s, int64_t j_in, int64_t j_out
                          std::max(0.0, dvd - thresh) / a_full) / u.f;
     if (secs * v_hi > kFarPulses) {
       t.too_far = true;
-      return t;
+      return;
     }
     // Peak acceleration a (<= a_max): the ramps take ceil(a / j) clocks at
     // jerk floor(a / clocks) <= j, so a ramp shorter than one clock still
@@ -219,7 +219,6 @@ Transition make_transition(i128 v_a, i128 dv, int s, int64_t j_in, int64_t j_out
     a = int64_t(acc_after(row.acc0, row.jerk, row.clocks));
   }
   t.v_end = v;
-  return t;
 }
 
 struct Candidate {
@@ -237,21 +236,30 @@ struct Candidate {
 // stop early, without t2 or gain, once the first transition alone is too
 // far or covers the window (the second one's gain is >= 0): then gain is the
 // first transition's alone (partial).
-Candidate evaluate(i128 vs, i128 v1_lsb, i128 ve, const TravelWindow& w, const Limits& lim, bool probe = false) {
-  Candidate c;
-  c.t1 = transition_to(vs, v1_lsb, lim);
+void evaluate(Candidate& c, i128 vs, i128 v1_lsb, i128 ve, const TravelWindow& w, const Limits& lim,
+              bool probe = false) {
+  c.t1.clear();
+  c.t2.clear();
+  c.gain = 0;
+  c.feasible = c.too_far = c.partial = false;
+  transition_to(c.t1, vs, v1_lsb, lim);
   if (probe && (c.t1.too_far || c.t1.gain >= w.hi)) {
     c.too_far = c.t1.too_far;
     c.gain = c.t1.gain;  // (a lower bound)
     c.partial = true;
-    return c;
+    return;
   }
-  c.t2 = transition_to(c.t1.v_end, ve, lim);
+  transition_to(c.t2, c.t1.v_end, ve, lim);
   c.too_far = c.t1.too_far || c.t2.too_far;
-  if (c.too_far) return c;
+  if (c.too_far) return;
   c.gain = c.t1.gain + c.t2.gain;
   const i128 plateau = c.t1.v_end;
   c.feasible = c.gain < w.hi && (plateau > 0 || c.gain >= w.lo);
+}
+
+Candidate evaluate(i128 vs, i128 v1_lsb, i128 ve, const TravelWindow& w, const Limits& lim, bool probe = false) {
+  Candidate c;
+  evaluate(c, vs, v1_lsb, ve, w, lim, probe);
   return c;
 }
 
@@ -410,13 +418,20 @@ class TravelModel {
 
 }  // namespace
 
-Transition transition_to(i128 v_from, i128 v_to, const Limits& lim) {
+void transition_to(Transition& t, i128 v_from, i128 v_to, const Limits& lim) {
   if (v_to >= v_from) {
-    return make_transition(v_from, v_to - v_from, +1, lim.j_acc_in, lim.j_acc_out, lim.a_max,
-                           lim.trapezoid, lim.exact_transitions, lim.units);
+    make_transition(t, v_from, v_to - v_from, +1, lim.j_acc_in, lim.j_acc_out, lim.a_max, lim.trapezoid,
+                    lim.exact_transitions, lim.units);
+  } else {
+    make_transition(t, v_from, v_from - v_to, -1, lim.j_dec_in, lim.j_dec_out, lim.a_max, lim.trapezoid,
+                    lim.exact_transitions, lim.units);
   }
-  return make_transition(v_from, v_from - v_to, -1, lim.j_dec_in, lim.j_dec_out, lim.a_max,
-                         lim.trapezoid, lim.exact_transitions, lim.units);
+}
+
+Transition transition_to(i128 v_from, i128 v_to, const Limits& lim) {
+  Transition t;
+  transition_to(t, v_from, v_to, lim);
+  return t;
 }
 
 Limits make_limits(const MoveRequest& req, const PulseTiming& timing, Clock clock) {
@@ -494,7 +509,8 @@ std::variant<Solved, Unsolvable> solve_profile(i128 vs, double v_cruise, i128 ve
     // The realised plateaus of good and bad (-1: unknown), good's shortfall bound.
     i128 good_plateau = 0, good_step = 0, bad_plateau = -1;
     Shape good_shape{}, bad_shape{};
-    Candidate best;
+    Candidate slots[2];  // the best candidate so far and the next probe (no copy of rows)
+    int best_i = -1, cur = 0;
     uint64_t best_clocks = 0;
     bool bad_seen = false;
     if (cruise_likely) u_model = model.solve(aim_cruise, least, sign, double(u_cruise));
@@ -511,7 +527,8 @@ std::variant<Solved, Unsolvable> solve_profile(i128 vs, double v_cruise, i128 ve
         if ((gap < 0 ? -gap : gap) <= good_step) break;
       }
       if (u <= lo_u || u >= bad) u = lo_u + (bad - lo_u) / 2;
-      Candidate t = evaluate(vs, plateau_at(u), ve, w, lim, /*probe=*/true);
+      Candidate& t = slots[cur];
+      evaluate(t, vs, plateau_at(u), ve, w, lim, /*probe=*/true);
       const i128 gain = t.gain;
       const bool feasible = t.feasible, known = !t.too_far;
       const i128 plateau = t.t1.v_end, step = t.t1.shortfall_bound;
@@ -522,8 +539,9 @@ std::variant<Solved, Unsolvable> solve_profile(i128 vs, double v_cruise, i128 ve
       const double off = known ? model_error(t, double(u)) : 0.0;
       if (feasible) {
         const uint64_t clocks = candidate_clocks(t, w);
-        if (!best.feasible || (lim.reach_window_end ? gain <= reach && u > good : clocks < best_clocks)) {
-          best = std::move(t);
+        if (best_i < 0 || (lim.reach_window_end ? gain <= reach && u > good : clocks < best_clocks)) {
+          best_i = cur;
+          cur ^= 1;
           best_clocks = clocks;
         }
       }
@@ -552,6 +570,8 @@ std::variant<Solved, Unsolvable> solve_profile(i128 vs, double v_cruise, i128 ve
       u = i128(model.solve(aim_at(double(u)) - off, least, sign, double(u_cruise), false, double(u)));
       if (u == good) ++u;
     }
+    Candidate best;
+    if (best_i >= 0) best = std::move(slots[best_i]);
     // A stop (vs = ve = 0) has no least-travel fallback, but a small enough
     // plateau always fits: descend (bisect above a plateau too small to move).
     for (int k = 0; k < 64 && !best.feasible && p_least == 0 && bad - std::max<i128>(floor_u, 0) > 1; ++k) {

@@ -57,6 +57,10 @@ class RowList {
     spill(r);
   }
   size_t size() const { return n_; }
+  void clear() {
+    n_ = 0;
+    heap_.clear();
+  }
   bool empty() const { return n_ == 0; }
   Row* begin() { return heap_.empty() ? inline_ : heap_.data(); }
   Row* end() { return begin() + n_; }
@@ -82,6 +86,11 @@ struct Transition {
   i128 gain = 0;             // position LSBs covered
   i128 shortfall_bound = 0;  // the realised change falls short of dv by <= this
   bool too_far = false;
+  void clear() {
+    rows.clear();
+    v_end = gain = shortfall_bound = 0;
+    too_far = false;
+  }
 };
 
 struct Limits {
@@ -110,6 +119,7 @@ Limits make_limits(const MoveRequest& req, const PulseTiming& timing, Clock cloc
 // Fastest change of velocity from v_from to v_to starting and ending at zero
 // acceleration (see make_transition in planner.cpp).
 Transition transition_to(i128 v_from, i128 v_to, const Limits& lim);
+void transition_to(Transition& out, i128 v_from, i128 v_to, const Limits& lim);  // into a fresh one
 
 // Position LSBs a move must cover: any travel in [lo, hi) is accepted; the
 // cruise length places the travel at the largest value <= aim (or the
