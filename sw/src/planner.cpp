@@ -539,7 +539,10 @@ std::variant<Solved, Unsolvable> solve_profile(i128 vs, double v_cruise, i128 ve
       const double off = known ? model_error(t, double(u)) : 0.0;
       if (feasible) {
         const uint64_t clocks = candidate_clocks(t, w);
-        if (best_i < 0 || (lim.reach_window_end ? gain <= reach && u > good : clocks < best_clocks)) {
+        // Kept: the fastest; a streamed move's plateau that covers the most,
+        // a plateau below both ends the one closest to the cruise speed.
+        const bool by_reach = lim.reach_window_end || !up;
+        if (best_i < 0 || (by_reach ? gain <= reach && u > good : clocks < best_clocks)) {
           best_i = cur;
           cur ^= 1;
           best_clocks = clocks;
