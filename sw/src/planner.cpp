@@ -34,7 +34,6 @@ constexpr double kFarPulses = 1e12;
 
 i128 row_gain(const Row& r) { return pos_gain(r.vel0, r.acc0, r.jerk, r.clocks); }
 
-
 // floor(num / den) for num >= 0, den > 0: the quotient in double, corrected
 // by one step either way (an integer division of 64 or 128 bits costs
 // several times as much); a division where the quotient is too large for
@@ -333,9 +332,7 @@ class TravelModel {
       return (first_only ? first : all) - target;
     };
     double lo = 0, hi = u_max, slope, u = start;
-    if (!(start > 0 && start < u_max)) {
-      // Cold start: the travel above the least one grows about as u^2
-      // (u^1.5 without a_max), so this guess lies just above the root.
+    if (!(start > 0 && start < u_max)) {  // cold start
       double s_hi;
       const double f_hi = f_of(hi, s_hi);
       if (f_hi <= 0) return hi;
@@ -346,7 +343,7 @@ class TravelModel {
       const double c = (s_hi * hi - (f_hi - f_0)) / (hi * hi), b = s_hi - 2 * c * hi;
       const double disc = b * b - 4 * c * f_0;
       u = c > 0 && disc >= 0 ? -2 * f_0 / (b + std::sqrt(disc)) : -1;
-      if (!(u > 0 && u < hi)) u = hi * std::sqrt(-f_0 / (f_hi - f_0));
+      if (!(u > 0 && u < hi)) u = hi * std::sqrt(-f_0 / (f_hi - f_0));  // (growth as u^2)
     }
     for (int i = 0; i < 40; ++i) {
       const double f = f_of(u, slope);
@@ -488,8 +485,9 @@ std::variant<Solved, Unsolvable> solve_profile(i128 vs, double v_cruise, i128 ve
   const auto aim_at = [&](double u) { return double(reach) - 0.5 * std::max(1.0, least + sign * u); };
 
   Candidate c;
-  // Streamed moves above their cruise speed keep the least-travel plateau
-  // unless the cruise speed fits: no search.
+  // Moves from an exact state (plan_from, streams) whose start or end speed is
+  // above the cruise speed keep the least-travel plateau unless the cruise
+  // speed fits: no search.
   const bool least_or_cruise = lim.least_above_cruise && !up;
   // The exact cruise candidate first when the model says it (nearly) fits.
   const double aim_cruise = aim_at(double(u_cruise));
@@ -504,7 +502,6 @@ std::variant<Solved, Unsolvable> solve_profile(i128 vs, double v_cruise, i128 ve
     // Exact candidates from the model's plateau: each one corrects the model
     // by the exact travel it found, bracketed by the highest plateau that
     // covers at most the aim (good) and the lowest that covers more (bad).
-    // The fastest feasible candidate is kept.
     i128 good = -1, bad = u_cruise, floor_u = -1;  // floor_u: too small to move
     // The realised plateaus of good and bad (-1: unknown), good's shortfall bound.
     i128 good_plateau = 0, good_step = 0, bad_plateau = -1;
