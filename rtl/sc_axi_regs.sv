@@ -223,10 +223,14 @@ module sc_axi_regs #(
   localparam logic [NCfg*32-1:0] ClMask  = sc_pkg::ClCfgMask;
   localparam logic [NCfg*32-1:0] ClReset = sc_pkg::ClCfgReset;
 
-  // byte-strobe merge of a 32-bit register word
+  // byte-strobe merge of a 32-bit register word: one 2:1 choice per byte,
+  // so that synthesis sees the register's own value fed back and makes the
+  // strobe a flop enable (as AND-OR it took one LUT per register bit)
   function automatic logic [31:0] wmerge(input logic [31:0] old_v, input logic [31:0] new_v,
                                          input logic [31:0] mask);
-    wmerge = (old_v & ~mask) | (new_v & mask);
+    for (int b = 0; b < 4; b++) begin
+      wmerge[8*b +: 8] = mask[8*b] ? new_v[8*b +: 8] : old_v[8*b +: 8];
+    end
   endfunction
 
   // ---- state ---------------------------------------------------------------
@@ -303,34 +307,16 @@ module sc_axi_regs #(
   logic        w_locked;          // the written register is locked while busy
   logic [31:0] status_word, rd_word;
   logic [1:0]  rd_resp;
-  // closed-loop window decode (write address held, read address on the bus)
-  logic [AW-1:0] w_cfg_off, w_st_off, r_cfg_off, r_st_off;
-  logic          w_cfg_hit, w_st_hit, r_cfg_hit, r_st_hit;
-  logic [AW-3:0] w_cfg_idx, r_cfg_idx, r_st_idx;
-  logic [31:0]   cl_rd_word;
+  // closed-loop window decode (write address held)
+  logic [AW-1:0] w_cfg_off, w_st_off;
+  logic          w_cfg_hit, w_st_hit;
+  logic [AW-3:0] w_cfg_idx;
 
   assign w_cfg_off = awaddr_q - AW'(sc_pkg::RegClFirst);
   assign w_st_off  = awaddr_q - AW'(sc_pkg::RegClStat);
-  assign r_cfg_off = s_axi_araddr_i - AW'(sc_pkg::RegClFirst);
-  assign r_st_off  = s_axi_araddr_i - AW'(sc_pkg::RegClStat);
   assign w_cfg_hit = Servo && (w_cfg_off[1:0] == 2'b00) && (w_cfg_off[AW-1:2] < (AW-2)'(NCfg));
   assign w_st_hit  = Servo && (w_st_off[1:0] == 2'b00) && (w_st_off[AW-1:2] < (AW-2)'(NStat));
-  assign r_cfg_hit = Servo && (r_cfg_off[1:0] == 2'b00) && (r_cfg_off[AW-1:2] < (AW-2)'(NCfg));
-  assign r_st_hit  = Servo && (r_st_off[1:0] == 2'b00) && (r_st_off[AW-1:2] < (AW-2)'(NStat));
   assign w_cfg_idx = w_cfg_off[AW-1:2];
-  assign r_cfg_idx = r_cfg_off[AW-1:2];
-  assign r_st_idx  = r_st_off[AW-1:2];
-
-  // AND-OR read muxes over the closed-loop words (constant part-selects)
-  always_comb begin
-    cl_rd_word = '0;
-    for (int i = 0; i < NCfg; i++) begin
-      if (r_cfg_hit && r_cfg_idx == (AW-2)'(i)) cl_rd_word = cl_rd_word | cl_q[32*i +: 32];
-    end
-    for (int i = 0; i < NStat; i++) begin
-      if (r_st_hit && r_st_idx == (AW-2)'(i)) cl_rd_word = cl_rd_word | cl_stat_i[32*i +: 32];
-    end
-  end
 
   assign busy_eff = busy_i || start_q || start_d1_q;
   assign do_write = aw_full_q && w_full_q && !bvalid_q;
@@ -419,95 +405,109 @@ module sc_axi_regs #(
   assign soft_rev  = soft_en_q && ref_pos_i < soft_min_q;
   assign fault_any = fault_table_i || fault_overrun_i || fault_ferr_i || err_estop_q || lim_trip;
 
-  // read mux
+  // Read mux. Every readable word is packed at its word index into one
+  // vector, and a read selects its word by index: a LUT6/MUXF7/MUXF8 tree.
+  // (A case over the byte address made one-hot decodes and an AND-OR per
+  // bit, twice the LUTs.) The map ends below byte address 0x200: a register
+  // placed higher would answer DECERR, which the board test of every
+  // register's reset value and access type reports.
+  localparam int RdWords = 2 ** (AW - 3);
+  logic [RdWords*32-1:0] rd_words;
+  logic [AW-4:0]         r_word;
+  logic                  r_known;
+
+  `define SC_RD(addr, lsb, width, value) w[32 * (32'(addr) >> 2) + (lsb) +: (width)] = (value)
+  always_comb begin : pack_read_words
+    logic [RdWords*32-1:0] w;
+    w = '0;
+    `SC_RD(AId, 0, 32, {16'(sc_pkg::RegIdMagic), 16'(sc_pkg::RegMapVersion)});
+    `SC_RD(ACtrl, CtrlEnableBit, 1, en_q);
+    `SC_RD(ACtrl, CtrlClosedBit, 1, closed_q);
+    `SC_RD(AStatus, 0, 32, status_word);
+    `SC_RD(AErr, ErrRejectBit, 1, err_reject_q);
+    `SC_RD(AErr, ErrBadAddrBit, 1, err_bad_q);
+    `SC_RD(AErr, ErrEstopBit, 1, err_estop_q);
+    `SC_RD(AErr, ErrFifoFullBit, 1, err_full_q);
+    `SC_RD(AErr, ErrDiscontBit, 1, err_disc_q);
+    `SC_RD(AErr, ErrUnderrunBit, 1, err_under_q);
+    `SC_RD(AErr, ErrLimNegBit, 1, err_lneg_q);
+    `SC_RD(AErr, ErrLimPosBit, 1, err_lpos_q);
+    `SC_RD(AErr, ErrGuardBit, 1, err_guard_q);
+    `SC_RD(AErr, sc_pkg::ErrSoftLimBit, 1, err_soft_q);
+    `SC_RD(ASwCfg, 0, 32, sw_cfg_word);
+    `SC_RD(ALatchCfg, sc_pkg::LatchRiseBit, 1, latch_rise_q);
+    `SC_RD(ALatchCfg, sc_pkg::LatchFallBit, 1, latch_fall_q);
+    `SC_RD(ALatchCfg, sc_pkg::LatchSrcLsb, sc_pkg::LatchSrcW, latch_src_q);
+    `SC_RD(ALatchPul, 0, 32, 32'(latch_pulse_q));
+    `SC_RD(ALatchEnc, 0, 32, 32'(latch_enc_q));
+    `SC_RD(APulseCnt, 0, 32, 32'(pulse_count_i));
+    `SC_RD(ARefPos, 0, 32, 32'(ref_pos_i));
+    `SC_RD(AEncPos, 0, 32, 32'(enc_pos_i));
+    `SC_RD(AFollowErr, 0, 32, 32'(ref_pos_i - enc_pos_i));
+    `SC_RD(AFifoStat, sc_pkg::FifoLevelLsb, RowLevelW, fifo_level_i);
+    `SC_RD(AFifoStat, sc_pkg::FifoFullBit, 1, fifo_full_i);
+    `SC_RD(AFifoStat, sc_pkg::FifoLowBit, 1, below);
+    `SC_RD(AFifoLow, sc_pkg::FifoLowLsb, RowLevelW, low_water_q);
+    `SC_RD(AMoveIdx, 0, 32, 32'(move_idx_i));
+    `SC_RD(ABoundPos, 0, 32, 32'(boundary_pos_i));
+    `SC_RD(AIrqStat, 0, IrqW, irq_st_q);
+    `SC_RD(AIrqEn, sc_pkg::IrqEnableLsb, IrqW, irq_en_q);
+    `SC_RD(APulseTime, sc_pkg::PulseHighLsb, PulseTimeW, high_q);
+    `SC_RD(APulseTime, sc_pkg::PulseLowLsb, PulseTimeW, low_q);
+    `SC_RD(ADirTime, sc_pkg::DirSetupLsb, PulseTimeW, setup_q);
+    `SC_RD(ADirTime, sc_pkg::DirHoldLsb, PulseTimeW, hold_q);
+    `SC_RD(AFrac0, 0, 32, frac0_q[31:0]);
+    `SC_RD(AFrac1, 0, 32, frac0_q[63:32]);
+    `SC_RD(AFrac2, 0, FracBits - 64, frac0_q[FracBits-1:64]);
+    `SC_RD(ASegPhase, sc_pkg::SegPhaseLsb, PhaseW, st_phase_q);
+    `SC_RD(ASegClocks, 0, 32, st_clocks_q);
+    `SC_RD(AJerk0, 0, 32, st_jerk_q[31:0]);
+    `SC_RD(AJerk1, 0, JerkW - 32, st_jerk_q[JerkW-1:32]);
+    `SC_RD(AStopJ0, 0, 32, stop_jerk_q[31:0]);
+    `SC_RD(AStopJ1, 0, JerkW - 32, stop_jerk_q[JerkW-1:32]);
+    `SC_RD(AStopA0, 0, 32, stop_acc_q[31:0]);
+    `SC_RD(AStopA1, 0, 32, stop_acc_q[AccW-1:32]);
+    `SC_RD(AGuardV0, 0, 32, guard_vel_q[31:0]);
+    `SC_RD(AGuardV1, 0, 32, guard_vel_q[63:32]);
+    `SC_RD(AGuardV2, 0, VelW - 64, guard_vel_q[VelW-1:64]);
+    `SC_RD(AGuardA0, 0, 32, guard_acc_q[31:0]);
+    `SC_RD(AGuardA1, 0, 32, guard_acc_q[AccW-1:32]);
+    `SC_RD(AGuardJ0, 0, 32, guard_jerk_q[31:0]);
+    `SC_RD(AGuardJ1, 0, JerkW - 32, guard_jerk_q[JerkW-1:32]);
+    `SC_RD(ASoftMin, 0, 32, 32'(soft_min_q));
+    `SC_RD(ASoftMax, 0, 32, 32'(soft_max_q));
+    `SC_RD(AAcc0, 0, 32, st_acc0_q[31:0]);
+    `SC_RD(AAcc1, 0, 32, st_acc0_q[63:32]);
+    `SC_RD(AVel0, 0, 32, st_vel0_q[31:0]);
+    `SC_RD(AVel1, 0, 32, st_vel0_q[63:32]);
+    `SC_RD(AVel2, 0, VelW - 64, st_vel0_q[VelW-1:64]);
+    if (Servo) begin
+      for (int i = 0; i < NCfg; i++) `SC_RD(sc_pkg::RegClFirst + 4 * i, 0, 32, cl_q[32*i +: 32]);
+      for (int i = 0; i < NStat; i++) `SC_RD(sc_pkg::RegClStat + 4 * i, 0, 32, cl_stat_i[32*i +: 32]);
+    end
+    rd_words = w;
+  end
+  `undef SC_RD
+
+  // The words that answer a read (CMD and ROW_PUSH read 0); DECERR for the
+  // rest, including unaligned addresses.
+  assign r_word = s_axi_araddr_i[AW-2:2];
   always_comb begin
-    rd_word = '0;
-    rd_resp = RespOkay;
     unique case (s_axi_araddr_i)
-      AId:        rd_word = {16'(sc_pkg::RegIdMagic), 16'(sc_pkg::RegMapVersion)};
-      ACtrl: begin
-        rd_word[CtrlEnableBit] = en_q;
-        rd_word[CtrlClosedBit] = closed_q;
-      end
-      ACmd:       rd_word = '0;
-      AStatus:    rd_word = status_word;
-      AErr: begin
-        rd_word[ErrRejectBit]  = err_reject_q;
-        rd_word[ErrBadAddrBit] = err_bad_q;
-        rd_word[ErrEstopBit]   = err_estop_q;
-        rd_word[ErrFifoFullBit] = err_full_q;
-        rd_word[ErrDiscontBit]  = err_disc_q;
-        rd_word[ErrUnderrunBit] = err_under_q;
-        rd_word[ErrLimNegBit]   = err_lneg_q;
-        rd_word[ErrLimPosBit]   = err_lpos_q;
-        rd_word[ErrGuardBit]    = err_guard_q;
-        rd_word[sc_pkg::ErrSoftLimBit] = err_soft_q;
-      end
-      ASwCfg:     rd_word = sw_cfg_word;
-      ALatchCfg: begin
-        rd_word[sc_pkg::LatchRiseBit]  = latch_rise_q;
-        rd_word[sc_pkg::LatchFallBit]  = latch_fall_q;
-        rd_word[sc_pkg::LatchSrcLsb +: sc_pkg::LatchSrcW] = latch_src_q;
-      end
-      ALatchPul:  rd_word = 32'(latch_pulse_q);
-      ALatchEnc:  rd_word = 32'(latch_enc_q);
-      APulseCnt:  rd_word = 32'(pulse_count_i);
-      ARefPos:    rd_word = 32'(ref_pos_i);
-      AEncPos:    rd_word = 32'(enc_pos_i);
-      AFollowErr: rd_word = 32'(ref_pos_i - enc_pos_i);
-      AFifoStat: begin
-        rd_word[sc_pkg::FifoLevelLsb +: RowLevelW] = fifo_level_i;
-        rd_word[sc_pkg::FifoFullBit]               = fifo_full_i;
-        rd_word[sc_pkg::FifoLowBit]                = below;
-      end
-      AFifoLow:   rd_word[sc_pkg::FifoLowLsb +: RowLevelW] = low_water_q;
-      AMoveIdx:   rd_word = 32'(move_idx_i);
-      ABoundPos:  rd_word = 32'(boundary_pos_i);
-      AIrqStat:   rd_word[IrqW-1:0] = irq_st_q;
-      AIrqEn:     rd_word[sc_pkg::IrqEnableLsb +: IrqW] = irq_en_q;
-      APulseTime: begin
-        rd_word[sc_pkg::PulseHighLsb +: PulseTimeW] = high_q;
-        rd_word[sc_pkg::PulseLowLsb +: PulseTimeW]  = low_q;
-      end
-      ADirTime: begin
-        rd_word[sc_pkg::DirSetupLsb +: PulseTimeW] = setup_q;
-        rd_word[sc_pkg::DirHoldLsb +: PulseTimeW]  = hold_q;
-      end
-      AFrac0:     rd_word = frac0_q[31:0];
-      AFrac1:     rd_word = frac0_q[63:32];
-      AFrac2:     rd_word = 32'(frac0_q[FracBits-1:64]);
-      ASegPhase:  rd_word[sc_pkg::SegPhaseLsb +: PhaseW] = st_phase_q;
-      ASegClocks: rd_word = st_clocks_q;
-      AJerk0:     rd_word = st_jerk_q[31:0];
-      AJerk1:     rd_word = 32'(st_jerk_q[JerkW-1:32]);
-      AStopJ0:    rd_word = stop_jerk_q[31:0];
-      AStopJ1:    rd_word = 32'(stop_jerk_q[JerkW-1:32]);
-      AStopA0:    rd_word = stop_acc_q[31:0];
-      AStopA1:    rd_word = stop_acc_q[AccW-1:32];
-      AGuardV0:   rd_word = guard_vel_q[31:0];
-      AGuardV1:   rd_word = guard_vel_q[63:32];
-      AGuardV2:   rd_word = 32'(guard_vel_q[VelW-1:64]);
-      AGuardA0:   rd_word = guard_acc_q[31:0];
-      AGuardA1:   rd_word = guard_acc_q[AccW-1:32];
-      AGuardJ0:   rd_word = guard_jerk_q[31:0];
-      AGuardJ1:   rd_word = 32'(guard_jerk_q[JerkW-1:32]);
-      ASoftMin:   rd_word = 32'(soft_min_q);
-      ASoftMax:   rd_word = 32'(soft_max_q);
-      AAcc0:      rd_word = st_acc0_q[31:0];
-      AAcc1:      rd_word = st_acc0_q[63:32];
-      AVel0:      rd_word = st_vel0_q[31:0];
-      AVel1:      rd_word = st_vel0_q[63:32];
-      AVel2:      rd_word = 32'(st_vel0_q[VelW-1:64]);
-      ARowPush:   rd_word = '0;
-      default: begin
-        if (r_cfg_hit || r_st_hit) begin
-          rd_word = cl_rd_word;
-        end else begin
-          rd_resp = RespDecErr;
-        end
-      end
+      AId, ACtrl, ACmd, AStatus, AErr, ASwCfg, ALatchCfg, ALatchPul, ALatchEnc, APulseCnt, ARefPos,
+      AEncPos, AFollowErr, AFifoStat, AFifoLow, AMoveIdx, ABoundPos, AIrqStat, AIrqEn, APulseTime,
+      ADirTime, AFrac0, AFrac1, AFrac2, ASegPhase, ASegClocks, AJerk0, AJerk1, AStopJ0, AStopJ1,
+      AStopA0, AStopA1, AGuardV0, AGuardV1, AGuardV2, AGuardA0, AGuardA1, AGuardJ0, AGuardJ1,
+      ASoftMin, ASoftMax, AAcc0, AAcc1, AVel0, AVel1, AVel2, ARowPush: r_known = 1'b1;
+      default: r_known = Servo && s_axi_araddr_i[1:0] == 2'b00 &&
+                         ((s_axi_araddr_i >= AW'(sc_pkg::RegClFirst) &&
+                           s_axi_araddr_i < AW'(sc_pkg::RegClFirst + 4 * NCfg)) ||
+                          (s_axi_araddr_i >= AW'(sc_pkg::RegClStat) &&
+                           s_axi_araddr_i < AW'(sc_pkg::RegClStat + 4 * NStat)));
     endcase
   end
+  assign rd_word = r_known ? rd_words[32*r_word +: 32] : '0;
+  assign rd_resp = r_known ? RespOkay : RespDecErr;
 
   // ---- next state ------------------------------------------------------------
   always_comb begin
