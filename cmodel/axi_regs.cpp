@@ -355,7 +355,8 @@ void AxiRegs::step(const AxiIn& in, const RegsSide& side, const CoreOutputs& cor
               d.push = true;
               d.push_flags = uint8_t(((wd >> RowPushMoveEndBit) & 1) << RowFlagMoveEnd |
                                      ((wd >> RowPushStreamEndBit) & 1) << RowFlagStreamEnd |
-                                     ((wd >> RowPushAccStepBit) & 1) << RowFlagAccStep);
+                                     ((wd >> RowPushAccStepBit) & 1) << RowFlagAccStep |
+                                     ((wd >> RowPushHoldBit) & 1) << RowFlagHold);
             }
           }
           break;

@@ -27,12 +27,18 @@ bool ProfileExec::head_forward() const {
   return h.vel0 != 0 ? h.vel0 > 0 : h.acc0 != 0 ? h.acc0 > 0 : h.jerk >= 0;
 }
 
+bool ProfileExec::holding() const {
+  return q_.run && !q_.stop && q_.left == 1 && (q_.flags & kRowHold) && q_.acc == 0 && q_.jerk == 0 &&
+         q_.moves == 0 && !fifo_.full();
+}
+
 void ProfileExec::step(const Inputs& in) {
   // Mirrors the RTL's always_comb blocks; the FIFO's head is read before
   // its clock edge (asynchronous read).
   const bool fifo_empty = fifo_.empty();
   const Row& hd = fifo_.head();
-  const bool boundary = q_.run && !q_.stop && !in.abort && q_.left == 1;
+  const bool hold = !in.abort && holding();
+  const bool boundary = q_.run && !q_.stop && !in.abort && q_.left == 1 && !hold;
   const i128 vel_end = wrap_signed(q_.vel + q_.acc, VelW);
   const int64_t acc_end = wrap_signed64(add_wrap64(q_.acc, q_.jerk), AccW);
   const bool continues = hd.seg.vel0 == vel_end && (hd.seg.acc0 == acc_end || (hd.flags & kRowAccStep));
@@ -92,6 +98,8 @@ void ProfileExec::step(const Inputs& in) {
           q_.run = false;
           q_.stop = false;
         }
+      } else if (hold) {
+        // v constant, a = j = 0: the state stays; only the position moves
       } else if (q_.left == 1) {
         if (move_done) {
           ++q_.move_idx;
@@ -185,7 +193,16 @@ void ProfileExec::step(const Inputs& in) {
     si.stop_acc = in.stop_acc;
     stop_.step(si);
   }
-  fifo_.step(flush || in.fifo_flush || was_stopping, in.row_push, w, load);
+  const bool flush_all = flush || in.fifo_flush || was_stopping;
+  // MOVE_END rows queued, counted as the FIFO takes and gives them.
+  if (flush_all) {
+    q_.moves = 0;
+  } else {
+    const bool push_ok = in.row_push && !fifo_.full();
+    if (push_ok && (w.flags & kRowMoveEnd)) q_.moves = uint8_t((q_.moves + 1) & ((1u << RowLevelW) - 1));
+    if (load && (hd.flags & kRowMoveEnd)) q_.moves = uint8_t((q_.moves - 1) & ((1u << RowLevelW) - 1));
+  }
+  fifo_.step(flush_all, in.row_push, w, load);
 }
 
 // A jump is exact when, over the rest of the segment, velocity keeps one
@@ -217,9 +234,14 @@ bool ProfileExec::jump_safe() const {
   return true;
 }
 
+// Clocks a hold covers in one closed-form jump (no input ends a hold within
+// fast_forward(); the bound keeps v * k far inside 128 bits).
+constexpr uint64_t kHoldSpan = uint64_t(1) << 30;
+
 uint64_t ProfileExec::clocks_to_next_event() const {
-  if (!jump_safe()) return 0;
-  const uint64_t left = q_.left;  // clock `left` reloads or finishes
+  const bool hold = holding();
+  if (!hold && !jump_safe()) return 0;
+  const uint64_t left = hold ? kHoldSpan : q_.left;  // clock `left` reloads or finishes
   const bool fwd = q_.vel >= 0;
   // Smallest m in [1, left] whose clock emits a step:
   // fwd: frac + sum_{i<m} v_i >= 2^F ; back: frac + sum_{i<m} v_i < 0.
@@ -236,7 +258,10 @@ uint64_t ProfileExec::clocks_to_next_event() const {
   return hi;
 }
 
-uint64_t ProfileExec::closed_form_span() const { return jump_safe() ? q_.left - 1 : 0; }
+uint64_t ProfileExec::closed_form_span() const {
+  if (holding()) return kHoldSpan;
+  return jump_safe() ? q_.left - 1 : 0;
+}
 
 void ProfileExec::advance(uint64_t k) {
   if (k == 0) return;
@@ -251,7 +276,7 @@ void ProfileExec::advance(uint64_t k) {
   q_.frac = u128(p - steps * one);
   q_.vel = vel_after(q_.vel, q_.acc, q_.jerk, k);
   q_.acc = int64_t(acc_after(q_.acc, q_.jerk, k));
-  q_.left -= uint32_t(k);
+  if (!holding()) q_.left -= uint32_t(k);  // a hold repeats its last clock
   q_.move_done = false;
 }
 

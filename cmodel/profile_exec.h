@@ -46,6 +46,7 @@ struct GuardLimits {
 inline constexpr uint8_t kRowMoveEnd = uint8_t(1u << RowFlagMoveEnd);
 inline constexpr uint8_t kRowStreamEnd = uint8_t(1u << RowFlagStreamEnd);
 inline constexpr uint8_t kRowAccStep = uint8_t(1u << RowFlagAccStep);
+inline constexpr uint8_t kRowHold = uint8_t(1u << RowFlagHold);
 
 class ProfileExec {
  public:
@@ -83,6 +84,7 @@ class ProfileExec {
     uint32_t move_idx = 0;
     int32_t bpos = 0;
     bool move_done = false;
+    uint8_t moves = 0;  // MOVE_END rows in the FIFO
     bool operator==(const State&) const = default;
   };
 
@@ -95,7 +97,8 @@ class ProfileExec {
   // or a closed-form jump is not safe (velocity changes sign, would wrap).
   uint64_t clocks_to_next_event() const;
   // Clocks that advance() may cover in closed form: the rest of the current
-  // segment except its last (reload) clock; 0 when not safe.
+  // segment except its last (reload) clock, or a stretch of a hold
+  // (velocity mode); 0 when not safe.
   uint64_t closed_form_span() const;
   // Advance k quiet clocks (k <= closed_form_span()) in closed form,
   // including the steps they emit; bit-exact with k calls of step().
@@ -116,6 +119,9 @@ class ProfileExec {
   // jerk_o: the jerk applied this clock (the stop's while stopping).
   int64_t jerk() const { return q_.stop ? stop_.jerk() : q_.jerk; }
   bool stopping() const { return q_.stop; }
+  // Velocity mode: a HOLD row at constant velocity waits for a whole move
+  // (with no inputs, it waits as long as no row is pushed).
+  bool holding() const;
   bool overshoot() const { return stop_.overshoot(); }
   const StopGen& stop_gen() const { return stop_; }
   // head_fwd_o: direction of the head row (velocity's sign, else the

@@ -732,8 +732,10 @@ module sc_axi_regs #(
                 err_full_d = 1'b1;
               end else begin
                 push_d       = 1'b1;
-                push_flags_d = {wd[sc_pkg::RowPushAccStepBit], wd[sc_pkg::RowPushStreamEndBit],
-                                wd[sc_pkg::RowPushMoveEndBit]};
+                push_flags_d[sc_pkg::RowFlagMoveEnd]   = wd[sc_pkg::RowPushMoveEndBit];
+                push_flags_d[sc_pkg::RowFlagStreamEnd] = wd[sc_pkg::RowPushStreamEndBit];
+                push_flags_d[sc_pkg::RowFlagAccStep]   = wd[sc_pkg::RowPushAccStepBit];
+                push_flags_d[sc_pkg::RowFlagHold]      = wd[sc_pkg::RowPushHoldBit];
               end
             end
           end

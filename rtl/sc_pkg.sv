@@ -36,12 +36,14 @@ package sc_pkg;
   localparam int RowLevelW    = 6;   // 0..RowFifoDepth
   localparam int MoveIdxW     = 32;  // moves completed since START (wraps)
   // Row flags, pushed with each row.
-  localparam int RowFlagW         = 3;
+  localparam int RowFlagW         = 4;
   localparam int RowFlagMoveEnd   = 0;  // last row of a move: a move boundary follows
   localparam int RowFlagStreamEnd = 1;  // last row of the stream: the plan ends here, at rest
                                         // or at its end speed (a stepper's stop speed)
   localparam int RowFlagAccStep   = 2;  // the row starts with a planned acceleration step
                                         // (trapezoid profiles): only its velocity must continue
+  localparam int RowFlagHold      = 3;  // velocity mode: at its end the row holds its constant
+                                        // velocity until a whole move (a MOVE_END row) is queued
 
   // ---- step pulse generator ----------------------------------------------
   localparam int PulseTimeW = 16;  // high/low/setup/hold in clocks
@@ -187,14 +189,16 @@ package sc_pkg;
   // the UART bridge's address byte is a word address so it reaches them all);
   // 0x000 .. 0x0FC hold the 2.x map unchanged, the rest is free.
   localparam int RegAddrW      = 10;      // byte address bits of the window
-  localparam int RegMapVersion = 773;     // 0x0305 = 3.5 (1 KiB window, UART word address; switch inputs, guards, probe, soft limits, index latch)
+  // 0x0306 = 3.6: 1 KiB window, UART word address; switch inputs, guards,
+  // probe, soft limits, index latch; ROW_PUSH.HOLD (velocity mode)
+  localparam int RegMapVersion = 774;
   localparam int RegIdMagic    = 21315;   // 0x5343, ASCII "SC"
   localparam int RstPulseHigh  = 50;      // reset values of the pulse timing
   localparam int RstPulseLow   = 50;
   localparam int RstDirSetup   = 100;
   localparam int RstDirHold    = 100;
   localparam int RegId         = 32'h0000_0000;  //@reg ID RO "identification"
-  localparam int IdVersionLsb  = 0;      //@field ID VERSION 16 reset=RegMapVersion "register map version, 0x0305 = 3.5"
+  localparam int IdVersionLsb  = 0;      //@field ID VERSION 16 reset=RegMapVersion "register map version, 0x0306 = 3.6"
   localparam int IdMagicLsb    = 16;     //@field ID MAGIC 16 reset=21315 "0x5343, ASCII 'SC'"
   localparam int RegCtrl       = 32'h0000_0004;  //@reg CTRL RW "control"
   localparam int CtrlEnableBit = 0;      //@field CTRL ENABLE 1 "drives the EN pin; START is refused while 0; ESTOP clears it"
@@ -263,6 +267,7 @@ package sc_pkg;
   localparam int RowPushMoveEndBit   = 0;  //@field ROW_PUSH MOVE_END 1 "last row of a move: MOVE_INDEX and BOUNDARY_POS update when it ends"
   localparam int RowPushStreamEndBit = 1;  //@field ROW_PUSH STREAM_END 1 "last row of the stream: the plan ends here (at rest or at its stop speed)"
   localparam int RowPushAccStepBit   = 2;  //@field ROW_PUSH ACC_STEP 1 "the row starts with a planned acceleration step (trapezoid): the continuity guard checks its velocity only"
+  localparam int RowPushHoldBit      = 3;  //@field ROW_PUSH HOLD 1 "velocity mode: a row ending at constant velocity (a = j = 0) keeps that velocity until a whole move (up to a MOVE_END row) is queued or the FIFO is full"
   // Closed-loop controller settings (sc_axi_servo only; DECERR in
   // sc_axi_axis): words RegClFirst .. RegClFirst + 4 * (ClCfgWords - 1), the
   // registers tagged `servo` whose fields carry cfg=MEMBER. Those fields are

@@ -32,6 +32,13 @@
 // A row flagged MOVE_END closes a move: move_idx_o counts the moves done
 // since START and boundary_pos_o holds the integer position at that
 // boundary (after the step of its last clock).
+// Velocity mode: a row flagged HOLD that ends at constant velocity
+// (a = j = 0) does not end while no whole move is queued: its last clock
+// repeats (pos += v) until a MOVE_END row is in the FIFO, or the FIFO is
+// full, and then ends as any row. The host queues the next velocity change
+// (ramp rows ending in a HOLD row, the last one MOVE_END) at any time, and
+// it starts from the one state the hold has: v, a = 0. Waiting for the whole
+// move means a slow host (the UART) cannot run the FIFO dry mid-ramp.
 //
 // Controlled stop (stop_i, underrun, discontinuity, malformed row): the
 // clock that triggers it still integrates the running row (v + a, a + j),
@@ -127,6 +134,9 @@ module sc_profile_exec (
   logic [MoveIdxW-1:0]       move_idx_q, move_idx_d;
   logic signed [PosIntW-1:0] bpos_q, bpos_d;
   logic                      move_done, move_done_q;
+  logic [RowLevelW-1:0]      moves_q, moves_d;      // MOVE_END rows in the FIFO
+  logic                      hold;                  // a HOLD row waits for a whole move
+  logic                      push_ok;
 
   // frac (unsigned) + vel (signed, |vel| < 1.0) needs two bits above the
   // fraction: bit FracBits+1 = result negative (borrow), bit FracBits = carry.
@@ -187,7 +197,10 @@ module sc_profile_exec (
   assign over_jerk = hd_jerk_x > guard_jerk_i || (hd_jerk[JerkW-1] && hd_jerk_x == guard_jerk_i);
   assign over_guard = (guard_vel_i != '0 && over_vel) || (guard_acc_i != '0 && over_acc) ||
                       (guard_jerk_i != '0 && over_jerk);
-  assign boundary  = run_q && !stop_q && !abort_i && left_q == SegClkW'(1);
+  assign hold      = run_q && !stop_q && !abort_i && left_q == SegClkW'(1) &&
+                     flags_q[sc_pkg::RowFlagHold] && acc_q == '0 && jerk_q == '0 &&
+                     moves_q == '0 && !fifo_full;
+  assign boundary  = run_q && !stop_q && !abort_i && left_q == SegClkW'(1) && !hold;
   assign move_done = boundary && flags_q[sc_pkg::RowFlagMoveEnd];
   // The stream ends as planned at this boundary (no row follows).
   assign ends      = flags_q[sc_pkg::RowFlagStreamEnd] || (fifo_empty && at_rest);
@@ -261,6 +274,8 @@ module sc_profile_exec (
             run_d  = 1'b0;
             stop_d = 1'b0;
           end
+        end else if (hold) begin
+          // v constant, a = j = 0: the state stays; only the position moves
         end else if (left_q == SegClkW'(1)) begin
           if (move_done) begin
             move_idx_d = move_idx_q + MoveIdxW'(1);
@@ -339,6 +354,18 @@ module sc_profile_exec (
     if (fifo_flush_i || stop_q) flush = 1'b1;
   end
 
+  // MOVE_END rows queued, counted as sc_row_fifo takes and gives them.
+  assign push_ok = row_push_i && !fifo_full && !flush;
+  always_comb begin
+    moves_d = moves_q;
+    if (flush) begin
+      moves_d = '0;
+    end else begin
+      if (push_ok && row_flags_i[sc_pkg::RowFlagMoveEnd]) moves_d = moves_d + RowLevelW'(1);
+      if (pop && hd_flags[sc_pkg::RowFlagMoveEnd])        moves_d = moves_d - RowLevelW'(1);
+    end
+  end
+
   sc_stop_gen u_stop (
     .clk_i,
     .rst_ni,
@@ -376,6 +403,7 @@ module sc_profile_exec (
       move_idx_q <= '0;
       bpos_q     <= '0;
       move_done_q <= 1'b0;
+      moves_q    <= '0;
     end else begin
       run_q      <= run_d;
       finished_q <= finished_d;
@@ -398,6 +426,7 @@ module sc_profile_exec (
       move_idx_q <= move_idx_d;
       bpos_q     <= bpos_d;
       move_done_q <= move_done;
+      moves_q    <= moves_d;
     end
   end
 
@@ -438,6 +467,9 @@ module sc_profile_exec (
   c_start_empty:    cover property (@(posedge clk_i) rst_ni && !run_q && start_i && fifo_empty);
   c_row_chained:    cover property (@(posedge clk_i) rst_ni && boundary && load);
   c_move_end:       cover property (@(posedge clk_i) rst_ni && move_done);
+  c_hold:           cover property (@(posedge clk_i) rst_ni && hold && vel_q != '0);
+  c_hold_left:      cover property (@(posedge clk_i) rst_ni && boundary && load &&
+                                    flags_q[sc_pkg::RowFlagHold]);
   c_stream_end:     cover property (@(posedge clk_i) rst_ni && boundary && !load && ends);
   c_stop_command:   cover property (@(posedge clk_i) rst_ni && stop_start && stop_i);
   c_underrun:       cover property (@(posedge clk_i) rst_ni && underrun_d && !underrun_q);
@@ -472,11 +504,12 @@ module sc_profile_exec (
                        (hd_acc0 == acc_o + AccW'(jerk_o) || hd_flags[sc_pkg::RowFlagAccStep]);
   // A row ends (running, no stop, no abort, its last clock), the stream does
   // not end there as planned, a row is queued and it does not continue.
-  assign f_disc = running_o && !stopping_o && !abort_i && left_q == SegClkW'(1) &&
+  // A HOLD row waiting for a whole move (velocity mode) has not ended.
+  assign f_disc = running_o && !stopping_o && !abort_i && left_q == SegClkW'(1) && !hold &&
                   !flags_q[sc_pkg::RowFlagStreamEnd] && !fifo_empty && !f_head_cont;
 
   // ... or no row is queued and the motion is not at rest (FIFO underrun).
-  assign f_under = running_o && !stopping_o && !abort_i && left_q == SegClkW'(1) &&
+  assign f_under = running_o && !stopping_o && !abort_i && left_q == SegClkW'(1) && !hold &&
                    !flags_q[sc_pkg::RowFlagStreamEnd] && fifo_empty &&
                    !(vel_o + VelW'(acc_o) == '0 && acc_o + AccW'(jerk_o) == '0);
 

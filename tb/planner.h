@@ -144,6 +144,12 @@ inline TableReport run_table(const std::vector<Segment>& rows, u128 pos_frac0, i
   return scurve::run_table(h, pos_frac0, direction);
 }
 
+// A row's RowFlag* bits from the host's flags.
+inline uint8_t row_flags(const scurve::RowFlags& f) {
+  return uint8_t((f.move_end ? kRowMoveEnd : 0) | (f.stream_end ? kRowStreamEnd : 0) |
+                 (f.acc_step ? kRowAccStep : 0) | (f.hold ? kRowHold : 0));
+}
+
 // The FIFO words of one planned move (flags: scurve::move_row_flags).
 inline std::vector<Row> move_rows(const std::vector<Segment>& segments, bool stream_end = true) {
   std::vector<scurve::Segment> h;
@@ -153,9 +159,18 @@ inline std::vector<Row> move_rows(const std::vector<Segment>& segments, bool str
   std::vector<Row> rows;
   rows.reserve(segments.size());
   for (size_t i = 0; i < segments.size(); ++i) {
-    const uint8_t flags = uint8_t((f[i].move_end ? kRowMoveEnd : 0) | (f[i].stream_end ? kRowStreamEnd : 0) |
-                                  (f[i].acc_step ? kRowAccStep : 0));
-    rows.push_back(Row{segments[i], flags});
+    rows.push_back(Row{segments[i], row_flags(f[i])});
+  }
+  return rows;
+}
+
+// The FIFO words of a velocity-mode command (flags: scurve::velocity_row_flags).
+inline std::vector<Row> velocity_rows(const scurve::VelocityPlan& plan) {
+  const std::vector<scurve::RowFlags> f = scurve::velocity_row_flags(plan);
+  std::vector<Row> rows;
+  rows.reserve(plan.segments.size());
+  for (size_t i = 0; i < plan.segments.size(); ++i) {
+    rows.push_back(Row{to_model(plan.segments[i]), row_flags(f[i])});
   }
   return rows;
 }

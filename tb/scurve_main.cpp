@@ -3,6 +3,7 @@
 //   scurve sim  (same move flags | --group 1 2 3 4) [--engine ...] [--stop-at T] [--json]
 //   scurve regs (same move flags) [--uart] [--no-start] [--closed-loop] [--json]   register writes
 //   scurve stream FILE [--engine ...] [--json]   a stream of moves with look-ahead junctions
+//   scurve jog [--target V[:T] ...] [--stop] [--engine ...] [--json]   velocity mode (jog)
 //   scurve home [--switch-at N] [--runs N] [--engine ...] [--json]   homing against a switch in the plant
 //   scurve virtual-board [--pty-link PATH] [--speed X]   the board top behind a pseudo-terminal
 //   scurve board --port DEV info|status|run|stream|stop|estop|clear|home|watch   a board over its UART
@@ -30,6 +31,7 @@
 #include "sim_run.h"
 #include "stream_run.h"
 #include "homing_cli.h"
+#include "jog_cli.h"
 #include "scurve/reg_encode.h"
 #include "tool_commands.h"
 #include "virtual_board.h"
@@ -198,6 +200,10 @@ int main(int argc, char** argv) {
   scurve::cli::add_timing_flags(stream_cmd, tf);
   scurve::cli::add_output_flags(stream_cmd, tf);
 
+  // ---- jog: velocity mode -------------------------------------------------------
+  JogCli jog;
+  add_jog_command(app, jog);
+
   // ---- home: the homing sequence against a switch in the plant -----------------
   HomingCli home;
   add_homing_command(app, home);
@@ -215,6 +221,8 @@ int main(int argc, char** argv) {
   if (int rc = 0; host->run(&rc)) return rc;
 
   if (*home.cmd) return run_homing_cli(home);
+
+  if (*jog.cmd) return run_jog_cli(jog);
 
   if (*virtual_board.cmd) return run_virtual_board_cli(virtual_board);
 

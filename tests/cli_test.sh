@@ -268,4 +268,20 @@ assert len(refs) == 1, refs
 for r in h["runs"]:
     assert r["home_ref"] == r["index_point"] == r["index_enc"] == r["zero_point"], r
 PY
+# scurve jog: velocity mode; each hold at exactly its target, a stop within
+# a pulse of the closed form; bad input names the place.
+"$scurve" jog --target 3000:0.01 --target -1500:0.01 --stop --json > "$tmp/jog.json"
+"$scurve" jog --engine model-fast --target 5000:0.5 --target 0 --json > "$tmp/jog_fast.json"
+python3 - "$tmp/jog.json" "$tmp/jog_fast.json" <<'PY'
+import json, sys
+j, f = (json.load(open(p)) for p in sys.argv[1:3])
+assert j["pass"] and j["engine"] == "lockstep" and j["mismatches"] == 0 and j["stopped"], j
+assert [c["v_held"] for c in j["commands"]] == [3000, -1500] and all(c["held"] for c in j["commands"]), j
+assert abs(j["stop_distance"] - j["stop_closed_form_distance"]) < 1 and j["pulses"] == j["end_position"], j
+assert f["pass"] and f["engine"] == "model-fast" and not f["stopped"] and f["pulses"] == f["end_position"], f
+PY
+check_bad "commands\[0\].v_target" jog --target 1e7
+check_bad "commands\[0\].v_target" jog --target 100
+check_bad "target\[1\].hold" jog --target 100 --target 0:-1
+check_bad a_max jog --a-max 0
 echo "cli ok"

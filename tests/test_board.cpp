@@ -313,6 +313,52 @@ TEST(AxiRegs, StreamedMovesCountMovesLatchBoundariesAndRaiseInterrupts) {
   EXPECT_FALSE(b.failed()) << b.error();
 }
 
+// Velocity mode through the registers: ROW_PUSH.HOLD keeps the target
+// velocity while the host takes its time; the next command (pushed row by
+// row over the bus) starts only once it is whole; CMD.STOP ends it under
+// control. The speeds are checked on the pins against the planner's target.
+TEST(AxiRegs, VelocityModeHoldsEachTargetUntilTheWholeNextCommandIsQueuedAndStopsUnderControl) {
+  AxiBench b(true, 25);
+  const scurve::Planner planner{model_clock()};
+  const scurve::PulseTiming t{};
+  const auto plan = [&](i128 from, double v) {
+    auto r = planner.plan_velocity(from, {v, 2e6, 4e8}, t);
+    EXPECT_TRUE(std::holds_alternative<scurve::VelocityPlan>(r));
+    return std::get<scurve::VelocityPlan>(r);
+  };
+  EXPECT_EQ(b.write(reg_addr("CTRL"), 1), kOkay);
+  EXPECT_EQ(b.write(reg_addr("POS_FRAC0_2"), uint32_t(1u << (FracBits - 65))), kOkay);
+  set_stop_limits(b, 4e8, 2e6);
+  const scurve::VelocityPlan up = plan(0, 40000);
+  push_rows(b, up.segments, scurve::velocity_row_flags(up));
+  EXPECT_EQ(b.write(reg_addr("CMD"), field_mask("CMD", "START")), kOkay);
+  b.idle(up.ramp_clocks + 1000);
+  // Held: 40,000 pulses/s on the pins over 0.05 s, for as long as nothing is queued.
+  for (int k = 0; k < 2; ++k) {
+    const int32_t p0 = b.net_steps();
+    b.idle(1'000'000);
+    EXPECT_NEAR(b.net_steps() - p0, 2000, 1);
+  }
+  EXPECT_TRUE(b.out().busy);
+  EXPECT_EQ(b.read(reg_addr("ERR")).first, 0u);
+  // The next command, -25,000 pulses/s, pushed one register write at a time.
+  const scurve::VelocityPlan down = plan(up.v_end, -25000);
+  push_rows(b, down.segments, scurve::velocity_row_flags(down));
+  b.idle(down.ramp_clocks + 1000);
+  const int32_t p1 = b.net_steps();
+  b.idle(1'000'000);
+  EXPECT_NEAR(b.net_steps() - p1, -1250, 1);
+  EXPECT_EQ(b.read(reg_addr("MOVE_INDEX")).first, 1u) << "the first command's move ended with its hold";
+  EXPECT_EQ(b.write(reg_addr("CMD"), field_mask("CMD", "STOP")), kOkay);
+  while (b.out().busy && !b.failed()) b.idle(100);
+  const uint32_t st = b.read(reg_addr("STATUS")).first;
+  EXPECT_EQ(st & field_mask("STATUS", "PHASE"), uint32_t(Phase::PhStop));
+  EXPECT_FALSE(st & field_mask("STATUS", "UNDERRUN"));
+  EXPECT_EQ(b.read(reg_addr("ERR")).first, 0u);
+  EXPECT_EQ(b.net_steps(), int32_t(b.read(reg_addr("REF_POS")).first)) << "no position lost";
+  EXPECT_FALSE(b.failed()) << b.error();
+}
+
 TEST(AxiRegs, FifoRunningDryWhileMovingIsAnUnderrunWithTheBoundaryKept) {
   AxiBench b(true, 24);
   const auto moves = two_streamed_moves(2500, 4000, 3000);

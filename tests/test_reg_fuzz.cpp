@@ -245,6 +245,7 @@ class AxiFuzzer {
     f.move_end = g_() & 1;
     f.stream_end = g_() & 1;
     f.acc_step = g_() & 1;
+    f.hold = g_() % 8 == 0;
     for (const RegWrite& w : encode_row(s, f)) write(w.addr, w.data, 0xf);
     ++n_.hostile_rows;
   }

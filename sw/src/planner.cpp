@@ -1131,6 +1131,58 @@ PlanResult plan_continuation(const JunctionState& start, int64_t distance, doubl
 
 }  // namespace detail
 
+VelocityResult Planner::plan_velocity(i128 v_from, const VelocityRequest& req, const PulseTiming& timing) const {
+  // The clock, the timing, a_max and j_max are checked as for a move.
+  MoveRequest as_move;
+  as_move.distance = 1;
+  as_move.v_cruise = PlannerLimits::kMinCruise;
+  as_move.a_max = req.a_max;
+  as_move.j_max = req.j_max;
+  if (auto e = check_request(as_move, timing, clock_)) return *e;
+  const double v_lim = step_rate_limit(timing, clock_);
+  if (auto e = check_range("v_target", req.v_target, -v_lim, v_lim,
+                           "pulses/s (the step-rate limit, either direction)")) {
+    return *e;
+  }
+  Limits lim = make_limits(as_move, timing, clock_);
+  lim.exact_transitions = true;
+  const i128 speed_from = v_from < 0 ? -v_from : v_from;
+  if (speed_from > lim.v_rate) {
+    return PlanError{"v_from", fmt::format("v_from={} LSB: exceeds the step-rate limit {} LSB",
+                                           to_string_i128(v_from), to_string_i128(lim.v_rate))};
+  }
+  const int dir_to = req.v_target < 0 ? -1 : 1;
+  const i128 speed_to = std::min(i128(std::floor(std::fabs(req.v_target) * lim.units.vel)), lim.v_rate);
+  const int dir_from = v_from < 0 ? -1 : 1;
+
+  VelocityPlan out;
+  // One transition of the speed (magnitude) in one direction.
+  const auto ramp = [&](i128 from, i128 to, int dir) {
+    if (from == to) return;
+    const Transition t = transition_to(from, to, lim);
+    const std::vector<Row> rows(t.rows.begin(), t.rows.end());
+    for (const Row& r : rows) out.ramp_clocks += r.clocks;
+    out.ramp_gain += dir * t.gain;
+    for (const Segment& s : to_segments(rows, dir)) out.segments.push_back(s);
+  };
+  if (speed_from != 0 && speed_to != 0 && dir_from != dir_to) {
+    ramp(speed_from, 0, dir_from);  // a direction change passes through rest
+    ramp(0, speed_to, dir_to);
+  } else {
+    ramp(speed_from, speed_to, speed_from != 0 ? dir_from : dir_to);
+  }
+  out.v_end = dir_to * speed_to;
+  out.hold = speed_to != 0;
+  if (out.hold) {
+    Segment h;
+    h.phase = Phase::PhCruise;
+    h.clocks = 1;
+    h.vel0 = out.v_end;
+    out.segments.push_back(h);
+  }
+  return out;
+}
+
 PlanResult Planner::plan_from(const JunctionState& start, const MoveRequest& req, const PulseTiming& timing) const {
   // The start speed is the exact state; validate the rest as plan() does.
   MoveRequest checked = req;

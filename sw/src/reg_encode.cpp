@@ -20,7 +20,7 @@ std::string reg_name(uint32_t addr) {
 
 uint32_t RowFlags::word() const {
   return (move_end ? 1u << RowPushMoveEndBit : 0u) | (stream_end ? 1u << RowPushStreamEndBit : 0u) |
-         (acc_step ? 1u << RowPushAccStepBit : 0u);
+         (acc_step ? 1u << RowPushAccStepBit : 0u) | (hold ? 1u << RowPushHoldBit : 0u);
 }
 
 std::vector<RowFlags> move_row_flags(const std::vector<Segment>& rows, bool stream_end) {
@@ -33,6 +33,12 @@ std::vector<RowFlags> move_row_flags(const std::vector<Segment>& rows, bool stre
     f.back().move_end = true;
     f.back().stream_end = stream_end;
   }
+  return f;
+}
+
+std::vector<RowFlags> velocity_row_flags(const VelocityPlan& plan) {
+  std::vector<RowFlags> f = move_row_flags(plan.segments, !plan.hold);
+  if (!f.empty()) f.back().hold = plan.hold;
   return f;
 }
 

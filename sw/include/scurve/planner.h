@@ -115,6 +115,27 @@ struct Error {
 using PlanError = Error;
 using PlanResult = std::variant<Plan, Error>;
 
+// Velocity mode (jog): a change of velocity with jerk-limited transitions,
+// held until the next command.
+struct VelocityRequest {
+  double v_target = 0;  // pulses/s, signed (the sign is the direction); |v_target| <= the step-rate limit
+  double a_max = 0;     // pulses/s^2
+  double j_max = 0;     // pulses/s^3
+};
+
+struct VelocityPlan {
+  // The ramp from the start velocity (a = 0) to the target, fastest for the
+  // limits; through zero at a direction change. Unless the target is 0, a
+  // last one-clock row at the target velocity that the rows mark HOLD: the
+  // executor keeps that velocity until the next whole command is queued.
+  std::vector<Segment> segments;
+  bool hold = false;          // the last row holds (target != 0)
+  i128 v_end = 0;             // the exact velocity reached (LSB per clock, signed): the next command's start
+  uint64_t ramp_clocks = 0;   // clocks of the ramp (the hold row not counted)
+  i128 ramp_gain = 0;         // position LSBs covered by the ramp, signed
+};
+using VelocityResult = std::variant<VelocityPlan, Error>;
+
 // The planner for a board clocked at `clock` (default 20 MHz):
 //   scurve::Planner planner{scurve::Clock{25e6}};
 //   scurve::PlanResult r = planner.plan(request, timing);
@@ -139,6 +160,13 @@ class Planner {
   // (a reversal needs junction speed 0). No table-size limit is applied
   // (the stream has no 16-row table). The soft limits apply as in plan().
   PlanResult plan_from(const JunctionState& start, const MoveRequest& req, const PulseTiming& timing) const;
+
+  // Velocity mode: rows from the exact constant velocity v_from (LSB per
+  // clock, signed; 0 at rest, else the v_end of the last VelocityPlan) to
+  // req.v_target. Checked: v_from and v_target within the step-rate limit
+  // ("v_from", "v_target"), a_max and j_max as in plan(). The target is
+  // reached exactly on the LSB grid (floored magnitude).
+  VelocityResult plan_velocity(i128 v_from, const VelocityRequest& req, const PulseTiming& timing) const;
   Clock clock() const { return clock_; }
 
  private:

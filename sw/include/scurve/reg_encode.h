@@ -35,12 +35,16 @@ struct RowFlags {
   bool move_end = false;    // last row of a move
   bool stream_end = false;  // last row of the stream
   bool acc_step = false;    // starts with a planned acceleration step (trapezoid)
+  bool hold = false;        // velocity mode: holds its constant velocity until a whole move is queued
   uint32_t word() const;    // the ROW_PUSH value
 };
 // The flags of a move's rows: the last MOVE_END (and STREAM_END when the
 // move ends the stream: a single move's end speed is its stop speed); a row
 // whose start acceleration differs from the previous row's end ACC_STEP.
 std::vector<RowFlags> move_row_flags(const std::vector<Segment>& rows, bool stream_end = true);
+// The flags of a velocity-mode command (Planner::plan_velocity): one move,
+// its last row HOLD, or STREAM_END when the target is rest.
+std::vector<RowFlags> velocity_row_flags(const VelocityPlan& plan);
 // One row's staging writes and its ROW_PUSH.
 std::vector<RegWrite> encode_row(const Segment& s, RowFlags flags = {});
 
