@@ -77,7 +77,7 @@ uint32_t AxiRegs::read_word(uint16_t a, const RegsSide& side, const CoreOutputs&
       if (core.fault_overrun) s |= bit(StatusFaultOverrunBit);
       if (q_.err_estop) s |= bit(StatusEstopBit);
       if (q_.err_reject || q_.err_bad || q_.err_estop || q_.err_lim_neg || q_.err_lim_pos || q_.err_guard ||
-          q_.err_soft) {
+          q_.err_soft || q_.err_retarget) {
         s |= bit(StatusErrBit);
       }
       if (st.fault_ferr) s |= bit(StatusFaultFerrBit);
@@ -98,7 +98,8 @@ uint32_t AxiRegs::read_word(uint16_t a, const RegsSide& side, const CoreOutputs&
              (q_.err_estop ? bit(ErrEstopBit) : 0) | (q_.err_full ? bit(ErrFifoFullBit) : 0) |
              (q_.err_disc ? bit(ErrDiscontBit) : 0) | (q_.err_under ? bit(ErrUnderrunBit) : 0) |
              (q_.err_lim_neg ? bit(ErrLimNegBit) : 0) | (q_.err_lim_pos ? bit(ErrLimPosBit) : 0) |
-             (q_.err_guard ? bit(ErrGuardBit) : 0) | (q_.err_soft ? bit(ErrSoftLimBit) : 0);
+             (q_.err_guard ? bit(ErrGuardBit) : 0) | (q_.err_soft ? bit(ErrSoftLimBit) : 0) |
+             (q_.err_retarget ? bit(ErrRetargetBit) : 0);
     case RegSwCfg: return sw_cfg_word();
     case RegLatchCfg:
       return (q_.latch_rise ? bit(LatchRiseBit) : 0) | (q_.latch_fall ? bit(LatchFallBit) : 0) |
@@ -106,6 +107,8 @@ uint32_t AxiRegs::read_word(uint16_t a, const RegsSide& side, const CoreOutputs&
     case RegLatchPulse: return uint32_t(q_.latch_pulse);
     case RegSoftMin: return uint32_t(q_.soft_min);
     case RegSoftMax: return uint32_t(q_.soft_max);
+    case RegRowCount: return core.row_count;
+    case RegRetargetRow: return q_.retarget_row;
     case RegLatchEnc: return uint32_t(q_.latch_enc);
     case RegPulseCount: return uint32_t(core.pulse_count);
     case RegRefPos: return uint32_t(core.ref_pos_int);
@@ -157,6 +160,7 @@ void AxiRegs::step(const AxiIn& in, const RegsSide& side, const CoreOutputs& cor
   const State q = q_;
   State d = q;
   d.push = false;
+  d.replace = false;
   d.flush = false;
   d.start = false;
   d.abort = false;
@@ -194,6 +198,7 @@ void AxiRegs::step(const AxiIn& in, const RegsSide& side, const CoreOutputs& cor
       switch (a) {
         case RegId: case RegStatus: case RegPulseCount: case RegRefPos: case RegEncPos: case RegFollowErr:
         case RegFifoStatus: case RegMoveIndex: case RegBoundaryPos: case RegLatchPulse: case RegLatchEnc:
+        case RegRowCount:
           d.bresp = kSlvErr;
           set_bad = true;
           break;
@@ -240,6 +245,7 @@ void AxiRegs::step(const AxiIn& in, const RegsSide& side, const CoreOutputs& cor
             if (wd & bit(ErrLimPosBit)) d.err_lim_pos = false;
             if (wd & bit(ErrGuardBit)) d.err_guard = false;
             if (wd & bit(ErrSoftLimBit)) d.err_soft = false;
+            if (wd & bit(ErrRetargetBit)) d.err_retarget = false;
           }
           break;
         case RegIrqStatus:
@@ -337,6 +343,7 @@ void AxiRegs::step(const AxiIn& in, const RegsSide& side, const CoreOutputs& cor
           break;
         case RegSoftMin: d.soft_min = int32_t(wmerge(uint32_t(q.soft_min), wd, wmask)); break;
         case RegSoftMax: d.soft_max = int32_t(wmerge(uint32_t(q.soft_max), wd, wmask)); break;
+        case RegRetargetRow: d.retarget_row = wmerge(q.retarget_row, wd, wmask); break;
         case RegSegAcc0:
           d.st_acc0 = uint64_t(put_word(q.st_acc0, 0, wmerge(uint32_t(q.st_acc0), wd, wmask), AccW));
           break;
@@ -348,11 +355,13 @@ void AxiRegs::step(const AxiIn& in, const RegsSide& side, const CoreOutputs& cor
         case RegSegVel0 + 8: d.st_vel0 = put_word(q.st_vel0, 64, wmerge(get_word(q.st_vel0, 64), wd, wmask), VelW); break;
         case RegRowPush:
           if (q.wstrb & 1) {
-            if (core.fifo_full) {
+            // A replace drops queued rows: the executor decides, not the level.
+            if (core.fifo_full && !((wd >> RowPushReplaceBit) & 1)) {
               d.bresp = kSlvErr;
               d.err_full = true;
             } else {
               d.push = true;
+              d.replace = (wd >> RowPushReplaceBit) & 1;
               d.push_flags = uint8_t(((wd >> RowPushMoveEndBit) & 1) << RowFlagMoveEnd |
                                      ((wd >> RowPushStreamEndBit) & 1) << RowFlagStreamEnd |
                                      ((wd >> RowPushAccStepBit) & 1) << RowFlagAccStep |
@@ -400,6 +409,7 @@ void AxiRegs::step(const AxiIn& in, const RegsSide& side, const CoreOutputs& cor
   if (core.lim_trip_rev) d.err_lim_neg = true;
   if (core.lim_trip_fwd) d.err_lim_pos = true;
   if (core.guard && !q.guard_prev) d.err_guard = true;
+  if (core.retarget_refused) d.err_retarget = true;
   if ((core.lim_trip_fwd && soft_fwd(core.ref_pos_int)) || (core.lim_trip_rev && soft_rev(core.ref_pos_int))) {
     d.err_soft = true;
   }
@@ -467,6 +477,8 @@ CoreInputs AxiRegs::core_inputs(uint32_t sw_level, int32_t ref_pos) const {
   c.enable = q_.en;
   c.cfg = q_.cfg;
   c.row_push = q_.push;
+  c.row_replace = q_.replace;
+  c.retarget_row = q_.retarget_row;
   c.row.flags = q_.push_flags;
   c.row.seg.phase = Phase(q_.st_phase);
   c.row.seg.clocks = q_.st_clocks;
@@ -519,6 +531,8 @@ ServoInputs AxiServo::servo_inputs() const {
   ServoInputs si;
   si.cfg = decode_config(ci.enable, q.closed, ci.cfg, q.cl);
   si.row_push = ci.row_push;
+  si.row_replace = ci.row_replace;
+  si.retarget_row = ci.retarget_row;
   si.row = ci.row;
   si.fifo_flush = ci.fifo_flush;
   si.pos_frac0 = ci.pos_frac0;
@@ -556,6 +570,8 @@ void AxiServo::step(const AxiIn& in, const RegsSide& side) {
   co.boundary_pos = so.boundary_pos;
   co.fifo_level = so.fifo_level;
   co.fifo_full = so.fifo_full;
+  co.row_count = so.row_count;
+  co.retarget_refused = so.retarget_refused;
   co.lim_trip_fwd = so.lim_trip_fwd;
   co.lim_trip_rev = so.lim_trip_rev;
   ServoStatus st;

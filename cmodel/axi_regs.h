@@ -89,6 +89,9 @@ class AxiRegs {
     uint64_t st_acc0 = 0;
     u128 st_vel0 = 0;      // VelW bits, unsigned view
     bool push = false;
+    bool replace = false;                   // ROW_PUSH.REPLACE with push
+    uint32_t retarget_row = 0;              // RETARGET_ROW
+    bool err_retarget = false;
     uint8_t push_flags = 0;
     bool flush = false;
     bool start = false;

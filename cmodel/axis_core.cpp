@@ -28,6 +28,7 @@ void AxisCore::step(const CoreInputs& in) {
   latch_write(in);
   clock_edge<false>(kNoExt);
   exec_in_.row_push = false;
+  exec_in_.row_replace = false;
   exec_in_.fifo_flush = false;
   latch_inputs(in);
 }
@@ -36,6 +37,7 @@ void AxisCore::step(const CoreInputs& in, const CoreExtInputs& x) {
   latch_write(in);
   clock_edge<true>(x);
   exec_in_.row_push = false;
+  exec_in_.row_replace = false;
   exec_in_.fifo_flush = false;
   latch_inputs(in);
 }
@@ -43,6 +45,8 @@ void AxisCore::step(const CoreInputs& in, const CoreExtInputs& x) {
 void AxisCore::latch_write(const CoreInputs& in) {
   ProfileExec::Inputs& ei = exec_in_;
   ei.row_push = in.row_push;
+  ei.row_replace = in.row_replace;
+  ei.retarget_row = in.retarget_row;
   ei.fifo_flush = in.fifo_flush;
   if (in.row_push) ei.row = in.row;
 }
@@ -170,6 +174,8 @@ void AxisCore::read_outputs(CoreOutputs& o) const {
   o.boundary_pos = e.bpos;
   o.fifo_level = uint8_t(exec_.fifo_level());
   o.fifo_full = exec_.fifo_full();
+  o.row_count = e.rows;
+  o.retarget_refused = e.refused;
   o.pulse_count = s.count;
   o.ref_pos_int = e.pint;
   o.ref_pos_frac = e.frac;
@@ -196,7 +202,8 @@ bool AxisCore::outputs_equal(const CoreOutputs& o) const {
          o.underrun == e.underrun && o.discont == e.discont && o.guard == e.guard && o.stopping == e.stop &&
          o.overshoot == exec_.overshoot() && o.move_done == e.move_done &&
          o.move_idx == e.move_idx && o.boundary_pos == e.bpos && o.fifo_level == exec_.fifo_level() &&
-         o.fifo_full == exec_.fifo_full() && o.lim_trip_fwd == lim_trip(true, busy()) &&
+         o.fifo_full == exec_.fifo_full() && o.row_count == e.rows && o.retarget_refused == e.refused &&
+         o.lim_trip_fwd == lim_trip(true, busy()) &&
          o.lim_trip_rev == lim_trip(false, busy());
 }
 

@@ -13,6 +13,8 @@ struct CoreInputs {
   bool enable = false;
   PulseTiming cfg{};
   bool row_push = false;  // append `row` (ignored while the FIFO is full)
+  bool row_replace = false;    // with row_push: the row replaces from retarget_row on (retarget)
+  uint32_t retarget_row = 0;
   Row row{};
   bool fifo_flush = false;
   u128 pos_frac0 = 0;
@@ -65,6 +67,8 @@ struct CoreOutputs {
   int32_t boundary_pos = 0;
   uint8_t fifo_level = 0;
   bool fifo_full = false;
+  uint32_t row_count = 0;         // rows loaded since START
+  bool retarget_refused = false;  // a replace was refused (one clock)
   int32_t pulse_count = 0;
   int32_t ref_pos_int = 0;
   u128 ref_pos_frac = 0;

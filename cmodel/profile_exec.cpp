@@ -23,20 +23,22 @@ bool GuardLimits::exceeded_by(const Segment& s) const {
 }
 
 bool ProfileExec::head_forward() const {
-  const Segment& h = fifo_.head().seg;
+  const Segment& h = fifo_.head().row.seg;
   return h.vel0 != 0 ? h.vel0 > 0 : h.acc0 != 0 ? h.acc0 > 0 : h.jerk >= 0;
 }
 
 bool ProfileExec::holding() const {
   return q_.run && !q_.stop && q_.left == 1 && (q_.flags & kRowHold) && q_.acc == 0 && q_.jerk == 0 &&
-         q_.moves == 0 && !fifo_.full();
+         q_.ends_in == q_.ends_out && !fifo_.full();
 }
 
 void ProfileExec::step(const Inputs& in) {
   // Mirrors the RTL's always_comb blocks; the FIFO's head is read before
   // its clock edge (asynchronous read).
   const bool fifo_empty = fifo_.empty();
-  const Row& hd = fifo_.head();
+  const Row& hd = fifo_.head().row;
+  const uint8_t hd_ends = fifo_.head().ends;
+  const uint32_t rows_now = q_.rows;
   const bool hold = !in.abort && holding();
   const bool boundary = q_.run && !q_.stop && !in.abort && q_.left == 1 && !hold;
   const i128 vel_end = wrap_signed(q_.vel + q_.acc, VelW);
@@ -194,15 +196,34 @@ void ProfileExec::step(const Inputs& in) {
     stop_.step(si);
   }
   const bool flush_all = flush || in.fifo_flush || was_stopping;
-  // MOVE_END rows queued, counted as the FIFO takes and gives them.
+  // Retarget: row retarget_row not loaded (not even now), at most one place
+  // behind the queued rows, the kept rows and it fit.
+  const bool replace_req = in.row_push && in.row_replace;
+  const uint32_t rt_off = in.retarget_row - rows_now;
+  const bool replace_ok = replace_req && was_running && !was_stopping && !in.abort && !flush_all &&
+                          !(flags_now & kRowStreamEnd) && rt_off >= uint32_t(load) && rt_off <= fifo_.level() &&
+                          rt_off - uint32_t(load) < uint32_t(RowFifoDepth);
+  const uint8_t ends_mask = uint8_t((1u << RowLevelW) - 1);
+  const size_t keep = rt_off & ends_mask;
+  // MOVE_END rows up to the written one (behind the kept rows for a replace).
+  const uint8_t base = replace_req ? (keep == 0 ? q_.ends_out : fifo_.peek((keep - 1) & (RowFifoDepth - 1)).ends)
+                                   : q_.ends_in;
+  const uint8_t w_ends = uint8_t((base + ((w.flags & kRowMoveEnd) ? 1 : 0)) & ends_mask);
+  const bool push_ok = in.row_push && !in.row_replace && !fifo_.full() && !flush_all;
   if (flush_all) {
-    q_.moves = 0;
+    q_.ends_in = 0;
+    q_.ends_out = 0;
   } else {
-    const bool push_ok = in.row_push && !fifo_.full();
-    if (push_ok && (w.flags & kRowMoveEnd)) q_.moves = uint8_t((q_.moves + 1) & ((1u << RowLevelW) - 1));
-    if (load && (hd.flags & kRowMoveEnd)) q_.moves = uint8_t((q_.moves - 1) & ((1u << RowLevelW) - 1));
+    if (push_ok || replace_ok) q_.ends_in = w_ends;
+    if (load) q_.ends_out = hd_ends;
   }
-  fifo_.step(flush_all, in.row_push, w, load);
+  if (!was_running && in.start) {
+    q_.rows = load ? 1 : 0;
+  } else if (load) {
+    q_.rows = rows_now + 1;
+  }
+  q_.refused = replace_req && !replace_ok;
+  fifo_.step(flush_all, in.row_push && !in.row_replace, Queued{w, w_ends}, load, replace_ok, keep);
 }
 
 // A jump is exact when, over the rest of the segment, velocity keeps one

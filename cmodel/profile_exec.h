@@ -52,6 +52,8 @@ class ProfileExec {
  public:
   struct Inputs {
     bool row_push = false;
+    bool row_replace = false;    // with row_push: the row replaces from retarget_row on
+    uint32_t retarget_row = 0;
     Row row{};
     bool fifo_flush = false;
     u128 pos_frac0 = 0;
@@ -84,7 +86,11 @@ class ProfileExec {
     uint32_t move_idx = 0;
     int32_t bpos = 0;
     bool move_done = false;
-    uint8_t moves = 0;  // MOVE_END rows in the FIFO
+    // MOVE_END rows pushed and popped since the last flush (RowLevelW bits):
+    // their difference is the number queued.
+    uint8_t ends_in = 0, ends_out = 0;
+    uint32_t rows = 0;      // rows loaded since START (row_count_o)
+    bool refused = false;   // retarget_refused_o
     bool operator==(const State&) const = default;
   };
 
@@ -131,7 +137,12 @@ class ProfileExec {
  private:
   bool jump_safe() const;
   State q_;
-  RowFifo<Row, RowFifoDepth> fifo_;
+  // One FIFO word: the row and the MOVE_END rows pushed up to it.
+  struct Queued {
+    Row row{};
+    uint8_t ends = 0;
+  };
+  RowFifo<Queued, RowFifoDepth> fifo_;
   StopGen stop_;
   // The stop limits of the last step() (inputs the RTL sees held while
   // fast_forward() runs without inputs).

@@ -20,16 +20,28 @@ class RowFifo {
   bool full() const { return level_ == Depth; }
   size_t level() const { return level_; }
   const Word& head() const { return mem_[rd_]; }  // valid while !empty()
+  // The entry `k` places behind the head (peek_o).
+  const Word& peek(size_t k) const { return mem_[(rd_ + k) & (Depth - 1)]; }
   // One clock: flush wins over push and pop; a push while full and a pop
   // while empty are ignored.
-  void step(bool flush, bool push, const Word& wdata, bool pop) {
+  // replace (instead of push): keep the first `keep` entries (from the head
+  // before this clock's pop), drop the rest, write wdata behind them; the
+  // caller checks pop <= keep <= level and that the result fits.
+  void step(bool flush, bool push, const Word& wdata, bool pop, bool replace = false, size_t keep = 0) {
     if (flush) {
       rd_ = wr_;
       level_ = 0;
       return;
     }
-    const bool do_push = push && !full();
     const bool do_pop = pop && !empty();
+    if (replace) {
+      mem_[(rd_ + keep) & (Depth - 1)] = wdata;
+      wr_ = (rd_ + keep + 1) & (Depth - 1);
+      level_ = keep + 1 - (do_pop ? 1 : 0);
+      if (do_pop) rd_ = (rd_ + 1) & (Depth - 1);
+      return;
+    }
+    const bool do_push = push && !full();
     if (do_push) {
       mem_[wr_] = wdata;
       wr_ = (wr_ + 1) & (Depth - 1);

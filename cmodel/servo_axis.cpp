@@ -56,6 +56,8 @@ void ServoAxis::step(const ServoInputs& in) {
   ki.enable = in.cfg.enable;
   ki.cfg = in.cfg.timing;
   ki.row_push = in.row_push;
+  ki.row_replace = in.row_replace;
+  ki.retarget_row = in.retarget_row;
   if (in.row_push) ki.row = in.row;
   ki.fifo_flush = in.fifo_flush;
   ki.pos_frac0 = in.pos_frac0;
@@ -134,6 +136,8 @@ ServoOutputs ServoAxis::outputs() const {
   o.boundary_pos = e.bpos;
   o.fifo_level = uint8_t(core_.exec().fifo_level());
   o.fifo_full = core_.exec().fifo_full();
+  o.row_count = e.rows;
+  o.retarget_refused = e.refused;
   o.pulse_count = s.count;
   o.enc_pos = dec_.state().count;
   o.enc_illegal = dec_.state().illegal;

@@ -28,6 +28,8 @@ struct ServoConfig {
 struct ServoInputs {
   ServoConfig cfg{};
   bool row_push = false;
+  bool row_replace = false;  // retarget (as CoreInputs)
+  uint32_t retarget_row = 0;
   Row row{};
   bool fifo_flush = false;
   u128 pos_frac0 = 0;
@@ -57,6 +59,8 @@ struct ServoOutputs {
   uint32_t move_idx = 0;
   int32_t boundary_pos = 0;
   uint8_t fifo_level = 0;
+  uint32_t row_count = 0;
+  bool retarget_refused = false;
   int32_t pulse_count = 0;
   int32_t enc_pos = 0;
   uint16_t enc_illegal = 0;

@@ -78,6 +78,8 @@ module sc_axi_regs #(
   output logic [sc_pkg::PulseTimeW-1:0]       cfg_setup_o,
   output logic [sc_pkg::PulseTimeW-1:0]       cfg_hold_o,
   output logic                                row_push_o,
+  output logic                                row_replace_o,   // with row_push_o: a retarget
+  output logic [sc_pkg::RowCountW-1:0]        retarget_row_o,
   output logic [sc_pkg::RowFlagW-1:0]         row_flags_o,
   output logic [sc_pkg::PhaseW-1:0]           row_phase_o,
   output logic [sc_pkg::SegClkW-1:0]          row_clocks_o,
@@ -122,6 +124,8 @@ module sc_axi_regs #(
   input  logic signed [sc_pkg::PosIntW-1:0]   boundary_pos_i,
   input  logic [sc_pkg::RowLevelW-1:0]        fifo_level_i,
   input  logic                                fifo_full_i,
+  input  logic [sc_pkg::RowCountW-1:0]        row_count_i,
+  input  logic                                retarget_refused_i,
   input  logic                                in_pos_i,
   input  logic                                fault_ferr_i,
   input  logic [sc_pkg::ClStatWords*32-1:0]   cl_stat_i,
@@ -199,6 +203,8 @@ module sc_axi_regs #(
   localparam logic [AW-1:0] AGuardJ1   = AW'(sc_pkg::RegGuardJerk + 4);
   localparam logic [AW-1:0] ASoftMin   = AW'(sc_pkg::RegSoftMin);
   localparam logic [AW-1:0] ASoftMax   = AW'(sc_pkg::RegSoftMax);
+  localparam logic [AW-1:0] ARowCount  = AW'(sc_pkg::RegRowCount);
+  localparam logic [AW-1:0] ARetarget  = AW'(sc_pkg::RegRetargetRow);
   localparam int SwW       = sc_pkg::SwW;
   localparam int DebounceW = sc_pkg::DebounceW;
 
@@ -263,6 +269,9 @@ module sc_axi_regs #(
   logic [AccW-1:0]           st_acc0_q, st_acc0_d;
   logic [VelW-1:0]           st_vel0_q, st_vel0_d;
   logic                      push_q, push_d;
+  logic                      replace_q, replace_d;
+  logic                      err_retarget_q, err_retarget_d;
+  logic [sc_pkg::RowCountW-1:0] retarget_q, retarget_d;
   logic [sc_pkg::RowFlagW-1:0] push_flags_q, push_flags_d;
   logic                      flush_q, flush_d;
   logic                      start_q, start_d;
@@ -349,7 +358,8 @@ module sc_axi_regs #(
     w[sc_pkg::StatusFaultOverrunBit]      = fault_overrun_i;
     w[sc_pkg::StatusEstopBit]             = err_estop_q;
     w[sc_pkg::StatusErrBit]               = err_reject_q || err_bad_q || err_estop_q ||
-                                            err_lneg_q || err_lpos_q || err_guard_q || err_soft_q;
+                                            err_lneg_q || err_lpos_q || err_guard_q || err_soft_q ||
+                                            err_retarget_q;
     w[sc_pkg::StatusFaultFerrBit]         = fault_ferr_i;
     w[sc_pkg::StatusInPosBit]             = in_pos_i;
     w[sc_pkg::StatusEncALsb +: 2]         = enc_ab_i;
@@ -430,6 +440,7 @@ module sc_axi_regs #(
     `SC_RD(AErr, ErrFifoFullBit, 1, err_full_q);
     `SC_RD(AErr, ErrDiscontBit, 1, err_disc_q);
     `SC_RD(AErr, ErrUnderrunBit, 1, err_under_q);
+    `SC_RD(AErr, sc_pkg::ErrRetargetBit, 1, err_retarget_q);
     `SC_RD(AErr, ErrLimNegBit, 1, err_lneg_q);
     `SC_RD(AErr, ErrLimPosBit, 1, err_lpos_q);
     `SC_RD(AErr, ErrGuardBit, 1, err_guard_q);
@@ -476,6 +487,8 @@ module sc_axi_regs #(
     `SC_RD(AGuardJ1, 0, JerkW - 32, guard_jerk_q[JerkW-1:32]);
     `SC_RD(ASoftMin, 0, 32, 32'(soft_min_q));
     `SC_RD(ASoftMax, 0, 32, 32'(soft_max_q));
+    `SC_RD(ARowCount, 0, 32, 32'(row_count_i));
+    `SC_RD(ARetarget, 0, 32, 32'(retarget_q));
     `SC_RD(AAcc0, 0, 32, st_acc0_q[31:0]);
     `SC_RD(AAcc1, 0, 32, st_acc0_q[63:32]);
     `SC_RD(AVel0, 0, 32, st_vel0_q[31:0]);
@@ -498,7 +511,8 @@ module sc_axi_regs #(
       AEncPos, AFollowErr, AFifoStat, AFifoLow, AMoveIdx, ABoundPos, AIrqStat, AIrqEn, APulseTime,
       ADirTime, AFrac0, AFrac1, AFrac2, ASegPhase, ASegClocks, AJerk0, AJerk1, AStopJ0, AStopJ1,
       AStopA0, AStopA1, AGuardV0, AGuardV1, AGuardV2, AGuardA0, AGuardA1, AGuardJ0, AGuardJ1,
-      ASoftMin, ASoftMax, AAcc0, AAcc1, AVel0, AVel1, AVel2, ARowPush: r_known = 1'b1;
+      ASoftMin, ASoftMax, ARowCount, ARetarget, AAcc0, AAcc1, AVel0, AVel1, AVel2,
+      ARowPush: r_known = 1'b1;
       default: r_known = Servo && s_axi_araddr_i[1:0] == 2'b00 &&
                          ((s_axi_araddr_i >= AW'(sc_pkg::RegClFirst) &&
                            s_axi_araddr_i < AW'(sc_pkg::RegClFirst + 4 * NCfg)) ||
@@ -538,6 +552,9 @@ module sc_axi_regs #(
     st_acc0_d    = st_acc0_q;
     st_vel0_d    = st_vel0_q;
     push_d       = 1'b0;
+    replace_d    = 1'b0;
+    retarget_d   = retarget_q;
+    err_retarget_d = err_retarget_q;
     push_flags_d = push_flags_q;
     flush_d      = 1'b0;
     start_d      = 1'b0;
@@ -604,7 +621,7 @@ module sc_axi_regs #(
       end else begin
         unique case (awaddr_q)
           AId, AStatus, APulseCnt, ARefPos, AEncPos, AFollowErr, AFifoStat, AMoveIdx, ABoundPos,
-          ALatchPul, ALatchEnc: begin
+          ALatchPul, ALatchEnc, ARowCount: begin
             bresp_d = RespSlvErr;
             set_bad = 1'b1;
           end
@@ -651,6 +668,7 @@ module sc_axi_regs #(
               if (wd[ErrLimPosBit])   err_lpos_d  = 1'b0;
               if (wd[ErrGuardBit])    err_guard_d = 1'b0;
               if (wd[sc_pkg::ErrSoftLimBit]) err_soft_d = 1'b0;
+              if (wd[sc_pkg::ErrRetargetBit]) err_retarget_d = 1'b0;
             end
           end
           AIrqStat: begin
@@ -720,6 +738,7 @@ module sc_axi_regs #(
                           (JerkW-32)'(wmerge(32'(guard_jerk_q[JerkW-1:32]), wd, wmask));
           ASoftMin:   soft_min_d = wmerge(soft_min_q, wd, wmask);
           ASoftMax:   soft_max_d = wmerge(soft_max_q, wd, wmask);
+          ARetarget:  retarget_d = wmerge(retarget_q, wd, wmask);
           AAcc0:      st_acc0_d[31:0]  = wmerge(st_acc0_q[31:0], wd, wmask);
           AAcc1:      st_acc0_d[63:32] = wmerge(st_acc0_q[63:32], wd, wmask);
           AVel0:      st_vel0_d[31:0]  = wmerge(st_vel0_q[31:0], wd, wmask);
@@ -727,11 +746,13 @@ module sc_axi_regs #(
           AVel2:      st_vel0_d[VelW-1:64] = (VelW-64)'(wmerge(32'(st_vel0_q[VelW-1:64]), wd, wmask));
           ARowPush: begin
             if (wstrb_q[0]) begin
-              if (fifo_full_i) begin
+              // A replace drops queued rows: the executor decides, not the level.
+              if (fifo_full_i && !wd[sc_pkg::RowPushReplaceBit]) begin
                 bresp_d    = RespSlvErr;
                 err_full_d = 1'b1;
               end else begin
                 push_d       = 1'b1;
+                replace_d    = wd[sc_pkg::RowPushReplaceBit];
                 push_flags_d[sc_pkg::RowFlagMoveEnd]   = wd[sc_pkg::RowPushMoveEndBit];
                 push_flags_d[sc_pkg::RowFlagStreamEnd] = wd[sc_pkg::RowPushStreamEndBit];
                 push_flags_d[sc_pkg::RowFlagAccStep]   = wd[sc_pkg::RowPushAccStepBit];
@@ -778,6 +799,7 @@ module sc_axi_regs #(
     if (lim_trip_rev_i)                 err_lneg_d  = 1'b1;
     if (lim_trip_fwd_i)                 err_lpos_d  = 1'b1;
     if (guard_i && !guard_prev_q)       err_guard_d = 1'b1;
+    if (retarget_refused_i)             err_retarget_d = 1'b1;
     if ((lim_trip_fwd_i && soft_fwd) || (lim_trip_rev_i && soft_rev)) err_soft_d = 1'b1;
     if (sw_edge_i != '0)                irq_st_d[sc_pkg::IrqSwitchBit]   = 1'b1;
     // a capture wins over a re-arm in the same clock (the edge is not lost)
@@ -831,6 +853,9 @@ module sc_axi_regs #(
       st_acc0_q    <= '0;
       st_vel0_q    <= '0;
       push_q       <= 1'b0;
+      replace_q    <= 1'b0;
+      retarget_q   <= '0;
+      err_retarget_q <= 1'b0;
       push_flags_q <= '0;
       flush_q      <= 1'b0;
       start_q      <= 1'b0;
@@ -900,6 +925,9 @@ module sc_axi_regs #(
       st_acc0_q    <= st_acc0_d;
       st_vel0_q    <= st_vel0_d;
       push_q       <= push_d;
+      replace_q    <= replace_d;
+      retarget_q   <= retarget_d;
+      err_retarget_q <= err_retarget_d;
       push_flags_q <= push_flags_d;
       flush_q      <= flush_d;
       start_q      <= start_d;
@@ -968,6 +996,8 @@ module sc_axi_regs #(
   assign cfg_setup_o = setup_q;
   assign cfg_hold_o  = hold_q;
   assign row_push_o  = push_q;
+  assign row_replace_o = replace_q;
+  assign retarget_row_o = retarget_q;
   assign row_flags_o = push_flags_q;
   assign row_phase_o = st_phase_q;
   assign row_clocks_o = st_clocks_q;
@@ -1010,11 +1040,11 @@ module sc_axi_regs #(
     if (a[1:0] == 2'b00) begin
       unique case (w)
         10'h000, 10'h00C, 10'h014, 10'h018, 10'h01C, 10'h020, 10'h024, 10'h0CC, 10'h0F4,
-        10'h118, 10'h11C: f_kind = FReadOnly;
+        10'h118, 10'h11C, 10'h148: f_kind = FReadOnly;
         10'h004, 10'h008, 10'h010, 10'h028, 10'h02C, 10'h0F8, 10'h0FC: f_kind = FWritable;
         default: begin
           if ((w >= 10'h030 && w <= 10'h064) || (w >= 10'h100 && w <= 10'h128) ||
-              (w >= 10'h130 && w <= 10'h144)) begin
+              (w >= 10'h130 && w <= 10'h144) || w == 10'h14C) begin
             f_kind = FWritable;
           end else if (Servo && w >= 10'h068 && w <= 10'h0C8) begin
             f_kind = FWritable;   // closed-loop settings

@@ -88,6 +88,8 @@ module sc_axi_servo (
   logic [sc_pkg::MoveIdxW-1:0] move_idx;
   logic signed [sc_pkg::PosIntW-1:0] boundary_pos;
   logic [RowLevelW-1:0]        fifo_level;
+  logic                        row_replace, retarget_refused;
+  logic [sc_pkg::RowCountW-1:0] retarget_row, row_count;
   logic [FracBits-1:0]         pos_frac0;
   logic                        core_busy, core_done, fault_table, fault_overrun;
   logic [sc_pkg::CtlCfgW-1:0]  ctl_cfg;
@@ -170,6 +172,8 @@ module sc_axi_servo (
     .cfg_setup_o     (cfg_setup),
     .cfg_hold_o      (cfg_hold),
     .row_push_o      (row_push),
+    .row_replace_o   (row_replace),
+    .retarget_row_o  (retarget_row),
     .row_flags_o     (row_flags),
     .row_phase_o     (seg_phase),
     .row_clocks_o    (seg_clocks),
@@ -219,6 +223,8 @@ module sc_axi_servo (
     .boundary_pos_i  (boundary_pos),
     .fifo_level_i    (fifo_level),
     .fifo_full_i     (fifo_full),
+    .row_count_i     (row_count),
+    .retarget_refused_i(retarget_refused),
     .busy_o,
     .irq_o
   );
@@ -243,6 +249,8 @@ module sc_axi_servo (
     .cfg_setup_i       (cfg_setup),
     .cfg_hold_i        (cfg_hold),
     .row_push_i        (row_push),
+    .row_replace_i     (row_replace),
+    .retarget_row_i    (retarget_row),
     .row_flags_i       (row_flags),
     .row_phase_i       (seg_phase),
     .row_clocks_i      (seg_clocks),
@@ -284,6 +292,8 @@ module sc_axi_servo (
     .boundary_pos_o    (boundary_pos),
     .fifo_level_o      (fifo_level),
     .fifo_full_o       (fifo_full),
+    .row_count_o       (row_count),
+    .retarget_refused_o(retarget_refused),
     .lim_trip_fwd_o    (lim_trip_fwd),
     .lim_trip_rev_o    (lim_trip_rev),
     .fault_ferr_o,

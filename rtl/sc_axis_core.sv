@@ -60,6 +60,8 @@ module sc_axis_core #(
   input  logic [sc_pkg::PulseTimeW-1:0]       cfg_hold_i,
 
   input  logic                        row_push_i,   // append a row (ignored while fifo_full_o)
+  input  logic                        row_replace_i,  // with row_push_i: replace from retarget_row_i on
+  input  logic [sc_pkg::RowCountW-1:0]        retarget_row_i,
   input  logic [sc_pkg::RowFlagW-1:0]         row_flags_i,
   input  logic [sc_pkg::PhaseW-1:0]           row_phase_i,
   input  logic [sc_pkg::SegClkW-1:0]          row_clocks_i,
@@ -115,6 +117,8 @@ module sc_axis_core #(
   output logic [sc_pkg::MoveIdxW-1:0]         move_idx_o,
   output logic signed [sc_pkg::PosIntW-1:0]   boundary_pos_o,
   output logic [sc_pkg::RowLevelW-1:0]        fifo_level_o,
+  output logic [sc_pkg::RowCountW-1:0]        row_count_o,         // rows loaded since START
+  output logic                        retarget_refused_o,  // a replace was refused (one clock)
   output logic                        fifo_full_o,
   output logic signed [sc_pkg::PosIntW-1:0]   pulse_count_o,  // net steps since start
 
@@ -216,6 +220,8 @@ module sc_axis_core #(
     .clk_i,
     .rst_ni,
     .row_push_i,
+    .row_replace_i,
+    .retarget_row_i,
     .row_flags_i,
     .row_phase_i,
     .row_clocks_i,
@@ -244,6 +250,8 @@ module sc_axis_core #(
     .move_idx_o,
     .boundary_pos_o,
     .fifo_level_o,
+    .row_count_o,
+    .retarget_refused_o,
     .fifo_full_o,
     .head_fwd_o  (head_fwd),
     .step_req_o  (exec_step_req),

@@ -35,6 +35,7 @@ package sc_pkg;
   localparam int RowFifoDepth = 32;
   localparam int RowLevelW    = 6;   // 0..RowFifoDepth
   localparam int MoveIdxW     = 32;  // moves completed since START (wraps)
+  localparam int RowCountW    = 32;  // rows loaded since START (wraps): ROW_COUNT, RETARGET_ROW
   // Row flags, pushed with each row.
   localparam int RowFlagW         = 4;
   localparam int RowFlagMoveEnd   = 0;  // last row of a move: a move boundary follows
@@ -190,7 +191,8 @@ package sc_pkg;
   // 0x000 .. 0x0FC hold the 2.x map unchanged, the rest is free.
   localparam int RegAddrW      = 10;      // byte address bits of the window
   // 0x0306 = 3.6: 1 KiB window, UART word address; switch inputs, guards,
-  // probe, soft limits, index latch; ROW_PUSH.HOLD (velocity mode)
+  // probe, soft limits, index latch; ROW_PUSH.HOLD (velocity mode), ROW_PUSH.REPLACE,
+  // ROW_COUNT and RETARGET_ROW (retarget)
   localparam int RegMapVersion = 774;
   localparam int RegIdMagic    = 21315;   // 0x5343, ASCII "SC"
   localparam int RstPulseHigh  = 50;      // reset values of the pulse timing
@@ -238,6 +240,7 @@ package sc_pkg;
   localparam int ErrLimPosBit  = 7;      //@field ERR LIMIT_POS 1 "the + limit (switch or SOFT_MAX) stopped motion into it or refused a START toward it"
   localparam int ErrGuardBit   = 8;      //@field ERR GUARD 1 "a row broke a guard limit: not executed, the axis stopped (or the START was refused)"
   localparam int ErrSoftLimBit = 9;      //@field ERR SOFT_LIMIT 1 "the soft-limit window stopped motion out of it or refused a START out of it (with LIMIT_NEG / LIMIT_POS for the side)"
+  localparam int ErrRetargetBit = 10;    //@field ERR RETARGET 1 "a ROW_PUSH.REPLACE was refused: row RETARGET_ROW was already loaded, lies beyond the queued rows, or no stream runs on (idle, stopping, STREAM_END row): nothing changed"
   localparam int ErrUnderrunBit = 5;     //@field ERR UNDERRUN 1 "the FIFO ran dry while the axis was moving: the axis stopped"
   localparam int RegPulseCount = 32'h0000_0014;  //@reg PULSE_COUNT RO "net STEP pulses since the last START (signed)"
   localparam int RegRefPos     = 32'h0000_0018;  //@reg REF_POS RO "reference position P*, integer pulses (signed)"
@@ -267,6 +270,7 @@ package sc_pkg;
   localparam int RowPushMoveEndBit   = 0;  //@field ROW_PUSH MOVE_END 1 "last row of a move: MOVE_INDEX and BOUNDARY_POS update when it ends"
   localparam int RowPushStreamEndBit = 1;  //@field ROW_PUSH STREAM_END 1 "last row of the stream: the plan ends here (at rest or at its stop speed)"
   localparam int RowPushAccStepBit   = 2;  //@field ROW_PUSH ACC_STEP 1 "the row starts with a planned acceleration step (trapezoid): the continuity guard checks its velocity only"
+  localparam int RowPushReplaceBit   = 4;  //@field ROW_PUSH REPLACE 1 "retarget: the staged row becomes row RETARGET_ROW, the queued rows from there on are dropped; refused (ERR.RETARGET, nothing changes) once that row is loaded (ERR.RETARGET within 4 clocks of the write's response)"
   localparam int RowPushHoldBit      = 3;  //@field ROW_PUSH HOLD 1 "velocity mode: a row ending at constant velocity (a = j = 0) keeps that velocity until a whole move (up to a MOVE_END row) is queued or the FIFO is full"
   // Closed-loop controller settings (sc_axi_servo only; DECERR in
   // sc_axi_axis): words RegClFirst .. RegClFirst + 4 * (ClCfgWords - 1), the
@@ -436,6 +440,8 @@ package sc_pkg;
   // switch does (motion into it stops, controlled or with SW_CFG.LIM_HARD at
   // once; a START toward it is refused; motion away runs).
   localparam int RegSoftMin    = 32'h0000_0140;  //@reg SOFT_MIN RW "soft limit -: the lowest REF_POS inside the window, pulses (signed); SW_CFG.SOFT_EN"
+  localparam int RegRowCount   = 32'h0000_0148;  //@reg ROW_COUNT RO "rows loaded since START: the number of the next row to run (wraps)"
+  localparam int RegRetargetRow = 32'h0000_014C;  //@reg RETARGET_ROW RW "row number a ROW_PUSH.REPLACE replaces from (counted as ROW_COUNT)"
   localparam int RegSoftMax    = 32'h0000_0144;  //@reg SOFT_MAX RW "soft limit +: the highest REF_POS inside the window, pulses (signed); SW_CFG.SOFT_EN"
   // Writes to PULSE_TIME, DIR_TIME, POS_FRAC0, STOP_JERK, STOP_ACC, SW_CFG, GUARD_*, SOFT_MIN, SOFT_MAX, CMD.START and CMD.FLUSH
   // while STATUS.BUSY is set are refused (SLVERR, ERR.REJECT); so are writes

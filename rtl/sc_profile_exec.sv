@@ -39,6 +39,13 @@
 // (ramp rows ending in a HOLD row, the last one MOVE_END) at any time, and
 // it starts from the one state the hold has: v, a = 0. Waiting for the whole
 // move means a slow host (the UART) cannot run the FIFO dry mid-ramp.
+// Retarget: row_count_o counts the rows loaded since START (the index of
+// the next row). A push with row_replace_i makes the row row number
+// retarget_row_i: the queued rows from that index on are dropped and the
+// row takes their place, in one clock. It is refused (retarget_refused_o,
+// one clock; nothing changes) unless a stream runs on (no stop, not a
+// STREAM_END row), that row is not loaded yet, also not in this clock, and
+// it is at most one place behind the queued rows.
 //
 // Controlled stop (stop_i, underrun, discontinuity, malformed row): the
 // clock that triggers it still integrates the running row (v + a, a + j),
@@ -55,6 +62,8 @@ module sc_profile_exec (
 
   // row stream (a push while the FIFO is full is ignored)
   input  logic                                row_push_i,
+  input  logic                                row_replace_i,  // with row_push_i: replace from retarget_row_i on
+  input  logic [sc_pkg::RowCountW-1:0]        retarget_row_i,
   input  logic [sc_pkg::RowFlagW-1:0]         row_flags_i,
   input  logic [sc_pkg::PhaseW-1:0]           row_phase_i,
   input  logic [sc_pkg::SegClkW-1:0]          row_clocks_i,
@@ -85,6 +94,8 @@ module sc_profile_exec (
   output logic [sc_pkg::MoveIdxW-1:0]         move_idx_o,
   output logic signed [sc_pkg::PosIntW-1:0]   boundary_pos_o,
   output logic [sc_pkg::RowLevelW-1:0]        fifo_level_o,
+  output logic [sc_pkg::RowCountW-1:0]        row_count_o,   // rows loaded since START
+  output logic                       retarget_refused_o,  // a replace was refused (one clock)
   output logic                       fifo_full_o,   // no row is taken: full, or a controlled stop runs
   output logic                       head_fwd_o,    // direction of the head row
   output logic                       step_req_o,
@@ -110,8 +121,9 @@ module sc_profile_exec (
   localparam int RowFlagW  = sc_pkg::RowFlagW;
   localparam int RowLevelW = sc_pkg::RowLevelW;
   localparam int MoveIdxW  = sc_pkg::MoveIdxW;
-  // one FIFO word: {flags, phase, clocks, jerk, acc0, vel0}
-  localparam int RowW      = RowFlagW + PhaseW + SegClkW + JerkW + AccW + VelW;
+  localparam int RowCountW = sc_pkg::RowCountW;
+  // one FIFO word: {MOVE_END rows pushed up to this one, flags, phase, clocks, jerk, acc0, vel0}
+  localparam int RowW      = RowLevelW + RowFlagW + PhaseW + SegClkW + JerkW + AccW + VelW;
 
   logic                      run_q, run_d;
   logic                      finished_q, finished_d;
@@ -134,9 +146,17 @@ module sc_profile_exec (
   logic [MoveIdxW-1:0]       move_idx_q, move_idx_d;
   logic signed [PosIntW-1:0] bpos_q, bpos_d;
   logic                      move_done, move_done_q;
-  logic [RowLevelW-1:0]      moves_q, moves_d;      // MOVE_END rows in the FIFO
+  // MOVE_END rows pushed and popped since the last flush (mod 2^RowLevelW;
+  // each FIFO word carries the pushed count up to itself, so a replace
+  // knows the count of the rows it keeps): their difference is the number
+  // of MOVE_END rows queued.
+  logic [RowLevelW-1:0]      ends_in_q, ends_in_d, ends_out_q, ends_out_d;
+  logic [RowLevelW-1:0]      moves_queued, hd_ends, pk_ends, w_ends, keep;
   logic                      hold;                  // a HOLD row waits for a whole move
   logic                      push_ok;
+  logic [RowCountW-1:0]      rows_q, rows_d, rt_off;
+  logic                      replace_req, replace_ok, refused_q;
+  logic [$clog2(sc_pkg::RowFifoDepth)-1:0] peek_at;  // the last kept row
 
   // frac (unsigned) + vel (signed, |vel| < 1.0) needs two bits above the
   // fraction: bit FracBits+1 = result negative (borrow), bit FracBits = carry.
@@ -154,6 +174,7 @@ module sc_profile_exec (
   logic                       over_vel, over_acc, over_jerk;
 
   logic [RowW-1:0]            head;
+  logic [RowW-1:0]            wdata;
   logic                       fifo_empty, fifo_full;
   logic [RowFlagW-1:0]        hd_flags;
   logic [PhaseW-1:0]          hd_phase;
@@ -165,21 +186,27 @@ module sc_profile_exec (
   sc_row_fifo #(
     .Width  (RowW),
     .Depth  (sc_pkg::RowFifoDepth),
-    .LevelW (RowLevelW)
+    .LevelW (RowLevelW),
+    .PeekW  (RowLevelW)
   ) u_fifo (
     .clk_i,
     .rst_ni,
-    .flush_i (flush),
-    .push_i  (row_push_i),
-    .wdata_i ({row_flags_i, row_phase_i, row_clocks_i, row_jerk_i, row_acc0_i, row_vel0_i}),
-    .pop_i   (pop),
-    .head_o  (head),
+    .flush_i   (flush),
+    .push_i    (row_push_i && !row_replace_i),
+    .wdata_i   (wdata),
+    .pop_i     (pop),
+    .replace_i (replace_ok),
+    .keep_i    (keep),
+    .peek_i    (peek_at),
+    .head_o    (head),
+    .peek_o    (pk_ends),
     .empty_o (fifo_empty),
     .full_o  (fifo_full),
     .level_o (fifo_level_o)
   );
 
-  assign {hd_flags, hd_phase, hd_clocks, hd_jerk, hd_acc0, hd_vel0} = head;
+  assign {hd_ends, hd_flags, hd_phase, hd_clocks, hd_jerk, hd_acc0, hd_vel0} = head;
+  assign wdata = {w_ends, row_flags_i, row_phase_i, row_clocks_i, row_jerk_i, row_acc0_i, row_vel0_i};
 
   assign pos_sum  = $signed({2'b00, frac_q}) + (FracBits+2)'(vel_q);
   // The state one more integration would give: where the next row must start.
@@ -199,7 +226,7 @@ module sc_profile_exec (
                       (guard_jerk_i != '0 && over_jerk);
   assign hold      = run_q && !stop_q && !abort_i && left_q == SegClkW'(1) &&
                      flags_q[sc_pkg::RowFlagHold] && acc_q == '0 && jerk_q == '0 &&
-                     moves_q == '0 && !fifo_full;
+                     moves_queued == '0 && !fifo_full;
   assign boundary  = run_q && !stop_q && !abort_i && left_q == SegClkW'(1) && !hold;
   assign move_done = boundary && flags_q[sc_pkg::RowFlagMoveEnd];
   // The stream ends as planned at this boundary (no row follows).
@@ -275,7 +302,10 @@ module sc_profile_exec (
             stop_d = 1'b0;
           end
         end else if (hold) begin
-          // v constant, a = j = 0: the state stays; only the position moves
+          // v constant, a = j = 0: the row's last clock repeats
+          left_d = left_q;
+          vel_d  = vel_end;
+          acc_d  = acc_end;
         end else if (left_q == SegClkW'(1)) begin
           if (move_done) begin
             move_idx_d = move_idx_q + MoveIdxW'(1);
@@ -354,15 +384,40 @@ module sc_profile_exec (
     if (fifo_flush_i || stop_q) flush = 1'b1;
   end
 
-  // MOVE_END rows queued, counted as sc_row_fifo takes and gives them.
-  assign push_ok = row_push_i && !fifo_full && !flush;
+  // Retarget: the offset of row retarget_row_i behind the head. Row k is
+  // not loaded (k >= rows loaded, +1 when one loads now) and at most one
+  // place behind the queued rows; the kept rows and it fit.
+  assign rt_off      = retarget_row_i - rows_q;
+  assign replace_req = row_push_i && row_replace_i;
+  assign replace_ok  = replace_req && run_q && !stop_q && !abort_i && !flush &&
+                       !flags_q[sc_pkg::RowFlagStreamEnd] &&
+                       rt_off >= RowCountW'(pop) && rt_off <= RowCountW'(fifo_level_o) &&
+                       rt_off - RowCountW'(pop) < RowCountW'(sc_pkg::RowFifoDepth);
+  assign keep        = rt_off[RowLevelW-1:0];
+  assign peek_at     = $bits(peek_at)'(keep - RowLevelW'(1));
+  assign push_ok     = row_push_i && !row_replace_i && !fifo_full && !flush;
+  // MOVE_END rows up to the written one: behind the kept rows for a replace.
+  assign w_ends = (replace_req ? (keep == '0 ? ends_out_q : pk_ends) : ends_in_q) +
+                  RowLevelW'(row_flags_i[sc_pkg::RowFlagMoveEnd]);
+  assign moves_queued = ends_in_q - ends_out_q;
   always_comb begin
-    moves_d = moves_q;
+    ends_in_d  = ends_in_q;
+    ends_out_d = ends_out_q;
     if (flush) begin
-      moves_d = '0;
+      ends_in_d  = '0;
+      ends_out_d = '0;
     end else begin
-      if (push_ok && row_flags_i[sc_pkg::RowFlagMoveEnd]) moves_d = moves_d + RowLevelW'(1);
-      if (pop && hd_flags[sc_pkg::RowFlagMoveEnd])        moves_d = moves_d - RowLevelW'(1);
+      if (push_ok || replace_ok) ends_in_d = w_ends;
+      if (pop)                   ends_out_d = hd_ends;
+    end
+  end
+
+  always_comb begin
+    rows_d = rows_q;
+    if (!run_q && start_i) begin
+      rows_d = RowCountW'(load);
+    end else if (load) begin
+      rows_d = rows_q + RowCountW'(1);
     end
   end
 
@@ -403,7 +458,10 @@ module sc_profile_exec (
       move_idx_q <= '0;
       bpos_q     <= '0;
       move_done_q <= 1'b0;
-      moves_q    <= '0;
+      ends_in_q  <= '0;
+      ends_out_q <= '0;
+      rows_q     <= '0;
+      refused_q  <= 1'b0;
     end else begin
       run_q      <= run_d;
       finished_q <= finished_d;
@@ -426,7 +484,10 @@ module sc_profile_exec (
       move_idx_q <= move_idx_d;
       bpos_q     <= bpos_d;
       move_done_q <= move_done;
-      moves_q    <= moves_d;
+      ends_in_q  <= ends_in_d;
+      ends_out_q <= ends_out_d;
+      rows_q     <= rows_d;
+      refused_q  <= replace_req && !replace_ok;
     end
   end
 
@@ -447,6 +508,8 @@ module sc_profile_exec (
   assign move_done_o    = move_done_q;
   assign move_idx_o     = move_idx_q;
   assign boundary_pos_o = bpos_q;
+  assign row_count_o    = rows_q;
+  assign retarget_refused_o = refused_q;
   assign step_req_o     = step_req_q;
   assign step_fwd_o     = step_fwd_q;
   assign pos_int_o      = pint_q;
@@ -468,6 +531,9 @@ module sc_profile_exec (
   c_row_chained:    cover property (@(posedge clk_i) rst_ni && boundary && load);
   c_move_end:       cover property (@(posedge clk_i) rst_ni && move_done);
   c_hold:           cover property (@(posedge clk_i) rst_ni && hold && vel_q != '0);
+  c_replace:        cover property (@(posedge clk_i) rst_ni && replace_ok && keep != '0);
+  c_replace_head:   cover property (@(posedge clk_i) rst_ni && replace_ok && keep == '0);
+  c_replace_late:   cover property (@(posedge clk_i) rst_ni && replace_req && run_q && !replace_ok);
   c_hold_left:      cover property (@(posedge clk_i) rst_ni && boundary && load &&
                                     flags_q[sc_pkg::RowFlagHold]);
   c_stream_end:     cover property (@(posedge clk_i) rst_ni && boundary && !load && ends);

@@ -30,6 +30,8 @@ module sc_servo_axis (
   input  logic [sc_pkg::PulseTimeW-1:0]       cfg_hold_i,
 
   input  logic                                row_push_i,
+  input  logic                                row_replace_i,  // with row_push_i: replace from retarget_row_i on
+  input  logic [sc_pkg::RowCountW-1:0]        retarget_row_i,
   input  logic [sc_pkg::RowFlagW-1:0]         row_flags_i,
   input  logic [sc_pkg::PhaseW-1:0]           row_phase_i,
   input  logic [sc_pkg::SegClkW-1:0]          row_clocks_i,
@@ -75,6 +77,8 @@ module sc_servo_axis (
   output logic [sc_pkg::MoveIdxW-1:0]         move_idx_o,
   output logic signed [sc_pkg::PosIntW-1:0]   boundary_pos_o,
   output logic [sc_pkg::RowLevelW-1:0]        fifo_level_o,
+  output logic [sc_pkg::RowCountW-1:0]        row_count_o,         // rows loaded since START
+  output logic                                retarget_refused_o,  // a replace was refused (one clock)
   output logic                                fifo_full_o,
   output logic                                lim_trip_fwd_o,
   output logic                                lim_trip_rev_o,
@@ -164,6 +168,8 @@ module sc_servo_axis (
     .cfg_setup_i,
     .cfg_hold_i,
     .row_push_i,
+    .row_replace_i,
+    .retarget_row_i,
     .row_flags_i,
     .row_phase_i,
     .row_clocks_i,
@@ -219,6 +225,8 @@ module sc_servo_axis (
     .move_idx_o,
     .boundary_pos_o,
     .fifo_level_o,
+    .row_count_o,
+    .retarget_refused_o,
     .fifo_full_o,
     .pulse_count_o,
     .ref_pos_int_o,

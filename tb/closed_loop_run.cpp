@@ -58,6 +58,8 @@ SignalValues render_servo(const ServoOutputs& o) {
   add("boundary_pos_o", o.boundary_pos, 32);
   add("fifo_level_o", o.fifo_level, RowLevelW);
   add("fifo_full_o", o.fifo_full, 1);
+  add("row_count_o", o.row_count, RowCountW);
+  add("retarget_refused_o", o.retarget_refused, 1);
   add("pulse_count_o", o.pulse_count, 32);
   add("enc_pos_o", o.enc_pos, 32);
   add("enc_illegal_o", o.enc_illegal, 16);

@@ -39,6 +39,8 @@ SignalValues render_outputs(const CoreOutputs& o) {
       {"boundary_pos_o", hex_bits(int64_t(o.boundary_pos), 32)},
       {"fifo_level_o", hex_bits(uint64_t(o.fifo_level), RowLevelW)},
       {"fifo_full_o", hex_bits(uint64_t(o.fifo_full), 1)},
+      {"row_count_o", hex_bits(uint64_t(o.row_count), RowCountW)},
+      {"retarget_refused_o", hex_bits(uint64_t(o.retarget_refused), 1)},
   };
 }
 

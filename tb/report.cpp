@@ -66,6 +66,10 @@ nlohmann::json sim_to_json(const SimResult& r) {
       {"clocks_per_s", r.clocks_per_s},
       {"realtime_ratio", r.clocks_per_s / ClkHz},
       {"stop", stop_to_json(r.stop)},
+      {"retarget", r.retarget_requested ? nlohmann::json{{"row", r.retarget_row},
+                                                          {"distance", r.retarget_distance},
+                                                          {"taken", r.retarget_taken}}
+                                        : nlohmann::json()},
       {"pass", r.pass()},
       {"failures", r.failures},
   };
@@ -82,6 +86,12 @@ std::string sim_table(const std::vector<SimResult>& rs) {
                      r.clocks_per_s / 1e6, r.clocks_per_s / ClkHz, r.pass() ? "PASS" : "FAIL");
   }
   for (const SimResult& r : rs) s += stop_line(r.name, r.stop);
+  for (const SimResult& r : rs) {
+    if (r.retarget_requested) {
+      s += fmt::format("  {}: retarget from row {} to distance {}: {}\n", r.name, r.retarget_row, r.retarget_distance,
+                       r.retarget_taken ? "taken" : "refused (the row had loaded)");
+    }
+  }
   for (const SimResult& r : rs) {
     for (const std::string& f : r.failures) s += fmt::format("  {}: {}\n", r.name, f);
   }

@@ -14,6 +14,7 @@ RtlCore::RtlCore() : top_(std::make_unique<VerilatedTop<Vsc_axis_core>>("sc_axis
   m.cfg_setup_i = last_.cfg.setup;
   m.cfg_hold_i = last_.cfg.hold;
   m.row_push_i = 0;
+  drive_retarget(m, last_.row_replace, last_.retarget_row);
   m.fifo_flush_i = 0;
   put_bits(m.pos_frac0_i, 0, FracBits, 0);
   m.start_i = 0;
@@ -52,6 +53,9 @@ void RtlCore::step(const CoreInputs& in) {
   }
   if (in.row_push != last_.row_push) m.row_push_i = in.row_push;
   if (in.row_push) drive_row(m, in.row);
+  if (in.row_replace != last_.row_replace || in.retarget_row != last_.retarget_row) {
+    drive_retarget(m, in.row_replace, in.retarget_row);
+  }
   if (in.fifo_flush != last_.fifo_flush) m.fifo_flush_i = in.fifo_flush;
   if (in.pos_frac0 != last_.pos_frac0) put_bits(m.pos_frac0_i, 0, FracBits, in.pos_frac0);
   if (in.start != last_.start) m.start_i = in.start;
@@ -66,6 +70,8 @@ void RtlCore::step(const CoreInputs& in) {
   last_.enable = in.enable;
   last_.cfg = in.cfg;
   last_.row_push = in.row_push;
+  last_.row_replace = in.row_replace;
+  last_.retarget_row = in.retarget_row;
   last_.fifo_flush = in.fifo_flush;
   last_.pos_frac0 = in.pos_frac0;
   last_.start = in.start;

@@ -34,6 +34,7 @@ void RtlServo::step(const ServoInputs& in) {
   }
   m.row_push_i = in.row_push;
   if (in.row_push) drive_row(m, in.row);
+  drive_retarget(m, in.row_replace, in.retarget_row);
   m.fifo_flush_i = in.fifo_flush;
   if (in.pos_frac0 != pos_frac0_) {
     pos_frac0_ = in.pos_frac0;

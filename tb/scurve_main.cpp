@@ -182,6 +182,8 @@ int main(int argc, char** argv) {
   scurve::cli::int_flag(sim_cmd, "--jobs", jobs, 1, 64, "parallel runs (default: cores)");
   scurve::cli::StopFlags stop_flags;  // --stop-at, --stop-jerk, --stop-acc
   scurve::cli::add_stop_flags(sim_cmd, stop_flags);
+  scurve::cli::RetargetFlags retarget_flags;  // --retarget-at, --retarget-distance
+  scurve::cli::add_retarget_flags(sim_cmd, retarget_flags);
   ClosedLoopCli closed_loop;  // --closed-loop and its plant/controller flags (tb/closed_loop_cli.h)
   add_closed_loop_flags(sim_cmd, closed_loop);
 
@@ -257,10 +259,14 @@ int main(int argc, char** argv) {
     closed_loop.fst_path = fst.path;
     closed_loop.fst_from = fst.from;
     closed_loop.fst_to = fst.to;
+    if (retarget_flags.at_given || retarget_flags.distance_given) {
+      return bad_input("--retarget-at: runs on the open-loop axis (not with --closed-loop)");
+    }
     return run_closed_loop_cli(closed_loop, cl_jobs, timing, engine, jobs, sf.json, sf.json_out, stop_flags);
   }
   std::vector<Plan> plans;
   std::vector<scurve::cli::StopRequest> stops;
+  std::vector<std::optional<SimOptions::Retarget>> retargets;
   for (const Job& j : jobs_list) {
     const PlanResult r = plan_move(j.req, timing, clock);
     if (const auto* e = std::get_if<PlanError>(&r)) return bad_input(e->message);
@@ -268,6 +274,19 @@ int main(int argc, char** argv) {
     const auto s = scurve::cli::resolve_stop_flags(stop_flags, j.req, to_host(plans.back()));
     if (const std::string* e = std::get_if<std::string>(&s)) return bad_input(*e);
     stops.push_back(std::get<scurve::cli::StopRequest>(s));
+    const auto rt = scurve::cli::resolve_retarget_flags(retarget_flags, j.req, to_host(plans.back()),
+                                                        scurve::cli::to_timing(sf));
+    if (const std::string* e = std::get_if<std::string>(&rt)) return bad_input(*e);
+    std::optional<SimOptions::Retarget> o;
+    if (const auto& p = std::get<std::optional<scurve::RetargetPlan>>(rt)) {
+      o.emplace();
+      o->at_clock = uint64_t(std::llround(retarget_flags.at * clock.hz));
+      o->row = p->row;
+      o->rows = move_rows(to_model(p->plan).segments, true);
+      o->distance = p->distance;
+      o->clocks = p->plan.total_clocks;
+    }
+    retargets.push_back(std::move(o));
   }
   SimOptions opt;
   opt.engine = engine == "rtl" ? SimEngine::RtlOnly
@@ -289,6 +308,7 @@ int main(int argc, char** argv) {
       o.stop_at = stops[i].at_clock;
       o.stop_jerk = stops[i].codes.jerk;
       o.stop_acc = stops[i].codes.acc;
+      o.retarget = retargets[i];
       try {
         results[i] = run_move(plans[i], timing, at_model_clock(limits_of(jobs_list[i].req, plans[i].v_end_used), clock),
                               o);

@@ -145,7 +145,8 @@ SimResult run_move(const Plan& plan, const PulseTiming& timing, const Limits4Che
   res.distance = plan.distance;
   res.expected_trends = expected_trends(plan.segments);
   // A stop follows no planned duty phase: only its pulses are checked.
-  CoreDriver drv(opt.engine, PinRules{timing, !opt.stop_at, StepAccounting::ReferencePosition}, opt.max_mismatches,
+  CoreDriver drv(opt.engine, PinRules{timing, !opt.stop_at && !opt.retarget, StepAccounting::ReferencePosition},
+                 opt.max_mismatches,
                  opt.fst_path, opt.fst_from, opt.fst_to);
   AxisCore& model = drv.model();
   PinMonitor& pins = drv.pins();
@@ -174,6 +175,32 @@ SimResult run_move(const Plan& plan, const PulseTiming& timing, const Limits4Che
   const uint64_t stop_clock = opt.stop_at ? start_clock + *opt.stop_at : UINT64_MAX;
   CoreInputs stop_in = in;
   stop_in.stop = true;
+  const uint64_t retarget_clock = opt.retarget ? start_clock + opt.retarget->at_clock : UINT64_MAX;
+  bool retarget_refused = false;
+  // The retarget's rows, one a clock, the first a replace; the host stops
+  // sending once the replace is refused (it reads ERR.RETARGET).
+  auto push_retarget = [&]() {
+    const SimOptions::Retarget& r = *opt.retarget;
+    for (size_t i = 0; i < r.rows.size() && !drv.stopped(); ++i) {
+      CoreInputs w = in;
+      w.row_push = true;
+      w.row = r.rows[i];
+      w.row_replace = i == 0;
+      w.retarget_row = r.row;
+      tick(w);
+      retarget_refused = retarget_refused || drv.out().retarget_refused;
+      if (i == 0) {
+        tick(in);
+        retarget_refused = retarget_refused || drv.out().retarget_refused;
+        if (retarget_refused) break;
+      }
+    }
+    tick(in);  // the inputs held again from here on
+    res.retarget_requested = true;
+    res.retarget_row = r.row;
+    res.retarget_distance = r.distance;
+    res.retarget_taken = !retarget_refused;
+  };
   // The peaks are the plan's limits' business; a stop's own motion is the
   // stop monitor's (jerk and deceleration within the stop limits, no reversal).
   auto planned_motion = [](const CoreOutputs& o) { return o.busy && !o.done && !o.stopping; };
@@ -184,7 +211,8 @@ SimResult run_move(const Plan& plan, const PulseTiming& timing, const Limits4Che
   };
 
   // Run to done. A hang is caught by a limit well past the planned length.
-  uint64_t limit = start_clock + plan.total_clocks + 1000 + 4ull * (timing.high + timing.low + timing.setup);
+  uint64_t limit = start_clock + plan.total_clocks + 1000 + 4ull * (timing.high + timing.low + timing.setup) +
+                   (opt.retarget ? opt.retarget->at_clock + opt.retarget->clocks : 0);
   // A stop may outlast the plan (stop limits below the move's): once it
   // starts, the limit is a generous multiple of its closed-form time.
   bool stop_limit_set = false;
@@ -207,9 +235,15 @@ SimResult run_move(const Plan& plan, const PulseTiming& timing, const Limits4Che
         peaks.on_clock(out, planned_motion(out));
         continue;
       }
+      if (drv.clock() == retarget_clock) {
+        push_retarget();
+        peaks.have_prev = false;
+        continue;
+      }
       uint64_t n = 1;
       if (const uint64_t ev = model.clocks_to_next_event(in); ev > 1) n = ev - 1;
       if (drv.clock() < stop_clock) n = std::min(n, stop_clock - drv.clock());
+      if (drv.clock() < retarget_clock) n = std::min(n, retarget_clock - drv.clock());
       n = std::min(n, limit - drv.clock());
       if (n > 1) {
         // The reference moves smoothly in between: sample its peaks at the
@@ -232,6 +266,10 @@ SimResult run_move(const Plan& plan, const PulseTiming& timing, const Limits4Che
       extend_limit();
       if (drv.clock() == stop_clock) {
         tick(stop_in);
+      } else if (drv.clock() == retarget_clock) {
+        push_retarget();
+        peaks.have_prev = false;
+        continue;
       } else {
         tick(in, drv.clock() != stop_clock + 1);  // the clock after the stop clock drops it
       }
@@ -261,7 +299,8 @@ SimResult run_move(const Plan& plan, const PulseTiming& timing, const Limits4Che
   if (opt.stop_at) res.stop = stop_report(stop, *opt.stop_at, out.ref_pos_int);
   // A move that stopped ends where the stop brought it (a start dropped in
   // the arming: where it stood); every reference step must be on the pins.
-  res.final_error = (opt.stop_at && !out.done ? int64_t(out.ref_pos_int) : plan.distance) - res.pulses;
+  const int64_t target = res.retarget_taken ? opt.retarget->distance : plan.distance;
+  res.final_error = (opt.stop_at && !out.done ? int64_t(out.ref_pos_int) : target) - res.pulses;
   res.peak_velocity = vel_to_phys(peaks.v());
   res.peak_acceleration = acc_to_phys(peaks.a());
   res.peak_jerk = jerk_to_phys(peaks.j());
@@ -282,14 +321,16 @@ SimResult run_move(const Plan& plan, const PulseTiming& timing, const Limits4Che
   } else if (res.final_error != 0) {
     fail(res.stop.taken ? fmt::format("pulses {} != reference position {} after the stop", res.pulses,
                                       out.ref_pos_int)
-                        : fmt::format("pulses {} != distance {}", res.pulses, plan.distance));
+                        : fmt::format("pulses {} != distance {}{}", res.pulses, target,
+                                      res.retarget_taken ? " (retargeted)" : ""));
   }
   for (const std::string& e : stop.errors()) fail("controlled stop: " + e);
   if (res.pulse_count_reg != res.pulses) {
     fail(fmt::format("pulse_count_o {} != pins {}", res.pulse_count_reg, res.pulses));
   }
   for (const std::string& e : res.pin_errors) fail(e);
-  if (!opt.stop_at && res.trends != res.expected_trends) {
+  if (opt.retarget && !res.retarget_requested) fail("the retarget was never sent (the run ended first)");
+  if (!opt.stop_at && !opt.retarget && res.trends != res.expected_trends) {
     auto join = [](const std::vector<DutyTrend>& v) {
       std::string s;
       for (DutyTrend t : v) s += std::string(s.empty() ? "" : ",") + trend_name(t);

@@ -80,6 +80,18 @@ struct SimOptions {
   // stop monitor (tb/stop_check.h) instead of against the move's endpoint.
   std::optional<uint64_t> stop_at;
   uint64_t stop_jerk = StopJerkReset, stop_acc = StopAccReset;  // executor LSBs
+  // A retarget pushed this many clocks after the START clock: `rows` (FIFO
+  // words) replace the plan from row number `row` on, the first with
+  // ROW_PUSH.REPLACE. The run must then end on `distance`, or, refused, on
+  // the plan's own (scurve::plan_retarget).
+  struct Retarget {
+    uint64_t at_clock = 0;
+    uint32_t row = 0;
+    std::vector<Row> rows;
+    int64_t distance = 0;
+    uint64_t clocks = 0;  // the new rows' clocks
+  };
+  std::optional<Retarget> retarget;
 };
 
 
@@ -104,6 +116,10 @@ struct SimResult {
   double wall_s = 0;
   double clocks_per_s = 0;
   StopReport stop;
+  // The retarget (SimOptions::retarget), if any: taken or refused.
+  bool retarget_requested = false, retarget_taken = false;
+  uint32_t retarget_row = 0;
+  int64_t retarget_distance = 0;
   std::vector<std::string> failures;  // everything that makes the run fail
   bool pass() const { return failures.empty(); }
   // The failures, one a line (for a test's failure message).

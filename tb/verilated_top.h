@@ -168,6 +168,13 @@ void drive_row(V& m, const Row& r) {
   put_bits(m.row_vel0_i, 0, VelW, u128(s.vel0));
 }
 
+// The retarget inputs of the axis tops (with row_push_i).
+template <class V>
+void drive_retarget(V& m, bool replace, uint32_t retarget_row) {
+  m.row_replace_i = replace;
+  m.retarget_row_i = retarget_row;
+}
+
 // The controlled-stop inputs of the axis tops (sc_axis_core, sc_servo_axis).
 template <class V>
 void drive_stop(V& m, bool stop, uint64_t stop_jerk, uint64_t stop_acc) {
@@ -224,6 +231,8 @@ void read_axis_outputs(const V& m, O& o) {
   o.boundary_pos = int32_t(m.boundary_pos_o);
   o.fifo_level = m.fifo_level_o;
   o.fifo_full = m.fifo_full_o;
+  o.row_count = m.row_count_o;
+  o.retarget_refused = m.retarget_refused_o;
   o.lim_trip_fwd = m.lim_trip_fwd_o;
   o.lim_trip_rev = m.lim_trip_rev_o;
 }

@@ -284,4 +284,24 @@ check_bad "commands\[0\].v_target" jog --target 1e7
 check_bad "commands\[0\].v_target" jog --target 100
 check_bad "target\[1\].hold" jog --target 100 --target 0:-1
 check_bad a_max jog --a-max 0
+# --retarget-at: the running move redirected at a future zero-acceleration
+# boundary ends exactly on the new distance; as register writes the replace
+# is marked with its time; bad input names the flag.
+"$scurve" sim --distance 4000 --v-cruise 40000 --a-max 2e6 --j-max 4e8 --retarget-at 0.03 --retarget-distance 5000 \
+  --json > "$tmp/retarget.json"
+"$scurve" regs --distance 4000 --v-cruise 40000 --a-max 2e6 --j-max 4e8 --retarget-at 0.03 --retarget-distance 5000 \
+  --json > "$tmp/retarget_regs.json"
+python3 - "$tmp/retarget.json" "$tmp/retarget_regs.json" <<'PY'
+import json, sys
+r, w = (json.load(open(p)) for p in sys.argv[1:3])
+assert r["pass"] and r["pulses"] == 5000 and r["final_error"] == 0 and r["retarget"]["taken"], r
+due = [x for x in w if "at_clock" in x]
+assert len(due) == 1 and due[0]["reg"] == "RETARGET_ROW" and due[0]["data"] == r["retarget"]["row"], due
+pushes = [x for x in w[w.index(due[0]):] if x["reg"] == "ROW_PUSH"]
+assert pushes[0]["data"] & (1 << 4) and not any(p["data"] & (1 << 4) for p in pushes[1:]), pushes
+PY
+check_bad retarget-distance sim --distance 4000 --v-cruise 40000 --a-max 2e6 --j-max 4e8 --retarget-at 0.03 --retarget-distance 100
+check_bad retarget-distance sim --distance 4000 --v-cruise 40000 --a-max 2e6 --j-max 4e8 --retarget-at 0.03
+check_bad retarget-at sim --distance 4000 --v-cruise 40000 --a-max 2e6 --j-max 4e8 --retarget-at 0.2 --retarget-distance 5000
+check_bad retarget-at regs --distance 4000 --v-cruise 40000 --a-max 2e6 --j-max 4e8 --retarget-at 0.03 --retarget-distance 5000 --no-start
 echo "cli ok"

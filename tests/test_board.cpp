@@ -359,6 +359,69 @@ TEST(AxiRegs, VelocityModeHoldsEachTargetUntilTheWholeNextCommandIsQueuedAndStop
   EXPECT_FALSE(b.failed()) << b.error();
 }
 
+// Retarget through the registers: RETARGET_ROW and ROW_PUSH.REPLACE
+// redirect a running move at a future row boundary (planned from the exact
+// state there, as the host library knows it); once that row is loaded the
+// replace is refused with ERR.RETARGET and the old move runs on untouched.
+TEST(AxiRegs, RetargetRedirectsARunningMoveAtAFutureBoundaryAndIsRefusedOnceItsRowIsLoaded) {
+  const scurve::Planner planner{model_clock()};
+  const scurve::PulseTiming t{};
+  scurve::MoveRequest req;
+  req.distance = 3000;
+  req.v_cruise = 40000;
+  req.a_max = 2e6;
+  req.j_max = 4e8;
+  const scurve::Plan p = std::get<scurve::Plan>(planner.plan(req, t));
+  size_t k = 1;  // the cruise row: a = 0 at its boundary
+  while (k < p.segments.size() && p.segments[k].acc0 != 0) ++k;
+  ASSERT_LT(k + 1, p.segments.size());
+  i128 pos = i128(p.pos_frac0);
+  for (size_t i = 0; i < k; ++i) {
+    const scurve::Segment& s = p.segments[i];
+    pos += scurve::pos_gain(s.vel0, s.acc0, s.jerk, s.clocks);
+  }
+  const i128 here = pos / i128(kOne);
+  scurve::MoveRequest more = req;
+  more.distance = 2500 - int64_t(here);
+  const scurve::Plan fresh = std::get<scurve::Plan>(
+      planner.plan_from({p.segments[k].vel0, u128(pos - here * i128(kOne))}, more, t));
+  const std::vector<RegWrite> retarget =
+      scurve::encode_retarget(uint32_t(k), fresh.segments, scurve::move_row_flags(fresh.segments, true));
+
+  for (const bool late : {false, true}) {
+    AxiBench b(true, late ? 27 : 26);
+    EXPECT_EQ(b.write(reg_addr("CTRL"), 1), kOkay);
+    load(b, to_model(p), PulseTiming{});
+    EXPECT_EQ(b.write(reg_addr("CMD"), field_mask("CMD", "START")), kOkay);
+    // Row 0 loads once START has armed the axis; a replace before that is
+    // refused (no stream runs yet).
+    while (b.read(reg_addr("ROW_COUNT")).first == 0 && !b.failed()) b.idle(10);
+    if (late) {
+      while (b.read(reg_addr("ROW_COUNT")).first <= k && !b.failed()) b.idle(100);
+    } else {
+      EXPECT_LT(b.read(reg_addr("ROW_COUNT")).first, k);
+    }
+    size_t w = 0;
+    for (; w < retarget.size(); ++w) {
+      EXPECT_EQ(b.write(retarget[w].addr, retarget[w].data), kOkay) << reg_name(retarget[w].addr);
+      if (retarget[w].addr == uint32_t(reg_addr("ROW_PUSH"))) break;  // the replace: check it took
+    }
+    b.idle(4);  // the executor's verdict reaches ERR within 4 clocks of the write's response
+    const uint32_t err = b.read(reg_addr("ERR")).first;
+    EXPECT_EQ(err, late ? field_mask("ERR", "RETARGET") : 0u);
+    if (!late) {
+      for (++w; w < retarget.size(); ++w) EXPECT_EQ(b.write(retarget[w].addr, retarget[w].data), kOkay);
+    }
+    while (b.out().busy && !b.failed()) b.idle(1000);
+    EXPECT_EQ(int32_t(b.read(reg_addr("REF_POS")).first), late ? 3000 : 2500);
+    EXPECT_EQ(b.net_steps(), late ? 3000 : 2500);
+    EXPECT_TRUE(b.read(reg_addr("STATUS")).first & field_mask("STATUS", "DONE"));
+    EXPECT_EQ(b.write(reg_addr("ERR"), field_mask("ERR", "RETARGET")), kOkay);
+    EXPECT_EQ(b.read(reg_addr("ERR")).first, 0u);
+    EXPECT_FALSE(b.failed()) << b.error();
+  }
+}
+
 TEST(AxiRegs, FifoRunningDryWhileMovingIsAnUnderrunWithTheBoundaryKept) {
   AxiBench b(true, 24);
   const auto moves = two_streamed_moves(2500, 4000, 3000);
@@ -557,16 +620,16 @@ TEST(BoardUart, IllegalAddressReservedBitsAndWriteWhileBusy) {
   r = bd.host.read(reg_addr("SW_CFG"));
   EXPECT_EQ(r.data, reg("SW_CFG").reset) << "SW_CFG at its reset value";
   EXPECT_EQ(bd.host.read(reg_addr("LATCH_CFG")).data, 0u);
-  for (const uint32_t a : {0x148u, 0x14Cu, 0x180u, 0x1F8u, 0x200u, 0x2CCu, 0x3FCu}) {
+  for (const uint32_t a : {0x150u, 0x154u, 0x180u, 0x1F8u, 0x200u, 0x2CCu, 0x3FCu}) {
     r = bd.host.read(a);
     ASSERT_TRUE(r.ok) << r.error;
     EXPECT_EQ(r.status, kDecErr) << std::hex << a;
     EXPECT_EQ(r.data, 0u) << std::hex << a;
   }
-  r = bd.host.write(0x14C, field_mask("CTRL", "ENABLE"));
+  r = bd.host.write(0x154, field_mask("CTRL", "ENABLE"));
   ASSERT_TRUE(r.ok) << r.error;
   EXPECT_EQ(r.status, kDecErr);
-  EXPECT_EQ(bd.host.read(reg_addr("CTRL")).data, 0u) << "0x14C wrote CTRL";
+  EXPECT_EQ(bd.host.read(reg_addr("CTRL")).data, 0u) << "0x154 wrote CTRL";
   r = bd.host.write(reg_addr("ID"), 0);
   EXPECT_EQ(r.status, kSlvErr);
   r = bd.host.write(reg_addr("SEG_PHASE"), 0xffffffffu);

@@ -170,17 +170,22 @@ void run(ProfileExec& ex, uint64_t n) {
   for (uint64_t i = 0; i < n; ++i) ex.step({});
 }
 
+// The rows pushed, START, and the clocks of the ramp: the hold runs.
+void start_and_ramp(ProfileExec& ex, const std::vector<Row>& rows, uint64_t ramp_clocks) {
+  for (const Row& r : rows) push(ex, r);
+  ProfileExec::Inputs st;
+  st.start = true;
+  st.pos_frac0 = kOne / 2;
+  ex.step(st);
+  run(ex, ramp_clocks + 2);
+}
+
 }  // namespace
 
 TEST(VelocityModeExec, AHoldKeepsItsVelocityUntilAWholeCommandIsQueuedThenRampsFromIt) {
   ProfileExec ex;
   const scurve::VelocityPlan up = plan_or_fail(0, 40000, 2e6, 4e8);
-  for (const Row& r : velocity_rows(up)) push(ex, r);
-  ProfileExec::Inputs st;
-  st.start = true;
-  st.pos_frac0 = kOne / 2;
-  ex.step(st);
-  run(ex, up.ramp_clocks + 2);
+  start_and_ramp(ex, velocity_rows(up), up.ramp_clocks);
   // Held far longer than any row: no underrun, v exact, a = j = 0.
   for (int k = 0; k < 5; ++k) {
     run(ex, 200000);
@@ -221,11 +226,7 @@ TEST(VelocityModeExec, AHoldEndsWhenTheFifoFillsAndAHoldRowThatAcceleratesIsAnOr
   // (the host could push nothing more); they run, then the FIFO runs dry.
   ProfileExec ex;
   const scurve::VelocityPlan up = plan_or_fail(0, 30000, 2e6, 4e8);
-  for (const Row& r : velocity_rows(up)) push(ex, r);
-  ProfileExec::Inputs st;
-  st.start = true;
-  ex.step(st);
-  run(ex, up.ramp_clocks + 10);
+  start_and_ramp(ex, velocity_rows(up), up.ramp_clocks);
   ASSERT_TRUE(ex.holding());
   Row cruise{to_model(up.segments.back()), 0};
   cruise.seg.clocks = 1000;
@@ -242,9 +243,7 @@ TEST(VelocityModeExec, AHoldEndsWhenTheFifoFillsAndAHoldRowThatAcceleratesIsAnOr
   std::vector<Row> rows = velocity_rows(up);
   rows.back().seg.clocks = 5;
   rows.back().seg.jerk = 1;
-  for (const Row& r : rows) push(ex2, r);
-  ex2.step(st);
-  run(ex2, up.ramp_clocks + 20);
+  start_and_ramp(ex2, rows, up.ramp_clocks + 18);
   EXPECT_FALSE(ex2.holding());
   EXPECT_TRUE(ex2.state().underrun);
   EXPECT_TRUE(ex2.stopping() || !ex2.state().run);

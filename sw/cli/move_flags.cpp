@@ -126,6 +126,30 @@ void add_stop_flags(CLI::App* app, StopFlags& f) {
       ->each([&f](const std::string&) { f.acc_given = true; });
 }
 
+void add_retarget_flags(CLI::App* app, RetargetFlags& f) {
+  real_flag(app, "--retarget-at", f.at, "retarget the move: decide this many seconds after START", 0)
+      ->each([&f](const std::string&) { f.at_given = true; });
+  int_flag(app, "--retarget-distance", f.distance, -PlannerLimits::kMaxDistance, PlannerLimits::kMaxDistance,
+           "the move's new distance from its start, pulses (ahead of the axis at the retarget)")
+      ->each([&f](const std::string&) { f.distance_given = true; });
+}
+
+std::variant<std::optional<RetargetPlan>, std::string> resolve_retarget_flags(const RetargetFlags& f,
+                                                                             const MoveRequest& request,
+                                                                             const Plan& plan,
+                                                                             const PulseTiming& timing) {
+  if (!f.at_given && !f.distance_given) return std::optional<RetargetPlan>{};
+  if (f.at_given != f.distance_given) {
+    return std::string(f.at_given ? "--retarget-at: needs --retarget-distance (the new distance)"
+                                  : "--retarget-distance: needs --retarget-at (when to retarget)");
+  }
+  const RetargetResult r = plan_retarget(Planner{plan.clock}, plan, request, {f.at, f.distance}, timing);
+  if (const Error* e = std::get_if<Error>(&r)) {
+    return fmt::format("--{}: {}", e->parameter == "retarget_at" ? "retarget-at" : "retarget-distance", e->message);
+  }
+  return std::optional<RetargetPlan>{std::get<RetargetPlan>(r)};
+}
+
 std::variant<StopRequest, std::string> resolve_stop_flags(const StopFlags& f, const MoveRequest& request,
                                                           const Plan& plan) {
   StopRequest s;

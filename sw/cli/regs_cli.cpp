@@ -26,6 +26,7 @@ void add_regs_flags(CLI::App* cmd, RegsCliFlags& f) {
                 "write the row guards GUARD_VEL / GUARD_ACC / GUARD_JERK from the move's own limits (its largest "
                 "speed, --a-max and its jerk limit) after the stop limits");
   add_stop_flags(cmd, f.stop);
+  add_retarget_flags(cmd, f.retarget);
 }
 
 std::variant<nlohmann::json, Error> regs_to_json(const RegsCliFlags& f, const MoveRequest& request, const Plan& plan,
@@ -34,6 +35,12 @@ std::variant<nlohmann::json, Error> regs_to_json(const RegsCliFlags& f, const Mo
   if (const std::string* e = std::get_if<std::string>(&stop)) return Error{"stop", *e};
   const StopRequest& sr = std::get<StopRequest>(stop);
   if (sr.at_clock && f.no_start) return Error{"stop_at", "--stop-at: stops a started move; it cannot go with --no-start"};
+  const auto rt = resolve_retarget_flags(f.retarget, request, plan, timing);
+  if (const std::string* e = std::get_if<std::string>(&rt)) return Error{"retarget", *e};
+  const std::optional<RetargetPlan>& retarget = std::get<std::optional<RetargetPlan>>(rt);
+  if (retarget && (f.no_start || sr.at_clock)) {
+    return Error{"retarget_at", "--retarget-at: redirects a started move; it cannot go with --no-start or --stop-at"};
+  }
   std::vector<RegWrite> writes = encode_move(plan, timing, !f.no_start);
   // The stop limits after the pulse timing, before the table: the move's own
   // unless given, so CMD.STOP, an underrun or a discontinuity stop it as planned.
@@ -57,7 +64,18 @@ std::variant<nlohmann::json, Error> regs_to_json(const RegsCliFlags& f, const Mo
     config.insert(config.end(), sw.begin(), sw.end());
   }
   writes.insert(after_timing + 1, config.begin(), config.end());
-  if (sr.at_clock) writes.push_back(stop_command());
+  // Writes due at a time after START: the index of the first and the clock.
+  std::optional<std::pair<size_t, uint64_t>> due;
+  if (sr.at_clock) {
+    due = {writes.size(), *sr.at_clock};
+    writes.push_back(stop_command());
+  }
+  if (retarget) {
+    due = {writes.size(), uint64_t(std::llround(f.retarget.at * plan.clock.hz))};
+    const std::vector<RegWrite> rw = encode_retarget(retarget->row, retarget->plan.segments,
+                                                     move_row_flags(retarget->plan.segments, true));
+    writes.insert(writes.end(), rw.begin(), rw.end());
+  }
   if (f.closed_loop) {
     const double counts_per_step = 1.0;  // the closed-loop runner's default encoder
     const ServoConfigResult r = to_servo_config(ControllerParams{}, counts_per_step, timing, plan.clock);
@@ -66,14 +84,15 @@ std::variant<nlohmann::json, Error> regs_to_json(const RegsCliFlags& f, const Mo
     cl.insert(cl.begin(), RegWrite{uint32_t(RegCtrl), (1u << CtrlEnableBit) | (1u << CtrlClosedBit)});
     writes.erase(writes.begin());  // CTRL = enable: replaced by the closed-loop CTRL write
     writes.insert(writes.begin(), cl.begin(), cl.end());
+    if (due) due->first += cl.size() - 1;
   }
   nlohmann::json out = nlohmann::json::array();
   for (size_t i = 0; i < writes.size(); ++i) {
     const RegWrite& w = writes[i];
     nlohmann::json j = {{"addr", w.addr}, {"reg", reg_name(w.addr)}, {"data", w.data}};
-    if (sr.at_clock && i + 1 == writes.size()) {
-      j["at_clock"] = *sr.at_clock;  // clocks after the START write takes effect
-      j["at_s"] = double(*sr.at_clock) / plan.clock.hz;
+    if (due && i == due->first) {
+      j["at_clock"] = due->second;  // clocks after the START write takes effect
+      j["at_s"] = double(due->second) / plan.clock.hz;
     }
     if (f.uart) {
       // The UART frame (word address in the frame), checked by the encoder.

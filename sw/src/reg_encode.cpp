@@ -20,7 +20,8 @@ std::string reg_name(uint32_t addr) {
 
 uint32_t RowFlags::word() const {
   return (move_end ? 1u << RowPushMoveEndBit : 0u) | (stream_end ? 1u << RowPushStreamEndBit : 0u) |
-         (acc_step ? 1u << RowPushAccStepBit : 0u) | (hold ? 1u << RowPushHoldBit : 0u);
+         (acc_step ? 1u << RowPushAccStepBit : 0u) | (hold ? 1u << RowPushHoldBit : 0u) |
+         (replace ? 1u << RowPushReplaceBit : 0u);
 }
 
 std::vector<RowFlags> move_row_flags(const std::vector<Segment>& rows, bool stream_end) {
@@ -34,6 +35,17 @@ std::vector<RowFlags> move_row_flags(const std::vector<Segment>& rows, bool stre
     f.back().stream_end = stream_end;
   }
   return f;
+}
+
+std::vector<RegWrite> encode_retarget(uint32_t row, const std::vector<Segment>& rows,
+                                      const std::vector<RowFlags>& flags) {
+  std::vector<RegWrite> w{{RegRetargetRow, row}};
+  for (size_t i = 0; i < rows.size(); ++i) {
+    RowFlags f = i < flags.size() ? flags[i] : RowFlags{};
+    f.replace = i == 0;
+    for (const RegWrite& r : encode_row(rows[i], f)) w.push_back(r);
+  }
+  return w;
 }
 
 std::vector<RowFlags> velocity_row_flags(const VelocityPlan& plan) {

@@ -37,7 +37,8 @@ module sc_axis_core_smoke_tb;
     .enable_i(1'b1),
     .cfg_high_i(sc_pkg::PulseTimeW'(PulseHigh)), .cfg_low_i(sc_pkg::PulseTimeW'(PulseLow)),
     .cfg_setup_i(sc_pkg::PulseTimeW'(PulseSetup)), .cfg_hold_i(sc_pkg::PulseTimeW'(PulseHold)),
-    .row_push_i(row_push), .row_flags_i(row_flags), .row_phase_i(sc_pkg::PhCruise),
+    .row_push_i(row_push), .row_replace_i(1'b0), .retarget_row_i('0), .row_flags_i(row_flags),
+    .row_phase_i(sc_pkg::PhCruise),
     .row_clocks_i(row_clocks), .row_jerk_i('0), .row_acc0_i('0), .row_vel0_i(row_vel0),
     .fifo_flush_i(1'b0), .pos_frac0_i('0),
     .start_i(start), .abort_i(1'b0), .stop_i(1'b0),
@@ -51,7 +52,7 @@ module sc_axis_core_smoke_tb;
     .step_o(step), .dir_o(dir), .en_o(en),
     .busy_o(busy), .done_o(done), .phase_o(), .fault_table_o(), .fault_overrun_o(),
     .underrun_o(), .discont_o(), .guard_o(), .stopping_o(), .overshoot_o(), .move_done_o(),
-    .move_idx_o(), .boundary_pos_o(), .fifo_level_o(), .fifo_full_o(fifo_full),
+    .move_idx_o(), .boundary_pos_o(), .fifo_level_o(), .fifo_full_o(fifo_full), .row_count_o(), .retarget_refused_o(),
     .pulse_count_o(pulse_count),
     .ref_pos_int_o(ref_pos_int), .ref_pos_frac_o(ref_pos_frac), .ref_vel_o(), .ref_acc_o(),
     .ref_jerk_o(), .seg_idx_o(), .step_pending_o()

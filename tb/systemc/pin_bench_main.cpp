@@ -198,6 +198,9 @@ int sc_main(int argc, char** argv) {
   sc_signal<uint32_t> phase("phase"), pulse_count("pulse_count"), ref_pos_int("ref_pos_int"), seg_idx("seg_idx"),
       step_pending("step_pending"), move_idx("move_idx"), boundary_pos("boundary_pos"), fifo_level("fifo_level");
   sc_signal<uint64_t> ref_acc("ref_acc"), ref_jerk("ref_jerk");
+  // Retarget ports: this bench runs single moves, no replace.
+  sc_signal<bool> row_replace("row_replace"), retarget_refused("retarget_refused");
+  sc_signal<uint32_t> retarget_row("retarget_row"), row_count("row_count");
   sc_signal<FracBv> ref_pos_frac("ref_pos_frac");
   sc_signal<VelBv> ref_vel("ref_vel");
   // Nothing drives clock_count here: every clock is already a SystemC
@@ -216,6 +219,8 @@ int sc_main(int argc, char** argv) {
   dut.cfg_setup_i(cfg_setup);
   dut.cfg_hold_i(cfg_hold);
   dut.row_push_i(row_push);
+  dut.row_replace_i(row_replace);
+  dut.retarget_row_i(retarget_row);
   dut.row_flags_i(row_flags);
   dut.row_phase_i(seg_phase);
   dut.row_clocks_i(seg_clocks);
@@ -279,6 +284,8 @@ int sc_main(int argc, char** argv) {
   dut.boundary_pos_o(boundary_pos);
   dut.fifo_level_o(fifo_level);
   dut.fifo_full_o(fifo_full);
+  dut.row_count_o(row_count);
+  dut.retarget_refused_o(retarget_refused);
   dut.pulse_count_o(pulse_count);
   dut.ref_pos_int_o(ref_pos_int);
   dut.ref_pos_frac_o(ref_pos_frac);

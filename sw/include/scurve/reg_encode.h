@@ -36,6 +36,7 @@ struct RowFlags {
   bool stream_end = false;  // last row of the stream
   bool acc_step = false;    // starts with a planned acceleration step (trapezoid)
   bool hold = false;        // velocity mode: holds its constant velocity until a whole move is queued
+  bool replace = false;     // retarget: becomes row RETARGET_ROW, dropping the queued rows from there on
   uint32_t word() const;    // the ROW_PUSH value
 };
 // The flags of a move's rows: the last MOVE_END (and STREAM_END when the
@@ -47,6 +48,13 @@ std::vector<RowFlags> move_row_flags(const std::vector<Segment>& rows, bool stre
 std::vector<RowFlags> velocity_row_flags(const VelocityPlan& plan);
 // One row's staging writes and its ROW_PUSH.
 std::vector<RegWrite> encode_row(const Segment& s, RowFlags flags = {});
+// Retarget: RETARGET_ROW = `row`, then the rows, the first one with
+// ROW_PUSH.REPLACE (it becomes row number `row`; the queued rows from there
+// on are dropped), the rest appended behind it. The executor refuses the
+// replace (ERR.RETARGET, nothing changes) if that row is already loaded:
+// the host reads ERR after the first ROW_PUSH.
+std::vector<RegWrite> encode_retarget(uint32_t row, const std::vector<Segment>& rows,
+                                      const std::vector<RowFlags>& flags);
 
 // The controlled-stop limits (STOP_JERK, STOP_ACC) for a stop jerk
 // (pulses/s^3) and stop deceleration (pulses/s^2) at `clock`: the register

@@ -13,6 +13,7 @@
 #include "scurve/cli/user_input.h"
 #include "scurve/planner.h"
 #include "scurve/reg_encode.h"
+#include "scurve/retarget.h"
 
 namespace scurve::cli {
 
@@ -73,6 +74,22 @@ struct StopRequest {
 // The stop, or one line naming the flag, its value and the bound.
 std::variant<StopRequest, std::string> resolve_stop_flags(const StopFlags& f, const MoveRequest& request,
                                                           const Plan& plan);
+
+// --retarget-at, --retarget-distance: redirect the running move (RETARGET_ROW,
+// ROW_PUSH.REPLACE) to a new distance from its start, decided at a time
+// after START (scurve::plan_retarget picks the boundary and plans from it).
+struct RetargetFlags {
+  double at = 0;
+  int64_t distance = 0;
+  bool at_given = false, distance_given = false;
+};
+void add_retarget_flags(CLI::App* app, RetargetFlags& f);
+// Without the flags: no retarget. Else the plan, or one line naming the
+// flag, its value and the bound (both flags go together).
+std::variant<std::optional<RetargetPlan>, std::string> resolve_retarget_flags(const RetargetFlags& f,
+                                                                             const MoveRequest& request,
+                                                                             const Plan& plan,
+                                                                             const PulseTiming& timing);
 
 // Number flags read through the validation layer (decimal notation, finite,
 // integer, range); CLI11 reports its message (exit 2).

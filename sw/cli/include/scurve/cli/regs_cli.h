@@ -20,12 +20,15 @@ struct RegsCliFlags {
   bool closed_loop = false;  // sc_axi_servo: controller settings + CTRL.CLOSED_LOOP
   bool guard = false;        // GUARD_VEL / GUARD_ACC / GUARD_JERK from the move's limits
   StopFlags stop;            // stop limits (always written) and --stop-at
+  RetargetFlags retarget;    // --retarget-at, --retarget-distance
 };
 
 void add_regs_flags(CLI::App* cmd, RegsCliFlags& f);
 // The writes for `plan` of `request` as the JSON array `scurve regs --json`
 // prints ({addr, reg, data}, "frame" with --uart, "at_clock"/"at_s" on a
-// CMD.STOP due at --stop-at), or one line naming the flag.
+// CMD.STOP due at --stop-at and on the first write of a retarget due at
+// --retarget-at, whose ROW_PUSH.REPLACE the host checks through
+// ERR.RETARGET before the rest), or one line naming the flag.
 std::variant<nlohmann::json, Error> regs_to_json(const RegsCliFlags& f, const MoveRequest& request, const Plan& plan,
                                                  const PulseTiming& timing);
 // Prints the writes for `plan` of `request` (the plan's clock sets the
