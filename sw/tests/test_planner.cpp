@@ -522,3 +522,159 @@ TEST(SoftLimits, RandomMovesAreAcceptedIffTheTargetRuleHolds) {
   EXPECT_GT(refused_target, plannable / 10);
   EXPECT_GT(refused_start, 10);
 }
+
+// ---- Planner::plan_from_state: a move from an exact state with acceleration
+
+namespace {
+
+// The request's limits in LSB, floored as the planner floors them.
+struct LsbLimits {
+  i128 v_rate = 0;
+  int64_t a_max = 0, j_max = 0;
+};
+LsbLimits lsb_limits(const MoveRequest& r, const PulseTiming& t, Clock c = Clock{}) {
+  LsbLimits l;
+  l.v_rate = i128(kOne) / (i128(t.high) + t.low);
+  l.a_max = int64_t(std::floor(r.a_max * acc_lsb_per_unit(c)));
+  l.j_max = int64_t(std::floor(scurve::test::jerk_cap(r) * jerk_lsb_per_unit(c)));
+  return l;
+}
+
+// The request's end speed in LSB (floored, capped at the step-rate limit).
+i128 end_speed_lsb(double v, const LsbLimits& l, Clock c = Clock{}) {
+  return std::min(i128(std::floor(v * vel_lsb_per_unit(c))), l.v_rate);
+}
+
+// A random start state within the request's limits: both signs of the
+// acceleration, speeds from 0 to the step-rate limit in the move's direction.
+ExactState random_state(std::mt19937_64& g, const MoveRequest& r, const PulseTiming& t) {
+  const LsbLimits l = lsb_limits(r, t);
+  std::uniform_real_distribution<double> u(0, 1);
+  ExactState s;
+  const int dir = r.distance < 0 ? -1 : 1;
+  const double pick = u(g);
+  const double v_frac = pick < 0.1 ? 0.0 : pick < 0.2 ? 1.0 - u(g) * 1e-3 : u(g) * u(g);
+  // Mostly up to the request's own speeds (a running move's), some up to the step-rate limit.
+  const double v_top = u(g) < 0.25 ? double(l.v_rate)
+                                   : std::min(double(l.v_rate), std::max(r.v_start, r.v_cruise) * vel_lsb_per_unit(Clock{}));
+  s.velocity = dir * i128(v_top * v_frac);
+  const double a_frac = u(g) < 0.1 ? 1.0 : u(g);
+  // Half of them small enough to end (at the jerk limit) within the speed range, as a running move's.
+  const double a_top = u(g) < 0.5 ? double(l.a_max)
+                                  : std::min(double(l.a_max), std::sqrt(2.0 * double(std::max<int64_t>(l.j_max, 1)) *
+                                                                        v_top * std::max(v_frac, 0.5)));
+  s.acceleration = int64_t(a_top * a_frac) * (u(g) < 0.5 ? 1 : -1);
+  if (s.acceleration == 0) s.acceleration = 1;
+  s.frac = u128(i128(u(g) * double(kOne))) & (kOne - 1);
+  return s;
+}
+
+// Executes the table independently (run_table and the closed forms) and
+// checks every promise of plan_from_state.
+void expect_exact_from_state(const Plan& p, const ExactState& s, const MoveRequest& r, const PulseTiming& t) {
+  const int dir = r.distance < 0 ? -1 : 1;
+  const LsbLimits l = lsb_limits(r, t);
+  ASSERT_FALSE(p.segments.empty());
+  EXPECT_EQ(p.pos_frac0, s.frac);
+  EXPECT_TRUE(p.segments.front().vel0 == s.velocity) << to_string_i128(p.segments.front().vel0);
+  if (r.kind == ProfileKind::SCurve) EXPECT_EQ(p.segments.front().acc0, s.acceleration);
+  i128 v = 0;
+  int64_t a = 0;
+  for (size_t k = 0; k < p.segments.size(); ++k) {
+    const Segment& g = p.segments[k];
+    if (k > 0) {
+      EXPECT_TRUE(g.vel0 == v) << "row " << k << " does not continue the velocity";
+      if (r.kind == ProfileKind::SCurve) EXPECT_EQ(g.acc0, a) << "row " << k << " does not continue the acceleration";
+    }
+    v = vel_after(g.vel0, g.acc0, g.jerk, g.clocks);
+    a = int64_t(acc_after(g.acc0, g.jerk, g.clocks));
+  }
+  if (r.kind == ProfileKind::SCurve) EXPECT_EQ(a, 0);
+  const TableReport rep = run_table(p.segments, p.pos_frac0, dir);
+  ASSERT_TRUE(rep.ok) << rep.error;
+  EXPECT_EQ(rep.steps, r.distance);
+  const i128 window_lo = i128(r.distance) * i128(kOne);
+  EXPECT_TRUE(rep.end_pos >= window_lo && rep.end_pos < window_lo + i128(kOne)) << "end outside the window";
+  EXPECT_TRUE(p.end_state.frac == u128(rep.end_pos - window_lo));
+  EXPECT_GE(rep.min_signed_vel, 0) << "velocity reverses";
+  EXPECT_LE(rep.peak_vel, l.v_rate);
+  EXPECT_LE(rep.peak_acc, l.a_max);
+  if (r.kind == ProfileKind::SCurve) EXPECT_LE(rep.peak_jerk, l.j_max);
+  EXPECT_EQ(rep.clocks, p.total_clocks);
+  const i128 ve = end_speed_lsb(p.end_speed_adjusted ? p.v_end_used : r.v_end, l);
+  if (!p.end_speed_adjusted) EXPECT_TRUE(v == dir * ve) << to_string_i128(v) << " vs " << to_string_i128(ve);
+  EXPECT_TRUE(p.end_state.velocity == v);
+}
+
+// The shortest distance an error names ("needs distance >= N pulses").
+int64_t needed_distance_in(const std::string& msg) {
+  const auto at = msg.find("needs distance >= ");
+  if (at == std::string::npos) return -1;
+  return std::atoll(msg.c_str() + at + 18);
+}
+
+}  // namespace
+
+TEST(PlanFromState, ZeroAccelerationReturnsExactlyWhatPlanFromReturns) {
+  std::mt19937_64 g(11);
+  const Planner planner;
+  for (int i = 0; i < 500; ++i) {
+    const auto rr = scurve::test::random_request(g, Clock{});
+    ExactState s = random_state(g, rr.req, rr.timing);
+    s.acceleration = 0;
+    const PlanResult a = planner.plan_from_state(s, rr.req, rr.timing);
+    const PlanResult b = planner.plan_from(JunctionState{s.velocity, s.frac}, rr.req, rr.timing);
+    ASSERT_EQ(a.index(), b.index());
+    if (const auto* pa = std::get_if<Plan>(&a)) {
+      const Plan& pb = std::get<Plan>(b);
+      EXPECT_EQ(pa->segments, pb.segments);
+      EXPECT_TRUE(pa->pos_frac0 == pb.pos_frac0 && pa->end_state.frac == pb.end_state.frac);
+      EXPECT_TRUE(pa->end_state.velocity == pb.end_state.velocity);
+      EXPECT_EQ(pa->total_clocks, pb.total_clocks);
+    } else {
+      EXPECT_EQ(std::get<Error>(a).message, std::get<Error>(b).message);
+    }
+  }
+}
+
+TEST(PlanFromState, EndsExactlyOnTheTargetFromRandomStatesWithinTheLimits) {
+  std::mt19937_64 g(12);
+  const Planner planner;
+  int planned = 0, too_short = 0, refused = 0, checked_needs = 0;
+  for (int i = 0; i < 8000; ++i) {
+    auto rr = scurve::test::random_request(g, Clock{});
+    if (i % 4 == 0) rr.req.v_end = 0;
+    const ExactState s = random_state(g, rr.req, rr.timing);
+    const PlanResult res = planner.plan_from_state(s, rr.req, rr.timing);
+    if (const auto* p = std::get_if<Plan>(&res)) {
+      ++planned;
+      SCOPED_TRACE(i);
+      expect_exact_from_state(*p, s, rr.req, rr.timing);
+      if (HasFailure()) return;
+      continue;
+    }
+    const Error& e = std::get<Error>(res);
+    if (e.parameter == "start_acceleration") {
+      ++refused;
+      continue;
+    }
+    ASSERT_TRUE(e.parameter == "distance" || e.parameter == "v_end") << e.parameter << ": " << e.message;
+    ++too_short;
+    if (rr.req.kind == ProfileKind::Trapezoid) continue;  // plan_from's errors (the acceleration steps anyway)
+    // The shortest distance named is enough (a few of them, re-planned).
+    const int64_t need = needed_distance_in(e.message);
+    ASSERT_GT(need, 0) << e.message;
+    if (need <= PlannerLimits::kMaxDistance && checked_needs < 300) {
+      ++checked_needs;
+      MoveRequest r2 = rr.req;
+      r2.distance = (rr.req.distance < 0 ? -1 : 1) * need;
+      const PlanResult again = planner.plan_from_state(s, r2, rr.timing);
+      ASSERT_TRUE(std::holds_alternative<Plan>(again))
+          << "named " << need << ": " << e.message << " / " << std::get<Error>(again).message;
+      expect_exact_from_state(std::get<Plan>(again), s, r2, rr.timing);
+    }
+  }
+  std::printf("plan_from_state: %d planned, %d too short (%d re-planned at the named distance), %d refused\n",
+              planned, too_short, checked_needs, refused);
+  EXPECT_GT(planned, 2500);
+}

@@ -87,6 +87,14 @@ struct JunctionState {
   u128 frac = 0;      // position fraction in [0, 2^FracBits): position - floor(position)
 };
 
+// The executor's exact state at a row boundary (Planner::plan_from_state):
+// any velocity and acceleration, e.g. where a running move is retargeted.
+struct ExactState {
+  i128 velocity = 0;         // LSB per clock, signed: the sign is the direction
+  int64_t acceleration = 0;  // LSB per clock^2, signed
+  u128 frac = 0;             // position fraction in [0, 2^FracBits)
+};
+
 struct Plan {
   Clock clock{};                 // the clock the table is counted in
   std::vector<Segment> segments;
@@ -160,6 +168,29 @@ class Planner {
   // (a reversal needs junction speed 0). No table-size limit is applied
   // (the stream has no 16-row table). The soft limits apply as in plan().
   PlanResult plan_from(const JunctionState& start, const MoveRequest& req, const PulseTiming& timing) const;
+
+  // Retarget on the fly: plans a move from an exact executor state whose
+  // acceleration may be nonzero. The first row starts at exactly
+  // (start.velocity, start.acceleration); the end, end_state, the end speed
+  // and adjust_end_speed follow plan_from, and with acceleration 0 the
+  // result is plan_from's. Every clock keeps |a| <= a_max, |jerk| <= the
+  // jerk limits and |v| <= the step-rate limit, and the move never reverses.
+  // Refused ("start_velocity", "start_acceleration"): a speed or an
+  // acceleration beyond its limit, a velocity against the move, and an
+  // acceleration that cannot be ended (at the jerk limit) before the speed
+  // passes the step-rate limit or through 0; in particular from v = 0 an
+  // acceleration against the move is refused (a reversal needs rest first).
+  // A state that overshoots the target whatever it does is refused naming
+  // "distance" (end speed 0) or "v_end", with the shortest distance it can
+  // stop in / reach v_end within.
+  // Construction (S-curve): the acceleration either ramps to 0 at full jerk
+  // and plan_from's solver continues from there, or, when the plan wants to
+  // go the way the acceleration points, the ramp continues (jerk on to the
+  // plan's peak, hold, jerk down) straight to the plateau; the faster of the
+  // two is kept. Trapezoid: the acceleration steps anyway, as plan_from.
+  // Duration against the continuous time-optimal profile: see the test
+  // PlanFromState.DurationIsNearTheContinuousTimeOptimum.
+  PlanResult plan_from_state(const ExactState& start, const MoveRequest& req, const PulseTiming& timing) const;
 
   // Velocity mode: rows from the exact constant velocity v_from (LSB per
   // clock, signed; 0 at rest, else the v_end of the last VelocityPlan) to
