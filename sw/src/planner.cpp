@@ -1335,8 +1335,12 @@ bool push_continued_ramp(RowList& rows, int64_t a0m, i128 dv, int s, const Limit
     const i128 dv_jerk = s * chain_rows(ramp.begin(), ramp.end(), 0, s * a0m).v;
     if (dv_jerk > dv) {
       if (a == a0m) return false;  // ending the start acceleration alone overshoots dv
-      const double shrink = std::sqrt(double(dv) / double(dv_jerk));
-      a = std::clamp<int64_t>(a0m + int64_t(double(a - a0m) * shrink * 0.999), a0m, a - 1);
+      // The change beyond ending a0 grows with ap^2 - a0^2: scale that.
+      const double dv0 = a0d * a0d * 0.5 / double(j_down);
+      const double ratio = std::max(0.0, (double(dv) - dv0) / (double(dv_jerk) - dv0));
+      const double ad = double(a);
+      const double next = std::sqrt(a0d * a0d + (ad * ad - a0d * a0d) * ratio * 0.999);
+      a = std::clamp<int64_t>(iter < 8 ? int64_t(next) : a0m + (a - a0m) / 2, a0m, a - 1);
       continue;
     }
     const i128 n2 = (dv - dv_jerk) / a1;
@@ -1482,24 +1486,29 @@ PlanResult Planner::plan_from_state(const ExactState& start, const MoveRequest& 
         (st.s < 0 && to_lsb(hi) >= st.v_settle)) {
       return best;
     }
-    const auto fits = [&](double v) {
+    // The highest plateau whose travel stays within the aim (mid-pulse, as
+    // the solver aims), else the lowest one if it still ends in the window.
+    const auto fits = [&](double v, i128 bound) {
       const i128 p = to_lsb(v);
       const std::optional<i128> gain = build_opening(opening, st, p, lim);
       if (!gain) return false;
       const Transition last = transition_to(p, ve, lim);
-      return !last.too_far && *gain + last.gain < window.hi;
+      return !last.too_far && *gain + last.gain <= bound;
     };
-    if (!fits(hi)) {
-      if (!fits(lo)) return best;
-      for (int it = 0; it < 48; ++it) {  // the highest plateau that fits: hi does not, lo does
-        const i128 gap = to_lsb(hi) - to_lsb(lo);
-        if (gap <= std::max<i128>(1, to_lsb(hi) >> kBracketBits)) break;
-        const double mid = 0.5 * (lo + hi);
-        if (mid <= lo || mid >= hi) break;
-        (fits(mid) ? lo : hi) = mid;
+    if (!fits(hi, window.aim)) {
+      if (fits(lo, window.aim)) {
+        for (int it = 0; it < 48; ++it) {  // hi does not fit, lo does
+          const i128 gap = to_lsb(hi) - to_lsb(lo);
+          if (gap <= std::max<i128>(1, to_lsb(hi) >> kBracketBits)) break;
+          const double mid = 0.5 * (lo + hi);
+          if (mid <= lo || mid >= hi) break;
+          (fits(mid, window.aim) ? lo : hi) = mid;
+        }
+      } else if (!fits(lo, window.hi - 1)) {
+        return best;
       }
       hi = lo;
-      if (!fits(hi)) return best;
+      if (!fits(hi, window.hi - 1)) return best;  // (rebuilds the opening at hi)
     }
     // A plateau of 0 (a stop short of the target) lets the solver creep on.
     PlanResult ramp = plan_continuation(junction, opening, req.distance, to_lsb(hi) > 0 ? hi : req.v_cruise, ve,

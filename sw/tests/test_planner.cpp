@@ -678,3 +678,270 @@ TEST(PlanFromState, EndsExactlyOnTheTargetFromRandomStatesWithinTheLimits) {
               planned, too_short, checked_needs, refused);
   EXPECT_GT(planned, 2500);
 }
+
+namespace {
+
+// Continuous-time reference (symmetric jerk j, acceleration a, pulses and
+// seconds): the time-optimal move from (v0, a0) to (ve, 0) over a travel d at
+// speeds <= vc is an opening to a plateau V at acceleration 0, a cruise, and
+// a transition to ve, with the highest V whose transitions fit in d.
+struct RefRamp {
+  double t = 0, s = 0;  // duration, travel
+};
+// Speed change by dv from v, acceleration 0 at both ends.
+RefRamp ref_transition(double v, double dv, double a, double j) {
+  const double m = std::fabs(dv);
+  const double t = m >= a * a / j ? m / a + a / j : 2.0 * std::sqrt(m / j);
+  return {t, (v + 0.5 * dv) * t};
+}
+// From (v0, a0) to speed V at acceleration 0.
+RefRamp ref_opening(double v0, double a0, double V, double a, double j) {
+  const double s = a0 > 0 ? 1.0 : -1.0;
+  const double t0 = std::fabs(a0) / j;
+  const double v_settle = v0 + s * a0 * a0 / (2 * j);
+  if (s * (V - v_settle) > 0) {
+    // Carry on: the tail of a transition from rest acceleration at v_virtual.
+    const double v_virtual = v0 - s * a0 * a0 / (2 * j);
+    const RefRamp whole = ref_transition(v_virtual, V - v_virtual, a, j);
+    return {whole.t - t0, whole.s - (v_virtual * t0 + s * j * t0 * t0 * t0 / 6)};
+  }
+  const RefRamp rest = ref_transition(v_settle, V - v_settle, a, j);
+  return {t0 + rest.t, v0 * t0 + a0 * t0 * t0 / 2 - s * j * t0 * t0 * t0 / 6 + rest.s};
+}
+std::string fmt_case(int i, double v0, double a0, double ve, double vc, double d, double a, double j, double t,
+                     double t_ref) {
+  char buf[400];
+  std::snprintf(buf, sizeof buf, "#%d v0=%g a0=%g ve=%g vc=%g d=%g a_max=%g j=%g: %.6g s vs %.6g s", i, v0, a0, ve, vc,
+                d, a, j, t, t_ref);
+  return buf;
+}
+
+// The shortest duration, or -1 if nothing fits.
+double ref_duration(double v0, double a0, double ve, double vc, double d, double a, double j) {
+  const auto travel = [&](double V) {
+    return ref_opening(v0, a0, V, a, j).s + ref_transition(V, ve - V, a, j).s;
+  };
+  if (travel(ve) > d) return -1;
+  double lo = ve, hi = vc;
+  if (travel(hi) <= d) {
+    lo = hi;
+  } else {
+    for (int i = 0; i < 200; ++i) {
+      const double mid = 0.5 * (lo + hi);
+      (travel(mid) <= d ? lo : hi) = mid;
+    }
+  }
+  const RefRamp first = ref_opening(v0, a0, lo, a, j), last = ref_transition(lo, ve - lo, a, j);
+  const double cruise = d - first.s - last.s;
+  return first.t + last.t + (lo > 0 ? std::max(0.0, cruise) / lo : 0.0);
+}
+
+}  // namespace
+
+TEST(PlanFromState, DurationIsNearTheContinuousTimeOptimum) {
+  std::mt19937_64 g(13);
+  const Planner planner;
+  const Clock c{};
+  double worst = -1, worst_carry = -1, worst_settle = -1;
+  int compared = 0;
+  std::string worst_case;
+  for (int i = 0; i < 12000; ++i) {
+    auto rr = scurve::test::random_request(g, c);
+    MoveRequest& r = rr.req;
+    r.kind = ProfileKind::SCurve;
+    r.jerks.reset();
+    r.adjust_end_speed = false;
+    if (i % 3 == 0) r.v_end = 0;
+    const ExactState s = random_state(g, r, rr.timing);
+    const PlanResult res = planner.plan_from_state(s, r, rr.timing);
+    const Plan* p = std::get_if<Plan>(&res);
+    if (!p || p->total_clocks < 2000) continue;  // (a few clocks: the integer clock dominates)
+    const int dir = r.distance < 0 ? -1 : 1;
+    const LsbLimits l = lsb_limits(r, rr.timing);
+    const double a = acc_to_phys(l.a_max, c), j = jerk_to_phys(l.j_max, c);
+    const double v0 = vel_to_phys(dir * s.velocity, c), a0 = acc_to_phys(dir * s.acceleration, c);
+    const double vc = vel_to_phys(end_speed_lsb(r.v_cruise, l), c), ve = vel_to_phys(end_speed_lsb(r.v_end, l), c);
+    const double v_settle = v0 + (a0 > 0 ? 1 : -1) * a0 * a0 / (2 * j);
+    if (v0 > vc || ve > vc || v_settle > vc) continue;  // speeds above the cruise speed: another rule
+    const TableReport rep = run_table(p->segments, p->pos_frac0, dir);
+    const double d = pos_to_phys(dir * (rep.end_pos - i128(s.frac)));
+    const double t_ref = ref_duration(v0, a0, ve, vc, d, a, j);
+    if (t_ref <= 0) continue;
+    ++compared;
+    const double excess = p->duration_s / t_ref - 1;
+    const bool carried = (a0 > 0) == (p->segments.front().jerk > 0) && p->segments.front().jerk != 0;
+    (carried ? worst_carry : worst_settle) = std::max(carried ? worst_carry : worst_settle, excess);
+    if (excess > worst) {
+      worst = excess;
+      worst_case = fmt_case(i, v0, a0, ve, vc, d, a, j, p->duration_s, t_ref);
+    }
+  }
+  std::printf("plan_from_state vs continuous optimum: %d compared, worst excess %.4f %% (carried ramps %.4f %%, "
+              "settled first %.4f %%)\n  worst: %s\n",
+              compared, 100 * worst, 100 * worst_carry, 100 * worst_settle, worst_case.c_str());
+  EXPECT_GT(compared, 1000);
+  EXPECT_LT(worst, 0.01);
+}
+
+namespace {
+
+MoveRequest retarget_move(int64_t distance, double v_end = 0) {
+  MoveRequest r = move(distance, 0, 20000, v_end, 50000, 1e6);
+  return r;
+}
+
+PlanError from_state_err(const ExactState& s, const MoveRequest& r) {
+  const PlanResult res = Planner().plan_from_state(s, r, PulseTiming{});
+  if (std::holds_alternative<Plan>(res)) {
+    ADD_FAILURE() << "expected an error";
+    return {};
+  }
+  return std::get<PlanError>(res);
+}
+
+}  // namespace
+
+TEST(PlanFromState, RefusesStartStatesBeyondTheLimitsNamingParameterValueAndBound) {
+  const MoveRequest r = retarget_move(100000);
+  const LsbLimits l = lsb_limits(r, PulseTiming{});
+  const i128 v = end_speed_lsb(5000, l);
+
+  PlanError e = from_state_err(ExactState{v, l.a_max + 1, 0}, r);
+  EXPECT_EQ(e.parameter, "start_acceleration");
+  EXPECT_NE(e.message.find(std::to_string(l.a_max + 1)), std::string::npos) << e.message;
+  EXPECT_NE(e.message.find(std::to_string(l.a_max) + " LSB"), std::string::npos) << e.message;
+  e = from_state_err(ExactState{v, -l.a_max - 1, 0}, r);
+  EXPECT_EQ(e.parameter, "start_acceleration");
+
+  e = from_state_err(ExactState{l.v_rate + 1, 1000, 0}, r);
+  EXPECT_EQ(e.parameter, "start_velocity");
+  EXPECT_NE(e.message.find(to_string_i128(l.v_rate + 1)), std::string::npos) << e.message;
+  EXPECT_NE(e.message.find(to_string_i128(l.v_rate)), std::string::npos) << e.message;
+
+  // Against the move: as plan_from.
+  e = from_state_err(ExactState{-v, 1000, 0}, r);
+  EXPECT_EQ(e.parameter, "start_velocity");
+  EXPECT_NE(e.message.find("direction change"), std::string::npos) << e.message;
+
+  // From rest with the acceleration against the move: a reversal needs rest first.
+  e = from_state_err(ExactState{0, -1000, 0}, r);
+  EXPECT_EQ(e.parameter, "start_acceleration");
+  EXPECT_NE(e.message.find("reversal needs rest first"), std::string::npos) << e.message;
+  e = from_state_err(ExactState{0, 1000, 0}, retarget_move(-100000));
+  EXPECT_EQ(e.parameter, "start_acceleration");
+  // Moving slowly while braking hard: ending the braking reverses the velocity.
+  e = from_state_err(ExactState{10, -l.a_max, 0}, r);
+  EXPECT_EQ(e.parameter, "start_acceleration");
+  EXPECT_NE(e.message.find("reverses the velocity"), std::string::npos) << e.message;
+  // Near the step-rate limit while speeding up hard: ending it passes the limit.
+  e = from_state_err(ExactState{l.v_rate - 10, l.a_max, 0}, r);
+  EXPECT_EQ(e.parameter, "start_acceleration");
+  EXPECT_NE(e.message.find("step-rate limit " + to_string_i128(l.v_rate)), std::string::npos) << e.message;
+
+  // The request is checked as plan_from checks it; and start_frac too.
+  MoveRequest bad = r;
+  bad.a_max = -1;
+  EXPECT_EQ(from_state_err(ExactState{v, 1000, 0}, bad).parameter, "a_max");
+  EXPECT_EQ(from_state_err(ExactState{v, 1000, kOne}, r).parameter, "start_frac");
+}
+
+TEST(PlanFromState, TooCloseToStopNamesTheShortestDistanceThatWorks) {
+  const MoveRequest r = retarget_move(10);
+  const LsbLimits l = lsb_limits(r, PulseTiming{});
+  const ExactState s{end_speed_lsb(15000, l), l.a_max / 2, kOne / 3};
+  const PlanError e = from_state_err(s, r);
+  ASSERT_EQ(e.parameter, "distance");
+  EXPECT_NE(e.message.find("too short to stop"), std::string::npos) << e.message;
+  const int64_t need = needed_distance_in(e.message);
+  ASSERT_GT(need, 10) << e.message;
+  MoveRequest r2 = r;
+  r2.distance = need;
+  const PlanResult ok = Planner().plan_from_state(s, r2, PulseTiming{});
+  ASSERT_TRUE(std::holds_alternative<Plan>(ok)) << std::get<Error>(ok).message;
+  expect_exact_from_state(std::get<Plan>(ok), s, r2, PulseTiming{});
+  r2.distance = need - 1;
+  EXPECT_EQ(from_state_err(s, r2).parameter, "distance");
+  // A nonzero end speed out of reach names v_end; adjust_end_speed plans the nearest one instead.
+  MoveRequest r3 = retarget_move(3, 100);
+  EXPECT_EQ(from_state_err(s, r3).parameter, "v_end");
+  r3.adjust_end_speed = true;
+  r3.distance = need;
+  const ExactState fast{end_speed_lsb(15000, l), l.a_max / 2, 0};
+  const PlanResult adj = Planner().plan_from_state(fast, r3, PulseTiming{});
+  ASSERT_TRUE(std::holds_alternative<Plan>(adj)) << std::get<Error>(adj).message;
+  EXPECT_TRUE(std::get<Plan>(adj).end_speed_adjusted);
+  EXPECT_GT(std::get<Plan>(adj).v_end_used, 100);
+  expect_exact_from_state(std::get<Plan>(adj), fast, r3, PulseTiming{});
+}
+
+TEST(PlanFromState, SpeedingUpTowardCruiseCarriesTheAccelerationOnInsteadOfSettlingFirst) {
+  const MoveRequest r = retarget_move(200000);
+  const LsbLimits l = lsb_limits(r, PulseTiming{});
+  const ExactState s{end_speed_lsb(2000, l), l.a_max / 2, 0};
+  const PlanResult res = Planner().plan_from_state(s, r, PulseTiming{});
+  ASSERT_TRUE(std::holds_alternative<Plan>(res));
+  const Plan& p = std::get<Plan>(res);
+  expect_exact_from_state(p, s, r, PulseTiming{});
+  EXPECT_GT(p.segments.front().jerk, 0);  // on up to a_max, not down to 0 first
+  EXPECT_EQ(p.segments.front().phase, Phase::PhAccJerkUp);
+  EXPECT_NEAR(p.v_plateau, 20000, 1e-6);
+  // Braking ahead of a stop carries the braking on, the same way.
+  const ExactState braking{end_speed_lsb(19000, l), -l.a_max / 2, 0};
+  const MoveRequest near = retarget_move(4000);
+  const PlanResult b = Planner().plan_from_state(braking, near, PulseTiming{});
+  ASSERT_TRUE(std::holds_alternative<Plan>(b)) << std::get<Error>(b).message;
+  expect_exact_from_state(std::get<Plan>(b), braking, near, PulseTiming{});
+  EXPECT_LT(std::get<Plan>(b).segments.front().jerk, 0);
+}
+
+TEST(PlanFromState, ExtremeAndRandomInputsNeverCrashOrHang) {
+  std::mt19937_64 g(14);
+  const Planner planner;
+  const auto t0 = std::chrono::steady_clock::now();
+  int planned = 0;
+  for (int i = 0; i < 3000; ++i) {
+    auto rr = scurve::test::random_request(g, Clock{});
+    const LsbLimits l = lsb_limits(rr.req, rr.timing);
+    ExactState s;
+    const uint64_t pick = g() % 6;
+    const i128 raw_v = (i128(int64_t(g())) << 20) ^ i128(g() & 0xfffff);
+    s.velocity = pick == 0 ? raw_v : pick == 1 ? l.v_rate : pick == 2 ? -l.v_rate : i128(g() % 1000) - 500;
+    const int64_t extremes[] = {INT64_MIN, INT64_MAX, l.a_max, -l.a_max, 1, -1};
+    s.acceleration = pick < 3 ? extremes[g() % 6] : int64_t(g());
+    s.frac = g() % 4 == 0 ? (u128(g()) << 64 | g()) : u128(g()) & (kOne - 1);
+    if (g() % 8 == 0) rr.req.distance = (g() % 2 ? 1 : -1) * PlannerLimits::kMaxDistance;
+    const PlanResult res = planner.plan_from_state(s, rr.req, rr.timing);
+    if (const auto* p = std::get_if<Plan>(&res)) {
+      ++planned;
+      expect_exact_from_state(*p, s, rr.req, rr.timing);
+      if (HasFailure()) return;
+    } else {
+      EXPECT_FALSE(std::get<Error>(res).message.empty());
+      EXPECT_NE(std::get<Error>(res).parameter, "internal") << std::get<Error>(res).message;
+    }
+  }
+  const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  std::printf("plan_from_state fuzz: 3000 calls, %d planned, %.1f s\n", planned, secs);
+}
+
+TEST(PlanFromState, OneCallTakesWellUnder100Microseconds) {
+  std::mt19937_64 g(15);
+  std::vector<std::pair<scurve::test::RandomRequest, ExactState>> set;
+  for (int i = 0; i < 2000; ++i) {
+    auto rr = scurve::test::random_request(g, Clock{});
+    const ExactState s = random_state(g, rr.req, rr.timing);
+    set.push_back({rr, s});
+  }
+  const Planner planner;
+  std::vector<double> us;
+  for (const auto& [rr, s] : set) {
+    const auto t0 = std::chrono::steady_clock::now();
+    const PlanResult res = planner.plan_from_state(s, rr.req, rr.timing);
+    us.push_back(std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count());
+    (void)res;
+  }
+  std::sort(us.begin(), us.end());
+  std::printf("plan_from_state: median %.1f us, 90%% %.1f us, 99%% %.1f us, max %.1f us\n", us[us.size() / 2],
+              us[us.size() * 9 / 10], us[us.size() * 99 / 100], us.back());
+  EXPECT_LT(us[us.size() / 2], 100.0);
+}
