@@ -1322,7 +1322,8 @@ bool push_continued_ramp(RowList& rows, int64_t a0m, i128 dv, int s, const Limit
   const RampPhases ph = ramp_phases(s);
   // Continuous peak: (ap^2 - a0^2) / (2 j_up) + ap^2 / (2 j_down) = dv.
   const double a0d = double(a0m);
-  const double ap = std::sqrt((double(dv) + a0d * a0d * 0.5 / double(j_up)) / (0.5 / double(j_up) + 0.5 / double(j_down)));
+  const double ap =
+      std::sqrt((double(dv) + a0d * a0d * 0.5 / double(j_up)) / (0.5 / double(j_up) + 0.5 / double(j_down)));
   int64_t a = std::clamp<int64_t>(int64_t(std::min(ap, double(lim.a_max))), a0m, lim.a_max);
   for (int iter = 0; iter < 400; ++iter) {
     RowList ramp;
@@ -1472,6 +1473,9 @@ PlanResult Planner::plan_from_state(const ExactState& start, const MoveRequest& 
   const auto plan_to = [&](double v_end) -> PlanResult {
     const i128 ve = to_lsb(v_end);
     PlanResult best = plan_continuation(junction, settle_rows, req.distance, req.v_cruise, ve, lim, clock_, false);
+    // Braking on below the settle speed only pays if settling leaves the
+    // speed above the cruise speed, or nothing else fits.
+    if (st.s < 0 && st.v_settle <= to_lsb(req.v_cruise) && std::holds_alternative<Plan>(best)) return best;
     // The plateau's range on the continued ramp's side of the settle speed.
     const double top_phys = std::max(req.v_cruise, v_end);
     double lo = 0, hi = 0;

@@ -555,8 +555,8 @@ ExactState random_state(std::mt19937_64& g, const MoveRequest& r, const PulseTim
   const double pick = u(g);
   const double v_frac = pick < 0.1 ? 0.0 : pick < 0.2 ? 1.0 - u(g) * 1e-3 : u(g) * u(g);
   // Mostly up to the request's own speeds (a running move's), some up to the step-rate limit.
-  const double v_top = u(g) < 0.25 ? double(l.v_rate)
-                                   : std::min(double(l.v_rate), std::max(r.v_start, r.v_cruise) * vel_lsb_per_unit(Clock{}));
+  const double v_request = std::max(r.v_start, r.v_cruise) * vel_lsb_per_unit(Clock{});
+  const double v_top = u(g) < 0.25 ? double(l.v_rate) : std::min(double(l.v_rate), v_request);
   s.velocity = dir * i128(v_top * v_frac);
   const double a_frac = u(g) < 0.1 ? 1.0 : u(g);
   // Half of them small enough to end (at the jerk limit) within the speed range, as a running move's.
