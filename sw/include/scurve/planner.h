@@ -188,8 +188,14 @@ class Planner {
   // go the way the acceleration points, the ramp continues (jerk on to the
   // plan's peak, hold, jerk down) straight to the plateau; the faster of the
   // two is kept. Trapezoid: the acceleration steps anyway, as plan_from.
-  // Duration against the continuous time-optimal profile: see the test
-  // PlanFromState.DurationIsNearTheContinuousTimeOptimum.
+  // Duration against the continuous time-optimal profile for the same start
+  // state, limits and travel (test PlanFromState.DurationIsNearTheContinuous-
+  // TimeOptimum; symmetric jerk, speeds and settle speed <= v_cruise, moves
+  // of >= 2000 clocks): at most 0.65 % longer over 2,600 random starts
+  // (0.77 % over 43,000), the worst on moves of about a pulse; plan_from
+  // loses up to 0.39 % on the same requests. Not measured: asymmetric jerks
+  // and starts whose speed is or must get above v_cruise (there the plan
+  // comes down to v_cruise as plan_from does from a start above it).
   PlanResult plan_from_state(const ExactState& start, const MoveRequest& req, const PulseTiming& timing) const;
 
   // Velocity mode: rows from the exact constant velocity v_from (LSB per
