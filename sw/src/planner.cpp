@@ -1113,9 +1113,10 @@ PlanResult plan_continuation(const JunctionState& start, const std::vector<Row>&
   TravelWindow window = continuation_window(start.frac, distance);
   i128 prefix_peak = vs;
   for (const Row& r : prefix) {
-    window.lo -= row_gain(r);
-    window.hi -= row_gain(r);
-    window.aim -= row_gain(r);
+    const i128 gain = row_gain(r);
+    window.lo -= gain;
+    window.hi -= gain;
+    window.aim -= gain;
     vs = vel_after(r.vel0, r.acc0, r.jerk, r.clocks);
     prefix_peak = std::max({prefix_peak, r.vel0, vs});
   }

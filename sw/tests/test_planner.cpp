@@ -908,7 +908,8 @@ TEST(PlanFromState, ExtremeAndRandomInputsNeverCrashOrHang) {
   const Planner planner;
   const auto t0 = std::chrono::steady_clock::now();
   int planned = 0;
-  for (int i = 0; i < 3000; ++i) {
+  const int calls = 3000;
+  for (int i = 0; i < calls; ++i) {
     auto rr = scurve::test::random_request(g, Clock{});
     const LsbLimits l = lsb_limits(rr.req, rr.timing);
     ExactState s;
@@ -930,7 +931,7 @@ TEST(PlanFromState, ExtremeAndRandomInputsNeverCrashOrHang) {
     }
   }
   const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  std::printf("plan_from_state fuzz: 3000 calls, %d planned, %.1f s\n", planned, secs);
+  std::printf("plan_from_state fuzz: %d calls, %d planned, %.1f s\n", calls, planned, secs);
 }
 
 TEST(PlanFromState, OneCallTakesWellUnder100Microseconds) {
