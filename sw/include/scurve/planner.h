@@ -190,12 +190,12 @@ class Planner {
   // two is kept. Trapezoid: the acceleration steps anyway, as plan_from.
   // Duration against the continuous time-optimal profile for the same start
   // state, limits and travel (test PlanFromState.DurationIsNearTheContinuous-
-  // TimeOptimum; symmetric jerk, speeds and settle speed <= v_cruise, moves
-  // of >= 2000 clocks): at most 0.65 % longer over 2,600 random starts
-  // (0.77 % over 43,000), the worst on moves of about a pulse; plan_from
-  // loses up to 0.39 % on the same requests. Not measured: asymmetric jerks
-  // and starts whose speed is or must get above v_cruise (there the plan
-  // comes down to v_cruise as plan_from does from a start above it).
+  // TimeOptimum; symmetric jerk, moves of >= 2000 clocks): at most 0.65 %
+  // longer over 2,600 random starts (0.77 % over 43,000), the worst on moves
+  // of about a pulse; plan_from loses up to 0.4 % on the same requests.
+  // Starts above v_cruise (or that must pass it) come down to it when that
+  // fits, as plan_from does: at most 0.4 % longer than the optimum capped at
+  // v_cruise. Not measured: asymmetric jerks.
   PlanResult plan_from_state(const ExactState& start, const MoveRequest& req, const PulseTiming& timing) const;
 
   // Velocity mode: rows from the exact constant velocity v_from (LSB per
