@@ -136,6 +136,45 @@ void BM_PlanFromExactState(benchmark::State& state) {
 }
 BENCHMARK(BM_PlanFromExactState)->MinTime(2.0);
 
+// The same starts with an acceleration (plan_from_state, a move retargeted on
+// the fly): up to the acceleration limit, either sign, small enough that
+// ending it at the jerk limit keeps the speed within 0 .. v_start + its own.
+void BM_PlanFromStateWithAcceleration(benchmark::State& state) {
+  const auto& set = accepted_requests();
+  const Planner planner;
+  std::mt19937_64 g(14);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::vector<ExactState> starts;
+  for (const auto& rr : set) {
+    const int dir = rr.req.distance < 0 ? -1 : 1;
+    const Clock c{};
+    ExactState st;
+    const double v = std::floor(rr.req.v_start * vel_lsb_per_unit(c));
+    st.velocity = dir * i128(v);
+    const double j = std::floor(rr.req.j_max * jerk_lsb_per_unit(c));
+    const double a_max = std::floor(rr.req.a_max * acc_lsb_per_unit(c));
+    const double a = std::min(a_max, std::sqrt(2.0 * j * std::max(v, 1.0))) * u(g);
+    st.acceleration = int64_t(a) * (u(g) < 0.5 ? 1 : -1) * dir;
+    st.frac = (u128(g()) << 16) & (kOne - 1);
+    starts.push_back(st);
+  }
+  std::vector<double> per_plan;
+  per_plan.reserve(1 << 16);
+  size_t i = 0, accepted = 0;
+  for (auto _ : state) {
+    const size_t k = i++ % set.size();
+    const double t0 = thread_cpu_seconds();
+    PlanResult r = planner.plan_from_state(starts[k], set[k].req, set[k].timing);
+    const double t1 = thread_cpu_seconds();
+    accepted += std::holds_alternative<Plan>(r);
+    benchmark::DoNotOptimize(r);
+    if (per_plan.size() < per_plan.capacity()) per_plan.push_back(t1 - t0);
+  }
+  report_per_plan(state, per_plan, set.size());
+  state.counters["accepted"] = i ? double(accepted) / double(i) : 0.0;
+}
+BENCHMARK(BM_PlanFromStateWithAcceleration)->MinTime(2.0);
+
 // Streams of the unit tests' mix: 20 % direction changes, 60 % short moves
 // (1..2000 pulses) limited by the look-ahead, the rest up to 100000 pulses.
 std::vector<StreamMove> random_stream(size_t n, double v_max, bool short_only) {

@@ -1087,25 +1087,45 @@ PlanResult plan_magnitude(const MoveRequest& req, const PulseTiming& timing, dou
 
 namespace detail {
 
-PlanResult plan_continuation(const JunctionState& start, int64_t distance, double v_cruise, i128 ve,
-                             const Limits& lim, Clock clock, bool messages) {
+TravelWindow continuation_window(u128 frac, int64_t distance) {
   const int dir = distance < 0 ? -1 : 1;
   const int64_t dist = distance * dir;
-  const i128 vs = dir * start.velocity;
-  const i128 f = i128(start.frac);
+  const i128 f = i128(frac);
   const i128 one = i128(kOne);
+  // Aimed mid-pulse, as a move from rest ends, so a following reversal has
+  // half a pulse before its first step.
+  if (dir > 0) return {dist * one - f, (dist + 1) * one - f, dist * one + one / 2 - f};
+  // End in (f - (dist+1), f - dist] below ... mirrored, integers.
+  return {(dist - 1) * one + f + 1, dist * one + f + 1, dist * one - one / 2 + f};
+}
+
+PlanResult plan_continuation(const JunctionState& start, int64_t distance, double v_cruise, i128 ve,
+                             const Limits& lim, Clock clock, bool messages) {
+  return plan_continuation(start, {}, distance, v_cruise, ve, lim, clock, messages);
+}
+
+PlanResult plan_continuation(const JunctionState& start, const std::vector<Row>& prefix, int64_t distance,
+                             double v_cruise, i128 ve, const Limits& lim, Clock clock, bool messages) {
+  const int dir = distance < 0 ? -1 : 1;
+  i128 vs = dir * start.velocity;
   // Travel (magnitude) that ends the move in [distance, distance + 1) pulses
-  // from the start's integer part; aimed mid-pulse, as a move from rest ends,
-  // so a following reversal has half a pulse before its first step.
-  TravelWindow window;
-  if (dir > 0) {
-    window = {dist * one - f, (dist + 1) * one - f, dist * one + one / 2 - f};
-  } else {  // end in (f - (dist+1), f - dist] below ... mirrored, integers
-    window = {(dist - 1) * one + f + 1, dist * one + f + 1, dist * one - one / 2 + f};
+  // from the start's integer part, less what the prefix covers.
+  TravelWindow window = continuation_window(start.frac, distance);
+  i128 prefix_peak = vs;
+  for (const Row& r : prefix) {
+    const i128 gain = row_gain(r);
+    window.lo -= gain;
+    window.hi -= gain;
+    window.aim -= gain;
+    vs = vel_after(r.vel0, r.acc0, r.jerk, r.clocks);
+    prefix_peak = std::max({prefix_peak, r.vel0, vs});
   }
   const double v_start = vel_to_phys(vs, clock);
   const double v_end = vel_to_phys(ve, clock);
   auto solved = solve_profile(vs, v_cruise, ve, window, lim);
+  if (!prefix.empty() && std::holds_alternative<Unsolvable>(solved) && vs == ve && window.lo <= 0 && window.hi > 0) {
+    solved = Solved{{}, 0, vs, vs, 0};  // the prefix alone ends in the window at the end speed
+  }
   if (const auto* why = std::get_if<Unsolvable>(&solved)) {
     if (!messages) return PlanError{why->end_unreachable ? "v_end" : "distance", {}};
     if (!why->end_unreachable) {
@@ -1115,7 +1135,8 @@ PlanResult plan_continuation(const JunctionState& start, int64_t distance, doubl
                                           "distance={}",
                                           num(v_end), num(v_start), distance)};
   }
-  const Solved& sol = std::get<Solved>(solved);
+  Solved& sol = std::get<Solved>(solved);
+  if (!prefix.empty()) sol.rows.insert(sol.rows.begin(), prefix.begin(), prefix.end());
   Plan plan;
   plan.clock = clock;
   plan.segments = to_segments(sol.rows, dir);
@@ -1124,7 +1145,7 @@ PlanResult plan_continuation(const JunctionState& start, int64_t distance, doubl
   plan.v_plateau = vel_to_phys(sol.plateau, clock);
   plan.v_end_used = v_end;
   plan.v_end_actual = vel_to_phys(sol.v_end, clock);
-  const i128 v_cap = std::max({std::min(i128(std::floor(v_cruise * lim.units.vel)), lim.v_rate), vs, ve});
+  const i128 v_cap = std::max({std::min(i128(std::floor(v_cruise * lim.units.vel)), lim.v_rate), prefix_peak, ve});
   if (auto e = check_table(plan, lim, v_cap, dir, sol, ve)) return *e;
   return plan;
 }
@@ -1183,18 +1204,10 @@ VelocityResult Planner::plan_velocity(i128 v_from, const VelocityRequest& req, c
   return out;
 }
 
-PlanResult Planner::plan_from(const JunctionState& start, const MoveRequest& req, const PulseTiming& timing) const {
-  // The start speed is the exact state; validate the rest as plan() does.
-  MoveRequest checked = req;
-  checked.v_start = 0;
-  if (auto e = check_request(checked, timing, clock_)) return *e;
-  const Limits lim = [&] {
-    Limits l = make_limits(req, timing, clock_);
-    l.exact_transitions = true;
-    l.least_above_cruise = true;
-    return l;
-  }();
-  const int dir = req.distance < 0 ? -1 : 1;
+namespace {
+
+// The start fraction and velocity of a move from an exact state.
+std::optional<PlanError> check_start(const JunctionState& start, int dir, const Limits& lim) {
   if (start.frac >= kOne) {
     return PlanError{"start_frac", fmt::format("start_frac={}: must be < 2^{} (one pulse)",
                                                to_hex_u128(start.frac, 128), hw::FracBits)};
@@ -1209,15 +1222,30 @@ PlanResult Planner::plan_from(const JunctionState& start, const MoveRequest& req
                      fmt::format("start_velocity={} LSB: a direction change needs junction speed 0",
                                  to_string_i128(start.velocity))};
   }
+  return std::nullopt;
+}
+
+}  // namespace
+
+PlanResult Planner::plan_from(const JunctionState& start, const MoveRequest& req, const PulseTiming& timing) const {
+  // The start speed is the exact state; validate the rest as plan() does.
+  MoveRequest checked = req;
+  checked.v_start = 0;
+  if (auto e = check_request(checked, timing, clock_)) return *e;
+  const Limits lim = [&] {
+    Limits l = make_limits(req, timing, clock_);
+    l.exact_transitions = true;
+    l.least_above_cruise = true;
+    return l;
+  }();
+  const int dir = req.distance < 0 ? -1 : 1;
+  if (auto e = check_start(start, dir, lim)) return *e;
+  const i128 speed = start.velocity < 0 ? -start.velocity : start.velocity;
   const i128 ve = std::min(i128(std::floor(req.v_end * lim.units.vel)), lim.v_rate);
   PlanResult r = plan_continuation(start, req.distance, req.v_cruise, ve, lim, clock_);
   if (std::holds_alternative<PlanError>(r) && req.adjust_end_speed && std::get<PlanError>(r).parameter == "v_end") {
     // The nearest reachable end speed (a cruise at the start speed always is).
-    const int64_t dist = req.distance * dir;
-    const i128 f = i128(start.frac), one = i128(kOne);
-    const TravelWindow window = dir > 0 ? TravelWindow{dist * one - f, (dist + 1) * one - f, dist * one + one / 2 - f}
-                                        : TravelWindow{(dist - 1) * one + f + 1, dist * one + f + 1,
-                                                       dist * one - one / 2 + f};
+    const TravelWindow window = continuation_window(start.frac, req.distance);
     std::optional<Plan> best;
     const i128 p_cruise = std::min(i128(std::floor(req.v_cruise * lim.units.vel)), lim.v_rate);
     if (const std::optional<i128> e = reachable_end_speed(speed, ve, p_cruise, window, lim)) {
@@ -1240,6 +1268,312 @@ PlanResult Planner::plan_from(const JunctionState& start, const MoveRequest& req
     }
   }
   return r;
+}
+
+namespace {
+
+// The rows of a retargeted move's opening are built in magnitude form
+// (direction +1) from the start state (v0, a0), a0 != 0, s = sign(a0).
+struct RampPhases {
+  Phase up, hold, down;
+};
+RampPhases ramp_phases(int s) {
+  if (s > 0) return {Phase::PhAccJerkUp, Phase::PhAccConst, Phase::PhAccJerkDown};
+  return {Phase::PhDecJerkUp, Phase::PhDecConst, Phase::PhDecJerkDown};
+}
+int64_t jerk_in(int s, const Limits& lim) { return s > 0 ? lim.j_acc_in : lim.j_dec_in; }
+int64_t jerk_out(int s, const Limits& lim) { return s > 0 ? lim.j_acc_out : lim.j_dec_out; }
+
+// Ramps the acceleration s * a_mag to exactly 0 at jerk <= j: ceil(a_mag / j)
+// clocks, the first (a_mag mod clocks) one LSB steeper, as make_transition
+// ends its ramps.
+void push_ramp_down(RowList& rows, int64_t a_mag, int s, int64_t j, Phase phase) {
+  if (a_mag <= 0) return;
+  const int64_t n = a_mag / j + (a_mag % j != 0);
+  const int64_t jd = a_mag / n;
+  const int64_t r = a_mag - n * jd;
+  if (r > 0) rows.push_back({phase, uint64_t(r), -s * (jd + 1), 0, 0});
+  rows.push_back({phase, uint64_t(n - r), -s * jd, 0, 0});
+}
+
+// Fills the exact starting values of the rows from (v, a); returns the end
+// state and the travel.
+struct RowsEnd {
+  i128 v = 0;
+  int64_t a = 0;
+  i128 gain = 0;
+};
+RowsEnd chain_rows(Row* begin, Row* end, i128 v, int64_t a) {
+  RowsEnd out{v, a, 0};
+  for (Row* r = begin; r != end; ++r) {
+    r->vel0 = out.v;
+    r->acc0 = out.a;
+    out.gain += row_gain(*r);
+    out.v = vel_after(r->vel0, r->acc0, r->jerk, r->clocks);
+    out.a = int64_t(acc_after(r->acc0, r->jerk, r->clocks));
+  }
+  return out;
+}
+
+// The start acceleration s * a0m carries on: jerk up to a peak (<= a_max),
+// hold, jerk down to exactly 0, changing the speed by exactly dv (> 0, in
+// direction s): make_transition's shape entered mid-ramp, and its exact tail.
+bool push_continued_ramp(RowList& rows, int64_t a0m, i128 dv, int s, const Limits& lim) {
+  const int64_t j_up = jerk_in(s, lim), j_down = jerk_out(s, lim);
+  const RampPhases ph = ramp_phases(s);
+  // Continuous peak: (ap^2 - a0^2) / (2 j_up) + ap^2 / (2 j_down) = dv.
+  const double a0d = double(a0m);
+  const double ap =
+      std::sqrt((double(dv) + a0d * a0d * 0.5 / double(j_up)) / (0.5 / double(j_up) + 0.5 / double(j_down)));
+  int64_t a = std::clamp<int64_t>(int64_t(std::min(ap, double(lim.a_max))), a0m, lim.a_max);
+  for (int iter = 0; iter < 400; ++iter) {
+    RowList ramp;
+    const int64_t rise = a - a0m;
+    const int64_t n1 = rise / j_up + (rise % j_up != 0);
+    const int64_t j1 = n1 > 0 ? rise / n1 : 0;
+    const int64_t a1 = a0m + n1 * j1;
+    if (n1 > 0) ramp.push_back({ph.up, uint64_t(n1), s * j1, 0, 0});
+    push_ramp_down(ramp, a1, s, j_down, ph.down);
+    const i128 dv_jerk = s * chain_rows(ramp.begin(), ramp.end(), 0, s * a0m).v;
+    if (dv_jerk > dv) {
+      if (a == a0m) return false;  // ending the start acceleration alone overshoots dv
+      // The change beyond ending a0 grows with ap^2 - a0^2: scale that.
+      const double dv0 = a0d * a0d * 0.5 / double(j_down);
+      const double ratio = std::max(0.0, (double(dv) - dv0) / (double(dv_jerk) - dv0));
+      const double ad = double(a);
+      const double next = std::sqrt(a0d * a0d + (ad * ad - a0d * a0d) * ratio * 0.999);
+      a = std::clamp<int64_t>(iter < 8 ? int64_t(next) : a0m + (a - a0m) / 2, a0m, a - 1);
+      continue;
+    }
+    const i128 n2 = (dv - dv_jerk) / a1;
+    bool held = false;
+    for (const Row& r : ramp) {
+      if (!held && r.phase == ph.down && n2 > 0) {
+        rows.push_back({ph.hold, uint64_t(n2), 0, 0, 0});
+        held = true;
+      }
+      rows.push_back(r);
+    }
+    append_exact_tail(rows, dv - dv_jerk - n2 * a1, s, std::min(j_up, j_down), lim.a_max, ph.up, ph.down);
+    return true;
+  }
+  return false;
+}
+
+// A retargeted move's start, magnitude form: (v0, a0) with a0 != 0, and the
+// speed where ramping a0 to 0 at full jerk ends (the settle speed).
+struct StartRamp {
+  i128 v0 = 0;
+  int64_t a0 = 0;
+  int s = 1;
+  i128 v_settle = 0;
+};
+
+// The opening from the start state to speed v at acceleration 0, in `out`:
+// beyond the settle speed in a0's direction the ramp carries on; otherwise
+// a0 settles and a transition (through the same full jerk) goes on to v.
+// Returns the travel, or nothing if the rows cannot end at exactly v.
+std::optional<i128> build_opening(std::vector<Row>& out, const StartRamp& st, i128 v, const Limits& lim) {
+  RowList rows;
+  const int64_t a0m = st.s * st.a0;
+  if (st.s * (v - st.v_settle) > 0) {
+    if (!push_continued_ramp(rows, a0m, st.s * (v - st.v0), st.s, lim)) return std::nullopt;
+  } else {
+    push_ramp_down(rows, a0m, st.s, jerk_out(st.s, lim), ramp_phases(st.s).down);
+    Transition t;
+    transition_to(t, st.v_settle, v, lim);
+    if (t.too_far) return std::nullopt;
+    for (const Row& r : t.rows) rows.push_back(r);
+  }
+  const RowsEnd end = chain_rows(rows.begin(), rows.end(), st.v0, st.a0);
+  if (end.a != 0 || end.v != v) return std::nullopt;
+  out.assign(rows.begin(), rows.end());
+  return end.gain;
+}
+
+}  // namespace
+
+PlanResult Planner::plan_from_state(const ExactState& start, const MoveRequest& req, const PulseTiming& timing) const {
+  const JunctionState junction{start.velocity, start.frac};
+  if (start.acceleration == 0) return plan_from(junction, req, timing);
+  MoveRequest checked = req;
+  checked.v_start = 0;
+  if (auto e = check_request(checked, timing, clock_)) return *e;
+  Limits lim = make_limits(req, timing, clock_);
+  lim.exact_transitions = true;
+  lim.least_above_cruise = true;
+  const int dir = req.distance < 0 ? -1 : 1;
+  if (auto e = check_start(junction, dir, lim)) return *e;
+  const i128 a_mag = start.acceleration < 0 ? -i128(start.acceleration) : i128(start.acceleration);
+  if (a_mag > lim.a_max) {
+    return PlanError{"start_acceleration", fmt::format("start_acceleration={} LSB: exceeds a_max {} LSB",
+                                                       start.acceleration, lim.a_max)};
+  }
+  // Trapezoid rows step the acceleration anyway: plan as from a = 0.
+  if (lim.trapezoid) return plan_from(junction, req, timing);
+
+  StartRamp st;
+  st.v0 = dir * start.velocity;
+  st.a0 = dir * start.acceleration;
+  st.s = st.a0 > 0 ? 1 : -1;
+  const auto refuse_ramp = [&](const char* why, const std::string& bound) {
+    return PlanError{"start_acceleration",
+                     fmt::format("start_acceleration={} LSB at start_velocity={} LSB: {} {}", start.acceleration,
+                                 to_string_i128(start.velocity), why, bound)};
+  };
+  if (st.v0 == 0 && st.a0 < 0) {
+    return refuse_ramp("points against the move from rest (a reversal needs rest first): needs", "0 or the move's "
+                       "direction");
+  }
+  // The settle speed: first in double (a far estimate would overflow the exact sums), then exactly.
+  const int64_t j_settle = jerk_out(st.s, lim);
+  const double settle_est = double(st.v0) + st.s * double(a_mag) * double(a_mag) * 0.5 / double(j_settle);
+  const std::string rate_bound = fmt::format("the step-rate limit {} LSB", to_string_i128(lim.v_rate));
+  if (settle_est > 1.01 * double(lim.v_rate) + 2.0 * double(a_mag)) {
+    return refuse_ramp("ending it at the jerk limit passes", rate_bound);
+  }
+  if (settle_est < -2.0 * double(a_mag)) {
+    return refuse_ramp("ending it at the jerk limit reverses the velocity: needs a speed of at least",
+                       fmt::format("{} LSB", num(-settle_est + double(st.v0))));
+  }
+  std::vector<Row> settle_rows;
+  {
+    RowList rows;
+    push_ramp_down(rows, st.s * st.a0, st.s, j_settle, ramp_phases(st.s).down);
+    settle_rows.assign(rows.begin(), rows.end());
+    st.v_settle = chain_rows(settle_rows.data(), settle_rows.data() + settle_rows.size(), st.v0, st.a0).v;
+  }
+  if (st.v_settle > lim.v_rate) return refuse_ramp("ending it at the jerk limit passes", rate_bound);
+  if (st.v_settle < 0) {
+    return refuse_ramp("ending it at the jerk limit reverses the velocity: needs a speed of at least",
+                       fmt::format("{} LSB", to_string_i128(st.v0 - st.v_settle)));
+  }
+
+  const double vel = lim.units.vel;
+  const auto to_lsb = [&](double v) { return std::min(i128(std::floor(v * vel)), lim.v_rate); };
+  const TravelWindow window = continuation_window(start.frac, req.distance);
+  // The largest double whose speed is <= v (LSB), or the smallest one >= v.
+  const auto phys_at_most = [&](i128 v) {
+    double x = vel_to_phys(v, clock_);
+    for (int k = 0; k < 64 && to_lsb(x) > v; ++k) x = std::nextafter(x, 0.0);
+    return x;
+  };
+  const auto phys_at_least = [&](i128 v) {
+    double x = vel_to_phys(v, clock_);
+    for (int k = 0; k < 64 && to_lsb(x) < v; ++k) x = std::nextafter(x, HUGE_VAL);
+    return x;
+  };
+
+  // The move to end speed v_end (pulses/s): the faster of
+  //   * settle, then plan_from's solver from the settle speed;
+  //   * the opening straight to the highest plateau whose opening and final
+  //     transition fit the window, then a cruise at it (the continued ramp,
+  //     or a plateau on the settle speed's far side when settling first
+  //     would leave the start speed above the cruise speed).
+  std::vector<Row> opening;
+  const auto plan_to = [&](double v_end) -> PlanResult {
+    const i128 ve = to_lsb(v_end);
+    PlanResult best = plan_continuation(junction, settle_rows, req.distance, req.v_cruise, ve, lim, clock_, false);
+    // Braking on below the settle speed only pays if settling leaves the
+    // speed above the cruise speed, or nothing else fits.
+    if (st.s < 0 && st.v_settle <= to_lsb(req.v_cruise) && std::holds_alternative<Plan>(best)) return best;
+    // The plateau's range on the continued ramp's side of the settle speed.
+    const double top_phys = std::max(req.v_cruise, v_end);
+    double lo = 0, hi = 0;
+    if (st.s > 0) {
+      lo = std::max(phys_at_least(st.v_settle + 1), v_end);
+      hi = top_phys;
+    } else {
+      lo = v_end;
+      hi = to_lsb(top_phys) < st.v_settle ? top_phys : phys_at_most(st.v_settle - 1);
+    }
+    if (!(lo <= hi) || to_lsb(lo) > to_lsb(hi) || (st.s > 0 && to_lsb(lo) <= st.v_settle) ||
+        (st.s < 0 && to_lsb(hi) >= st.v_settle)) {
+      return best;
+    }
+    // The highest plateau whose travel stays within the aim (mid-pulse, as
+    // the solver aims), else the lowest one if it still ends in the window.
+    const auto fits = [&](double v, i128 bound) {
+      const i128 p = to_lsb(v);
+      const std::optional<i128> gain = build_opening(opening, st, p, lim);
+      if (!gain) return false;
+      const Transition last = transition_to(p, ve, lim);
+      return !last.too_far && *gain + last.gain <= bound;
+    };
+    if (!fits(hi, window.aim)) {
+      if (fits(lo, window.aim)) {
+        for (int it = 0; it < 48; ++it) {  // hi does not fit, lo does
+          const i128 gap = to_lsb(hi) - to_lsb(lo);
+          if (gap <= std::max<i128>(1, to_lsb(hi) >> kBracketBits)) break;
+          const double mid = 0.5 * (lo + hi);
+          if (mid <= lo || mid >= hi) break;
+          (fits(mid, window.aim) ? lo : hi) = mid;
+        }
+      } else if (!fits(lo, window.hi - 1)) {
+        return best;
+      }
+      hi = lo;
+      if (!fits(hi, window.hi - 1)) return best;  // (rebuilds the opening at hi)
+    }
+    // A plateau of 0 (a stop short of the target) lets the solver creep on.
+    PlanResult ramp = plan_continuation(junction, opening, req.distance, to_lsb(hi) > 0 ? hi : req.v_cruise, ve,
+                                        lim, clock_, false);
+    const Plan* a = std::get_if<Plan>(&best);
+    const Plan* b = std::get_if<Plan>(&ramp);
+    if (b && (!a || b->total_clocks < a->total_clocks)) return ramp;
+    return best;
+  };
+
+  PlanResult r = plan_to(req.v_end);
+  if (auto* p = std::get_if<Plan>(&r)) {
+    p->v_end_used = req.v_end;
+    return r;
+  }
+  const i128 ve = to_lsb(req.v_end);
+  const auto least_travel = [&](i128 v) -> std::optional<i128> { return build_opening(opening, st, v, lim); };
+  if (req.adjust_end_speed && ve != st.v_settle) {
+    // The reachable end speeds lie around the settle speed (the opening to
+    // them travels least there); the one nearest v_end, a few tries nearer.
+    double good = phys_at_most(st.v_settle), bad = req.v_end;
+    const auto reachable = [&](double v) {
+      const std::optional<i128> g = least_travel(to_lsb(v));
+      return g && *g < window.hi;
+    };
+    if (reachable(good)) {
+      for (int it = 0; it < 60; ++it) {
+        const double mid = 0.5 * (good + bad);
+        if (mid == good || mid == bad || to_lsb(good) == to_lsb(bad)) break;
+        (reachable(mid) ? good : bad) = mid;
+      }
+      for (int k = 0; k < 6; ++k) {
+        PlanResult m = plan_to(good);
+        if (auto* p = std::get_if<Plan>(&m)) {
+          p->end_speed_adjusted = true;
+          p->v_end_used = good;
+          return m;
+        }
+        good += (phys_at_most(st.v_settle) - good) * 0.25;
+      }
+    }
+  }
+  // Nothing fits: the opening straight to the end speed travels least.
+  const std::optional<i128> least = least_travel(ve);
+  std::string need = "more than 1e12";
+  if (least) {
+    const i128 one = i128(kOne);
+    const i128 c = window.hi - i128(req.distance * dir) * one;  // hi = distance * one + c
+    const i128 over = *least - c;
+    need = fmt::format("{}", to_string_i128(over < 0 ? 1 : std::max<i128>(1, over / one + 1)));
+  }
+  const std::string from = fmt::format("from the start state (velocity {} LSB, acceleration {} LSB)",
+                                       to_string_i128(start.velocity), start.acceleration);
+  if (ve == 0) {
+    return PlanError{"distance", fmt::format("distance={}: too short to stop {}: needs distance >= {} pulses",
+                                             req.distance, from, need)};
+  }
+  return PlanError{"v_end", fmt::format("v_end={} unreachable {}: needs distance >= {} pulses, got {}{}",
+                                        num(req.v_end), from, need, req.distance * dir,
+                                        req.adjust_end_speed ? "" : " (or allow --adjust-end-speed)")};
 }
 
 TableReport run_table(const std::vector<Segment>& rows, u128 pos_frac0, int direction) {

@@ -181,6 +181,18 @@ double closed_form_travel(double x, double y, double a, double j);
 PlanResult plan_continuation(const JunctionState& start, int64_t distance, double v_cruise, i128 ve,
                              const Limits& lim, Clock clock, bool messages = true);
 
+// plan_continuation after `prefix`: rows (magnitude form, chained from the
+// start state) that end at acceleration 0; the solved move continues from
+// their end speed, over the window less their travel. An empty prefix is
+// plan_continuation itself.
+PlanResult plan_continuation(const JunctionState& start, const std::vector<Row>& prefix, int64_t distance,
+                             double v_cruise, i128 ve, const Limits& lim, Clock clock, bool messages = true);
+
+// The travel (magnitude, LSB) that ends a move of `distance` pulses from the
+// position fraction `frac` in [distance, distance + 1) pulses from the
+// start's integer part, aimed mid-pulse.
+TravelWindow continuation_window(u128 frac, int64_t distance);
+
 // The fields of a window (axis name, bounds within +-kMaxPosition, min <=
 // max) and a start position, before any move is checked against them.
 std::optional<Error> check_window_fields(const std::optional<SoftLimits>& window, int64_t start_position);
