@@ -18,7 +18,10 @@ RetargetResult plan_retarget(const Planner& planner, const Plan& running, const 
   uint64_t clock = 0;
   for (size_t k = 0; k < running.segments.size(); ++k) {
     const Segment& s = running.segments[k];
-    if (k > 0 && double(clock) >= earliest && s.acc0 == 0 && s.vel0 != 0) {
+    // Any boundary of the motion (plan_from_state starts at any acceleration);
+    // a trapezoid's rows step their acceleration, so it needs a = 0 there.
+    const bool startable = s.vel0 != 0 && (request.kind == ProfileKind::SCurve || s.acc0 == 0);
+    if (k > 0 && double(clock) >= earliest && startable) {
       const i128 one = i128(kOne);
       const i128 whole = pos >= 0 ? pos / one : -((-pos + one - 1) / one);
       RetargetPlan r;
@@ -36,7 +39,7 @@ RetargetResult plan_retarget(const Planner& planner, const Plan& running, const 
       MoveRequest more = request;  // the limits, the end speed and the window
       more.distance = rest;
       more.start_position = request.start_position + r.position;
-      PlanResult p = planner.plan_from({s.vel0, u128(pos - whole * one)}, more, timing);
+      PlanResult p = planner.plan_from_state({s.vel0, s.acc0, u128(pos - whole * one)}, more, timing);
       if (const Error* e = std::get_if<Error>(&p)) {
         return Error{"retarget_distance", fmt::format("retarget_distance={}: from {} pulses at the boundary of row "
                                                       "{}: {}",
@@ -48,7 +51,7 @@ RetargetResult plan_retarget(const Planner& planner, const Plan& running, const 
     pos += pos_gain(s.vel0, s.acc0, s.jerk, s.clocks);
     clock += s.clocks;
   }
-  return Error{"retarget_at", fmt::format("retarget_at={}: no row boundary with zero acceleration from {} s on "
+  return Error{"retarget_at", fmt::format("retarget_at={}: no row boundary in motion from {} s on "
                                           "(with {} clocks to send the rows) before the move ends at {} s",
                                           retarget.at_s, earliest / running.clock.hz, retarget.lead_clocks,
                                           double(clock) / running.clock.hz)};

@@ -32,13 +32,14 @@ struct RetargetPlan {
 };
 using RetargetResult = std::variant<RetargetPlan, Error>;
 
-// The first boundary at or after at_s + lead_clocks whose acceleration is
-// 0 (the start of a cruise or of a deceleration phase, where
-// Planner::plan_from starts), and the plan from its exact state (velocity,
-// position fraction) to the new distance with the request's limits and end
-// speed. Errors name "retarget_at" (no such boundary before the move ends)
-// or "retarget_distance" (the new target is not ahead of the axis there, or
-// too close to reach from that speed: plan_from's message).
+// The first boundary in motion at or after at_s + lead_clocks (for a
+// trapezoid, whose rows step their acceleration, one with acceleration 0),
+// and the plan from its exact state (velocity, acceleration, position
+// fraction: Planner::plan_from_state) to the new distance with the
+// request's limits and end speed. Errors name "retarget_at" (no such
+// boundary before the move ends) or "retarget_distance" (the new target is
+// not ahead of the axis there, or too close to reach from that state: the
+// planner's message with the shortest distance).
 RetargetResult plan_retarget(const Planner& planner, const Plan& running, const MoveRequest& request,
                              const RetargetRequest& retarget, const PulseTiming& timing);
 
