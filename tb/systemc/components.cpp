@@ -409,6 +409,8 @@ class PinCoreImpl : public PinCore {
     o.overshoot = p.overshoot;
     o.move_done = p.move_done;
     o.fifo_full = p.fifo_full;
+    o.row_count = p.row_count;
+    o.retarget_refused = p.retarget_refused;
     o.move_idx = p.move_idx;
     o.boundary_pos = int32_t(p.boundary_pos);
     o.fifo_level = uint8_t(p.fifo_level);

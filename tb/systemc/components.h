@@ -109,7 +109,8 @@ struct PinOutputs {
   bool step = false, dir = false, en = false, busy = false, done = false;
   bool fault_table = false, fault_overrun = false;
   bool underrun = false, discont = false, move_done = false, fifo_full = false;
-  bool stopping = false, overshoot = false;
+  bool stopping = false, overshoot = false, retarget_refused = false;
+  uint32_t row_count = 0;
   uint32_t phase = 0, pulse_count = 0, ref_pos_int = 0, seg_idx = 0, step_pending = 0;
   uint32_t move_idx = 0, boundary_pos = 0, fifo_level = 0;
   uint64_t ref_acc = 0, ref_jerk = 0;

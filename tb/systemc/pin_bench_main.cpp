@@ -57,7 +57,8 @@ class PinSequencer : public sc_core::sc_module {
   sc_out<FracBv> pos_frac0_o;
 
   sc_in<bool> step_i, dir_i, en_i, busy_i, done_i, fault_table_i, fault_overrun_i;
-  sc_in<bool> underrun_i, discont_i, move_done_i, fifo_full_i, stopping_i, overshoot_i;
+  sc_in<bool> underrun_i, discont_i, move_done_i, fifo_full_i, stopping_i, overshoot_i, retarget_refused_i;
+  sc_in<uint32_t> row_count_i;
   sc_in<uint32_t> phase_i, pulse_count_i, ref_pos_int_i, seg_idx_i, step_pending_i;
   sc_in<uint32_t> move_idx_i, boundary_pos_i, fifo_level_i;
   sc_in<uint64_t> ref_acc_i, ref_jerk_i;
@@ -112,6 +113,8 @@ class PinSequencer : public sc_core::sc_module {
     p.overshoot = overshoot_i.read();
     p.move_done = move_done_i.read();
     p.fifo_full = fifo_full_i.read();
+    p.row_count = row_count_i.read();
+    p.retarget_refused = retarget_refused_i.read();
     p.move_idx = move_idx_i.read();
     p.boundary_pos = boundary_pos_i.read();
     p.fifo_level = fifo_level_i.read();
@@ -341,6 +344,8 @@ int sc_main(int argc, char** argv) {
   seq.overshoot_i(overshoot);
   seq.move_done_i(move_done);
   seq.fifo_full_i(fifo_full);
+  seq.row_count_i(row_count);
+  seq.retarget_refused_i(retarget_refused);
   seq.move_idx_i(move_idx);
   seq.boundary_pos_i(boundary_pos);
   seq.fifo_level_i(fifo_level);
