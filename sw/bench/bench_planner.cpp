@@ -107,6 +107,27 @@ BENCHMARK(BM_PlanSingleMove)->MinTime(2.0);
 
 // The same requests planned from an exact start state (plan_from, as the
 // stream plans each move): start speed v_start in LSB, a random fraction.
+// Times plan(k) for k = 0, 1, ... over a set of n requests (thread CPU
+// time per call) and reports the per-plan distribution and the share
+// accepted.
+template <class PlanFn>
+void time_each_plan(benchmark::State& state, size_t n, PlanFn plan) {
+  std::vector<double> per_plan;
+  per_plan.reserve(1 << 16);
+  size_t i = 0, accepted = 0;
+  for (auto _ : state) {
+    const size_t k = i++ % n;
+    const double t0 = thread_cpu_seconds();
+    PlanResult r = plan(k);
+    const double t1 = thread_cpu_seconds();
+    accepted += std::holds_alternative<Plan>(r);
+    benchmark::DoNotOptimize(r);
+    if (per_plan.size() < per_plan.capacity()) per_plan.push_back(t1 - t0);
+  }
+  report_per_plan(state, per_plan, n);
+  state.counters["accepted"] = i ? double(accepted) / double(i) : 0.0;
+}
+
 void BM_PlanFromExactState(benchmark::State& state) {
   const auto& set = accepted_requests();
   const Planner planner;
@@ -119,20 +140,7 @@ void BM_PlanFromExactState(benchmark::State& state) {
     st.frac = (u128(g()) << 16) & (kOne - 1);
     starts.push_back(st);
   }
-  std::vector<double> per_plan;
-  per_plan.reserve(1 << 16);
-  size_t i = 0, accepted = 0;
-  for (auto _ : state) {
-    const size_t k = i++ % set.size();
-    const double t0 = thread_cpu_seconds();
-    PlanResult r = planner.plan_from(starts[k], set[k].req, set[k].timing);
-    const double t1 = thread_cpu_seconds();
-    accepted += std::holds_alternative<Plan>(r);
-    benchmark::DoNotOptimize(r);
-    if (per_plan.size() < per_plan.capacity()) per_plan.push_back(t1 - t0);
-  }
-  report_per_plan(state, per_plan, set.size());
-  state.counters["accepted"] = i ? double(accepted) / double(i) : 0.0;
+  time_each_plan(state, set.size(), [&](size_t k) { return planner.plan_from(starts[k], set[k].req, set[k].timing); });
 }
 BENCHMARK(BM_PlanFromExactState)->MinTime(2.0);
 
@@ -158,20 +166,8 @@ void BM_PlanFromStateWithAcceleration(benchmark::State& state) {
     st.frac = (u128(g()) << 16) & (kOne - 1);
     starts.push_back(st);
   }
-  std::vector<double> per_plan;
-  per_plan.reserve(1 << 16);
-  size_t i = 0, accepted = 0;
-  for (auto _ : state) {
-    const size_t k = i++ % set.size();
-    const double t0 = thread_cpu_seconds();
-    PlanResult r = planner.plan_from_state(starts[k], set[k].req, set[k].timing);
-    const double t1 = thread_cpu_seconds();
-    accepted += std::holds_alternative<Plan>(r);
-    benchmark::DoNotOptimize(r);
-    if (per_plan.size() < per_plan.capacity()) per_plan.push_back(t1 - t0);
-  }
-  report_per_plan(state, per_plan, set.size());
-  state.counters["accepted"] = i ? double(accepted) / double(i) : 0.0;
+  time_each_plan(state, set.size(),
+                 [&](size_t k) { return planner.plan_from_state(starts[k], set[k].req, set[k].timing); });
 }
 BENCHMARK(BM_PlanFromStateWithAcceleration)->MinTime(2.0);
 
