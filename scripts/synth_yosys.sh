@@ -5,10 +5,10 @@
 # Area budget (fails when over): SC_LUT_BUDGET / SC_DSP_BUDGET in the
 # environment; the single-axis cores (sc_axis_core, sc_servo_axis) default
 # to 8600 LUT (logic + LUTs used as memory) and 8 DSP48E1: with the
-# controlled-stop generator (about 4300 LUT in the servo axis, docs/stop.md)
-# the open-loop core measures 5412 and the closed-loop axis 7839-8315 (the
-# board top 10516 of the xc7a35t's 20800: the stop generator must shrink to
-# leave room for a second axis). The margin covers yosys' own spread: the
+# controlled-stop generator (about 4300 LUT in the servo axis, docs/stop.md),
+# the row stream with retarget and the HOLD count, the closed-loop axis
+# measures 8222 (the board top 10090 of the xc7a35t's 20800: 48.5 %, room
+# for a second axis beside it). The margin covers yosys' own spread: the
 # same sc_profile_exec source came out at 1138 or 1578 LUT inside
 # sc_servo_axis when only the servo and sc_pkg changed elsewhere (the
 # executor synthesized alone gives 5902 both times).
