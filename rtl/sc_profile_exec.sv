@@ -40,8 +40,8 @@
 // it starts from the one state the hold has: v, a = 0. Waiting for the whole
 // move means a slow host (the UART) cannot run the FIFO dry mid-ramp.
 // Retarget: row_count_o counts the rows loaded since START (the index of
-// the next row). A push with row_replace_i makes the row row number
-// retarget_row_i: the queued rows from that index on are dropped and the
+// the next row). A push with row_replace_i makes the pushed row number
+// retarget_row_i: the queued rows from that number on are dropped and the
 // row takes their place, in one clock. It is refused (retarget_refused_o,
 // one clock; nothing changes) unless a stream runs on (no stop, not a
 // STREAM_END row), that row is not loaded yet, also not in this clock, and
@@ -200,9 +200,9 @@ module sc_profile_exec (
     .peek_i    (peek_at),
     .head_o    (head),
     .peek_o    (pk_ends),
-    .empty_o (fifo_empty),
-    .full_o  (fifo_full),
-    .level_o (fifo_level_o)
+    .empty_o   (fifo_empty),
+    .full_o    (fifo_full),
+    .level_o   (fifo_level_o)
   );
 
   assign {hd_ends, hd_flags, hd_phase, hd_clocks, hd_jerk, hd_acc0, hd_vel0} = head;
