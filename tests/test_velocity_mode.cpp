@@ -75,7 +75,8 @@ TEST(VelocityPlan, RampsReachTheTargetExactlyWithinTheLimitsAndAsFastAsTheClosed
       const scurve::Segment& s = p.segments[k];
       EXPECT_EQ(s.vel0, vel) << at << ", row " << k;
       EXPECT_EQ(s.acc0, acc) << at << ", row " << k;
-      peak_acc = std::max({peak_acc, std::abs(s.acc0), int64_t(std::llabs(int64_t(scurve::acc_after(s.acc0, s.jerk, s.clocks))))});
+      const int64_t acc_end = int64_t(scurve::acc_after(s.acc0, s.jerk, s.clocks));
+      peak_acc = std::max({peak_acc, std::abs(s.acc0), std::abs(acc_end)});
       peak_jerk = std::max(peak_jerk, std::abs(s.jerk));
       const i128 v_next = scurve::vel_after(s.vel0, s.acc0, s.jerk, s.clocks);
       // (a reversal passes through exactly 0 at a row boundary)
