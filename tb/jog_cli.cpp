@@ -34,7 +34,7 @@ void add_jog_command(CLI::App& app, JogCli& j) {
   int_flag(c, "--push-gap", j.push_gap, 0, 10'000'000,
            "clocks between two rows of one command: a slow host (default 0)");
   c->add_option("--engine", j.engine, "lockstep (default) | rtl | model | model-fast")
-      ->check(CLI::IsMember({"lockstep", "rtl", "model", "model-fast"}));
+      ->check(CLI::IsMember(sim_engine_names()));
   scurve::cli::add_timing_flags(c, j.timing);
   scurve::cli::add_output_flags(c, j.timing);
 }
@@ -73,10 +73,7 @@ int run_jog_cli(const JogCli& j) {
   const auto codes = scurve::stop_limit_codes(j.stop_jerk > 0 ? j.stop_jerk : j.j_max,
                                               j.stop_acc > 0 ? j.stop_acc : j.a_max);
   if (const scurve::Error* e = std::get_if<scurve::Error>(&codes)) return bad_input(e->message);
-  const SimEngine eng = j.engine == "rtl"          ? SimEngine::RtlOnly
-                        : j.engine == "model"      ? SimEngine::ModelOnly
-                        : j.engine == "model-fast" ? SimEngine::ModelFast
-                                                   : SimEngine::Lockstep;
+  const SimEngine eng = sim_engine_from_name(j.engine);
   const bool tty = isatty(2);
   const JogRunResult r =
       run_jog(req, std::get<std::vector<scurve::VelocityPlan>>(planned), timing, eng,

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <variant>
 #include <vector>
 
@@ -150,12 +151,14 @@ inline uint8_t row_flags(const scurve::RowFlags& f) {
                  (f.acc_step ? kRowAccStep : 0) | (f.hold ? kRowHold : 0));
 }
 
-// The FIFO words of one planned move (flags: scurve::move_row_flags).
-inline std::vector<Row> move_rows(const std::vector<Segment>& segments, bool stream_end = true) {
+// The FIFO words of one planned move (flags: scurve::move_row_flags; a
+// retarget's rows with the acceleration they continue from).
+inline std::vector<Row> move_rows(const std::vector<Segment>& segments, bool stream_end = true,
+                                  std::optional<int64_t> acc_before = std::nullopt) {
   std::vector<scurve::Segment> h;
   h.reserve(segments.size());
   for (const Segment& s : segments) h.push_back(to_host(s));
-  const std::vector<scurve::RowFlags> f = scurve::move_row_flags(h, stream_end);
+  const std::vector<scurve::RowFlags> f = scurve::move_row_flags(h, stream_end, acc_before);
   std::vector<Row> rows;
   rows.reserve(segments.size());
   for (size_t i = 0; i < segments.size(); ++i) {

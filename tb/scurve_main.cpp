@@ -113,10 +113,7 @@ int run_stream_cli(const std::string& file, const std::string& engine, bool clos
   if (const scurve::Error* e = std::get_if<scurve::Error>(&planned)) return bad_input(e->message);
   const auto codes = scurve::stop_limit_codes(req.limits.j_max, req.limits.a_max);
   if (const scurve::Error* e = std::get_if<scurve::Error>(&codes)) return bad_input("limits: " + e->message);
-  const SimEngine eng = engine == "rtl" ? SimEngine::RtlOnly
-                        : engine == "model" ? SimEngine::ModelOnly
-                        : engine == "model-fast" ? SimEngine::ModelFast
-                                                 : SimEngine::Lockstep;
+  const SimEngine eng = sim_engine_from_name(engine);
   Progress progress(1);
   StreamRunResult r;
   if (closed_loop) {
@@ -177,7 +174,7 @@ int main(int argc, char** argv) {
       "paper 000 Table 2 group(s) 1..4 (L=30000, a=500, j=2500)");
   for (CLI::Option* o : sim_opts) gopt->excludes(o);
   sim_cmd->add_option("--engine", engine, "lockstep | rtl | model | model-fast")
-      ->check(CLI::IsMember({"lockstep", "rtl", "model", "model-fast"}));
+      ->check(CLI::IsMember(sim_engine_names()));
   add_fst_flags(sim_cmd, fst, "the RTL (engines lockstep, rtl)");
   scurve::cli::int_flag(sim_cmd, "--jobs", jobs, 1, 64, "parallel runs (default: cores)");
   scurve::cli::StopFlags stop_flags;  // --stop-at, --stop-jerk, --stop-acc
@@ -196,7 +193,7 @@ int main(int argc, char** argv) {
   stream_cmd->add_option("FILE", stream_file, "stream JSON: {\"limits\": {a_max, j_max, v_max}, \"moves\": [...]}")
       ->required();
   stream_cmd->add_option("--engine", stream_engine, "lockstep | rtl | model | model-fast")
-      ->check(CLI::IsMember({"lockstep", "rtl", "model", "model-fast"}));
+      ->check(CLI::IsMember(sim_engine_names()));
   stream_cmd->add_flag("--closed-loop", stream_closed_loop,
                        "the closed-loop axis (default controller and plant of sim --closed-loop; not model-fast)");
   scurve::cli::add_timing_flags(stream_cmd, tf);
@@ -282,17 +279,14 @@ int main(int argc, char** argv) {
       o.emplace();
       o->at_clock = uint64_t(std::llround(retarget_flags.at * clock.hz));
       o->row = p->row;
-      o->rows = move_rows(to_model(p->plan).segments, true);
+      o->rows = move_rows(to_model(p->plan).segments, true, p->acceleration);
       o->distance = p->distance;
       o->clocks = p->plan.total_clocks;
     }
     retargets.push_back(std::move(o));
   }
   SimOptions opt;
-  opt.engine = engine == "rtl" ? SimEngine::RtlOnly
-               : engine == "model" ? SimEngine::ModelOnly
-               : engine == "model-fast" ? SimEngine::ModelFast
-                                        : SimEngine::Lockstep;
+  opt.engine = sim_engine_from_name(engine);
   opt.fst_path = fst.path;
   opt.fst_from = fst.from;
   opt.fst_to = fst.to;

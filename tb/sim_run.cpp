@@ -23,6 +23,18 @@ const char* engine_name(SimEngine e) {
   return "?";
 }
 
+const std::vector<std::string>& sim_engine_names() {
+  static const std::vector<std::string> names{"lockstep", "rtl", "model", "model-fast"};
+  return names;
+}
+
+SimEngine sim_engine_from_name(const std::string& name) {
+  for (const SimEngine e : {SimEngine::RtlOnly, SimEngine::ModelOnly, SimEngine::ModelFast}) {
+    if (name == engine_name(e)) return e;
+  }
+  return SimEngine::Lockstep;
+}
+
 std::vector<CoreInputs> load_sequence(const std::vector<Segment>& rows, u128 pos_frac0, const CoreInputs& base) {
   return load_sequence(move_rows(rows), pos_frac0, base);
 }

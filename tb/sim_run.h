@@ -25,6 +25,10 @@ enum class SimEngine {
   ModelFast,  // model fast_forward(): closed form between pulses
 };
 const char* engine_name(SimEngine e);
+// The --engine names, and the engine of one of them (CLI::IsMember checks
+// the name first; anything else is the default, lockstep).
+const std::vector<std::string>& sim_engine_names();
+SimEngine sim_engine_from_name(const std::string& name);
 
 class RtlCore;
 

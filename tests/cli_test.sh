@@ -300,6 +300,15 @@ assert len(due) == 1 and due[0]["reg"] == "RETARGET_ROW" and due[0]["data"] == r
 pushes = [x for x in w[w.index(due[0]):] if x["reg"] == "ROW_PUSH"]
 assert pushes[0]["data"] & (1 << 4) and not any(p["data"] & (1 << 4) for p in pushes[1:]), pushes
 PY
+# A trapezoid's boundaries in motion all have a != 0 on one side: the new
+# rows step the acceleration from the executor's (ACC_STEP).
+"$scurve" sim --profile trapezoid --distance 4000 --v-cruise 40000 --a-max 2e6 --retarget-at 0.005 \
+  --retarget-distance 5000 --json > "$tmp/retarget_trap.json"
+python3 - "$tmp/retarget_trap.json" <<'PY'
+import json, sys
+r = json.load(open(sys.argv[1]))
+assert r["pass"] and r["pulses"] == 5000 and r["final_error"] == 0 and r["retarget"]["taken"], r
+PY
 check_bad retarget-distance sim --distance 4000 --v-cruise 40000 --a-max 2e6 --j-max 4e8 --retarget-at 0.03 --retarget-distance 100
 check_bad retarget-distance sim --distance 4000 --v-cruise 40000 --a-max 2e6 --j-max 4e8 --retarget-at 0.03
 check_bad retarget-at sim --distance 4000 --v-cruise 40000 --a-max 2e6 --j-max 4e8 --retarget-at 0.2 --retarget-distance 5000

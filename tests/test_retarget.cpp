@@ -29,8 +29,10 @@ scurve::Plan plan_or_fail(const scurve::MoveRequest& r) {
   return std::get<scurve::Plan>(p);
 }
 
-scurve::MoveRequest request(int64_t distance, double v, double a = 2e6, double j = 4e8) {
+scurve::MoveRequest request(int64_t distance, double v, double a = 2e6, double j = 4e8,
+                            scurve::ProfileKind kind = scurve::ProfileKind::SCurve) {
   scurve::MoveRequest r;
+  r.kind = kind;
   r.distance = distance;
   r.v_cruise = v;
   r.a_max = a;
@@ -39,7 +41,8 @@ scurve::MoveRequest request(int64_t distance, double v, double a = 2e6, double j
 }
 
 // The executor's exact state at the start of row k: position in LSBs from
-// integer 0 (the start fraction included), velocity and acceleration.
+// integer 0 (the start fraction included), velocity and acceleration (row
+// k - 1's end: a trapezoid's row k steps from it).
 struct Boundary {
   i128 pos = 0;
   i128 vel = 0;
@@ -55,7 +58,8 @@ Boundary boundary_of(const std::vector<scurve::Segment>& rows, u128 frac0, size_
     b.clock += s.clocks;
   }
   b.vel = rows[k].vel0;
-  b.acc = rows[k].acc0;
+  b.acc = k == 0 ? rows[0].acc0
+                 : int64_t(scurve::acc_after(rows[k - 1].acc0, rows[k - 1].jerk, rows[k - 1].clocks));
   return b;
 }
 
@@ -66,13 +70,14 @@ i128 floor_pulses(i128 lsb) {
 
 // A plan from boundary `b` (any acceleration) over `distance` more pulses;
 // its rows as FIFO words, the last one ending the stream.
-std::optional<std::vector<Row>> replan(const Boundary& b, int64_t distance, double v) {
+std::optional<std::vector<Row>> replan(const Boundary& b, int64_t distance, double v,
+                                 scurve::ProfileKind kind = scurve::ProfileKind::SCurve) {
   scurve::ExactState st{b.vel, b.acc, u128(b.pos - floor_pulses(b.pos) * i128(kOne))};
-  auto p = scurve::Planner{kClock}.plan_from_state(st, request(distance, v), scurve::PulseTiming{});
+  auto p = scurve::Planner{kClock}.plan_from_state(st, request(distance, v, 2e6, 4e8, kind), scurve::PulseTiming{});
   if (std::holds_alternative<scurve::Error>(p)) return std::nullopt;
   std::vector<Segment> segs;
   for (const scurve::Segment& s : std::get<scurve::Plan>(p).segments) segs.push_back(to_model(s));
-  return move_rows(segs, true);
+  return move_rows(segs, true, b.acc);  // a trapezoid's first row steps from b.acc: ACC_STEP
 }
 
 void push(ProfileExec& ex, const Row& r, bool replace = false, uint32_t k = 0) {
@@ -220,6 +225,7 @@ struct RetargetCase {
   size_t k = 0;          // the row replaced from
   int64_t delta = 0;     // push clock - the clock row k loads (< 0: accepted; not before START)
   int64_t new_end = 0;   // pulses from the start
+  scurve::ProfileKind kind = scurve::ProfileKind::SCurve;
 };
 
 // One move retargeted while it runs, on the core, RTL and model in
@@ -227,12 +233,12 @@ struct RetargetCase {
 // by the plan (the rows' clocks from the clock row 0 loaded). Returns the
 // failures; *refused_seen: RETARGET_REFUSED rose.
 std::vector<std::string> run_retarget(const RetargetCase& c, SimEngine engine, bool* refused_seen) {
-  const scurve::Plan p = plan_or_fail(request(c.distance, c.v));
+  const scurve::Plan p = plan_or_fail(request(c.distance, c.v, 2e6, 4e8, c.kind));
   std::vector<Segment> segs;
   for (const scurve::Segment& s : p.segments) segs.push_back(to_model(s));
   const std::vector<Row> rows = move_rows(segs, true);
   const Boundary b = boundary_of(p.segments, p.pos_frac0, c.k);
-  const auto fresh = replan(b, c.new_end - int64_t(floor_pulses(b.pos)), c.v);
+  const auto fresh = replan(b, c.new_end - int64_t(floor_pulses(b.pos)), c.v, c.kind);
   if (!fresh) return {"no plan"};
   // A host one row a clock keeps up only if every new row is queued before
   // the clock it loads (row 0 with the replace, row i > 0 at delta + i + 1;
@@ -290,18 +296,23 @@ std::vector<std::string> run_retarget(const RetargetCase& c, SimEngine engine, b
   return failures;
 }
 
-}  // namespace
-
-TEST(RetargetLockstep, RandomRetargetsOfRunningMovesEndOnTheNewTargetOrAreRefusedAndMatchEveryClock) {
-  std::mt19937_64 g(9);
-  std::uniform_real_distribution<double> u(0.0, 1.0);
+// `cases` random retargets of running moves of one profile kind, in
+// lockstep; counts the accepted and refused ones and the accepted ones from
+// a boundary where the executor's acceleration is not 0.
+struct RetargetCounts {
   int accepted = 0, refused = 0, with_acc = 0;
-  for (int n = 0; n < 24;) {
+};
+RetargetCounts run_random_retargets(scurve::ProfileKind kind, int cases, uint64_t seed) {
+  std::mt19937_64 g(seed);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  RetargetCounts n_of;
+  for (int n = 0; n < cases;) {
     RetargetCase c;
+    c.kind = kind;
     const int dir = (g() & 1) ? 1 : -1;
     c.distance = dir * int64_t(1000 + 4000 * u(g));
     c.v = 10000 + 60000 * u(g);
-    const scurve::Plan p = plan_or_fail(request(c.distance, c.v));
+    const scurve::Plan p = plan_or_fail(request(c.distance, c.v, 2e6, 4e8, kind));
     // Boundaries in motion inside the move, at any acceleration.
     std::vector<size_t> ks;
     for (size_t k = 1; k + 1 < p.segments.size(); ++k) {
@@ -319,11 +330,28 @@ TEST(RetargetLockstep, RandomRetargetsOfRunningMovesEndOnTheNewTargetOrAreRefuse
     if (f.size() == 1 && (f[0] == "no plan" || f[0] == "host too slow")) continue;
     EXPECT_TRUE(f.empty()) << fmt::format("case {}: distance {} v {} k {} delta {} new end {}: {}", n, c.distance,
                                           c.v, c.k, c.delta, c.new_end, f.empty() ? "" : f.front());
-    (seen ? refused : accepted) += 1;
-    with_acc += !seen && p.segments[c.k].acc0 != 0;
+    (seen ? n_of.refused : n_of.accepted) += 1;
+    n_of.with_acc += !seen && b.acc != 0;
     ++n;
   }
-  EXPECT_GT(accepted, 4);
-  EXPECT_GT(refused, 3);
-  EXPECT_GT(with_acc, 2) << "retargets from boundaries with nonzero acceleration";
+  return n_of;
+}
+
+}  // namespace
+
+TEST(RetargetLockstep, RandomRetargetsOfRunningMovesEndOnTheNewTargetOrAreRefusedAndMatchEveryClock) {
+  const RetargetCounts n = run_random_retargets(scurve::ProfileKind::SCurve, 24, 9);
+  EXPECT_GT(n.accepted, 4);
+  EXPECT_GT(n.refused, 3);
+  EXPECT_GT(n.with_acc, 2) << "retargets from boundaries with nonzero acceleration";
+}
+
+// A trapezoid's rows step the acceleration: a retarget from a boundary
+// inside a ramp starts its new rows with a step from that acceleration
+// (ACC_STEP), which the continuity guard takes.
+TEST(RetargetLockstep, TrapezoidMovesRetargetFromBoundariesInsideTheirRampsAndEndOnTheNewTarget) {
+  const RetargetCounts n = run_random_retargets(scurve::ProfileKind::Trapezoid, 16, 19);
+  EXPECT_GT(n.accepted, 4);
+  EXPECT_GT(n.refused, 1);
+  EXPECT_GT(n.with_acc, 2) << "retargets from boundaries with nonzero acceleration";
 }

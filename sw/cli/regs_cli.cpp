@@ -72,8 +72,8 @@ std::variant<nlohmann::json, Error> regs_to_json(const RegsCliFlags& f, const Mo
   }
   if (retarget) {
     due = {writes.size(), uint64_t(std::llround(f.retarget.at * plan.clock.hz))};
-    const std::vector<RegWrite> rw = encode_retarget(retarget->row, retarget->plan.segments,
-                                                     move_row_flags(retarget->plan.segments, true));
+    const std::vector<RowFlags> flags = move_row_flags(retarget->plan.segments, true, retarget->acceleration);
+    const std::vector<RegWrite> rw = encode_retarget(retarget->row, retarget->plan.segments, flags);
     writes.insert(writes.end(), rw.begin(), rw.end());
   }
   if (f.closed_loop) {

@@ -100,6 +100,52 @@ void append_exact_tail(RowList& rows, i128 rest, int s, int64_t j_lim, int64_t a
   }
 }
 
+// Holds the acceleration s * a1 (> 0) for `hold` clocks, then ramps it to
+// exactly 0 at jerk <= j: ceil(a1 / j) ramp clocks, the first (a1 mod clocks)
+// one LSB steeper. With `extra` in (0, a1) the velocity change (magnitude)
+// is that plus extra, exactly: one clock more at a1, and a1 - extra of the
+// ramp's steps taken one clock earlier (whole steps, then part of one).
+// |a| never rises, so only j bounds it: one clock instead of an exact
+// tail's pulses, which rise at the smaller of the two jerks.
+void push_hold_and_ramp_down(RowList& rows, int64_t a1, uint64_t hold, int64_t extra, int s, int64_t j,
+                             Phase ph_hold, Phase ph_down) {
+  const int64_t n = a1 / j + (a1 % j != 0);
+  const int64_t jd = a1 / n;
+  const int64_t r = a1 - n * jd;  // steps 1..r are jd + 1, the rest jd
+  if (hold > 0) rows.push_back({ph_hold, hold, 0, s * a1, 0});
+  // Ramp rows from step `from` (1-based) to `to`, from acceleration magnitude a.
+  int64_t a = a1;
+  const auto steps = [&](int64_t from, int64_t to) {
+    const int64_t steep_end = std::min(to, r);
+    if (steep_end >= from) {
+      rows.push_back({ph_down, uint64_t(steep_end - from + 1), -s * (jd + 1), s * a, 0});
+      a -= (steep_end - from + 1) * (jd + 1);
+    }
+    const int64_t flat_from = std::max(from, r + 1);
+    if (to >= flat_from) {
+      rows.push_back({ph_down, uint64_t(to - flat_from + 1), -s * jd, s * a, 0});
+      a -= (to - flat_from + 1) * jd;
+    }
+  };
+  if (extra <= 0) {
+    steps(1, n);
+    return;
+  }
+  // The first m steps and p of step m + 1 come one clock earlier: m steps,
+  // then one clock stepping p, one stepping the rest of step m + 1.
+  const int64_t early = a1 - extra;
+  const int64_t m = early < r * (jd + 1) ? early / (jd + 1) : r + (early - r * (jd + 1)) / jd;
+  const int64_t before = m <= r ? m * (jd + 1) : r * (jd + 1) + (m - r) * jd;
+  const int64_t p = early - before;
+  const int64_t step_m1 = m + 1 <= r ? jd + 1 : jd;
+  steps(1, m);
+  rows.push_back({ph_down, 1, -s * p, s * a, 0});
+  a -= p;
+  rows.push_back({ph_down, 1, -s * (step_m1 - p), s * a, 0});
+  a -= step_m1 - p;
+  steps(m + 2, n);
+}
+
 // Fastest change of velocity from v_a by at most dv (>= 0, magnitude) in
 // direction s, starting and ending at zero acceleration. Jerk j_in while
 // |a| rises, j_out while it falls; trapezoid: constant acceleration only.
@@ -191,12 +237,19 @@ void make_transition(Transition& t, i128 v_a, i128 dv, int s, int64_t j_in, int6
       rows[1].clocks = uint64_t(quotient(dv - dv_jerk, a1));
       t.shortfall_bound = a1;  // less than one more clock at the peak
       dv_done = dv_jerk + i128(rows[1].clocks) * a1;
+      if (exact && dv_done < dv) {  // the rest (< a1) in the hold and the ramp down
+        t.rows.push_back(rows[0]);
+        push_hold_and_ramp_down(t.rows, a1, rows[1].clocks, int64_t(dv - dv_done), s, j_out, ph_const, ph_down);
+        t.shortfall_bound = 0;
+        dv_done = dv;
+        break;
+      }
       for (int i = 0; i < n_rows; ++i) {
         if (rows[i].clocks > 0) t.rows.push_back(rows[i]);
       }
       break;
     }
-    if (exact && dv_done < dv) {
+    if (exact && dv_done < dv) {  // below one LSB of peak acceleration: no ramp at all
       append_exact_tail(t.rows, dv - dv_done, s, std::min(j_in, j_out), a_max, ph_up, ph_down);
       t.shortfall_bound = 0;
     }
@@ -1346,15 +1399,10 @@ bool push_continued_ramp(RowList& rows, int64_t a0m, i128 dv, int s, const Limit
       continue;
     }
     const i128 n2 = (dv - dv_jerk) / a1;
-    bool held = false;
     for (const Row& r : ramp) {
-      if (!held && r.phase == ph.down && n2 > 0) {
-        rows.push_back({ph.hold, uint64_t(n2), 0, 0, 0});
-        held = true;
-      }
-      rows.push_back(r);
+      if (r.phase != ph.down) rows.push_back(r);
     }
-    append_exact_tail(rows, dv - dv_jerk - n2 * a1, s, std::min(j_up, j_down), lim.a_max, ph.up, ph.down);
+    push_hold_and_ramp_down(rows, a1, uint64_t(n2), int64_t(dv - dv_jerk - n2 * a1), s, j_down, ph.hold, ph.down);
     return true;
   }
   return false;

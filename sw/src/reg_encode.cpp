@@ -24,8 +24,10 @@ uint32_t RowFlags::word() const {
          (replace ? 1u << RowPushReplaceBit : 0u);
 }
 
-std::vector<RowFlags> move_row_flags(const std::vector<Segment>& rows, bool stream_end) {
+std::vector<RowFlags> move_row_flags(const std::vector<Segment>& rows, bool stream_end,
+                                     std::optional<int64_t> acc_before) {
   std::vector<RowFlags> f(rows.size());
+  if (!rows.empty() && acc_before) f[0].acc_step = rows[0].acc0 != *acc_before;
   for (size_t i = 1; i < rows.size(); ++i) {
     const Segment& p = rows[i - 1];
     f[i].acc_step = i128(rows[i].acc0) != acc_after(p.acc0, p.jerk, p.clocks);

@@ -18,16 +18,19 @@ RetargetResult plan_retarget(const Planner& planner, const Plan& running, const 
   uint64_t clock = 0;
   for (size_t k = 0; k < running.segments.size(); ++k) {
     const Segment& s = running.segments[k];
-    // Any boundary of the motion (plan_from_state starts at any acceleration);
-    // a trapezoid's rows step their acceleration, so it needs a = 0 there.
-    const bool startable = s.vel0 != 0 && (request.kind == ProfileKind::SCurve || s.acc0 == 0);
-    if (k > 0 && double(clock) >= earliest && startable) {
+    // Any boundary of the motion: plan_from_state starts at any acceleration.
+    if (k > 0 && double(clock) >= earliest && s.vel0 != 0) {
+      // The executor's acceleration there: the last row's end (a trapezoid's
+      // next row may step from it).
+      const Segment& last = running.segments[k - 1];
+      const int64_t acc = int64_t(acc_after(last.acc0, last.jerk, last.clocks));
       const i128 one = i128(kOne);
       const i128 whole = pos >= 0 ? pos / one : -((-pos + one - 1) / one);
       RetargetPlan r;
       r.row = uint32_t(k);
       r.row_clock = clock;
       r.position = int64_t(whole);
+      r.acceleration = acc;
       r.distance = retarget.distance;
       const int64_t rest = retarget.distance - r.position;
       if (rest == 0 || (rest < 0) != (dir < 0)) {
@@ -39,7 +42,7 @@ RetargetResult plan_retarget(const Planner& planner, const Plan& running, const 
       MoveRequest more = request;  // the limits, the end speed and the window
       more.distance = rest;
       more.start_position = request.start_position + r.position;
-      PlanResult p = planner.plan_from_state({s.vel0, s.acc0, u128(pos - whole * one)}, more, timing);
+      PlanResult p = planner.plan_from_state({s.vel0, acc, u128(pos - whole * one)}, more, timing);
       if (const Error* e = std::get_if<Error>(&p)) {
         return Error{"retarget_distance", fmt::format("retarget_distance={}: from {} pulses at the boundary of row "
                                                       "{}: {}",

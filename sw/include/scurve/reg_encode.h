@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <variant>
 #include <vector>
@@ -42,7 +43,11 @@ struct RowFlags {
 // The flags of a move's rows: the last MOVE_END (and STREAM_END when the
 // move ends the stream: a single move's end speed is its stop speed); a row
 // whose start acceleration differs from the previous row's end ACC_STEP.
-std::vector<RowFlags> move_row_flags(const std::vector<Segment>& rows, bool stream_end = true);
+// acc_before: where the rows continue a motion (a retarget), the executor's
+// acceleration when the first row loads; the first row is ACC_STEP if it
+// starts at another (a trapezoid's planned step).
+std::vector<RowFlags> move_row_flags(const std::vector<Segment>& rows, bool stream_end = true,
+                                     std::optional<int64_t> acc_before = std::nullopt);
 // The flags of a velocity-mode command (Planner::plan_velocity): one move,
 // its last row HOLD, or STREAM_END when the target is rest.
 std::vector<RowFlags> velocity_row_flags(const VelocityPlan& plan);

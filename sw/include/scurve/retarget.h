@@ -5,7 +5,8 @@
 // ROW_PUSH.REPLACE, encode_retarget()).
 //
 //   auto r = scurve::plan_retarget(planner, plan, request, {0.03, 2500}, timing);
-//   writes = scurve::encode_retarget(r.row, r.plan.segments, scurve::move_row_flags(r.plan.segments));
+//   writes = scurve::encode_retarget(r.row, r.plan.segments,
+//                                    scurve::move_row_flags(r.plan.segments, true, r.acceleration));
 #pragma once
 
 #include <cstdint>
@@ -27,19 +28,21 @@ struct RetargetPlan {
   uint32_t row = 0;         // RETARGET_ROW: the first row replaced
   uint64_t row_clock = 0;   // its first clock, counted from the first row's first clock
   int64_t position = 0;     // the integer position there, pulses from the start
+  int64_t acceleration = 0;  // the executor's acceleration there (LSB): a trapezoid's new rows step from it
   int64_t distance = 0;     // the move's new distance
   Plan plan;                // the new rows, from the exact state at that boundary
 };
 using RetargetResult = std::variant<RetargetPlan, Error>;
 
-// The first boundary in motion at or after at_s + lead_clocks (for a
-// trapezoid, whose rows step their acceleration, one with acceleration 0),
-// and the plan from its exact state (velocity, acceleration, position
-// fraction: Planner::plan_from_state) to the new distance with the
-// request's limits and end speed. Errors name "retarget_at" (no such
-// boundary before the move ends) or "retarget_distance" (the new target is
-// not ahead of the axis there, or too close to reach from that state: the
-// planner's message with the shortest distance).
+// The first boundary in motion at or after at_s + lead_clocks, and the
+// plan from its exact state (velocity, acceleration, position fraction:
+// Planner::plan_from_state; a trapezoid's first new row steps the
+// acceleration, flagged ACC_STEP by move_row_flags with `acceleration`) to
+// the new distance with the request's limits and end speed. Errors name
+// "retarget_at" (no such boundary before the move ends) or
+// "retarget_distance" (the new target is not ahead of the axis there, or
+// too close to reach from that state: the planner's message with the
+// shortest distance).
 RetargetResult plan_retarget(const Planner& planner, const Plan& running, const MoveRequest& request,
                              const RetargetRequest& retarget, const PulseTiming& timing);
 
