@@ -10,6 +10,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
+#include <optional>
 #include <random>
 
 #include "closed_loop_run.h"
@@ -269,39 +271,28 @@ TEST(ClosedLoopLockstep, LongDirSetupClosedLoopEndsExactWithoutOverrun) {
   expect_long_dir_setup_move_exact(true);
 }
 
-// The same move on the model alone, judged on its pins only (not against
-// the RTL): the net count of STEP rising edges, signed by DIR, is the
-// distance; every rising edge comes at least the setup time after the last
-// DIR change; no STEP rises once done; the step queue never overflows.
-void expect_pins_match_distance(bool closed_loop) {
+// The fast backward move with the long DIR setup on the servo axis model
+// alone, with the stepper plant: rows pushed, START, run to done and 10 ms
+// more; `observe` sees the outputs of every clock. Returns whether it got
+// done.
+bool run_fast_move_on_model(bool closed_loop, const std::function<void(const ServoOutputs&)>& observe) {
   const PulseTiming t = long_dir_setup();
   const Plan plan = plan_with(fast_backward_move(), t);
-  ASSERT_FALSE(plan.segments.empty());
+  EXPECT_FALSE(plan.segments.empty());
   ControllerParams p;
   p.closed_loop = closed_loop;
   p.u_lim = kFastMoveULim;
   p.ferr_lim = kFastMoveFerrLim;
   const PlantConfig pc;
   ServoInputs in;
-  ASSERT_EQ(to_servo_config(p, pc, t, in.cfg), "");
+  EXPECT_EQ(to_servo_config(p, pc, t, in.cfg), "");
   ServoAxis m;
   Plant plant(pc, ClkHz);
-  bool prev_step = false, prev_dir = m.outputs().dir, done = false, overrun = false;
-  uint64_t dir_age = 0, min_setup = UINT64_MAX, rises_after_done = 0;
-  int64_t net = 0;
+  observe(m.outputs());  // the reset state: the observers' previous clock
   auto clock = [&](const ServoInputs& si) {
     m.step(si);
-    const ServoOutputs o = m.outputs();
-    dir_age = o.dir == prev_dir ? dir_age + 1 : 0;
-    if (o.step && !prev_step) {
-      net += o.dir ? 1 : -1;
-      min_setup = std::min(min_setup, dir_age);
-      if (done) ++rises_after_done;
-    }
-    prev_step = o.step;
-    prev_dir = o.dir;
-    done = done || o.done;
-    overrun = overrun || o.fault_overrun;
+    const ServoOutputs& o = m.outputs();
+    observe(o);
     plant.clock(o.step, o.dir);
     in.enc_a = plant.enc_a();
     in.enc_b = plant.enc_b();
@@ -318,11 +309,40 @@ void expect_pins_match_distance(bool closed_loop) {
   st.start = true;
   clock(st);
   const uint64_t limit = plan.total_clocks + uint64_t(2 * ClkHz);
-  for (uint64_t n = 0; n < limit && !done; ++n) clock(in);
+  for (uint64_t n = 0; n < limit && !m.outputs().done; ++n) clock(in);
   for (uint64_t n = 0; n < ClkHz / 100; ++n) clock(in);  // 10 ms after done
+  return m.outputs().done;
+}
+
+// The same move on the model alone, judged on its pins only (not against
+// the RTL): the net count of STEP rising edges, signed by DIR, is the
+// distance; every rising edge comes at least the setup time after the last
+// DIR change; no STEP rises once done; the step queue never overflows.
+void expect_pins_match_distance(bool closed_loop) {
+  const PulseTiming t = long_dir_setup();
+  std::optional<ServoOutputs> prev;
+  bool done = false, overrun = false;
+  uint64_t dir_age = 0, min_setup = UINT64_MAX, rises_after_done = 0;
+  int64_t net = 0;
+  const bool got_done = run_fast_move_on_model(closed_loop, [&](const ServoOutputs& o) {
+    if (!prev) {  // the reset state
+      prev = o;
+      return;
+    }
+    dir_age = o.dir == prev->dir ? dir_age + 1 : 0;
+    if (o.step && !prev->step) {
+      net += o.dir ? 1 : -1;
+      min_setup = std::min(min_setup, dir_age);
+      if (done) ++rises_after_done;
+    }
+    prev = o;
+    done = done || o.done;
+    overrun = overrun || o.fault_overrun;
+  });
+  EXPECT_TRUE(got_done);
   EXPECT_TRUE(done);
   EXPECT_FALSE(overrun);
-  EXPECT_EQ(net, plan.distance);
+  EXPECT_EQ(net, plan_with(fast_backward_move(), t).distance);
   EXPECT_GE(min_setup, t.setup);
   EXPECT_EQ(rises_after_done, 0u);
 }
@@ -341,55 +361,32 @@ TEST(ServoAxisPins, LongDirSetupClosedLoopStepEdgesSumToDistance) { expect_pins_
 // rotor's lag overshoots), so DIR must turn to u at least once.
 TEST(ServoAxisPins, DirFollowsTheRateCommandOnceTheReferenceRests) {
   const PulseTiming t = long_dir_setup();
-  const Plan plan = plan_with(fast_backward_move(), t);
-  ASSERT_FALSE(plan.segments.empty());
-  ControllerParams p;
-  p.u_lim = kFastMoveULim;
-  p.ferr_lim = kFastMoveFerrLim;
-  const PlantConfig pc;
-  ServoInputs in;
-  ASSERT_EQ(to_servo_config(p, pc, t, in.cfg), "");
-  ServoAxis m;
-  Plant plant(pc, ClkHz);
-  ServoOutputs prev = m.outputs();
+  std::optional<ServoOutputs> prev;
   uint64_t clk = 0, last_rise = 0, checked = 0, turned = 0, late = 0;
   std::string first_late;
   bool risen = false;
-  auto clock = [&](const ServoInputs& si) {
-    m.step(si);
-    const ServoOutputs o = m.outputs();
+  const bool done = run_fast_move_on_model(true, [&](const ServoOutputs& o) {
+    if (!prev) {  // the reset state
+      prev = o;
+      return;
+    }
     ++clk;
-    if (o.step && !prev.step) {
+    if (o.step && !prev->step) {
       last_rise = clk;
       risen = true;
     }
     const bool hold_served = !risen || clk - 1 >= last_rise + t.hold;
-    if (prev.ref_done && prev.ctl_active && prev.u != 0 && (prev.u > 0) == (o.u > 0) && o.u != 0 &&
-        prev.step_pending == 0 && !prev.step && hold_served) {
+    if (prev->ref_done && prev->ctl_active && prev->u != 0 && (prev->u > 0) == (o.u > 0) && o.u != 0 &&
+        prev->step_pending == 0 && !prev->step && hold_served) {
       ++checked;
-      turned += prev.dir != (prev.u > 0);
-      if (o.dir != (prev.u > 0) && late++ == 0) first_late = fmt::format("clock {}: u {}, DIR {}", clk, prev.u, o.dir);
+      turned += prev->dir != (prev->u > 0);
+      if (o.dir != (prev->u > 0) && late++ == 0) {
+        first_late = fmt::format("clock {}: u {}, DIR {}", clk, prev->u, o.dir);
+      }
     }
     prev = o;
-    plant.clock(o.step, o.dir);
-    in.enc_a = plant.enc_a();
-    in.enc_b = plant.enc_b();
-    in.enc_z = plant.enc_z();
-  };
-  for (const Row& r : move_rows(plan.segments)) {
-    ServoInputs w = in;
-    w.row_push = true;
-    w.row = r;
-    clock(w);
-  }
-  in.pos_frac0 = plan.pos_frac0;
-  ServoInputs st = in;
-  st.start = true;
-  clock(st);
-  const uint64_t limit = plan.total_clocks + uint64_t(2 * ClkHz);
-  for (uint64_t n = 0; n < limit && !m.outputs().done; ++n) clock(in);
-  for (uint64_t n = 0; n < ClkHz / 100; ++n) clock(in);
-  EXPECT_TRUE(m.outputs().done);
+  });
+  EXPECT_TRUE(done);
   std::printf("DIR against u: %llu clocks checked, %llu turns\n", (unsigned long long)checked,
               (unsigned long long)turned);
   EXPECT_EQ(late, 0u) << "DIR not pre-positioned to u, first at " << first_late;
