@@ -5,10 +5,16 @@
 // the machine; on a quiet machine it equals wall time).
 // The move: paper group 1's speeds (1500 -> 3000 -> 0 pulses/s) over 12,000
 // pulses with a = 2000, j = 10000: about 5.9 s = 118 M clocks of motion.
+// The stream (BM_Stream*): 40 moves of 2,000-6,000 pulses in both
+// directions at 20,000-60,000 pulses/s with look-ahead junction speeds, the
+// host pushing a row whenever the FIFO has room (about 34 M clocks).
 #include <benchmark/benchmark.h>
+
+#include <random>
 
 #include "planner.h"
 #include "sim_run.h"
+#include "stream_run.h"
 
 namespace {
 
@@ -44,15 +50,56 @@ void run(benchmark::State& state, SimEngine engine) {
       benchmark::Counter(double(clocks) / double(ClkHz), benchmark::Counter::kIsRate);
 }
 
+const StreamRequest& bench_stream_request() {
+  static const StreamRequest req = [] {
+    StreamRequest r;
+    r.limits = scurve::StreamLimits(2e6, 4e8, 60000);
+    std::mt19937_64 g(5);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    for (int i = 0; i < 40; ++i) {
+      const int dir = i % 7 < 4 ? 1 : -1;
+      r.moves.push_back({dir * int64_t(2000 + 4000 * u(g)), 20000 + 40000 * u(g), 60000});
+    }
+    return r;
+  }();
+  return req;
+}
+
+void run_stream_bench(benchmark::State& state, SimEngine engine) {
+  const StreamRequest& req = bench_stream_request();
+  const auto planned = plan_stream(req, PulseTiming{});
+  const auto codes = scurve::stop_limit_codes(req.limits.j_max, req.limits.a_max);
+  if (!std::holds_alternative<PlannedStream>(planned) || !std::holds_alternative<scurve::StopLimitCodes>(codes)) {
+    state.SkipWithError("the stream does not plan");
+    return;
+  }
+  const scurve::StopLimitCodes& c = std::get<scurve::StopLimitCodes>(codes);
+  uint64_t clocks = 0;
+  bool pass = true;
+  for (auto _ : state) {
+    const StreamRunResult r = run_stream(std::get<PlannedStream>(planned), req, PulseTiming{}, engine, c.jerk, c.acc);
+    clocks += r.clocks;
+    pass = pass && r.pass();
+  }
+  if (!pass) state.SkipWithError("the stream failed its checks");
+  state.counters["clk_per_s"] = benchmark::Counter(double(clocks), benchmark::Counter::kIsRate);
+  state.counters["x_realtime"] =
+      benchmark::Counter(double(clocks) / double(ClkHz), benchmark::Counter::kIsRate);
+}
+
 void BM_Lockstep(benchmark::State& s) { run(s, SimEngine::Lockstep); }
 void BM_RtlOnly(benchmark::State& s) { run(s, SimEngine::RtlOnly); }
 void BM_ModelOnly(benchmark::State& s) { run(s, SimEngine::ModelOnly); }
 void BM_ModelFastForward(benchmark::State& s) { run(s, SimEngine::ModelFast); }
+void BM_StreamLockstep(benchmark::State& s) { run_stream_bench(s, SimEngine::Lockstep); }
+void BM_StreamRtlOnly(benchmark::State& s) { run_stream_bench(s, SimEngine::RtlOnly); }
 
 BENCHMARK(BM_Lockstep)->Unit(benchmark::kSecond)->Iterations(2);
 BENCHMARK(BM_RtlOnly)->Unit(benchmark::kSecond)->Iterations(2);
 BENCHMARK(BM_ModelOnly)->Unit(benchmark::kSecond)->Iterations(2);
 BENCHMARK(BM_ModelFastForward)->Unit(benchmark::kMillisecond)->Iterations(20);
+BENCHMARK(BM_StreamLockstep)->Unit(benchmark::kSecond)->Iterations(2);
+BENCHMARK(BM_StreamRtlOnly)->Unit(benchmark::kSecond)->Iterations(2);
 
 }  // namespace
 
