@@ -11,6 +11,7 @@
 #include <benchmark/benchmark.h>
 
 #include <random>
+#include <utility>
 
 #include "planner.h"
 #include "sim_run.h"
@@ -34,20 +35,30 @@ const Plan& bench_plan() {
   return plan;
 }
 
-void run(benchmark::State& state, SimEngine engine) {
-  SimOptions opt;
-  opt.engine = engine;
+// Runs `once` (simulated clocks, checks passed) per iteration and reports
+// simulated clocks per CPU second and the ratio to real time.
+template <class Run>
+void measure(benchmark::State& state, Run once) {
   uint64_t clocks = 0;
   bool pass = true;
   for (auto _ : state) {
-    const SimResult r = run_move(bench_plan(), PulseTiming{}, Limits4Check{}, opt);
-    clocks += r.total_clocks;
-    pass = pass && r.pass();
+    const auto [n, ok] = once();
+    clocks += n;
+    pass = pass && ok;
   }
-  if (!pass) state.SkipWithError("simulation failed its checks");
+  if (!pass) state.SkipWithError("the simulation failed its checks");
   state.counters["clk_per_s"] = benchmark::Counter(double(clocks), benchmark::Counter::kIsRate);
   state.counters["x_realtime"] =
       benchmark::Counter(double(clocks) / double(ClkHz), benchmark::Counter::kIsRate);
+}
+
+void run(benchmark::State& state, SimEngine engine) {
+  SimOptions opt;
+  opt.engine = engine;
+  measure(state, [&] {
+    const SimResult r = run_move(bench_plan(), PulseTiming{}, Limits4Check{}, opt);
+    return std::pair{r.total_clocks, r.pass()};
+  });
 }
 
 const StreamRequest& bench_stream_request() {
@@ -74,17 +85,10 @@ void run_stream_bench(benchmark::State& state, SimEngine engine) {
     return;
   }
   const scurve::StopLimitCodes& c = std::get<scurve::StopLimitCodes>(codes);
-  uint64_t clocks = 0;
-  bool pass = true;
-  for (auto _ : state) {
+  measure(state, [&] {
     const StreamRunResult r = run_stream(std::get<PlannedStream>(planned), req, PulseTiming{}, engine, c.jerk, c.acc);
-    clocks += r.clocks;
-    pass = pass && r.pass();
-  }
-  if (!pass) state.SkipWithError("the stream failed its checks");
-  state.counters["clk_per_s"] = benchmark::Counter(double(clocks), benchmark::Counter::kIsRate);
-  state.counters["x_realtime"] =
-      benchmark::Counter(double(clocks) / double(ClkHz), benchmark::Counter::kIsRate);
+    return std::pair{r.clocks, r.pass()};
+  });
 }
 
 void BM_Lockstep(benchmark::State& s) { run(s, SimEngine::Lockstep); }
