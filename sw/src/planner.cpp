@@ -91,6 +91,8 @@ void append_exact_tail_in(RowList& rows, T rest, int s, int64_t j_lim, int64_t a
   }
 }
 
+}  // namespace
+
 void append_exact_tail(RowList& rows, i128 rest, int s, int64_t j_lim, int64_t a_max, Phase ph_up,
                        Phase ph_down) {
   if (rest < (i128(1) << 62)) {
@@ -99,6 +101,8 @@ void append_exact_tail(RowList& rows, i128 rest, int s, int64_t j_lim, int64_t a
     append_exact_tail_in<i128>(rows, rest, s, j_lim, a_max, ph_up, ph_down);
   }
 }
+
+namespace {
 
 // Holds the acceleration s * a1 (> 0) for `hold` clocks, then ramps it to
 // exactly 0 at jerk <= j: ceil(a1 / j) ramp clocks, the first (a1 mod clocks)

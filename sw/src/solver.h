@@ -118,6 +118,11 @@ Limits make_limits(const MoveRequest& req, const PulseTiming& timing, Clock cloc
 
 // Fastest change of velocity from v_from to v_to starting and ending at zero
 // acceleration (see make_transition in planner.cpp).
+// A velocity change of exactly `rest` LSB (> 0) in direction s from
+// acceleration 0 back to 0, in at most three jerk-limited pulses (jerk <=
+// j_lim, |a| <= a_max), appended to rows (their acc0 chained from 0).
+void append_exact_tail(RowList& rows, i128 rest, int s, int64_t j_lim, int64_t a_max, Phase ph_up, Phase ph_down);
+
 Transition transition_to(i128 v_from, i128 v_to, const Limits& lim);
 void transition_to(Transition& out, i128 v_from, i128 v_to, const Limits& lim);  // into a fresh one
 
