@@ -71,7 +71,7 @@ i128 floor_pulses(i128 lsb) {
 // A plan from boundary `b` (any acceleration) over `distance` more pulses;
 // its rows as FIFO words, the last one ending the stream.
 std::optional<std::vector<Row>> replan(const Boundary& b, int64_t distance, double v,
-                                 scurve::ProfileKind kind = scurve::ProfileKind::SCurve) {
+                                       scurve::ProfileKind kind = scurve::ProfileKind::SCurve) {
   scurve::ExactState st{b.vel, b.acc, u128(b.pos - floor_pulses(b.pos) * i128(kOne))};
   auto p = scurve::Planner{kClock}.plan_from_state(st, request(distance, v, 2e6, 4e8, kind), scurve::PulseTiming{});
   if (std::holds_alternative<scurve::Error>(p)) return std::nullopt;
