@@ -72,6 +72,20 @@ class CoreDriver {
   bool stopped_ = false;
 };
 
+// A retarget pushed this many clocks after the START clock: `rows` (FIFO
+// words) replace the plan from row number `row` on, the first with
+// ROW_PUSH.REPLACE. The run must then end on `distance`, or, refused, on
+// the plan's own (scurve::plan_retarget). At namespace scope: clang takes a
+// nested struct with member initializers for not default-constructible
+// inside its enclosing class, which std::optional<> of it then remembers.
+struct SimRetarget {
+  uint64_t at_clock = 0;
+  uint32_t row = 0;
+  std::vector<Row> rows;
+  int64_t distance = 0;
+  uint64_t clocks = 0;  // the new rows' clocks
+};
+
 struct SimOptions {
   SimEngine engine = SimEngine::Lockstep;
   uint64_t tail_clocks = 0;  // 0: automatic (covers the longest pulse timing)
@@ -84,17 +98,7 @@ struct SimOptions {
   // stop monitor (tb/stop_check.h) instead of against the move's endpoint.
   std::optional<uint64_t> stop_at;
   uint64_t stop_jerk = StopJerkReset, stop_acc = StopAccReset;  // executor LSBs
-  // A retarget pushed this many clocks after the START clock: `rows` (FIFO
-  // words) replace the plan from row number `row` on, the first with
-  // ROW_PUSH.REPLACE. The run must then end on `distance`, or, refused, on
-  // the plan's own (scurve::plan_retarget).
-  struct Retarget {
-    uint64_t at_clock = 0;
-    uint32_t row = 0;
-    std::vector<Row> rows;
-    int64_t distance = 0;
-    uint64_t clocks = 0;  // the new rows' clocks
-  };
+  using Retarget = SimRetarget;
   std::optional<Retarget> retarget;
 };
 
