@@ -207,26 +207,18 @@ LineResult plan_line(const Planner& planner, const LineRequest& r, const PulseTi
   // the lead's own: plan() ends a move within less than one clock of peak
   // acceleration of rest), removed by each axis in turn after the last row,
   // in jerk-limited pulses within its own peak jerk and acceleration.
-  const auto velocity_now = [&](size_t i) {
-    i128 v = 0;
-    int64_t a = 0;
-    for (size_t k = 0; k < clocks.size(); ++k) {
-      v = vel_after(v, a, jerks[k][i], clocks[k]);
-      a = int64_t(acc_after(a, jerks[k][i], clocks[k]));
-    }
-    return v;
-  };
   for (size_t i = 0; i < n; ++i) {
     if (mag[i] == 0) continue;
-    const i128 v_left = velocity_now(i);
-    if (v_left == 0) continue;
-    int64_t peak_jerk = 1, peak_acc = 1;
-    int64_t a = 0;
+    // One pass over the axis's rows: its velocity now and its peaks.
+    i128 v_left = 0;
+    int64_t a = 0, peak_jerk = 1, peak_acc = 1;
     for (size_t k = 0; k < clocks.size(); ++k) {
       peak_jerk = std::max<int64_t>(peak_jerk, int64_t(abs128(jerks[k][i])));
       peak_acc = std::max<int64_t>(peak_acc, int64_t(abs128(a)));
+      v_left = vel_after(v_left, a, jerks[k][i], clocks[k]);
       a = int64_t(acc_after(a, jerks[k][i], clocks[k]));
     }
+    if (v_left == 0) continue;
     detail::RowList trim;
     detail::append_exact_tail(trim, abs128(v_left), v_left < 0 ? 1 : -1, peak_jerk, peak_acc, Phase::PhDecJerkUp,
                               Phase::PhDecJerkDown);
@@ -239,16 +231,16 @@ LineResult plan_line(const Planner& planner, const LineRequest& r, const PulseTi
     }
   }
 
+  LinePlan out;
+  out.lead = lead;
+  out.path_length = length;
   for (const uint64_t c : clocks) {
     if (c > UINT32_MAX) {
       return Error{"distances", fmt::format("distances: a row of {} clocks, more than a row holds ({}); split the "
                                             "line", c, UINT32_MAX)};
     }
+    out.total_clocks += c;
   }
-  LinePlan out;
-  out.lead = lead;
-  out.path_length = length;
-  for (const uint64_t c : clocks) out.total_clocks += c;
   out.duration_s = double(out.total_clocks) / lp.clock.hz;
   // Per axis: rows in magnitude form, the start fraction that ends it in the
   // middle of its target's pulse (as plan() ends the lead), then mirrored.
