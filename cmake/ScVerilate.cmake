@@ -54,7 +54,7 @@ endfunction()
 # OPT_FAST -O3: Verilator's default -Os halves the throughput (DESIGN.md);
 # -fno-tree-slp-vectorize: measured faster on the wide 128-bit state.
 function(sc_verilate target)
-  cmake_parse_arguments(A "TRACE;SYSTEMC" "TOP;PREFIX;OPT" "" ${ARGN})
+  cmake_parse_arguments(A "TRACE;SYSTEMC" "TOP;PREFIX;OPT" "PARAMS" ${ARGN})
   if(NOT A_TOP)
     message(FATAL_ERROR "sc_verilate(${target}): TOP is required")
   endif()
@@ -106,11 +106,18 @@ function(sc_verilate target)
   else()
     sc_rtl_files(files ${A_TOP})
   endif()
+  # PARAMS Name=Value ...: the top's parameters (-G), for a second build of
+  # one top under its own PREFIX
+  set(param_args)
+  foreach(p IN LISTS A_PARAMS)
+    list(APPEND param_args -G${p})
+  endforeach()
   verilate(${target} ${flags}
     SOURCES ${files}
     TOP_MODULE ${A_TOP}
     PREFIX ${A_PREFIX}
     VERILATOR_ARGS -Wall ${SC_VERILATOR_WAIVER} --x-assign fast --x-initial fast ${warn_args} ${cover_args}
+                   ${param_args}
     OPT_FAST ${fast}
     OPT_SLOW ${slow}
     OPT_GLOBAL ${A_OPT})

@@ -42,6 +42,27 @@ void AxisCore::step(const CoreInputs& in, const CoreExtInputs& x) {
   latch_inputs(in);
 }
 
+void AxisCore::step(const CoreInputs& in, const SyncInputs& s) {
+  latch_write(in);
+  clock_edge<false, true>(kNoExt, s);
+  exec_in_.row_push = false;
+  exec_in_.row_replace = false;
+  exec_in_.fifo_flush = false;
+  latch_inputs(in);
+}
+
+bool AxisCore::start_able() const {
+  return in_q_.start && !busy() && in_q_.enable && start_into_limit() == 0;
+}
+
+bool AxisCore::arm_drop() const { return arm_ && (in_q_.abort || in_q_.stop || into_limit() != 0); }
+
+bool AxisCore::arm_ready() const {
+  return arm_ && !arm_drop() && sg_.state().dir == arm_fwd_ && arm_cnt_ >= in_q_.cfg.setup;
+}
+
+bool AxisCore::fault_abort() const { return (in_q_.lim_hard && into_limit() != 0) || rate_trip_; }
+
 void AxisCore::latch_write(const CoreInputs& in) {
   ProfileExec::Inputs& ei = exec_in_;
   ei.row_push = in.row_push;
@@ -80,14 +101,14 @@ unsigned AxisCore::start_into_limit() const {
   return fwd ? (in_q_.lim_fwd ? 4u : 0u) : (in_q_.lim_rev ? 8u : 0u);
 }
 
-template <bool kExt>
-void AxisCore::clock_edge(const CoreExtInputs& x) {
+template <bool kExt, bool kSync>
+void AxisCore::clock_edge(const CoreExtInputs& x, const SyncInputs& s) {
   // Every sub-block input below is a register output (the core's input
   // stage, the arming state, the executor's step request or, with kExt,
   // the external source's registers), as in the RTL.
   const ProfileExec::State& e = exec_.state();
   const bool start_req = in_q_.start && !(kExt ? busy(x) : busy()) && in_q_.enable;
-  const bool start_ok = start_req && start_into_limit() == 0;
+  const bool start_ok = start_req && start_into_limit() == 0 && (!kSync || s.start_ok);
   const bool lim_act = into_limit() != 0;
   bool arm_d = arm_, arm_fwd_d = arm_fwd_, exec_start = false;
   uint16_t arm_cnt_d = arm_cnt_;
@@ -96,13 +117,16 @@ void AxisCore::clock_edge(const CoreExtInputs& x) {
     arm_fwd_d = exec_.head_forward();
     arm_cnt_d = 0;
   } else if (arm_) {
-    if (in_q_.abort || in_q_.stop || lim_act) {
+    if (in_q_.abort || in_q_.stop || lim_act || (kSync && s.drop)) {
       arm_d = false;
     } else if (sg_.state().dir != arm_fwd_) {
       arm_cnt_d = 0;
     } else if (arm_cnt_ >= in_q_.cfg.setup) {
-      arm_d = false;
-      exec_start = true;
+      // set up: start now, or (kSync) hold until every axis is
+      if (!kSync || s.go) {
+        arm_d = false;
+        exec_start = true;
+      }
     } else {
       arm_cnt_d = uint16_t(arm_cnt_ + 1);
     }

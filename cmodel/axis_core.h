@@ -47,6 +47,14 @@ struct CoreExtInputs {
   bool done = false;   // replaces "executor finished" in done
 };
 
+// The start synchronisation inputs of sc_axis_core #(.SyncStart(1)) (its
+// sync_* inputs), which sc_multi_axis_core forms from all its axes.
+struct SyncInputs {
+  bool start_ok = false;  // every axis can accept the START it sees (AND of start_able)
+  bool go = false;        // every axis is armed with DIR set up (AND of arm_ready)
+  bool drop = false;      // some axis drops its arming (OR of arm_drop)
+};
+
 // Every output of sc_axis_core, as the lockstep checker compares them.
 struct CoreOutputs {
   bool step = false;
@@ -96,6 +104,15 @@ class AxisCore {
   void read_outputs(CoreOutputs& o) const;
   // outputs() == o, without building the struct (the lockstep hot path).
   bool outputs_equal(const CoreOutputs& o) const;
+  // One clock of sc_axis_core #(.SyncStart(1)): one axis of a multi-axis
+  // core, `s` formed from every axis's state before this clock.
+  void step(const CoreInputs& in, const SyncInputs& s);
+  // The synchronisation outputs (start_able_o, arm_ready_o, arm_drop_o,
+  // fault_abort_o), from the current state.
+  bool start_able() const;
+  bool arm_ready() const;
+  bool arm_drop() const;
+  bool fault_abort() const;
   // One clock holding the inputs of the previous step(), which must not have
   // pushed a row: the same as step(previous inputs), cheaper.
   void tick();
@@ -175,9 +192,10 @@ class AxisCore {
  private:
   void latch_write(const CoreInputs& in);
   void latch_inputs(const CoreInputs& in);
-  // kExt = false is the plain core (ExtStep = 0): x is not read.
-  template <bool kExt>
-  void clock_edge(const CoreExtInputs& x);
+  // kExt = false is the plain core (ExtStep = 0): x is not read; kSync =
+  // false the core without start synchronisation (SyncStart = 0): s is not read.
+  template <bool kExt, bool kSync = false>
+  void clock_edge(const CoreExtInputs& x, const SyncInputs& s = SyncInputs{});
 };
 
 }  // namespace sc

@@ -190,6 +190,8 @@ module sc_axi_axis (
     .edge_o     (sw_edge)
   );
 
+  logic unused_start_able, unused_arm_ready, unused_arm_drop, unused_fault_abort;
+
   sc_axis_core u_core (
     .clk_i,
     .rst_ni,
@@ -228,6 +230,13 @@ module sc_axi_axis (
     .ext_busy_i       (1'b0),
     .ext_abort_i      (1'b0),
     .ext_done_i       (1'b0),
+    .sync_start_ok_i  (1'b0),   // one axis: no start synchronisation
+    .sync_go_i        (1'b0),
+    .sync_drop_i      (1'b0),
+    .start_able_o     (unused_start_able),
+    .arm_ready_o      (unused_arm_ready),
+    .arm_drop_o       (unused_arm_drop),
+    .fault_abort_o    (unused_fault_abort),
     .exec_start_o     (unused_exec_start),
     .abort_o          (unused_abort),
     .ref_done_o       (unused_ref_done),

@@ -47,8 +47,18 @@
 // ext_done_i replaces "executor finished" in done_o. The external source
 // starts on exec_start_o, together with the reference. With ExtStep = 0 the
 // ext_* inputs are ignored and add no logic.
+//
+// SyncStart = 1 makes the core one axis of sc_multi_axis_core, whose axes
+// start their executors on one clock: a START is accepted only with
+// sync_start_ok_i (every axis can take it: start_able_o of all), the
+// executor starts once every axis has DIR set up (sync_go_i, the AND of
+// arm_ready_o) and the arming is dropped when any axis drops its own
+// (sync_drop_i, the OR of arm_drop_o). All three outputs are functions of
+// registers, so the OR/AND across axes adds no loop. With SyncStart = 0 the
+// sync_* inputs are ignored and add no logic.
 module sc_axis_core #(
-  parameter bit ExtStep = 1'b0
+  parameter bit ExtStep   = 1'b0,
+  parameter bit SyncStart = 1'b0
 ) (
   input  logic                        clk_i,
   input  logic                        rst_ni,
@@ -92,6 +102,14 @@ module sc_axis_core #(
   input  logic                        ext_abort_i,       // aborts the executor (not the arming)
   input  logic                        ext_done_i,
   output logic                        exec_start_o,      // the executor starts this clock
+  // start synchronisation across axes (SyncStart = 1 only)
+  input  logic                        sync_start_ok_i,   // every axis can accept this START
+  input  logic                        sync_go_i,         // every axis is armed and set up
+  input  logic                        sync_drop_i,       // some axis drops its arming
+  output logic                        start_able_o,      // this axis would accept the START it sees
+  output logic                        arm_ready_o,       // armed, DIR set up: waits for sync_go_i
+  output logic                        arm_drop_o,        // this axis drops its arming this clock
+  output logic                        fault_abort_o,     // a hard limit or the step-rate guard stops it at once
   output logic                        abort_o,           // abort_i as registered here, or a hard limit acting
   output logic                        ref_done_o,        // the executor has finished the stream
   output logic                        ref_running_o,     // the executor runs (a stream or its controlled stop)
@@ -167,7 +185,8 @@ module sc_axis_core #(
   // A move toward an active limit is refused (an empty FIFO is the table
   // fault, as without limits).
   assign start_into_lim = fifo_level_o != '0 && (head_fwd ? lim_fwd_q : lim_rev_q);
-  assign start_ok   = start_req && !start_into_lim;
+  assign start_able_o = start_req && !start_into_lim;
+  assign start_ok   = start_able_o && (!SyncStart || sync_start_ok_i);
   // Motion into an active limit: the arming toward it, or the reference
   // moving toward it (at rest, or moving away, nothing happens).
   assign into_fwd   = lim_fwd_q && (arm_q ? arm_fwd_q : (ref_moving && !ref_vel_o[sc_pkg::VelW-1]));
@@ -193,6 +212,10 @@ module sc_axis_core #(
   assign sg_hint       = arm_q ? arm_fwd_q :
                          (!ExtStep || ref_moving) ? !ref_vel_o[sc_pkg::VelW-1] : ext_hint_i;
 
+  assign arm_drop_o  = arm_q && (abort_q || stop_q || lim_act);
+  assign arm_ready_o = arm_q && !arm_drop_o && sg_dir == arm_fwd_q && arm_cnt_q >= cfg_setup_q;
+  assign fault_abort_o = lim_abort || rate_trip_q;
+
   always_comb begin
     arm_d      = arm_q;
     arm_fwd_d  = arm_fwd_q;
@@ -203,13 +226,16 @@ module sc_axis_core #(
       arm_fwd_d = head_fwd;
       arm_cnt_d = '0;
     end else if (arm_q) begin
-      if (abort_q || stop_q || lim_act) begin
+      if (arm_drop_o || (SyncStart && sync_drop_i)) begin
         arm_d = 1'b0;
       end else if (sg_dir != arm_fwd_q) begin
         arm_cnt_d = '0;
       end else if (arm_cnt_q >= cfg_setup_q) begin
-        arm_d      = 1'b0;
-        exec_start = 1'b1;
+        // set up: start now, or (SyncStart) hold until every axis is
+        if (!SyncStart || sync_go_i) begin
+          arm_d      = 1'b0;
+          exec_start = 1'b1;
+        end
       end else begin
         arm_cnt_d = arm_cnt_q + PulseTimeW'(1);
       end

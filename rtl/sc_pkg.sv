@@ -46,6 +46,9 @@ package sc_pkg;
   localparam int RowFlagHold      = 3;  // velocity mode: at its end the row holds its constant
                                         // velocity until a whole move (a MOVE_END row) is queued
 
+  // ---- coordinated axes ----------------------------------------------------
+  localparam int MaxAxes = 4;  // axes of sc_multi_axis_core (its Axes: 1 .. MaxAxes)
+
   // ---- step pulse generator ----------------------------------------------
   localparam int PulseTimeW = 16;  // high/low/setup/hold in clocks
   localparam int PendW      = 4;   // signed queue of requested steps

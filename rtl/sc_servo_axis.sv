@@ -157,6 +157,8 @@ module sc_servo_axis (
   assign unused_frac_lo = exec_frac[FracBits-MulAW-1:0];
   assign unused_vel_lo  = exec_vel[VelW-MulAW-1:0];
 
+  logic unused_start_able, unused_arm_ready, unused_arm_drop, unused_fault_abort;
+
   sc_axis_core #(
     .ExtStep (1'b1)
   ) u_core (
@@ -201,6 +203,13 @@ module sc_servo_axis (
     // discontinuity, guard) is not done, as on the open-loop core: in position,
     // the axis is idle with its stop flags.
     .ext_done_i       (ctl_in_pos && exec_finished),
+    .sync_start_ok_i  (1'b0),   // one axis: no start synchronisation
+    .sync_go_i        (1'b0),
+    .sync_drop_i      (1'b0),
+    .start_able_o     (unused_start_able),
+    .arm_ready_o      (unused_arm_ready),
+    .arm_drop_o       (unused_arm_drop),
+    .fault_abort_o    (unused_fault_abort),
     .exec_start_o     (exec_start),
     .abort_o          (core_abort),
     .ref_done_o       (exec_finished),

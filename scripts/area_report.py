@@ -16,7 +16,7 @@ import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
-TOPS = ["sc_axis_core", "sc_servo_axis", "sc_neuron_pi", "sc_axi_regs", "sc_uart_bridge",
+TOPS = ["sc_axis_core", "sc_multi_axis_core", "sc_servo_axis", "sc_neuron_pi", "sc_axi_regs", "sc_uart_bridge",
         "sc_axi_axis", "sc_axi_servo", "sc_board_top"]
 COLUMNS = ["lut", "lut_mem", "lut_total", "ff", "carry4", "dsp48e1", "bram", "logic_depth"]
 

@@ -63,6 +63,8 @@ lut_budget=${SC_LUT_BUDGET:-}; dsp_budget=${SC_DSP_BUDGET:-}
 # the single-axis cores: open loop and with the closed loop
 case "$top" in
   sc_axis_core|sc_servo_axis) lut_budget=${lut_budget:-8600}; dsp_budget=${dsp_budget:-8} ;;
+  # two open-loop axes (its default Axes = 2): 12227 LUT, two single cores
+  sc_multi_axis_core) lut_budget=${lut_budget:-14000}; dsp_budget=${dsp_budget:-0} ;;
 esac
 # the budget counts every LUT: logic and LUTs used as memory
 if [ -n "$lut_budget" ] && [ "$((luts + lut_mem))" -gt "$lut_budget" ]; then

@@ -8,11 +8,14 @@
 // The stream (BM_Stream*): 40 moves of 2,000-6,000 pulses in both
 // directions at 20,000-60,000 pulses/s with look-ahead junction speeds, the
 // host pushing a row whenever the FIFO has room (about 34 M clocks).
+// The two-axis line (BM_TwoAxisLine*): 20,000 and -12,000 pulses on the
+// multi-axis core at 40,000 pulses/s along the path (about 13 M clocks).
 #include <benchmark/benchmark.h>
 
 #include <random>
 #include <utility>
 
+#include "multi_run.h"
 #include "planner.h"
 #include "sim_run.h"
 #include "stream_run.h"
@@ -91,12 +94,33 @@ void run_stream_bench(benchmark::State& state, SimEngine engine) {
   });
 }
 
+void run_two_axis_line(benchmark::State& state, bool rtl) {
+  static const MultiRows rows = [] {
+    scurve::LineRequest r;
+    r.distances = {20000, -12000};
+    r.v_path = 40000;
+    r.a_path = 2e6;
+    r.j_path = 4e8;
+    return line_rows(std::get<scurve::LinePlan>(scurve::plan_line(scurve::Planner{model_clock()}, r,
+                                                                   to_host(PulseTiming{}))));
+  }();
+  MultiRunOptions opt;
+  opt.rtl = rtl;
+  opt.measure_line = false;
+  measure(state, [&] {
+    const MultiRunResult r = run_multi(rows, opt);
+    return std::pair{r.clocks, r.ok() && r.ref_pos[0] == 20000 && r.ref_pos[1] == -12000};
+  });
+}
+
 void BM_Lockstep(benchmark::State& s) { run(s, SimEngine::Lockstep); }
 void BM_RtlOnly(benchmark::State& s) { run(s, SimEngine::RtlOnly); }
 void BM_ModelOnly(benchmark::State& s) { run(s, SimEngine::ModelOnly); }
 void BM_ModelFastForward(benchmark::State& s) { run(s, SimEngine::ModelFast); }
 void BM_StreamLockstep(benchmark::State& s) { run_stream_bench(s, SimEngine::Lockstep); }
 void BM_StreamRtlOnly(benchmark::State& s) { run_stream_bench(s, SimEngine::RtlOnly); }
+void BM_TwoAxisLineLockstep(benchmark::State& s) { run_two_axis_line(s, true); }
+void BM_TwoAxisLineModelOnly(benchmark::State& s) { run_two_axis_line(s, false); }
 
 BENCHMARK(BM_Lockstep)->Unit(benchmark::kSecond)->Iterations(2);
 BENCHMARK(BM_RtlOnly)->Unit(benchmark::kSecond)->Iterations(2);
@@ -104,6 +128,8 @@ BENCHMARK(BM_ModelOnly)->Unit(benchmark::kSecond)->Iterations(2);
 BENCHMARK(BM_ModelFastForward)->Unit(benchmark::kMillisecond)->Iterations(20);
 BENCHMARK(BM_StreamLockstep)->Unit(benchmark::kSecond)->Iterations(2);
 BENCHMARK(BM_StreamRtlOnly)->Unit(benchmark::kSecond)->Iterations(2);
+BENCHMARK(BM_TwoAxisLineLockstep)->Unit(benchmark::kSecond)->Iterations(2);
+BENCHMARK(BM_TwoAxisLineModelOnly)->Unit(benchmark::kSecond)->Iterations(2);
 
 }  // namespace
 

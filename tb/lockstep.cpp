@@ -41,7 +41,17 @@ SignalValues render_outputs(const CoreOutputs& o) {
       {"fifo_full_o", hex_bits(uint64_t(o.fifo_full), 1)},
       {"row_count_o", hex_bits(uint64_t(o.row_count), RowCountW)},
       {"retarget_refused_o", hex_bits(uint64_t(o.retarget_refused), 1)},
+      {"lim_trip_fwd_o", hex_bits(uint64_t(o.lim_trip_fwd), 1)},
+      {"lim_trip_rev_o", hex_bits(uint64_t(o.lim_trip_rev), 1)},
   };
+}
+
+SignalValues render_multi_outputs(const MultiCoreOutputs& o) {
+  SignalValues all;
+  for (size_t a = 0; a < o.axes; ++a) {
+    for (auto& [name, value] : render_outputs(o.axis[a])) all.emplace_back(fmt::format("ax{}.{}", a, name), value);
+  }
+  return all;
 }
 
 std::string Mismatch::to_string() const {

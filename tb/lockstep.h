@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "axis_core.h"
+#include "multi_axis_core.h"
 
 namespace sc {
 
@@ -132,6 +133,16 @@ SignalValues render_outputs(const CoreOutputs& o);
 class LockstepChecker : public Lockstep<CoreOutputs> {
  public:
   explicit LockstepChecker(size_t max_errors = 1) : Lockstep<CoreOutputs>(&render_outputs, max_errors) {}
+};
+
+// The multi-axis core (sc_multi_axis_core): every axis's outputs, named
+// "axN.<port>".
+SignalValues render_multi_outputs(const MultiCoreOutputs& o);
+
+class MultiLockstepChecker : public Lockstep<MultiCoreOutputs> {
+ public:
+  explicit MultiLockstepChecker(size_t max_errors = 1)
+      : Lockstep<MultiCoreOutputs>(&render_multi_outputs, max_errors) {}
 };
 
 }  // namespace sc

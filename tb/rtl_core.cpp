@@ -31,6 +31,10 @@ RtlCore::RtlCore() : top_(std::make_unique<VerilatedTop<Vsc_axis_core>>("sc_axis
   m.ext_busy_i = 0;
   m.ext_abort_i = 0;
   m.ext_done_i = 0;
+  // One axis: no start synchronisation (SyncStart = 0 ignores these).
+  m.sync_start_ok_i = 0;
+  m.sync_go_i = 0;
+  m.sync_drop_i = 0;
   m.eval();
 }
 

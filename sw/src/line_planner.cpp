@@ -33,15 +33,16 @@ std::optional<Error> check_positive(const char* name, double v) {
 }
 
 // The request's path limits, lowered so that no axis passes its own.
-struct PathLimits {
+struct LineLimits {
   double v = 0, a = 0, j = 0;
 };
 
-std::variant<PathLimits, Error> path_limits(const LineRequest& r, double length) {
-  PathLimits p{r.v_path, r.a_path, r.j_path};
+// travel: each axis's travel in pulses (magnitude), length: their Euclidean length.
+std::variant<LineLimits, Error> path_limits(const LineRequest& r, const std::vector<double>& travel, double length) {
+  LineLimits p{r.v_path, r.a_path, r.j_path};
   for (size_t i = 0; i < r.axis_limits.size(); ++i) {
     const AxisLimits& l = r.axis_limits[i];
-    const double share = double(r.distances[i] < 0 ? -r.distances[i] : r.distances[i]) / length;
+    const double share = travel[i] / length;
     const auto lower = [&](double& path, double limit, const char* field) -> std::optional<Error> {
       if (!std::isfinite(limit) || limit < 0) {
         return Error{"axis_limits", fmt::format("axis_limits[{}].{}={}: needs a finite number >= 0 (0: none)", i,
@@ -81,28 +82,67 @@ LineResult plan_line(const Planner& planner, const LineRequest& r, const PulseTi
     return Error{"axis_limits", fmt::format("axis_limits: {} entries for {} axes, needs none or one per axis",
                                             r.axis_limits.size(), n)};
   }
+  const bool carried = !r.start_fracs.empty();
+  if (carried && r.start_fracs.size() != n) {
+    return Error{"start_fracs", fmt::format("start_fracs: {} entries for {} axes, needs none or one per axis",
+                                            r.start_fracs.size(), n)};
+  }
+  for (size_t i = 0; i < r.start_fracs.size(); ++i) {
+    if (r.start_fracs[i] >= kOne) {
+      return Error{"start_fracs", fmt::format("start_fracs[{}]={}: must be < 2^{} (one pulse)", i,
+                                              to_hex_u128(r.start_fracs[i], 128), hw::FracBits)};
+    }
+  }
 
-  double length = 0;
-  size_t lead = 0;
+  const i128 one = i128(kOne);
   std::vector<i128> mag(n);
+  for (size_t i = 0; i < n; ++i) mag[i] = abs128(r.distances[i]);
+  // Magnitude form: each axis runs forward from p0[i]; a backward axis's
+  // real fraction is 1 - p0, so its p0 lies in (0, 1] pulse.
+  const auto dir_of = [&](size_t i) { return r.distances[i] < 0 ? -1 : 1; };
+  std::vector<i128> p0(n, 0);
+  // Each axis's travel (LSB, magnitude): on its own, the distance itself (the
+  // start fraction absorbs the rest); from a given fraction, from there to
+  // the middle of its target's pulse (a still axis stays where it is).
+  std::vector<i128> travel(n);
   for (size_t i = 0; i < n; ++i) {
-    mag[i] = abs128(r.distances[i]);
-    length += double(r.distances[i]) * double(r.distances[i]);
-    if (mag[i] > mag[lead]) lead = i;
+    if (!carried) {
+      travel[i] = mag[i];
+      continue;
+    }
+    const i128 f = i128(r.start_fracs[i]);
+    p0[i] = dir_of(i) > 0 ? f : one - f;
+    travel[i] = mag[i] == 0 ? 0 : mag[i] * one + one / 2 - p0[i];
+  }
+  size_t lead = 0;
+  for (size_t i = 0; i < n; ++i) {
+    if (travel[i] > travel[lead]) lead = i;
+  }
+  std::vector<double> travel_pulses(n);
+  double length = 0;
+  for (size_t i = 0; i < n; ++i) {
+    travel_pulses[i] = carried ? double(travel[i]) / double(one) : double(mag[i]);
+    length += travel_pulses[i] * travel_pulses[i];
   }
   length = std::sqrt(length);
-  auto limits = path_limits(r, length);
+  auto limits = path_limits(r, travel_pulses, length);
   if (const Error* e = std::get_if<Error>(&limits)) return *e;
-  const PathLimits& path = std::get<PathLimits>(limits);
+  const LineLimits& path = std::get<LineLimits>(limits);
 
   // The lead axis: the path profile scaled to its share, in magnitude form.
-  const double lead_share = double(mag[lead]) / length;
+  const double lead_share = travel_pulses[lead] / length;
   MoveRequest lead_req;
   lead_req.distance = int64_t(mag[lead]);
   lead_req.v_cruise = path.v * lead_share;
   lead_req.a_max = path.a * lead_share;
   lead_req.j_max = path.j * lead_share;
-  PlanResult lead_plan = planner.plan(lead_req, timing);
+  PlanResult lead_plan = [&] {
+    if (!carried) return planner.plan(lead_req, timing);
+    // From its own fraction (signed: plan_from takes the executor's state).
+    MoveRequest signed_req = lead_req;
+    signed_req.distance = r.distances[lead];
+    return planner.plan_from(JunctionState{0, r.start_fracs[lead]}, signed_req, timing);
+  }();
   if (const Error* e = std::get_if<Error>(&lead_plan)) {
     const std::string field = e->parameter == "v_cruise" ? "v_path"
                               : e->parameter == "a_max"  ? "a_path"
@@ -112,7 +152,24 @@ LineResult plan_line(const Planner& planner, const LineRequest& r, const PulseTi
                                     r.distances[lead], lead_share, e->message)};
   }
   const Plan& lp = std::get<Plan>(lead_plan);
-  const std::vector<Segment>& lr = lp.segments;
+  std::vector<Segment> lr = lp.segments;
+  if (carried && dir_of(lead) < 0) {
+    for (Segment& s : lr) {
+      s.jerk = -s.jerk;
+      s.acc0 = -s.acc0;
+      s.vel0 = -s.vel0;
+    }
+  }
+
+  // Each axis's share of the lead's profile: travel[i] / travel[lead], as an
+  // integer ratio whose products with an acceleration (< 2^63) fit in 127
+  // bits. A travel from a fraction has up to 111 bits; dropping its low bits
+  // changes the share by less than 2^-60.
+  int shift = 0;
+  while ((travel[lead] >> shift) >= (i128(1) << 62)) ++shift;
+  std::vector<i128> share_num(n);
+  for (size_t i = 0; i < n; ++i) share_num[i] = travel[i] >> shift;
+  const i128 share_den = std::max<i128>(1, travel[lead] >> shift);
 
   // Each axis's acceleration at the lead's row boundaries: the lead's,
   // scaled to the axis's share and rounded (the lead's own exactly).
@@ -132,7 +189,7 @@ LineResult plan_line(const Planner& planner, const LineRequest& r, const PulseTi
   const auto split = [&](size_t i, size_t k, i128 bias) {
     const uint64_t c = lr[k].clocks;
     const auto target = [&](size_t b) {
-      return scale_round(lead_acc[b], mag[i], mag[lead]) + (lead_acc[b] < 0 ? bias : 0);
+      return scale_round(lead_acc[b], share_num[i], share_den) + (lead_acc[b] < 0 ? bias : 0);
     };
     const i128 d = target(k + 1) - target(k);
     RowSplit r;
@@ -246,7 +303,6 @@ LineResult plan_line(const Planner& planner, const LineRequest& r, const PulseTi
   // middle of its target's pulse (as plan() ends the lead), then mirrored.
   std::vector<std::vector<Segment>> mag_rows(n);
   std::vector<u128> frac(n);
-  const i128 one = i128(kOne);
   for (size_t i = 0; i < n; ++i) {
     i128 v = 0, gain = 0;
     int64_t a = 0;
@@ -266,20 +322,21 @@ LineResult plan_line(const Planner& planner, const LineRequest& r, const PulseTi
     // lead that starts near a whole pulse): then from the nearest fraction.
     // Mirrored, the start is 1 - p0, so a move backward needs p0 in (0, 1]
     // and its end in (distance, distance + 1].
-    const int dir = r.distances[i] < 0 ? -1 : 1;
+    // From a given fraction the start is fixed; the share aimed its end.
+    const int dir = dir_of(i);
     const i128 lo = dir > 0 ? 0 : 1;
-    const i128 p0 = std::clamp<i128>(mag[i] * one + one / 2 - gain, lo, lo + one - 1);
-    const i128 end = p0 + gain;
+    const i128 start = carried ? p0[i] : std::clamp<i128>(mag[i] * one + one / 2 - gain, lo, lo + one - 1);
+    const i128 end = start + gain;
     if (v != 0 || a != 0 || end < mag[i] * one + lo || end >= (mag[i] + 1) * one + lo) {
       return Error{"distances", fmt::format("distances[{}]={}: the scaled rows travel {} pulses, not within its "
                                             "target's pulse; split the line",
                                             i, r.distances[i], double(gain) / double(one))};
     }
-    frac[i] = u128(p0);
+    frac[i] = u128(start);
     Plan p;
     p.clock = lp.clock;
     p.distance = r.distances[i];
-    p.pos_frac0 = dir > 0 ? u128(p0) : kOne - u128(p0);
+    p.pos_frac0 = dir > 0 ? u128(start) : kOne - u128(start);
     for (const Segment& m : mag_rows[i]) {
       Segment s = m;
       s.jerk *= dir;
@@ -303,18 +360,22 @@ LineResult plan_line(const Planner& planner, const LineRequest& r, const PulseTi
     out.axes.push_back(std::move(p));
   }
 
-  // Distance from the line: the line runs through the point at half a
-  // pulse on every axis in the direction of the distances (where each
-  // axis's start fraction puts it); each axis's offset from where the
-  // lead's progress puts it on the line.
-  std::vector<i128> pos(n);
-  for (size_t i = 0; i < n; ++i) pos[i] = i128(frac[i]);
+  // Distance from the line: on its own, the line runs through the point at
+  // half a pulse on every axis in the direction of the distances (where
+  // each axis's start fraction puts it); from given fractions, through the
+  // start point in the direction of the travels. Each axis's offset from
+  // where the lead's progress puts it on the line.
+  std::vector<i128> pos(n), anchor(n, one / 2);
+  for (size_t i = 0; i < n; ++i) {
+    pos[i] = i128(frac[i]);
+    if (carried) anchor[i] = pos[i];
+  }
   const auto deviation = [&](const std::vector<i128>& at) {
-    const long double lead_off = (long double)(at[lead] - one / 2) / (long double)one;
+    const long double lead_off = (long double)(at[lead] - anchor[lead]) / (long double)one;
     long double sum = 0;
     for (size_t i = 0; i < n; ++i) {
-      const long double share = (long double)mag[i] / (long double)mag[lead];
-      const long double e = (long double)(at[i] - one / 2) / (long double)one - share * lead_off;
+      const long double share = (long double)travel[i] / (long double)travel[lead];
+      const long double e = (long double)(at[i] - anchor[i]) / (long double)one - share * lead_off;
       sum += e * e;
     }
     return double(std::sqrt(sum));

@@ -243,6 +243,7 @@ int sc_main(int argc, char** argv) {
   sc_signal<bool> ext_off("ext_off");
   sc_signal<bool> exec_start("exec_start"), abort_q("abort_q"), ref_done("ref_done"), ref_running("ref_running"),
       step_busy("step_busy");
+  sc_signal<bool> start_able("start_able"), arm_ready("arm_ready"), arm_drop("arm_drop"), fault_abort("fault_abort");
   dut.ext_sel_i(ext_off);
   dut.ext_req_i(ext_off);
   dut.ext_fwd_i(ext_off);
@@ -251,6 +252,9 @@ int sc_main(int argc, char** argv) {
   dut.ext_busy_i(ext_off);
   dut.ext_abort_i(ext_off);
   dut.ext_done_i(ext_off);
+  dut.sync_start_ok_i(ext_off);  // one axis: no start synchronisation
+  dut.sync_go_i(ext_off);
+  dut.sync_drop_i(ext_off);
   // No limit switches and no guard limits (0 = none) on this bench.
   sc_signal<VelBv> guard_vel("guard_vel");
   sc_signal<uint64_t> guard_acc("guard_acc"), guard_jerk("guard_jerk");
@@ -266,6 +270,10 @@ int sc_main(int argc, char** argv) {
   dut.lim_trip_fwd_o(lim_trip_fwd);
   dut.lim_trip_rev_o(lim_trip_rev);
   dut.exec_start_o(exec_start);
+  dut.start_able_o(start_able);
+  dut.arm_ready_o(arm_ready);
+  dut.arm_drop_o(arm_drop);
+  dut.fault_abort_o(fault_abort);
   dut.abort_o(abort_q);
   dut.ref_done_o(ref_done);
   dut.ref_running_o(ref_running);

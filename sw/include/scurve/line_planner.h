@@ -19,6 +19,13 @@
 // turn, after the lead's last row; each axis's start fraction places its
 // end in the middle of its target's pulse, as the lead's. The rows are rest
 // to rest (exact stop at both ends of the line).
+//
+// From given start fractions (start_fracs: a line continuing another in one
+// row stream) the lead is planned by Planner::plan_from() from its fraction,
+// aimed mid-pulse, and every axis's share is its travel from its fraction to
+// the middle of its target's pulse: the others then end within their
+// share of the lead's offset from its aim, so the fractions stay near half a
+// pulse from line to line instead of drifting.
 #pragma once
 
 #include <cstdint>
@@ -40,6 +47,11 @@ struct LineRequest {
   double a_path = 0;               // path acceleration, pulses/s^2
   double j_path = 0;               // path jerk, pulses/s^3
   std::vector<AxisLimits> axis_limits;  // empty, or one per axis
+  // Where each axis's executor position fraction is at the start (rest), in
+  // [0, 2^FracBits): a line that continues another in one row stream, where
+  // the fraction carries over (plan_path). Empty: a line on its own, each
+  // axis's start fraction chosen so that it ends mid-pulse.
+  std::vector<u128> start_fracs;
   static constexpr size_t kMaxAxes = 4;
 };
 
@@ -58,8 +70,9 @@ struct LinePlan {
 using LineResult = std::variant<LinePlan, Error>;
 
 // Errors name the field and the bound: "distances" (count, range, all 0),
-// "v_path" / "a_path" / "j_path", "axis_limits" (count or a value), and the
-// lead's plan() errors with the path limits as they scaled.
+// "v_path" / "a_path" / "j_path", "axis_limits" (count or a value),
+// "start_fracs" (count or a value), and the lead's plan() errors with the
+// path limits as they scaled.
 LineResult plan_line(const Planner& planner, const LineRequest& request, const PulseTiming& timing);
 
 }  // namespace scurve

@@ -1,0 +1,198 @@
+// sc_multi_axis_core: Axes open-loop axes (sc_axis_core) that execute one
+// shared row sequence in lockstep with each other.
+//
+// One row push writes a multi-axis row: the shared clocks, retarget and
+// push strobes, and per axis its jerk, start acceleration, start velocity,
+// phase and flags. Every axis's FIFO takes it in the same clock, so the
+// FIFOs hold the same rows, level and move index at all times: logically one
+// FIFO of multi-axis rows (each axis keeps its copy of the clocks field).
+//
+// One start: a START is taken by every axis or by none (sync_start_ok: each
+// axis idle, enabled and not heading into an active limit), every axis arms
+// its DIR, and all executors start on the clock the last axis has its DIR
+// set up (sync_go); an axis that drops its arming (STOP, abort, a limit)
+// drops it on every axis. Because the rows of all axes last the same clocks,
+// every axis then starts and ends every row on the same clock.
+//
+// One stop: a controlled stop of any axis (CMD.STOP, a limit, a
+// discontinuity, a guard, an underrun) is a controlled stop of all (the
+// OR of stopping_o feeds every axis's stop input, one register later on
+// the others); an immediate stop of any axis (a hard limit, the step-rate
+// guard) is an immediate stop of all. With each axis's STOP_JERK / STOP_ACC
+// set to its share of the path's (scurve::line_stop_limits), the axes brake
+// along the line they were on. Per-axis ports are flat vectors, axis a in
+// bits [a*W +: W] of a W-bit field (one-dimensional: yosys 0.23 reads no
+// packed arrays of vectors in ports).
+module sc_multi_axis_core #(
+  parameter int Axes = 2
+) (
+  input  logic                                   clk_i,
+  input  logic                                   rst_ni,
+
+  input  logic                                   enable_i,
+  input  logic [Axes*sc_pkg::PulseTimeW-1:0] cfg_high_i,
+  input  logic [Axes*sc_pkg::PulseTimeW-1:0] cfg_low_i,
+  input  logic [Axes*sc_pkg::PulseTimeW-1:0] cfg_setup_i,
+  input  logic [Axes*sc_pkg::PulseTimeW-1:0] cfg_hold_i,
+
+  input  logic                                   row_push_i,
+  input  logic                                   row_replace_i,
+  input  logic [sc_pkg::RowCountW-1:0]           retarget_row_i,
+  input  logic [sc_pkg::SegClkW-1:0]             row_clocks_i,
+  input  logic [Axes*sc_pkg::RowFlagW-1:0] row_flags_i,
+  input  logic [Axes*sc_pkg::PhaseW-1:0] row_phase_i,
+  input  logic [Axes*sc_pkg::JerkW-1:0] row_jerk_i,
+  input  logic [Axes*sc_pkg::AccW-1:0] row_acc0_i,
+  input  logic [Axes*sc_pkg::VelW-1:0] row_vel0_i,
+  input  logic                                   fifo_flush_i,
+  input  logic [Axes*sc_pkg::FracBits-1:0] pos_frac0_i,
+  input  logic                                   start_i,
+  input  logic                                   abort_i,
+  input  logic                                   stop_i,
+  input  logic [Axes*sc_pkg::JerkW-1:0] stop_jerk_i,
+  input  logic [Axes*sc_pkg::AccW-1:0] stop_acc_i,
+  input  logic [Axes*sc_pkg::VelW-1:0] guard_vel_i,
+  input  logic [Axes*sc_pkg::AccW-1:0] guard_acc_i,
+  input  logic [Axes*sc_pkg::JerkW-1:0] guard_jerk_i,
+  input  logic [Axes-1:0]                        lim_fwd_i,
+  input  logic [Axes-1:0]                        lim_rev_i,
+  input  logic [Axes-1:0]                        lim_hard_i,
+
+  output logic [Axes-1:0]                        step_o,
+  output logic [Axes-1:0]                        dir_o,
+  output logic [Axes-1:0]                        en_o,
+  output logic [Axes-1:0]                        busy_o,
+  output logic [Axes-1:0]                        done_o,
+  output logic [Axes*sc_pkg::PhaseW-1:0] phase_o,
+  output logic [Axes-1:0]                        fault_table_o,
+  output logic [Axes-1:0]                        fault_overrun_o,
+  output logic [Axes-1:0]                        underrun_o,
+  output logic [Axes-1:0]                        discont_o,
+  output logic [Axes-1:0]                        guard_o,
+  output logic [Axes-1:0]                        stopping_o,
+  output logic [Axes-1:0]                        overshoot_o,
+  output logic [Axes-1:0]                        move_done_o,
+  output logic [Axes*sc_pkg::MoveIdxW-1:0] move_idx_o,
+  output logic [Axes*sc_pkg::PosIntW-1:0] boundary_pos_o,
+  output logic [Axes*sc_pkg::RowLevelW-1:0] fifo_level_o,
+  output logic [Axes*sc_pkg::RowCountW-1:0] row_count_o,
+  output logic [Axes-1:0]                        retarget_refused_o,
+  output logic [Axes-1:0]                        fifo_full_o,
+  output logic [Axes*sc_pkg::PosIntW-1:0] pulse_count_o,
+  output logic [Axes-1:0]                        lim_trip_fwd_o,
+  output logic [Axes-1:0]                        lim_trip_rev_o,
+  output logic [Axes*sc_pkg::PosIntW-1:0] ref_pos_int_o,
+  output logic [Axes*sc_pkg::FracBits-1:0] ref_pos_frac_o,
+  output logic [Axes*sc_pkg::VelW-1:0] ref_vel_o,
+  output logic [Axes*sc_pkg::AccW-1:0] ref_acc_o,
+  output logic [Axes*sc_pkg::JerkW-1:0] ref_jerk_o,
+  output logic [Axes*sc_pkg::SegIdxW-1:0] seg_idx_o,
+  output logic [Axes*sc_pkg::PendW-1:0] step_pending_o
+);
+
+`ifndef SYNTHESIS
+  initial begin
+    if (Axes < 1 || Axes > sc_pkg::MaxAxes) $fatal(1, "sc_multi_axis_core: Axes=%0d is not 1 .. MaxAxes", Axes);
+  end
+`endif
+
+  logic [Axes-1:0] start_able, arm_ready, arm_drop, fault_abort;
+  logic            sync_start_ok, sync_go, sync_drop, stop_all, abort_all;
+
+  assign sync_start_ok = &start_able;
+  assign sync_go       = &arm_ready;
+  assign sync_drop     = |arm_drop;
+  // stopping_o and fault_abort are register outputs: no loop through the axes
+  assign stop_all      = stop_i || (|stopping_o);
+  assign abort_all     = abort_i || (|fault_abort);
+
+  for (genvar a = 0; a < Axes; a++) begin : g_axis
+    logic unused_exec_start, unused_abort, unused_ref_done, unused_ref_running, unused_step_busy;
+
+    sc_axis_core #(
+      .ExtStep   (1'b0),
+      .SyncStart (1'b1)
+    ) u_core (
+      .clk_i,
+      .rst_ni,
+      .enable_i,
+      .cfg_high_i       (cfg_high_i[a*sc_pkg::PulseTimeW +: sc_pkg::PulseTimeW]),
+      .cfg_low_i        (cfg_low_i[a*sc_pkg::PulseTimeW +: sc_pkg::PulseTimeW]),
+      .cfg_setup_i      (cfg_setup_i[a*sc_pkg::PulseTimeW +: sc_pkg::PulseTimeW]),
+      .cfg_hold_i       (cfg_hold_i[a*sc_pkg::PulseTimeW +: sc_pkg::PulseTimeW]),
+      .row_push_i,
+      .row_replace_i,
+      .retarget_row_i,
+      .row_flags_i      (row_flags_i[a*sc_pkg::RowFlagW +: sc_pkg::RowFlagW]),
+      .row_phase_i      (row_phase_i[a*sc_pkg::PhaseW +: sc_pkg::PhaseW]),
+      .row_clocks_i,
+      .row_jerk_i       (row_jerk_i[a*sc_pkg::JerkW +: sc_pkg::JerkW]),
+      .row_acc0_i       (row_acc0_i[a*sc_pkg::AccW +: sc_pkg::AccW]),
+      .row_vel0_i       (row_vel0_i[a*sc_pkg::VelW +: sc_pkg::VelW]),
+      .fifo_flush_i,
+      .pos_frac0_i      (pos_frac0_i[a*sc_pkg::FracBits +: sc_pkg::FracBits]),
+      .start_i,
+      .abort_i          (abort_all),
+      .stop_i           (stop_all),
+      .stop_jerk_i      (stop_jerk_i[a*sc_pkg::JerkW +: sc_pkg::JerkW]),
+      .stop_acc_i       (stop_acc_i[a*sc_pkg::AccW +: sc_pkg::AccW]),
+      .guard_vel_i      (guard_vel_i[a*sc_pkg::VelW +: sc_pkg::VelW]),
+      .guard_acc_i      (guard_acc_i[a*sc_pkg::AccW +: sc_pkg::AccW]),
+      .guard_jerk_i     (guard_jerk_i[a*sc_pkg::JerkW +: sc_pkg::JerkW]),
+      .lim_fwd_i        (lim_fwd_i[a]),
+      .lim_rev_i        (lim_rev_i[a]),
+      .lim_hard_i       (lim_hard_i[a]),
+      .ext_sel_i        (1'b0),
+      .ext_req_i        (1'b0),
+      .ext_fwd_i        (1'b0),
+      .ext_hint_valid_i (1'b0),
+      .ext_hint_i       (1'b0),
+      .ext_busy_i       (1'b0),
+      .ext_abort_i      (1'b0),
+      .ext_done_i       (1'b0),
+      .sync_start_ok_i  (sync_start_ok),
+      .sync_go_i        (sync_go),
+      .sync_drop_i      (sync_drop),
+      .start_able_o     (start_able[a]),
+      .arm_ready_o      (arm_ready[a]),
+      .arm_drop_o       (arm_drop[a]),
+      .fault_abort_o    (fault_abort[a]),
+      .exec_start_o     (unused_exec_start),
+      .abort_o          (unused_abort),
+      .ref_done_o       (unused_ref_done),
+      .ref_running_o    (unused_ref_running),
+      .step_busy_o      (unused_step_busy),
+      .lim_trip_fwd_o   (lim_trip_fwd_o[a]),
+      .lim_trip_rev_o   (lim_trip_rev_o[a]),
+      .step_o           (step_o[a]),
+      .dir_o            (dir_o[a]),
+      .en_o             (en_o[a]),
+      .busy_o           (busy_o[a]),
+      .done_o           (done_o[a]),
+      .phase_o          (phase_o[a*sc_pkg::PhaseW +: sc_pkg::PhaseW]),
+      .fault_table_o    (fault_table_o[a]),
+      .fault_overrun_o  (fault_overrun_o[a]),
+      .underrun_o       (underrun_o[a]),
+      .discont_o        (discont_o[a]),
+      .guard_o          (guard_o[a]),
+      .stopping_o       (stopping_o[a]),
+      .overshoot_o      (overshoot_o[a]),
+      .move_done_o      (move_done_o[a]),
+      .move_idx_o       (move_idx_o[a*sc_pkg::MoveIdxW +: sc_pkg::MoveIdxW]),
+      .boundary_pos_o   (boundary_pos_o[a*sc_pkg::PosIntW +: sc_pkg::PosIntW]),
+      .fifo_level_o     (fifo_level_o[a*sc_pkg::RowLevelW +: sc_pkg::RowLevelW]),
+      .row_count_o      (row_count_o[a*sc_pkg::RowCountW +: sc_pkg::RowCountW]),
+      .retarget_refused_o (retarget_refused_o[a]),
+      .fifo_full_o      (fifo_full_o[a]),
+      .pulse_count_o    (pulse_count_o[a*sc_pkg::PosIntW +: sc_pkg::PosIntW]),
+      .ref_pos_int_o    (ref_pos_int_o[a*sc_pkg::PosIntW +: sc_pkg::PosIntW]),
+      .ref_pos_frac_o   (ref_pos_frac_o[a*sc_pkg::FracBits +: sc_pkg::FracBits]),
+      .ref_vel_o        (ref_vel_o[a*sc_pkg::VelW +: sc_pkg::VelW]),
+      .ref_acc_o        (ref_acc_o[a*sc_pkg::AccW +: sc_pkg::AccW]),
+      .ref_jerk_o       (ref_jerk_o[a*sc_pkg::JerkW +: sc_pkg::JerkW]),
+      .seg_idx_o        (seg_idx_o[a*sc_pkg::SegIdxW +: sc_pkg::SegIdxW]),
+      .step_pending_o   (step_pending_o[a*sc_pkg::PendW +: sc_pkg::PendW])
+    );
+  end
+
+endmodule

@@ -1,0 +1,234 @@
+#include "multi_run.h"
+
+#include <fmt/format.h>
+
+#include <chrono>
+#include <cmath>
+#include <climits>
+#include <memory>
+#include <stdexcept>
+
+#include "lockstep.h"
+#include "pin_monitor.h"
+#include "planner.h"
+#include "rtl_multi_axis_core.h"
+
+namespace sc {
+
+MultiRows line_rows(const scurve::LinePlan& plan) {
+  MultiRows m;
+  for (const scurve::Plan& p : plan.axes) {
+    std::vector<Segment> segs;
+    segs.reserve(p.segments.size());
+    for (const scurve::Segment& s : p.segments) segs.push_back(to_model(s));
+    m.rows.push_back(move_rows(segs, true));
+    m.pos_frac0.push_back(p.pos_frac0);
+  }
+  return m;
+}
+
+std::variant<std::vector<scurve::StopLimitCodes>, scurve::Error> line_stop_codes(
+    const std::vector<int64_t>& distances, double stop_jerk, double stop_acc, scurve::Clock clock) {
+  double length2 = 0;
+  for (int64_t d : distances) length2 += double(d) * double(d);
+  const double length = std::sqrt(length2);
+  std::vector<scurve::StopLimitCodes> codes;
+  for (int64_t d : distances) {
+    const double share = d == 0 || length == 0 ? 1.0 : std::abs(double(d)) / length;
+    auto c = scurve::stop_limit_codes(stop_jerk * share, stop_acc * share, clock);
+    if (auto* e = std::get_if<scurve::Error>(&c)) return *e;
+    codes.push_back(std::get<scurve::StopLimitCodes>(c));
+  }
+  return codes;
+}
+
+namespace {
+
+double position(const CoreOutputs& o) {
+  return double(o.ref_pos_int) + std::ldexp(double(o.ref_pos_frac), -FracBits);
+}
+
+// The model alone, no stop: where every axis's reference ends.
+std::vector<double> end_positions(const MultiRows& rows, const MultiRunOptions& options);
+
+class Run {
+ public:
+  Run(const MultiRows& rows, const MultiRunOptions& options, bool rtl, bool stop)
+      : rows_(rows), opt_(options), model_(rows.axes()), stop_(stop) {
+    if (rtl) rtl_ = std::make_unique<RtlMultiAxisCore>(rows.axes());
+    in_.enable = true;
+    for (size_t a = 0; a < rows.axes(); ++a) {
+      CoreInputs& x = in_.axis[a];
+      x.cfg = options.timing;
+      x.pos_frac0 = rows.pos_frac0[a];
+      if (!options.stop.empty()) {
+        x.stop_jerk = options.stop[a].jerk;
+        x.stop_acc = options.stop[a].acc;
+      }
+      PinRules r{options.timing};
+      r.profile_phases = !stop;
+      r.accounting = StepAccounting::ReferencePosition;
+      pins_.emplace_back(r);
+    }
+    if (rtl_) rtl_->reset();
+    model_.reset();
+  }
+
+  // Steps to the end; `line` (start and end per axis) measures the deviation.
+  MultiRunResult run(const std::vector<double>* line_end) {
+    const size_t n = rows_.axes();
+    const size_t count = rows_.rows[0].size();
+    MultiRunResult r;
+    r.axes = n;
+    r.stop_clock.assign(n, UINT64_MAX);
+    r.reversed.assign(n, false);
+    std::vector<int> vel_sign(n, 0);
+    std::vector<double> start(n), dir(n);
+    MultiLockstepChecker check(4);
+    MultiCoreOutputs out, rtl_out;
+    model_.read_outputs(out);
+    // The executor takes its start fraction when it starts.
+    for (size_t a = 0; a < n; ++a) {
+      start[a] = double(out.axis[a].ref_pos_int) + std::ldexp(double(rows_.pos_frac0[a]), -FracBits);
+    }
+    double dir_len2 = 0;
+    if (line_end) {
+      for (size_t a = 0; a < n; ++a) {
+        dir[a] = (*line_end)[a] - start[a];
+        dir_len2 += dir[a] * dir[a];
+      }
+    }
+    const auto t0 = std::chrono::steady_clock::now();
+    size_t next = 0;
+    bool started = false;
+    uint64_t clock = 0, start_clock = 0;
+    for (;; ++clock) {
+      in_.row_push = false;
+      in_.start = false;
+      in_.stop = false;
+      if (next < count && out.axis[0].fifo_level < RowFifoDepth) {
+        in_.row_push = true;
+        in_.row_clocks = rows_.rows[0][next].seg.clocks;
+        for (size_t a = 0; a < n; ++a) in_.axis[a].row = rows_.rows[a][next];
+        ++next;
+      } else if (!started) {
+        in_.start = true;
+        started = true;
+        start_clock = clock;
+      }
+      if (started && stop_ && opt_.stop_at && clock == start_clock + *opt_.stop_at) in_.stop = true;
+      if (stop_ && opt_.limit_at && (started ? clock >= start_clock + *opt_.limit_at : *opt_.limit_at == 0)) {
+        CoreInputs& x = in_.axis[opt_.limit_axis];
+        x.lim_fwd = x.lim_rev = true;
+        x.lim_hard = opt_.limit_hard;
+      }
+      model_.step(in_);
+      model_.read_outputs(out);
+      if (rtl_) {
+        rtl_->step(in_);
+        rtl_->read_outputs(rtl_out);
+        check.compare(clock, rtl_out, out);
+      }
+      for (size_t a = 0; a < n; ++a) {
+        const CoreOutputs& o = out.axis[a];
+        pins_[a].on_clock(clock, o);
+        if (o.stopping && r.stop_clock[a] == UINT64_MAX) r.stop_clock[a] = clock - start_clock;
+        const int s = o.ref_vel > 0 ? 1 : o.ref_vel < 0 ? -1 : 0;
+        if (s != 0) {
+          if (vel_sign[a] != 0 && s != vel_sign[a]) r.reversed[a] = true;
+          vel_sign[a] = s;
+        }
+        if (a > 0 && opt_.check_sync && (o.row_count != out.axis[0].row_count || o.move_idx != out.axis[0].move_idx ||
+                      o.seg_idx != out.axis[0].seg_idx || o.fifo_level != out.axis[0].fifo_level)) {
+          if (sync_errors_++ == 0) {
+            r.errors.push_back(fmt::format("clock {}: axis {} out of step with axis 0 (rows {} / {}, row {} / {})",
+                                           clock, a, o.row_count, out.axis[0].row_count, o.seg_idx,
+                                           out.axis[0].seg_idx));
+          }
+        }
+      }
+      if (line_end && dir_len2 > 0 && out.axis[0].row_count > 0) {
+        double dot = 0, p2 = 0;
+        for (size_t a = 0; a < n; ++a) {
+          const double p = position(out.axis[a]) - start[a];
+          dot += p * dir[a];
+          p2 += p * p;
+        }
+        const double dev2 = p2 - dot * dot / dir_len2;
+        if (dev2 > 0) r.max_line_deviation = std::max(r.max_line_deviation, std::sqrt(dev2));
+      }
+      if (check.should_stop()) break;
+      bool idle = true;
+      for (size_t a = 0; a < n; ++a) idle = idle && !out.axis[a].busy;
+      if (started && clock > start_clock + 2 && idle) break;
+      if (clock - start_clock > opt_.max_clocks) {
+        r.errors.push_back(fmt::format("not at rest after {} clocks (max_clocks)", opt_.max_clocks));
+        break;
+      }
+    }
+    r.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    r.clocks = clock - start_clock;
+    r.compared = check.matched() + check.mismatches();
+    r.mismatches = check.mismatches();
+    for (const Mismatch& m : check.errors()) r.errors.push_back(m.to_string());
+    for (size_t a = 0; a < n; ++a) {
+      pins_[a].finish(clock);
+      for (const std::string& e : pins_[a].errors()) r.errors.push_back(fmt::format("axis {} pins: {}", a, e));
+      r.ref_pos.push_back(out.axis[a].ref_pos_int);
+      r.pin_steps.push_back(pins_[a].net_steps());
+      r.done.push_back(out.axis[a].done);
+    }
+    return r;
+  }
+
+  std::vector<double> final_positions() const {
+    std::vector<double> p;
+    for (size_t a = 0; a < rows_.axes(); ++a) p.push_back(position(model_.axis(a).outputs()));
+    return p;
+  }
+
+ private:
+  const MultiRows& rows_;
+  const MultiRunOptions& opt_;
+  MultiAxisCore model_;
+  std::unique_ptr<RtlMultiAxisCore> rtl_;
+  MultiCoreInputs in_{};
+  std::vector<PinMonitor> pins_;
+  bool stop_;
+  uint64_t sync_errors_ = 0;
+};
+
+std::vector<double> end_positions(const MultiRows& rows, const MultiRunOptions& options) {
+  Run pre(rows, options, false, false);
+  pre.run(nullptr);
+  return pre.final_positions();
+}
+
+}  // namespace
+
+MultiRunResult run_multi(const MultiRows& rows, const MultiRunOptions& options) {
+  if (options.limit_at && options.limit_axis >= rows.axes()) {
+    throw std::invalid_argument(fmt::format("run_multi: limit_axis={} but only {} axes", options.limit_axis,
+                                            rows.axes()));
+  }
+  if (rows.rows.empty() || rows.pos_frac0.size() != rows.axes()) {
+    throw std::invalid_argument("run_multi: rows and pos_frac0 need one entry per axis");
+  }
+  for (const auto& r : rows.rows) {
+    if (r.size() != rows.rows[0].size() || r.empty()) {
+      throw std::invalid_argument("run_multi: every axis needs the same number of rows (at least one)");
+    }
+    for (size_t k = 0; k < r.size(); ++k) {
+      if (r[k].seg.clocks != rows.rows[0][k].seg.clocks) {
+        throw std::invalid_argument(fmt::format("run_multi: row {} lasts {} clocks on one axis, {} on axis 0", k,
+                                                r[k].seg.clocks, rows.rows[0][k].seg.clocks));
+      }
+    }
+  }
+  std::vector<double> line;
+  if (options.measure_line) line = end_positions(rows, options);
+  Run run(rows, options, options.rtl, options.stop_at.has_value() || options.limit_at.has_value());
+  return run.run(options.measure_line ? &line : nullptr);
+}
+
+}  // namespace sc

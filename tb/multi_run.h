@@ -1,0 +1,76 @@
+// Coordinated rows on the multi-axis core (sc_multi_axis_core / MultiAxisCore):
+// the host pushes one multi-axis row in every clock the FIFO has room, START
+// after the first rows, to the end at rest (or a CMD.STOP at a given clock).
+// RTL and model in lockstep (or the model alone), every clock compared; and
+// checks that do not mirror the RTL: the pin monitor on every axis, the
+// axes' row loads on the same clock, and the reference's distance from the
+// straight line measured clock by clock.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "multi_axis_core.h"
+#include "scurve/line_planner.h"
+#include "scurve/reg_encode.h"
+
+namespace sc {
+
+// One coordinated move's FIFO words: rows[axis][k], the same clocks for every
+// axis at each k, and each axis's start fraction.
+struct MultiRows {
+  std::vector<std::vector<Row>> rows;
+  std::vector<u128> pos_frac0;
+  size_t axes() const { return rows.size(); }
+};
+// The rows of a planned line (the last row ends the stream).
+MultiRows line_rows(const scurve::LinePlan& plan);
+
+struct MultiRunOptions {
+  bool rtl = true;  // RTL and model in lockstep; false: the model alone
+  PulseTiming timing{};
+  // STOP_JERK / STOP_ACC per axis (empty: the registers' reset values).
+  std::vector<scurve::StopLimitCodes> stop;
+  std::optional<uint64_t> stop_at;  // CMD.STOP this many clocks after START
+  // A limit switch: both limits of axis `limit_axis` become active this many
+  // clocks after START (0: before it), hard (immediate) or soft (controlled).
+  std::optional<uint64_t> limit_at;
+  size_t limit_axis = 0;
+  bool limit_hard = false;
+  // Check every clock that all axes load rows together (off where one axis
+  // is meant to stop first: a limit on one axis).
+  bool check_sync = true;
+  // Measure the reference's largest distance from the straight line from
+  // its start to where the unstopped move ends (a model pre-pass finds it).
+  bool measure_line = true;
+  uint64_t max_clocks = 400'000'000;
+};
+
+struct MultiRunResult {
+  size_t axes = 0;
+  uint64_t clocks = 0;      // START to every axis idle
+  uint64_t compared = 0;    // clocks compared RTL against model
+  uint64_t mismatches = 0;
+  std::vector<std::string> errors;  // lockstep, pins, synchronisation, timeout
+  std::vector<int32_t> ref_pos;     // REF_POS per axis at the end
+  std::vector<int64_t> pin_steps;   // net STEP edges per axis (pins)
+  std::vector<bool> done;           // DONE per axis at the end
+  std::vector<uint64_t> stop_clock;  // per axis: the first clock its stop ran (UINT64_MAX: none)
+  std::vector<bool> reversed;       // per axis: the reference velocity changed sign
+  double max_line_deviation = 0;    // pulses, every clock (measure_line)
+  double wall_seconds = 0;
+  bool ok() const { return errors.empty() && mismatches == 0; }
+};
+
+MultiRunResult run_multi(const MultiRows& rows, const MultiRunOptions& options);
+
+// Each axis's share of a path's stop limits (jerk and deceleration along
+// the path, pulses/s^3 and /s^2) for a line of these distances, as register
+// codes at `clock`: with them the axes of a stopped line brake along it. An
+// axis that does not move keeps the path's limits (it has nothing to stop).
+std::variant<std::vector<scurve::StopLimitCodes>, scurve::Error> line_stop_codes(
+    const std::vector<int64_t>& distances, double stop_jerk, double stop_acc, scurve::Clock clock);
+
+}  // namespace sc

@@ -1,0 +1,187 @@
+#include "rtl_multi_axis_core.h"
+
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+
+#include "Vsc_multi_axis_core2.h"
+#include "Vsc_multi_axis_core3.h"
+#include "verilated_top.h"
+
+namespace sc {
+namespace {
+
+// `width` bits at bit `lsb` of a port: a scalar (CData .. QData) or a
+// Verilated wide port (32-bit words).
+template <class P>
+u128 get_field(const P& p, int lsb, int width) {
+  if constexpr (std::is_integral_v<P>) {
+    return mask_bits(u128(uint64_t(p)) >> lsb, width);
+  } else {
+    u128 v = 0;
+    for (int i = 0; i < width;) {
+      const int bit = lsb + i, off = bit % 32;
+      const int n = std::min(width - i, 32 - off);
+      v |= u128((uint64_t(p[bit / 32]) >> off) & ((uint64_t(1) << n) - 1)) << i;
+      i += n;
+    }
+    return v;
+  }
+}
+
+template <class P>
+void set_field(P& p, int lsb, int width, u128 v) {
+  if constexpr (std::is_integral_v<P>) {
+    const uint64_t m = (width >= 64 ? ~uint64_t(0) : ((uint64_t(1) << width) - 1)) << lsb;
+    p = P((uint64_t(p) & ~m) | ((uint64_t(mask_bits(v, width)) << lsb) & m));
+  } else {
+    put_bits(p, lsb, width, v);
+  }
+}
+
+// Axis a's slice of a packed [Axes][W] port.
+#define SC_GET(port, a, w) get_field(m.port, int(a) * (w), (w))
+#define SC_SET(port, a, w, v) set_field(m.port, int(a) * (w), (w), u128(v))
+
+}  // namespace
+
+struct RtlMultiAxisCore::Impl {
+  virtual ~Impl() = default;
+  virtual void reset(int cycles) = 0;
+  virtual void step(const MultiCoreInputs& in) = 0;
+  virtual void read_outputs(MultiCoreOutputs& o) const = 0;
+};
+
+namespace {
+
+template <class V>
+class MultiImpl final : public RtlMultiAxisCore::Impl {
+ public:
+  explicit MultiImpl(size_t axes) : axes_(axes), top_("sc_multi_axis_core") {
+    drive(last_, true);
+    top_.top().eval();
+  }
+  void reset(int cycles) override { top_.reset(cycles); }
+  void step(const MultiCoreInputs& in) override {
+    drive(in, false);
+    last_ = in;
+    top_.tick();
+  }
+  void read_outputs(MultiCoreOutputs& o) const override {
+    const V& m = top_.top();
+    o.axes = axes_;
+    for (size_t a = 0; a < axes_; ++a) {
+      CoreOutputs& c = o.axis[a];
+      c.step = SC_GET(step_o, a, 1) != 0;
+      c.dir = SC_GET(dir_o, a, 1) != 0;
+      c.en = SC_GET(en_o, a, 1) != 0;
+      c.busy = SC_GET(busy_o, a, 1) != 0;
+      c.done = SC_GET(done_o, a, 1) != 0;
+      c.phase = uint8_t(SC_GET(phase_o, a, PhaseW));
+      c.fault_table = SC_GET(fault_table_o, a, 1) != 0;
+      c.fault_overrun = SC_GET(fault_overrun_o, a, 1) != 0;
+      c.underrun = SC_GET(underrun_o, a, 1) != 0;
+      c.discont = SC_GET(discont_o, a, 1) != 0;
+      c.guard = SC_GET(guard_o, a, 1) != 0;
+      c.stopping = SC_GET(stopping_o, a, 1) != 0;
+      c.overshoot = SC_GET(overshoot_o, a, 1) != 0;
+      c.move_done = SC_GET(move_done_o, a, 1) != 0;
+      c.move_idx = uint32_t(SC_GET(move_idx_o, a, MoveIdxW));
+      c.boundary_pos = int32_t(uint32_t(SC_GET(boundary_pos_o, a, PosIntW)));
+      c.fifo_level = uint8_t(SC_GET(fifo_level_o, a, RowLevelW));
+      c.fifo_full = SC_GET(fifo_full_o, a, 1) != 0;
+      c.row_count = uint32_t(SC_GET(row_count_o, a, RowCountW));
+      c.retarget_refused = SC_GET(retarget_refused_o, a, 1) != 0;
+      c.pulse_count = int32_t(uint32_t(SC_GET(pulse_count_o, a, PosIntW)));
+      c.ref_pos_int = int32_t(uint32_t(SC_GET(ref_pos_int_o, a, PosIntW)));
+      c.ref_pos_frac = SC_GET(ref_pos_frac_o, a, FracBits);
+      c.ref_vel = wrap_signed(i128(SC_GET(ref_vel_o, a, VelW)), VelW);
+      c.ref_acc = int64_t(uint64_t(SC_GET(ref_acc_o, a, AccW)));
+      c.ref_jerk = int64_t(wrap_signed(i128(SC_GET(ref_jerk_o, a, JerkW)), JerkW));
+      c.seg_idx = uint8_t(SC_GET(seg_idx_o, a, SegIdxW));
+      c.step_pending = int8_t(wrap_signed(i128(SC_GET(step_pending_o, a, PendW)), PendW));
+      c.lim_trip_fwd = SC_GET(lim_trip_fwd_o, a, 1) != 0;
+      c.lim_trip_rev = SC_GET(lim_trip_rev_o, a, 1) != 0;
+    }
+  }
+
+ private:
+  // Ports are written only when their value changes (all of them with `all`).
+  void drive(const MultiCoreInputs& in, bool all) {
+    V& m = top_.top();
+    if (all || in.enable != last_.enable) m.enable_i = in.enable;
+    if (all || in.row_push != last_.row_push) m.row_push_i = in.row_push;
+    if (all || in.row_replace != last_.row_replace) m.row_replace_i = in.row_replace;
+    if (all || in.retarget_row != last_.retarget_row) m.retarget_row_i = in.retarget_row;
+    if (all || in.fifo_flush != last_.fifo_flush) m.fifo_flush_i = in.fifo_flush;
+    if (all || in.start != last_.start) m.start_i = in.start;
+    if (all || in.abort != last_.abort) m.abort_i = in.abort;
+    if (all || in.stop != last_.stop) m.stop_i = in.stop;
+    if (all || in.row_push) m.row_clocks_i = in.row_clocks;
+    for (size_t a = 0; a < axes_; ++a) {
+      const CoreInputs& x = in.axis[a];
+      const CoreInputs& l = last_.axis[a];
+      if (all || !(x.cfg == l.cfg)) {
+        SC_SET(cfg_high_i, a, PulseTimeW, x.cfg.high);
+        SC_SET(cfg_low_i, a, PulseTimeW, x.cfg.low);
+        SC_SET(cfg_setup_i, a, PulseTimeW, x.cfg.setup);
+        SC_SET(cfg_hold_i, a, PulseTimeW, x.cfg.hold);
+      }
+      if (all || in.row_push) {
+        SC_SET(row_flags_i, a, RowFlagW, x.row.flags);
+        SC_SET(row_phase_i, a, PhaseW, uint8_t(x.row.seg.phase));
+        SC_SET(row_jerk_i, a, JerkW, uint64_t(x.row.seg.jerk));
+        SC_SET(row_acc0_i, a, AccW, uint64_t(x.row.seg.acc0));
+        SC_SET(row_vel0_i, a, VelW, x.row.seg.vel0);
+      }
+      if (all || x.pos_frac0 != l.pos_frac0) SC_SET(pos_frac0_i, a, FracBits, x.pos_frac0);
+      if (all || x.stop_jerk != l.stop_jerk || x.stop_acc != l.stop_acc) {
+        SC_SET(stop_jerk_i, a, JerkW, x.stop_jerk);
+        SC_SET(stop_acc_i, a, AccW, x.stop_acc);
+      }
+      if (all || !(x.guard == l.guard)) {
+        const GuardLimits g = x.guard.masked();
+        SC_SET(guard_vel_i, a, VelW, g.vel);
+        SC_SET(guard_acc_i, a, AccW, g.acc);
+        SC_SET(guard_jerk_i, a, JerkW, g.jerk);
+      }
+      if (all || x.lim_fwd != l.lim_fwd || x.lim_rev != l.lim_rev || x.lim_hard != l.lim_hard) {
+        SC_SET(lim_fwd_i, a, 1, x.lim_fwd);
+        SC_SET(lim_rev_i, a, 1, x.lim_rev);
+        SC_SET(lim_hard_i, a, 1, x.lim_hard);
+      }
+    }
+  }
+
+  size_t axes_;
+  VerilatedTop<V> top_;
+  MultiCoreInputs last_{};
+};
+
+}  // namespace
+
+RtlMultiAxisCore::RtlMultiAxisCore(size_t axes) : axes_(axes) {
+  if (axes == 2) {
+    impl_ = std::make_unique<MultiImpl<Vsc_multi_axis_core2>>(axes);
+  } else if (axes == 3) {
+    impl_ = std::make_unique<MultiImpl<Vsc_multi_axis_core3>>(axes);
+  } else {
+    throw std::invalid_argument("axes=" + std::to_string(axes) + ": the RTL is built for 2 and 3 axes");
+  }
+}
+
+RtlMultiAxisCore::~RtlMultiAxisCore() = default;
+
+void RtlMultiAxisCore::reset(int cycles) { impl_->reset(cycles); }
+
+void RtlMultiAxisCore::step(const MultiCoreInputs& in) { impl_->step(in); }
+
+MultiCoreOutputs RtlMultiAxisCore::outputs() const {
+  MultiCoreOutputs o;
+  read_outputs(o);
+  return o;
+}
+
+void RtlMultiAxisCore::read_outputs(MultiCoreOutputs& o) const { impl_->read_outputs(o); }
+
+}  // namespace sc

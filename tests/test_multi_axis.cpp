@@ -1,0 +1,232 @@
+// The multi-axis core (sc_multi_axis_core) against its model in lockstep,
+// every clock, on coordinated lines from scurve::plan_line; and what the
+// model cannot vouch for itself: the pins of every axis (pulse timing, step
+// accounting), every axis on its exact integer target, all axes loading
+// every row on the same clock, the reference's distance from the straight
+// line, and the stops (CMD.STOP, a limit on one axis) that halt all axes.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "multi_run.h"
+#include "planner.h"
+
+namespace sc {
+namespace {
+
+struct Line {
+  std::vector<int64_t> distances;
+  double v = 0, a = 0, j = 0;
+  std::string what() const {
+    std::string s = "distances";
+    for (int64_t d : distances) s += " " + std::to_string(d);
+    return s + " v " + std::to_string(v) + " a " + std::to_string(a) + " j " + std::to_string(j);
+  }
+};
+
+scurve::LinePlan plan(const Line& l) {
+  scurve::LineRequest r;
+  r.distances = l.distances;
+  r.v_path = l.v;
+  r.a_path = l.a;
+  r.j_path = l.j;
+  auto p = scurve::plan_line(scurve::Planner{model_clock()}, r, to_host(PulseTiming{}));
+  if (auto* e = std::get_if<scurve::Error>(&p)) throw std::runtime_error(e->message);
+  return std::get<scurve::LinePlan>(p);
+}
+
+// A random line on `axes` axes, both directions, short enough for the
+// default suite (tens of milliseconds at 20 MHz).
+Line random_line(std::mt19937_64& rng, size_t axes) {
+  Line l;
+  std::uniform_real_distribution<double> u(0, 1);
+  const double scale = std::pow(10.0, 1 + 2.4 * u(rng));  // 10 .. 2500 pulses
+  bool any = false;
+  for (size_t i = 0; i < axes; ++i) {
+    int64_t d = int64_t(std::llround(scale * u(rng))) * (u(rng) < 0.5 ? -1 : 1);
+    if (u(rng) < 0.1) d = 0;
+    any = any || d != 0;
+    l.distances.push_back(d);
+  }
+  if (!any) l.distances[0] = 1 + int64_t(scale);
+  double len = 0;
+  for (int64_t d : l.distances) len += double(d) * double(d);
+  len = std::sqrt(len);
+  l.v = std::max(20000 + 130000 * u(rng), len / 0.03);
+  l.v = std::min(l.v, 150000.0);
+  l.a = 2e6 + 2e7 * u(rng);
+  l.j = 2e8 + 5e9 * u(rng);
+  return l;
+}
+
+void expect_exact(const Line& l, const MultiRunResult& r) {
+  const std::string what = l.what();
+  EXPECT_EQ(r.mismatches, 0u) << what;
+  EXPECT_GT(r.compared, 0u) << what;
+  for (const std::string& e : r.errors) ADD_FAILURE() << what << ": " << e;
+  for (size_t a = 0; a < r.axes; ++a) {
+    EXPECT_EQ(r.ref_pos[a], l.distances[a]) << what << " axis " << a;
+    EXPECT_EQ(r.pin_steps[a], l.distances[a]) << what << " axis " << a;
+    EXPECT_TRUE(r.done[a]) << what << " axis " << a;
+    EXPECT_FALSE(r.reversed[a]) << what << " axis " << a;
+  }
+  EXPECT_LT(r.max_line_deviation, 0.01) << what;
+}
+
+void random_lines(size_t axes, int count, uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  double worst = 0;
+  uint64_t clocks = 0;
+  double wall = 0;
+  for (int i = 0; i < count; ++i) {
+    const Line l = random_line(rng, axes);
+    const MultiRunResult r = run_multi(line_rows(plan(l)), MultiRunOptions{});
+    expect_exact(l, r);
+    worst = std::max(worst, r.max_line_deviation);
+    clocks += r.clocks;
+    wall += r.wall_seconds;
+    if (::testing::Test::HasFailure()) return;
+  }
+  ::testing::Test::RecordProperty("max_line_deviation_pulses", std::to_string(worst));
+  ::testing::Test::RecordProperty("lockstep_clocks_per_second", std::to_string(double(clocks) / wall));
+  std::printf("%d random %zu-axis lines: max line deviation %.3g pulses, %.3g clocks, %.3g M clocks/s lockstep\n",
+              count, axes, worst, double(clocks), double(clocks) / wall / 1e6);
+}
+
+TEST(MultiAxisLockstep, TwoAxisLinesEndEveryAxisOnItsTargetWithSharedRowsOnTheLine) {
+  const Line l{{12000, -5000}, 120000, 1e7, 2e9};
+  const MultiRunResult r = run_multi(line_rows(plan(l)), MultiRunOptions{});
+  expect_exact(l, r);
+}
+
+TEST(MultiAxisLockstep, HundredRandomTwoAxisLinesMatchAndEndExactly) { random_lines(2, 100, 21); }
+
+TEST(MultiAxisLockstep, ThirtyRandomThreeAxisLinesMatchAndEndExactly) { random_lines(3, 30, 31); }
+
+TEST(MultiAxisLockstep, AnAxisThatDoesNotMoveStaysAtRestWhileTheOthersRun) {
+  const Line l{{0, 4000, -3000}, 100000, 8e6, 1e9};
+  const MultiRunResult r = run_multi(line_rows(plan(l)), MultiRunOptions{});
+  expect_exact(l, r);
+}
+
+// Opposite DIR on the two axes, one of which must turn DIR at START: both
+// executors start on the same clock all the same (the row checks would see
+// a skew), and a second line in the other directions does it again.
+TEST(MultiAxisLockstep, AxesThatTurnDirAtStartStillStartTogether) {
+  const Line l{{-700, 900}, 60000, 5e6, 1e9};
+  MultiRunOptions o;
+  o.timing.setup = 400;  // a long DIR setup: a skew would show for hundreds of clocks
+  const MultiRunResult r = run_multi(line_rows(plan(l)), o);
+  expect_exact(l, r);
+}
+
+MultiRunOptions stop_options(const Line& l, uint64_t at) {
+  MultiRunOptions o;
+  auto codes = line_stop_codes(l.distances, l.j, l.a, model_clock());
+  if (auto* e = std::get_if<scurve::Error>(&codes)) throw std::runtime_error(e->message);
+  o.stop = std::get<std::vector<scurve::StopLimitCodes>>(codes);
+  o.stop_at = at;
+  return o;
+}
+
+void expect_stopped_together(const Line& l, const MultiRunResult& r, uint64_t max_skew) {
+  const std::string what = l.what();
+  EXPECT_EQ(r.mismatches, 0u) << what;
+  for (const std::string& e : r.errors) ADD_FAILURE() << what << ": " << e;
+  uint64_t first = UINT64_MAX, last = 0;
+  for (size_t a = 0; a < r.axes; ++a) {
+    EXPECT_EQ(int64_t(r.ref_pos[a]), r.pin_steps[a]) << what << " axis " << a << ": pins and reference differ";
+    EXPECT_FALSE(r.done[a]) << what << " axis " << a << ": a stopped move is not done";
+    EXPECT_FALSE(r.reversed[a]) << what << " axis " << a;
+    EXPECT_LE(std::abs(int64_t(r.ref_pos[a])), std::abs(l.distances[a])) << what << " axis " << a;
+    if (l.distances[a] == 0) continue;
+    EXPECT_NE(r.stop_clock[a], UINT64_MAX) << what << " axis " << a << " never stopped";
+    first = std::min(first, r.stop_clock[a]);
+    last = std::max(last, r.stop_clock[a]);
+  }
+  EXPECT_LE(last - first, max_skew) << what;
+}
+
+// CMD.STOP at random clocks of random lines, each axis with its share of
+// the path's stop limits: every axis stops on the same clock, under
+// control, without reversing, its count exact, and the tool stays near the
+// line (reported).
+TEST(MultiAxisLockstep, StopInTheMiddleOfALineStopsEveryAxisTogetherAlongTheLine) {
+  std::mt19937_64 rng(41);
+  double worst = 0;
+  for (int i = 0; i < 12; ++i) {
+    const Line l = random_line(rng, 2 + i % 2);
+    const scurve::LinePlan p = plan(l);
+    const uint64_t at = 1 + rng() % std::max<uint64_t>(2, p.total_clocks - 1);
+    const MultiRunResult r = run_multi(line_rows(p), stop_options(l, at));
+    expect_stopped_together(l, r, 0);
+    worst = std::max(worst, r.max_line_deviation);
+  }
+  ::testing::Test::RecordProperty("stop_max_line_deviation_pulses", std::to_string(worst));
+  std::printf("12 stopped lines: max line deviation %.3g pulses\n", worst);
+}
+
+// A limit switch on one axis (soft: a controlled stop; hard: at once) stops
+// every axis: the others within two clocks of it.
+TEST(MultiAxisLockstep, ALimitOnOneAxisStopsAllAxes) {
+  for (bool hard : {false, true}) {
+    const Line l{{3000, 2000}, 100000, 1e7, 2e9};
+    MultiRunOptions o = stop_options(l, UINT64_MAX / 2);
+    o.stop_at.reset();
+    o.limit_at = plan(l).total_clocks / 2;
+    o.limit_axis = 1;
+    o.limit_hard = hard;
+    o.check_sync = false;
+    const MultiRunResult r = run_multi(line_rows(plan(l)), o);
+    EXPECT_EQ(r.mismatches, 0u) << "hard " << hard;
+    for (const std::string& e : r.errors) ADD_FAILURE() << "hard " << hard << ": " << e;
+    for (size_t a = 0; a < 2; ++a) {
+      EXPECT_EQ(int64_t(r.ref_pos[a]), r.pin_steps[a]) << "hard " << hard << " axis " << a;
+      EXPECT_FALSE(r.done[a]) << "hard " << hard << " axis " << a;
+      EXPECT_LT(r.ref_pos[a], l.distances[a]) << "hard " << hard << " axis " << a << " ran to its end";
+      EXPECT_GT(r.ref_pos[a], 0) << "hard " << hard << " axis " << a;
+      if (!hard) {
+        EXPECT_NE(r.stop_clock[a], UINT64_MAX) << "axis " << a;
+      }
+    }
+    if (!hard) {
+      EXPECT_GE(r.stop_clock[0], r.stop_clock[1]);
+      EXPECT_LE(r.stop_clock[0] - r.stop_clock[1], 2u);
+    }
+  }
+}
+
+// A START toward a limit active on one axis is refused by every axis:
+// nothing arms, nothing moves.
+TEST(MultiAxisLockstep, AStartTowardALimitOnOneAxisIsRefusedByAll) {
+  const Line l{{1500, -800}, 80000, 1e7, 2e9};
+  MultiRunOptions o;
+  o.limit_at = 0;
+  o.limit_axis = 1;
+  o.measure_line = false;
+  const MultiRunResult r = run_multi(line_rows(plan(l)), o);
+  EXPECT_EQ(r.mismatches, 0u);
+  EXPECT_GT(r.compared, 0u);
+  for (size_t a = 0; a < 2; ++a) {
+    EXPECT_EQ(r.ref_pos[a], 0) << "axis " << a;
+    EXPECT_EQ(r.pin_steps[a], 0) << "axis " << a;
+    EXPECT_FALSE(r.done[a]) << "axis " << a;
+  }
+  EXPECT_LT(r.clocks, 10u);
+}
+
+TEST(MultiAxisModel, AxisCountOutsideOneToMaxAxesIsRefusedNamingIt) {
+  EXPECT_THROW(MultiAxisCore(0), std::invalid_argument);
+  EXPECT_THROW(MultiAxisCore(MaxAxes + 1), std::invalid_argument);
+  try {
+    MultiAxisCore m(7);
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("axes=7"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace sc
