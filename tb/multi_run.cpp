@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <climits>
@@ -83,6 +84,15 @@ class Run {
     r.stop_clock.assign(n, UINT64_MAX);
     r.reversed.assign(n, false);
     std::vector<int> vel_sign(n, 0);
+    r.peak_velocity.assign(n, 0);
+    r.peak_acceleration.assign(n, 0);
+    r.peak_jerk.assign(n, 0);
+    const double vel_lsb = std::ldexp(double(ClkHz), -FracBits);  // pulses/s per LSB
+    const double acc_lsb = vel_lsb * double(ClkHz);
+    const double jerk_lsb = acc_lsb * double(ClkHz);
+    double contour_sum2 = 0;
+    uint64_t contour_clocks = 0;
+    uint32_t moves_done = 0;
     std::vector<double> start(n), dir(n);
     MultiLockstepChecker check(4);
     MultiCoreOutputs out, rtl_out;
@@ -147,6 +157,31 @@ class Run {
           }
         }
       }
+      double v2 = 0, a2 = 0;
+      for (size_t a = 0; a < n; ++a) {
+        const CoreOutputs& o = out.axis[a];
+        const double v = std::abs(double(o.ref_vel)) * vel_lsb, acc = std::abs(double(o.ref_acc)) * acc_lsb;
+        v2 += v * v;
+        a2 += acc * acc;
+        r.peak_velocity[a] = std::max(r.peak_velocity[a], v);
+        r.peak_acceleration[a] = std::max(r.peak_acceleration[a], acc);
+        r.peak_jerk[a] = std::max(r.peak_jerk[a], std::abs(double(o.ref_jerk)) * jerk_lsb);
+      }
+      r.peak_path_velocity = std::max(r.peak_path_velocity, std::sqrt(v2));
+      r.peak_path_acceleration = std::max(r.peak_path_acceleration, std::sqrt(a2));
+      if (out.axis[0].move_idx != moves_done) {
+        moves_done = out.axis[0].move_idx;
+        MultiMoveEnd e{clock - start_clock, {}};
+        for (size_t a = 0; a < n; ++a) e.ref_pos.push_back(out.axis[a].ref_pos_int);
+        r.move_ends.push_back(std::move(e));
+      }
+      if (opt_.polyline.size() >= 2 && out.axis[0].row_count > 0) {
+        const double d = contour_distance(out, std::min<size_t>(moves_done, opt_.polyline.size() - 2));
+        r.contour_max = std::max(r.contour_max, d);
+        contour_sum2 += d * d;
+        ++contour_clocks;
+      }
+      if (opt_.progress && (clock & 0xfffff) == 0) opt_.progress(double(next) / double(count));
       if (line_end && dir_len2 > 0 && out.axis[0].row_count > 0) {
         double dot = 0, p2 = 0;
         for (size_t a = 0; a < n; ++a) {
@@ -166,6 +201,7 @@ class Run {
         break;
       }
     }
+    if (contour_clocks > 0) r.contour_rms = std::sqrt(contour_sum2 / double(contour_clocks));
     r.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     r.clocks = clock - start_clock;
     r.compared = check.matched() + check.mismatches();
@@ -179,6 +215,25 @@ class Run {
       r.done.push_back(out.axis[a].done);
     }
     return r;
+  }
+
+  // The reference's distance from polyline segment k (its projection
+  // clamped to the segment).
+  double contour_distance(const MultiCoreOutputs& out, size_t k) const {
+    const std::vector<double>& p0 = opt_.polyline[k];
+    const std::vector<double>& p1 = opt_.polyline[k + 1];
+    double len2 = 0, dot = 0;
+    for (size_t a = 0; a < rows_.axes(); ++a) {
+      len2 += (p1[a] - p0[a]) * (p1[a] - p0[a]);
+      dot += (position(out.axis[a]) - p0[a]) * (p1[a] - p0[a]);
+    }
+    const double t = len2 > 0 ? std::clamp(dot / len2, 0.0, 1.0) : 0.0;
+    double d2 = 0;
+    for (size_t a = 0; a < rows_.axes(); ++a) {
+      const double e = position(out.axis[a]) - (p0[a] + t * (p1[a] - p0[a]));
+      d2 += e * e;
+    }
+    return std::sqrt(d2);
   }
 
   std::vector<double> final_positions() const {

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -45,7 +46,19 @@ struct MultiRunOptions {
   // Measure the reference's largest distance from the straight line from
   // its start to where the unstopped move ends (a model pre-pass finds it).
   bool measure_line = true;
+  // A path's polyline (vertices per axis, pulses, in reference
+  // coordinates): the contour error is the reference's distance from the
+  // segment of the move it is in (the move index), every clock.
+  std::vector<std::vector<double>> polyline;
   uint64_t max_clocks = 400'000'000;
+  std::function<void(double)> progress;  // fraction of the rows pushed, now and then
+};
+
+// Where a move ended: the clock (from START) its last row ended and REF_POS
+// of every axis there.
+struct MultiMoveEnd {
+  uint64_t clock = 0;
+  std::vector<int32_t> ref_pos;
 };
 
 struct MultiRunResult {
@@ -60,6 +73,12 @@ struct MultiRunResult {
   std::vector<uint64_t> stop_clock;  // per axis: the first clock its stop ran (UINT64_MAX: none)
   std::vector<bool> reversed;       // per axis: the reference velocity changed sign
   double max_line_deviation = 0;    // pulses, every clock (measure_line)
+  double contour_max = 0, contour_rms = 0;  // pulses, from the polyline (options.polyline)
+  std::vector<MultiMoveEnd> move_ends;      // one per completed move
+  // Peaks of the reference, every clock: along the path (Euclidean) and per
+  // axis (pulses/s, /s^2; jerk per axis, /s^3).
+  double peak_path_velocity = 0, peak_path_acceleration = 0;
+  std::vector<double> peak_velocity, peak_acceleration, peak_jerk;
   double wall_seconds = 0;
   bool ok() const { return errors.empty() && mismatches == 0; }
 };

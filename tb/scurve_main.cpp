@@ -4,6 +4,7 @@
 //   scurve regs (same move flags) [--uart] [--no-start] [--closed-loop] [--json]   register writes
 //   scurve stream FILE [--engine ...] [--json]   a stream of moves with look-ahead junctions
 //   scurve jog [--target V[:T] ...] [--stop] [--engine ...] [--json]   velocity mode (jog)
+//   scurve path FILE [--axes N] [--engine lockstep|model] [--json]   a path file on the multi-axis core
 //   scurve home [--switch-at N] [--runs N] [--engine ...] [--json]   homing against a switch in the plant
 //   scurve virtual-board [--pty-link PATH] [--speed X]   the board top behind a pseudo-terminal
 //   scurve board --port DEV info|status|run|stream|stop|estop|clear|home|watch   a board over its UART
@@ -32,6 +33,7 @@
 #include "stream_run.h"
 #include "homing_cli.h"
 #include "jog_cli.h"
+#include "path_cli.h"
 #include "scurve/reg_encode.h"
 #include "tool_commands.h"
 #include "virtual_board.h"
@@ -203,6 +205,10 @@ int main(int argc, char** argv) {
   JogCli jog;
   add_jog_command(app, jog);
 
+  // ---- path: a path file on the multi-axis core ---------------------------------
+  PathCli path;
+  add_path_command(app, path);
+
   // ---- home: the homing sequence against a switch in the plant -----------------
   HomingCli home;
   add_homing_command(app, home);
@@ -222,6 +228,7 @@ int main(int argc, char** argv) {
   if (*home.cmd) return run_homing_cli(home);
 
   if (*jog.cmd) return run_jog_cli(jog);
+  if (*path.cmd) return run_path_cli(path);
 
   if (*virtual_board.cmd) return run_virtual_board_cli(virtual_board);
 

@@ -313,4 +313,30 @@ check_bad retarget-distance sim --distance 4000 --v-cruise 40000 --a-max 2e6 --j
 check_bad retarget-distance sim --distance 4000 --v-cruise 40000 --a-max 2e6 --j-max 4e8 --retarget-at 0.03
 check_bad retarget-at sim --distance 4000 --v-cruise 40000 --a-max 2e6 --j-max 4e8 --retarget-at 0.2 --retarget-distance 5000
 check_bad retarget-at regs --distance 4000 --v-cruise 40000 --a-max 2e6 --j-max 4e8 --retarget-at 0.03 --retarget-distance 5000 --no-start
+# scurve path: a G-code path on the multi-axis core in lockstep (every move
+# on its target, pins agree, on the polyline); bad path files name the line.
+cat > "$tmp/square.gcode" <<'GC'
+G21 G90 ; mm, absolute
+N10 G1 X2 Y1 F1200
+N20 G91 X-1.5 Y0.75
+N30 G90 X0 Y0
+GC
+"$scurve" path "$tmp/square.gcode" --json > "$tmp/path.json"
+python3 - "$tmp/path.json" <<'PY'
+import json, sys
+r = json.load(open(sys.argv[1]))
+assert r["pass"] and r["mismatches"] == 0 and r["compared_clocks"] > 0, r
+assert [m["end_position"] for m in r["moves"]] == [[200, 100], [50, 175], [0, 0]], r["moves"]
+assert r["final_position"] == [0, 0] and r["pin_steps"] == [0, 0], r
+assert r["contour_error_max_pulses"] < 0.01, r
+PY
+printf 'G1 X1 Y1 F600\nM3 S1000\n' > "$tmp/bad_word.gcode"
+check_bad "line 2" path "$tmp/bad_word.gcode"
+printf 'G1 X1 Y1 F0\n' > "$tmp/bad_feed.gcode"
+check_bad "F" path "$tmp/bad_feed.gcode"
+printf '{"axes": 2, "limits": {"feed": 10, "accel": 100, "jerk": 1000},\n "points": [[1, 2], [3,]]}\n' > "$tmp/bad.json"
+check_bad "line 2" path "$tmp/bad.json"
+printf 'G1 X30000000 F600\n' > "$tmp/far.gcode"
+check_bad "X" path --engine model "$tmp/far.gcode"
+check_bad "axes" path "$tmp/square.gcode" --axes 4
 echo "cli ok"

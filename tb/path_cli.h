@@ -1,0 +1,31 @@
+// `scurve path FILE`: a path file (JSON points or the G-code subset,
+// sw/cli/include/scurve/cli/path_file.h) planned with exact stops at its
+// corners (scurve::plan_path) and run on the multi-axis core
+// (sc_multi_axis_core) in RTL/model lockstep or on the model alone; a
+// table or JSON of every move and the whole path.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <string>
+#include <vector>
+
+#include "scurve/cli/move_flags.h"
+
+namespace sc {
+
+struct PathCli {
+  CLI::App* cmd = nullptr;
+  std::string file;
+  scurve::cli::MoveFlags timing;  // pulse timing, --json, --json-out
+  size_t axes = 0;                // 0: the file's (JSON) or 2 (G-code)
+  std::vector<std::string> pulses_per_mm;
+  double feed_limit = 0, accel = 0, jerk = 0;  // 0: the file's or the G-code defaults
+  std::string junction = "exact-stop";
+  std::string engine = "lockstep";
+};
+
+void add_path_command(CLI::App& app, PathCli& p);
+// Exit 0: every check held; 1: a check failed; 2: bad input.
+int run_path_cli(const PathCli& p);
+
+}  // namespace sc
