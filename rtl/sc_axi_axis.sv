@@ -190,7 +190,8 @@ module sc_axi_axis (
     .edge_o     (sw_edge)
   );
 
-  logic unused_start_able, unused_arm_ready, unused_arm_drop, unused_fault_abort;
+  logic unused_start_able, unused_arm_ready, unused_arm_drop, unused_fault_abort,
+        unused_arming;
 
   sc_axis_core u_core (
     .clk_i,
@@ -237,6 +238,7 @@ module sc_axi_axis (
     .arm_ready_o      (unused_arm_ready),
     .arm_drop_o       (unused_arm_drop),
     .fault_abort_o    (unused_fault_abort),
+    .arming_o         (unused_arming),
     .exec_start_o     (unused_exec_start),
     .abort_o          (unused_abort),
     .ref_done_o       (unused_ref_done),

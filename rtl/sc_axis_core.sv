@@ -110,6 +110,7 @@ module sc_axis_core #(
   output logic                        arm_ready_o,       // armed, DIR set up: waits for sync_go_i
   output logic                        arm_drop_o,        // this axis drops its arming this clock
   output logic                        fault_abort_o,     // a hard limit or the step-rate guard stops it at once
+  output logic                        arming_o,          // a START is arming (DIR to the move, its setup)
   output logic                        abort_o,           // abort_i as registered here, or a hard limit acting
   output logic                        ref_done_o,        // the executor has finished the stream
   output logic                        ref_running_o,     // the executor runs (a stream or its controlled stop)
@@ -215,6 +216,7 @@ module sc_axis_core #(
   assign arm_drop_o  = arm_q && (abort_q || stop_q || lim_act);
   assign arm_ready_o = arm_q && !arm_drop_o && sg_dir == arm_fwd_q && arm_cnt_q >= cfg_setup_q;
   assign fault_abort_o = lim_abort || rate_trip_q;
+  assign arming_o      = arm_q;
 
   always_comb begin
     arm_d      = arm_q;

@@ -96,7 +96,7 @@ module sc_multi_axis_core #(
   end
 `endif
 
-  logic [Axes-1:0] start_able, arm_ready, arm_drop, fault_abort;
+  logic [Axes-1:0] start_able, arm_ready, arm_drop, fault_abort, arming, exec_start;
   logic            sync_start_ok, sync_go, sync_drop, stop_all, abort_all;
 
   assign sync_start_ok = &start_able;
@@ -107,7 +107,7 @@ module sc_multi_axis_core #(
   assign abort_all     = abort_i || (|fault_abort);
 
   for (genvar a = 0; a < Axes; a++) begin : g_axis
-    logic unused_exec_start, unused_abort, unused_ref_done, unused_ref_running, unused_step_busy;
+    logic unused_abort, unused_ref_done, unused_ref_running, unused_step_busy;
 
     sc_axis_core #(
       .ExtStep   (1'b0),
@@ -157,7 +157,8 @@ module sc_multi_axis_core #(
       .arm_ready_o      (arm_ready[a]),
       .arm_drop_o       (arm_drop[a]),
       .fault_abort_o    (fault_abort[a]),
-      .exec_start_o     (unused_exec_start),
+      .arming_o         (arming[a]),
+      .exec_start_o     (exec_start[a]),
       .abort_o          (unused_abort),
       .ref_done_o       (unused_ref_done),
       .ref_running_o    (unused_ref_running),
@@ -194,5 +195,37 @@ module sc_multi_axis_core #(
       .step_pending_o   (step_pending_o[a*sc_pkg::PendW +: sc_pkg::PendW])
     );
   end
+
+`ifndef FORMAL
+  logic unused_sync_state;
+  assign unused_sync_state = ^{arming, exec_start};
+`else
+  // ---- formal properties (scripts/formal.py, docs/formal.md) ----------------
+  // Proven with the axes' modules read without FORMAL. Input contract:
+  // reset in the first clock only; every other input free in every clock
+  // (rows per axis, START, STOP, abort, limits per axis, pulse timing per
+  // axis). The start is one for all axes: every axis arms on the same
+  // clock, drops its arming on the same clock and starts its executor on the
+  // same clock, whatever the axes' DIR, setup times, limits and rows.
+  logic f_init_q = 1'b1;
+
+  always_comb begin
+    if (f_init_q) begin
+      a_reset_first: assume (!rst_ni);
+    end else begin
+      a_no_reset: assume (rst_ni);
+    end
+  end
+
+  always_ff @(posedge clk_i) f_init_q <= 1'b0;
+
+  always_comb begin
+    if (!f_init_q) begin
+      // -- group multi_sync_start
+      p_arm_together:   assert (arming == '0 || arming == '1);
+      p_start_together: assert (exec_start == '0 || exec_start == '1);
+    end
+  end
+`endif
 
 endmodule

@@ -157,7 +157,8 @@ module sc_servo_axis (
   assign unused_frac_lo = exec_frac[FracBits-MulAW-1:0];
   assign unused_vel_lo  = exec_vel[VelW-MulAW-1:0];
 
-  logic unused_start_able, unused_arm_ready, unused_arm_drop, unused_fault_abort;
+  logic unused_start_able, unused_arm_ready, unused_arm_drop, unused_fault_abort,
+        unused_arming;
 
   sc_axis_core #(
     .ExtStep (1'b1)
@@ -210,6 +211,7 @@ module sc_servo_axis (
     .arm_ready_o      (unused_arm_ready),
     .arm_drop_o       (unused_arm_drop),
     .fault_abort_o    (unused_fault_abort),
+    .arming_o         (unused_arming),
     .exec_start_o     (exec_start),
     .abort_o          (core_abort),
     .ref_done_o       (exec_finished),

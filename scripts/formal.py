@@ -308,6 +308,21 @@ GROUPS += [
         broken_depth=15),
 ]
 
+# sc_multi_axis_core (two axes): its sc_axis_core instances and their submodules without FORMAL
+GROUPS += [
+    Group(
+        name="multi_sync_start", module="sc_multi_axis_core", plain_files=["sc_axis_core.sv"] + CORE_SUBS,
+        params={"Axes": 2},
+        what="one start for all axes: every axis arms, drops its arming and starts its executor on the "
+             "same clock (any DIR, setup times, limits, rows)",
+        asserts=["p_arm_together", "p_start_together"],
+        induction=2, depth=2,
+        mutation=("assign sync_go       = &arm_ready;",
+                  "assign sync_go       = arm_ready[0];",
+                  "the executors start when axis 0 is set up"),
+        broken_depth=12),
+]
+
 # sc_stop_gen: bounded from reset (the decision of the first active clock of
 # every stop, from any start state and limits); z3 does not finish deeper
 GROUPS += [

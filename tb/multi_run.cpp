@@ -54,8 +54,9 @@ std::vector<double> end_positions(const MultiRows& rows, const MultiRunOptions& 
 
 class Run {
  public:
-  Run(const MultiRows& rows, const MultiRunOptions& options, bool rtl, bool stop)
-      : rows_(rows), opt_(options), model_(rows.axes()), stop_(stop) {
+  // trace: record options.trace_every's trace (not in the pre-pass).
+  Run(const MultiRows& rows, const MultiRunOptions& options, bool rtl, bool stop, bool trace)
+      : rows_(rows), opt_(options), model_(rows.axes()), stop_(stop), trace_every_(trace ? options.trace_every : 0) {
     if (rtl) rtl_ = std::make_unique<RtlMultiAxisCore>(rows.axes());
     in_.enable = true;
     for (size_t a = 0; a < rows.axes(); ++a) {
@@ -90,8 +91,19 @@ class Run {
     const double vel_lsb = std::ldexp(double(ClkHz), -FracBits);  // pulses/s per LSB
     const double acc_lsb = vel_lsb * double(ClkHz);
     const double jerk_lsb = acc_lsb * double(ClkHz);
-    double contour_sum2 = 0;
+    double contour_sum2 = 0, contour_now = 0;
     uint64_t contour_clocks = 0;
+    // The next clock to sample: never without a trace, so a run without one
+    // pays one compare per clock; START and each move end set it to now.
+    uint64_t next_sample = UINT64_MAX;
+    r.trace.axes = n;
+    if (trace_every_ > 0) {
+      const size_t expect = size_t(std::min<uint64_t>(opt_.max_clocks / trace_every_ + 16, 1u << 20));
+      r.trace.clock.reserve(expect);
+      r.trace.pos.reserve(expect * n);
+      r.trace.vel.reserve(expect * n);
+      r.trace.contour.reserve(expect);
+    }
     uint32_t moves_done = 0;
     std::vector<double> start(n), dir(n);
     MultiLockstepChecker check(4);
@@ -125,6 +137,7 @@ class Run {
         in_.start = true;
         started = true;
         start_clock = clock;
+        if (trace_every_ > 0) next_sample = clock;
       }
       if (started && stop_ && opt_.stop_at && clock == start_clock + *opt_.stop_at) in_.stop = true;
       if (stop_ && opt_.limit_at && (started ? clock >= start_clock + *opt_.limit_at : *opt_.limit_at == 0)) {
@@ -174,12 +187,18 @@ class Run {
         MultiMoveEnd e{clock - start_clock, {}};
         for (size_t a = 0; a < n; ++a) e.ref_pos.push_back(out.axis[a].ref_pos_int);
         r.move_ends.push_back(std::move(e));
+        if (trace_every_ > 0) next_sample = clock;
       }
       if (opt_.polyline.size() >= 2 && out.axis[0].row_count > 0) {
         const double d = contour_distance(out, std::min<size_t>(moves_done, opt_.polyline.size() - 2));
         r.contour_max = std::max(r.contour_max, d);
         contour_sum2 += d * d;
         ++contour_clocks;
+        contour_now = d;
+      }
+      if (clock >= next_sample) [[unlikely]] {
+        sample(r.trace, clock - start_clock, out, contour_now, vel_lsb);
+        next_sample = start_clock + ((clock - start_clock) / trace_every_ + 1) * trace_every_;
       }
       if (opt_.progress && (clock & 0xfffff) == 0) opt_.progress(double(next) / double(count));
       if (line_end && dir_len2 > 0 && out.axis[0].row_count > 0) {
@@ -200,6 +219,10 @@ class Run {
         r.errors.push_back(fmt::format("not at rest after {} clocks (max_clocks)", opt_.max_clocks));
         break;
       }
+    }
+    // The last clock, at rest (unless a sample fell on it).
+    if (trace_every_ > 0 && started && (r.trace.size() == 0 || r.trace.clock.back() != clock - start_clock)) {
+      sample(r.trace, clock - start_clock, out, contour_now, vel_lsb);
     }
     if (contour_clocks > 0) r.contour_rms = std::sqrt(contour_sum2 / double(contour_clocks));
     r.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -236,6 +259,15 @@ class Run {
     return std::sqrt(d2);
   }
 
+  void sample(MultiTrace& t, uint64_t clock, const MultiCoreOutputs& out, double contour, double vel_lsb) const {
+    t.clock.push_back(clock);
+    for (size_t a = 0; a < rows_.axes(); ++a) {
+      t.pos.push_back(position(out.axis[a]));
+      t.vel.push_back(double(out.axis[a].ref_vel) * vel_lsb);
+    }
+    t.contour.push_back(contour);
+  }
+
   std::vector<double> final_positions() const {
     std::vector<double> p;
     for (size_t a = 0; a < rows_.axes(); ++a) p.push_back(position(model_.axis(a).outputs()));
@@ -250,11 +282,12 @@ class Run {
   MultiCoreInputs in_{};
   std::vector<PinMonitor> pins_;
   bool stop_;
+  uint64_t trace_every_;
   uint64_t sync_errors_ = 0;
 };
 
 std::vector<double> end_positions(const MultiRows& rows, const MultiRunOptions& options) {
-  Run pre(rows, options, false, false);
+  Run pre(rows, options, false, false, false);
   pre.run(nullptr);
   return pre.final_positions();
 }
@@ -282,7 +315,7 @@ MultiRunResult run_multi(const MultiRows& rows, const MultiRunOptions& options) 
   }
   std::vector<double> line;
   if (options.measure_line) line = end_positions(rows, options);
-  Run run(rows, options, options.rtl, options.stop_at.has_value() || options.limit_at.has_value());
+  Run run(rows, options, options.rtl, options.stop_at.has_value() || options.limit_at.has_value(), true);
   return run.run(options.measure_line ? &line : nullptr);
 }
 

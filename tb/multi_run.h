@@ -52,6 +52,21 @@ struct MultiRunOptions {
   std::vector<std::vector<double>> polyline;
   uint64_t max_clocks = 400'000'000;
   std::function<void(double)> progress;  // fraction of the rows pushed, now and then
+  // A decimated trace of the reference (MultiRunResult::trace): a sample
+  // every trace_every clocks from START, at every move end and at the end;
+  // 0: none (the run then costs one compare per clock for it).
+  uint64_t trace_every = 0;
+};
+
+// The decimated trace, sample by sample (`clock` from START); pos and vel
+// hold `axes` values per sample, axis by axis.
+struct MultiTrace {
+  size_t axes = 0;
+  std::vector<uint64_t> clock;
+  std::vector<double> pos;      // reference position, pulses (REF_POS plus its fraction)
+  std::vector<double> vel;      // reference velocity, pulses/s
+  std::vector<double> contour;  // contour error, pulses (0 without a polyline or before the first row)
+  size_t size() const { return clock.size(); }
 };
 
 // Where a move ended: the clock (from START) its last row ended and REF_POS
@@ -79,6 +94,7 @@ struct MultiRunResult {
   // axis (pulses/s, /s^2; jerk per axis, /s^3).
   double peak_path_velocity = 0, peak_path_acceleration = 0;
   std::vector<double> peak_velocity, peak_acceleration, peak_jerk;
+  MultiTrace trace;  // options.trace_every > 0
   double wall_seconds = 0;
   bool ok() const { return errors.empty() && mismatches == 0; }
 };

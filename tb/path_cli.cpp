@@ -1,13 +1,24 @@
 #include "path_cli.h"
 
+#include <fcntl.h>
 #include <fmt/format.h>
 #include <fmt/ranges.h>
+#include <spawn.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
 #include <iostream>
+#include <iterator>
 #include <nlohmann/json.hpp>
+#include <optional>
+#include <string_view>
 
 #include "multi_run.h"
 #include "planner.h"
@@ -38,14 +49,200 @@ void add_path_command(CLI::App& app, PathCli& p) {
       ->check(CLI::IsMember({"exact-stop"}));
   c->add_option("--engine", p.engine, "lockstep (default: RTL and model, every clock compared) | model")
       ->check(CLI::IsMember({"lockstep", "model"}));
+  c->add_option("--plot", p.plot_dir,
+                "write path_trace.csv (the reference sampled, at most ~200,000 samples) and path_xy.png, "
+                "path_axes.png here (created if missing; python3 with matplotlib)")
+      ->type_name("DIR");
   scurve::cli::add_timing_flags(c, p.timing);
   scurve::cli::add_output_flags(c, p.timing);
 }
 
 namespace {
 
+// --plot: a trace of at most about this many samples (plus the move ends).
+constexpr uint64_t kMaxTraceSamples = 200'000;
+constexpr const char* kTraceCsv = "path_trace.csv";
+constexpr const char* kPlotFiles[] = {"path_xy.png", "path_axes.png", kTraceCsv};
+
+// Where the figures go and what draws them, all checked before the run.
+struct PlotSetup {
+  std::string dir, csv;
+  std::string python, script;
+  uint64_t every = 1;  // trace sample period, clocks
+};
+
+std::string last_line(const std::string& text) {
+  const size_t end = text.find_last_not_of(" \t\r\n");
+  if (end == std::string::npos) return "(no output)";
+  const size_t begin = text.find_last_of('\n', end);
+  const size_t from = begin == std::string::npos ? 0 : begin + 1;
+  std::string line = text.substr(from, end + 1 - from);
+  return line.size() > 300 ? line.substr(0, 300) + "..." : line;
+}
+
+// Runs argv (no shell) with its stdout and stderr collected in `output`; the
+// exit status, or -1 when it could not be started (the reason in `output`).
+int run_program(const std::vector<std::string>& argv, std::string& output) {
+  int fds[2];
+  if (::pipe2(fds, O_CLOEXEC) != 0) {
+    output = std::strerror(errno);
+    return -1;
+  }
+  posix_spawn_file_actions_t fa;
+  posix_spawn_file_actions_init(&fa);
+  posix_spawn_file_actions_adddup2(&fa, fds[1], 1);
+  posix_spawn_file_actions_adddup2(&fa, fds[1], 2);
+  std::vector<char*> args;
+  for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+  args.push_back(nullptr);
+  pid_t pid = 0;
+  const int rc = posix_spawnp(&pid, args[0], &fa, nullptr, args.data(), environ);
+  posix_spawn_file_actions_destroy(&fa);
+  ::close(fds[1]);
+  if (rc != 0) {
+    ::close(fds[0]);
+    output = argv[0] + ": " + std::strerror(rc);
+    return -1;
+  }
+  char buf[4096];
+  for (;;) {
+    const ssize_t n = ::read(fds[0], buf, sizeof buf);
+    if (n > 0) {
+      output.append(buf, size_t(n));
+    } else if (n == 0 || errno != EINTR) {
+      break;
+    }
+  }
+  ::close(fds[0]);
+  int status = 0;
+  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  }
+  if (WIFEXITED(status)) return WEXITSTATUS(status);
+  return 128 + (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
+}
+
+// The directory (created if missing) and its files can be written, and
+// python3 with matplotlib and the plot script are there: the one-line
+// reason, or empty.
+std::string prepare_plot(const std::string& dir, PlotSetup& s) {
+  namespace fs = std::filesystem;
+  auto why = [&dir](const std::string& text) { return fmt::format("--plot={}: {}", dir, text); };
+  std::error_code ec;
+  if (dir.empty()) return fmt::format("--plot='': required: a directory");
+  // The script travels with the binaries (share/scurve next to bin/).
+  const fs::path self = fs::read_symlink("/proc/self/exe", ec);
+  s.script = ((ec ? fs::path(".") : self.parent_path()).parent_path() / "share/scurve/plot_path.py").string();
+  if (!fs::is_regular_file(s.script, ec)) return why("no plot script " + s.script + " (share/scurve/ next to bin/)");
+  // Debian's matplotlib (python3-matplotlib) is /usr/bin/python3's; SCURVE_PYTHON names another.
+  const char* env = std::getenv("SCURVE_PYTHON");
+  s.python = env && *env ? env : ::access("/usr/bin/python3", X_OK) == 0 ? "/usr/bin/python3" : "python3";
+  std::string out;
+  const int rc = run_program({s.python, "-c", "import matplotlib, numpy"}, out);
+  if (rc != 0) {
+    return why(fmt::format("needs python3 with matplotlib (Debian: apt-get install python3-matplotlib): {}",
+                           rc < 0 ? out : s.python + ": " + last_line(out)));
+  }
+  fs::create_directories(dir, ec);
+  if (ec) return why("cannot create the directory: " + ec.message());
+  if (!fs::is_directory(dir, ec)) return why("not a directory");
+  if (::access(dir.c_str(), W_OK | X_OK) != 0) return why("directory is not writable");
+  for (const char* f : kPlotFiles) {
+    const fs::path path = fs::path(dir) / f;
+    const fs::file_status st = fs::status(path, ec);
+    if (fs::exists(st) && !fs::is_regular_file(st)) return why(path.string() + " exists and is not a regular file");
+    if (fs::exists(st) && ::access(path.c_str(), W_OK) != 0) return why(path.string() + " is not writable");
+  }
+  s.dir = dir;
+  s.csv = (fs::path(dir) / kTraceCsv).string();
+  // A file can be made there (a read-only or special file system says so only now).
+  const std::string probe = s.csv + ".part";
+  std::FILE* f = std::fopen(probe.c_str(), "w");
+  if (!f) return why(fmt::format("cannot write {}: {}", probe, std::strerror(errno)));
+  std::fclose(f);
+  std::remove(probe.c_str());
+  return {};
+}
+
+// The figures from the trace: the script's last line when it fails or
+// leaves a figure unwritten, else empty.
+std::string draw_plots(const PlotSetup& s) {
+  namespace fs = std::filesystem;
+  std::vector<fs::path> figures;
+  for (const char* f : kPlotFiles) {
+    if (std::string_view(f) != kTraceCsv) figures.push_back(fs::path(s.dir) / f);
+  }
+  std::error_code ec;
+  for (const fs::path& f : figures) fs::remove(f, ec);  // a stale figure must not pass for a new one
+  std::string log;
+  const int rc = run_program({s.python, s.script, s.csv, "--out-dir", s.dir}, log);
+  if (rc != 0) return fmt::format("{} {} failed: {}", s.python, s.script, last_line(log));
+  for (const fs::path& f : figures) {
+    if (!fs::is_regular_file(f, ec) || fs::file_size(f, ec) == 0) {
+      return fmt::format("{} {} wrote no {}", s.python, s.script, f.string());
+    }
+  }
+  return {};
+}
+
+// The trace as CSV: "# key=value" lines (what the plot script needs besides
+// the samples: the polyline, the resolution, the move ends), the header and
+// one row per sample. Written to "<csv>.part" and renamed when whole; the
+// reason it could not be, or empty.
+std::string write_trace_csv(const PlotSetup& s, const std::string& file, const std::string& engine,
+                            const scurve::cli::PathProgram& prog, const std::vector<std::vector<double>>& polyline,
+                            const MultiRunResult& r, bool pass) {
+  const MultiTrace& t = r.trace;
+  const size_t n = prog.axes;
+  std::string buf;
+  auto out = std::back_inserter(buf);
+  fmt::format_to(out, "# scurve path trace: the reference sampled from START, at every move end and at the end\n");
+  fmt::format_to(out, "# file={}\n# engine={}\n# axes={}\n# clk_hz={}\n# every_clocks={}\n# samples={}\n",
+                 scurve::input::printable(file), engine, n, ClkHz, s.every, t.size());
+  fmt::format_to(out, "# pulses_per_mm={}\n# start={}\n", fmt::join(prog.pulses_per_mm, ","),
+                 fmt::join(prog.start, ","));
+  // The planned polyline in the file's coordinates (pulses).
+  for (const std::vector<double>& v : polyline) {
+    std::vector<double> p;
+    for (size_t a = 0; a < n; ++a) p.push_back(v[a] + double(prog.start[a]));
+    fmt::format_to(out, "# vertex={}\n", fmt::join(p, ","));
+  }
+  std::vector<double> ends;
+  for (const MultiMoveEnd& e : r.move_ends) ends.push_back(double(e.clock) / double(ClkHz));
+  fmt::format_to(out, "# move_end_s={}\n# contour_max_pulses={}\n# pass={}\n", fmt::join(ends, ","), r.contour_max,
+                 pass);
+  fmt::format_to(out, "t_s");
+  for (size_t a = 0; a < n; ++a) fmt::format_to(out, ",pos{}_pulses", a);
+  for (size_t a = 0; a < n; ++a) fmt::format_to(out, ",vel{}_pulses_per_s", a);
+  fmt::format_to(out, ",contour_error_pulses\n");
+
+  const std::string part = s.csv + ".part";
+  std::FILE* f = std::fopen(part.c_str(), "w");
+  if (!f) return fmt::format("cannot write {}: {}", part, std::strerror(errno));
+  bool ok = true;
+  for (size_t i = 0; i < t.size() && ok; ++i) {
+    fmt::format_to(out, "{:.8f}", double(t.clock[i]) / double(ClkHz));
+    // Positions in the file's coordinates: REF_POS is their floor.
+    for (size_t a = 0; a < n; ++a) fmt::format_to(out, ",{:.9f}", t.pos[i * n + a] + double(prog.start[a]));
+    for (size_t a = 0; a < n; ++a) fmt::format_to(out, ",{:.6f}", t.vel[i * n + a]);
+    fmt::format_to(out, ",{:.6g}\n", t.contour[i]);
+    if (buf.size() > (1u << 20)) {
+      ok = std::fwrite(buf.data(), 1, buf.size(), f) == buf.size();
+      buf.clear();
+    }
+  }
+  ok = ok && std::fwrite(buf.data(), 1, buf.size(), f) == buf.size() && std::fflush(f) == 0;
+  ok = std::fclose(f) == 0 && ok;
+  if (!ok || std::rename(part.c_str(), s.csv.c_str()) != 0) {
+    const std::string e = fmt::format("writing {} failed: {}", s.csv, std::strerror(errno));
+    std::remove(part.c_str());
+    return e;
+  }
+  return {};
+}
+
 nlohmann::json report_json(const scurve::cli::PathProgram& prog, const scurve::PathPlan& plan,
-                           const MultiRunResult& r, const std::string& engine, const std::vector<std::string>& fails) {
+                           const MultiRunResult& r, const std::string& engine, const std::vector<std::string>& fails,
+                           const PlotSetup* plot) {
   nlohmann::json out;
   out["engine"] = engine;
   out["axes"] = prog.axes;
@@ -88,6 +285,12 @@ nlohmann::json report_json(const scurve::cli::PathProgram& prog, const scurve::P
   out["compared_clocks"] = r.compared;
   out["wall_s"] = r.wall_seconds;
   out["clocks_per_s"] = r.wall_seconds > 0 ? double(r.clocks) / r.wall_seconds : 0.0;
+  out["plot"] = nullptr;
+  if (plot) {
+    std::vector<std::string> files;
+    for (const char* f : kPlotFiles) files.push_back((std::filesystem::path(plot->dir) / f).string());
+    out["plot"] = {{"files", files}, {"samples", r.trace.size()}, {"every_clocks", plot->every}};
+  }
   out["failures"] = fails;
   out["pass"] = fails.empty();
   return out;
@@ -159,6 +362,13 @@ int run_path_cli(const PathCli& p) {
   const scurve::PathPlan& plan = std::get<scurve::PathPlan>(planned);
   if (plan.moves.empty()) return bad_input("FILE=" + p.file + ": every move is to where the axes already are");
 
+  // --plot is checked (the directory made) once the path is known good, before the run.
+  std::optional<PlotSetup> plot;
+  if (p.cmd->count("--plot") > 0) {
+    plot.emplace();
+    if (const std::string e = prepare_plot(p.plot_dir, *plot); !e.empty()) return bad_input(e);
+  }
+
   MultiRows rows;
   for (const scurve::PathAxisRows& ax : plan.axes) {
     std::vector<Row> r;
@@ -192,6 +402,12 @@ int run_path_cli(const PathCli& p) {
   o.progress = [&](double x) {
     if (tty) std::fprintf(stderr, "\r[path %3.0f%%]", 100 * std::min(1.0, x));
   };
+  if (plot) {
+    // At most ~kMaxTraceSamples samples over the planned clocks (the move
+    // ends and the last clock add a few).
+    plot->every = std::max<uint64_t>(1, (plan.total_clocks + kMaxTraceSamples - 1) / kMaxTraceSamples);
+    o.trace_every = plot->every;
+  }
   const MultiRunResult r = run_multi(rows, o);
   if (tty) std::fputs("\n", stderr);
 
@@ -218,7 +434,7 @@ int run_path_cli(const PathCli& p) {
   }
   if (r.contour_max >= 0.01) fails.push_back(fmt::format("contour error {:.3g} pulses >= 0.01", r.contour_max));
 
-  const nlohmann::json out = report_json(prog, plan, r, p.engine, fails);
+  const nlohmann::json out = report_json(prog, plan, r, p.engine, fails, plot ? &*plot : nullptr);
   if (p.timing.json) {
     std::cout << out.dump(2) << "\n";
   } else {
@@ -226,6 +442,18 @@ int run_path_cli(const PathCli& p) {
   }
   if (!scurve::cli::write_json_file(p.timing.json_out, out)) {
     return bad_input("--json-out: cannot write " + p.timing.json_out);
+  }
+  if (plot) {
+    // The figures of a failed run too: that is when they are wanted.
+    const std::string e = write_trace_csv(*plot, p.file, p.engine, prog, o.polyline, r, fails.empty());
+    if (!e.empty()) return bad_input(fmt::format("--plot={}: {}", plot->dir, e));
+    const std::string drawn = draw_plots(*plot);
+    if (!drawn.empty()) return bad_input(fmt::format("--plot={}: {}", plot->dir, drawn));
+    if (!p.timing.json) {
+      std::cout << fmt::format("plot: {} ({} samples, every {} clocks)\n",
+                               fmt::join(out["plot"]["files"].get<std::vector<std::string>>(), ", "),
+                               r.trace.size(), plot->every);
+    }
   }
   return fails.empty() ? 0 : 1;
 }

@@ -2,7 +2,8 @@
 // sw/cli/include/scurve/cli/path_file.h) planned with exact stops at its
 // corners (scurve::plan_path) and run on the multi-axis core
 // (sc_multi_axis_core) in RTL/model lockstep or on the model alone; a
-// table or JSON of every move and the whole path.
+// table or JSON of every move and the whole path; with --plot DIR a decimated
+// trace (CSV) and its figures (scripts/plot_path.py, matplotlib).
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -22,6 +23,7 @@ struct PathCli {
   double feed_limit = 0, accel = 0, jerk = 0;  // 0: the file's or the G-code defaults
   std::string junction = "exact-stop";
   std::string engine = "lockstep";
+  std::string plot_dir;  // --plot: trace CSV and PNG figures here (empty: none)
 };
 
 void add_path_command(CLI::App& app, PathCli& p);

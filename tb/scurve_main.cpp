@@ -4,7 +4,7 @@
 //   scurve regs (same move flags) [--uart] [--no-start] [--closed-loop] [--json]   register writes
 //   scurve stream FILE [--engine ...] [--json]   a stream of moves with look-ahead junctions
 //   scurve jog [--target V[:T] ...] [--stop] [--engine ...] [--json]   velocity mode (jog)
-//   scurve path FILE [--axes N] [--engine lockstep|model] [--json]   a path file on the multi-axis core
+//   scurve path FILE [--axes N] [--engine lockstep|model] [--plot DIR] [--json]   a path file on the multi-axis core
 //   scurve home [--switch-at N] [--runs N] [--engine ...] [--json]   homing against a switch in the plant
 //   scurve virtual-board [--pty-link PATH] [--speed X]   the board top behind a pseudo-terminal
 //   scurve board --port DEV info|status|run|stream|stop|estop|clear|home|watch   a board over its UART

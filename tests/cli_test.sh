@@ -330,6 +330,41 @@ assert [m["end_position"] for m in r["moves"]] == [[200, 100], [50, 175], [0, 0]
 assert r["final_position"] == [0, 0] and r["pin_steps"] == [0, 0], r
 assert r["contour_error_max_pulses"] < 0.01, r
 PY
+# --plot DIR: the decimated trace (CSV) and the two figures in one command;
+# the trace has a row at every move end and at the end, where the run's
+# positions are (REF_POS is the floor of the reference position).
+"$scurve" path "$tmp/square.gcode" --engine model --plot "$tmp/plot/new" --json > "$tmp/path_plot.json"
+python3 - "$tmp/path_plot.json" "$tmp/plot/new" <<'PY'
+import json, math, os, sys
+r, d = json.load(open(sys.argv[1])), sys.argv[2]
+assert r["pass"], r
+assert sorted(os.listdir(d)) == ["path_axes.png", "path_trace.csv", "path_xy.png"], os.listdir(d)
+for name in ("path_xy.png", "path_axes.png"):
+    with open(os.path.join(d, name), "rb") as f:
+        assert f.read(8) == b"\x89PNG\r\n\x1a\n", name
+    assert os.path.getsize(os.path.join(d, name)) > 10000, name
+lines = [l.strip() for l in open(os.path.join(d, "path_trace.csv")) if not l.startswith("#")]
+head = lines[0].split(",")
+assert head == ["t_s", "pos0_pulses", "pos1_pulses", "vel0_pulses_per_s", "vel1_pulses_per_s",
+                "contour_error_pulses"], head
+rows = [[float(x) for x in l.split(",")] for l in lines[1:]]
+assert len(rows) == r["plot"]["samples"] and 100000 < len(rows) <= 200000 + len(r["moves"]) + 2, len(rows)
+at = {round(row[0] * 20e6): [math.floor(row[1]), math.floor(row[2])] for row in rows}
+for m in r["moves"]:
+    assert at[m["end_clock"]] == m["end_position"], (m, at.get(m["end_clock"]))
+assert round(rows[-1][0] * 20e6) == r["clocks"], (rows[-1], r["clocks"])
+assert [math.floor(x) for x in rows[-1][1:3]] == r["final_position"], (rows[-1], r["final_position"])
+assert max(row[5] for row in rows) <= r["contour_error_max_pulses"] * (1 + 1e-5), r["contour_error_max_pulses"]
+PY
+# An unusable --plot directory, or no matplotlib, is refused before the run.
+check_bad "--plot=$tmp/square.gcode/plot: cannot create the directory" path "$tmp/square.gcode" --engine model \
+  --plot "$tmp/square.gcode/plot"
+if [ "$(id -u)" -ne 0 ]; then  # root writes anywhere
+  mkdir "$tmp/ro" && chmod 555 "$tmp/ro"
+  check_bad "--plot=$tmp/ro: directory is not writable" path "$tmp/square.gcode" --engine model --plot "$tmp/ro"
+fi
+(export SCURVE_PYTHON=/nonexistent/python3
+ check_bad "--plot=$tmp/plot/new: needs python3 with matplotlib" path "$tmp/square.gcode" --plot "$tmp/plot/new")
 printf 'G1 X1 Y1 F600\nM3 S1000\n' > "$tmp/bad_word.gcode"
 check_bad "line 2" path "$tmp/bad_word.gcode"
 printf 'G1 X1 Y1 F0\n' > "$tmp/bad_feed.gcode"

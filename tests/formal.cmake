@@ -14,7 +14,7 @@ set(SC_FORMAL_FAST
 set(SC_FORMAL_SLOW
   step_gen_overrun step_gen_drain
   axi_regs_handshake axi_regs_response axi_regs_decode axi_regs_decode_axis axi_regs_pulse_time
-  core_done core_abort core_limits core_rate)
+  core_done core_abort core_limits core_rate multi_sync_start)
 
 foreach(group IN LISTS SC_FORMAL_FAST SC_FORMAL_SLOW)
   set(cmd ${Python3_EXECUTABLE} ${PROJECT_SOURCE_DIR}/scripts/formal.py --group ${group}

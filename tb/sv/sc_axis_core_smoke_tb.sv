@@ -48,7 +48,7 @@ module sc_axis_core_smoke_tb;
     .ext_sel_i(1'b0), .ext_req_i(1'b0), .ext_fwd_i(1'b0), .ext_hint_valid_i(1'b0),
     .ext_hint_i(1'b0), .ext_busy_i(1'b0), .ext_abort_i(1'b0), .ext_done_i(1'b0),
     .sync_start_ok_i(1'b0), .sync_go_i(1'b0), .sync_drop_i(1'b0),
-    .start_able_o(), .arm_ready_o(), .arm_drop_o(), .fault_abort_o(),
+    .start_able_o(), .arm_ready_o(), .arm_drop_o(), .fault_abort_o(), .arming_o(),
     .exec_start_o(), .abort_o(), .ref_done_o(), .ref_running_o(), .step_busy_o(),
     .lim_trip_fwd_o(), .lim_trip_rev_o(),
     .step_o(step), .dir_o(dir), .en_o(en),

@@ -243,7 +243,8 @@ int sc_main(int argc, char** argv) {
   sc_signal<bool> ext_off("ext_off");
   sc_signal<bool> exec_start("exec_start"), abort_q("abort_q"), ref_done("ref_done"), ref_running("ref_running"),
       step_busy("step_busy");
-  sc_signal<bool> start_able("start_able"), arm_ready("arm_ready"), arm_drop("arm_drop"), fault_abort("fault_abort");
+  sc_signal<bool> start_able("start_able"), arm_ready("arm_ready"), arm_drop("arm_drop"), fault_abort("fault_abort"),
+      arming("arming");
   dut.ext_sel_i(ext_off);
   dut.ext_req_i(ext_off);
   dut.ext_fwd_i(ext_off);
@@ -274,6 +275,7 @@ int sc_main(int argc, char** argv) {
   dut.arm_ready_o(arm_ready);
   dut.arm_drop_o(arm_drop);
   dut.fault_abort_o(fault_abort);
+  dut.arming_o(arming);
   dut.abort_o(abort_q);
   dut.ref_done_o(ref_done);
   dut.ref_running_o(ref_running);
