@@ -28,6 +28,18 @@ MultiRows line_rows(const scurve::LinePlan& plan) {
   return m;
 }
 
+MultiRows path_rows(const scurve::PathPlan& plan) {
+  MultiRows m;
+  for (const scurve::PathAxisRows& ax : plan.axes) {
+    std::vector<Row> r;
+    r.reserve(ax.rows.size());
+    for (size_t k = 0; k < ax.rows.size(); ++k) r.push_back(Row{to_model(ax.rows[k]), row_flags(ax.flags[k])});
+    m.rows.push_back(std::move(r));
+    m.pos_frac0.push_back(ax.pos_frac0);
+  }
+  return m;
+}
+
 std::variant<std::vector<scurve::StopLimitCodes>, scurve::Error> line_stop_codes(
     const std::vector<int64_t>& distances, double stop_jerk, double stop_acc, scurve::Clock clock) {
   double length2 = 0;

@@ -15,6 +15,7 @@
 
 #include "multi_axis_core.h"
 #include "scurve/line_planner.h"
+#include "scurve/path_planner.h"
 #include "scurve/reg_encode.h"
 
 namespace sc {
@@ -28,6 +29,8 @@ struct MultiRows {
 };
 // The rows of a planned line (the last row ends the stream).
 MultiRows line_rows(const scurve::LinePlan& plan);
+// The rows of a planned path (every move back to back, its flags).
+MultiRows path_rows(const scurve::PathPlan& plan);
 
 struct MultiRunOptions {
   bool rtl = true;  // RTL and model in lockstep; false: the model alone

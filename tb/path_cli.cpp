@@ -369,14 +369,7 @@ int run_path_cli(const PathCli& p) {
     if (const std::string e = prepare_plot(p.plot_dir, *plot); !e.empty()) return bad_input(e);
   }
 
-  MultiRows rows;
-  for (const scurve::PathAxisRows& ax : plan.axes) {
-    std::vector<Row> r;
-    r.reserve(ax.rows.size());
-    for (size_t k = 0; k < ax.rows.size(); ++k) r.push_back(Row{to_model(ax.rows[k]), row_flags(ax.flags[k])});
-    rows.rows.push_back(std::move(r));
-    rows.pos_frac0.push_back(ax.pos_frac0);
-  }
+  const MultiRows rows = path_rows(plan);
   MultiRunOptions o;
   o.rtl = p.engine == "lockstep";
   o.timing = timing;

@@ -218,6 +218,48 @@ TEST(MultiAxisLockstep, AStartTowardALimitOnOneAxisIsRefusedByAll) {
   EXPECT_LT(r.clocks, 10u);
 }
 
+// Random paths of 2 to 4 lines with exact stops (scurve::plan_path: one row
+// stream, each line from the fraction the last one left): every move ends
+// on its integer target on every axis, in lockstep, the pins agree.
+void random_paths(size_t axes, int count, uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  for (int i = 0; i < count; ++i) {
+    scurve::PathRequest req;
+    req.axes = axes;
+    req.limits = {40000 + 100000 * double(rng() % 1000) / 1000, 1e7, 2e9};
+    std::vector<int64_t> at(axes, 0);
+    const int moves = 2 + int(rng() % 3);
+    for (int k = 0; k < moves; ++k) {
+      scurve::PathMove m;
+      for (size_t a = 0; a < axes; ++a) at[a] += int64_t(rng() % 1201) - 600;
+      m.target_pulses = at;
+      m.feed = req.limits.v;
+      m.source_line = k + 1;
+      req.moves.push_back(m);
+    }
+    auto p = scurve::plan_path(scurve::Planner{model_clock()}, req, to_host(PulseTiming{}));
+    ASSERT_TRUE(std::holds_alternative<scurve::PathPlan>(p)) << std::get<scurve::Error>(p).message;
+    const scurve::PathPlan& plan = std::get<scurve::PathPlan>(p);
+    MultiRunOptions o;
+    o.measure_line = false;
+    const MultiRunResult r = run_multi(path_rows(plan), o);
+    EXPECT_EQ(r.mismatches, 0u) << "path " << i;
+    for (const std::string& e : r.errors) ADD_FAILURE() << "path " << i << ": " << e;
+    ASSERT_EQ(r.move_ends.size(), plan.moves.size()) << "path " << i;
+    for (size_t k = 0; k < plan.moves.size(); ++k) {
+      for (size_t a = 0; a < axes; ++a) {
+        EXPECT_EQ(r.move_ends[k].ref_pos[a], plan.moves[k].target[a]) << "path " << i << " move " << k << " axis " << a;
+      }
+    }
+    for (size_t a = 0; a < axes; ++a) EXPECT_EQ(r.pin_steps[a], int64_t(r.ref_pos[a])) << "path " << i;
+    if (::testing::Test::HasFailure()) return;
+  }
+}
+
+TEST(MultiAxisLockstep, RandomTwoAxisPathsWithExactStopsEndEveryMoveOnItsTarget) { random_paths(2, 20, 51); }
+
+TEST(MultiAxisLockstep, RandomThreeAxisPathsWithExactStopsEndEveryMoveOnItsTarget) { random_paths(3, 8, 61); }
+
 TEST(MultiAxisModel, AxisCountOutsideOneToMaxAxesIsRefusedNamingIt) {
   EXPECT_THROW(MultiAxisCore(0), std::invalid_argument);
   EXPECT_THROW(MultiAxisCore(MaxAxes + 1), std::invalid_argument);
