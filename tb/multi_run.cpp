@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <climits>
@@ -257,15 +258,17 @@ class Run {
   double contour_distance(const MultiCoreOutputs& out, size_t k) const {
     const std::vector<double>& p0 = opt_.polyline[k];
     const std::vector<double>& p1 = opt_.polyline[k + 1];
+    std::array<double, MaxAxes> pos{};
     double len2 = 0, dot = 0;
     for (size_t a = 0; a < rows_.axes(); ++a) {
+      pos[a] = position(out.axis[a]);
       len2 += (p1[a] - p0[a]) * (p1[a] - p0[a]);
-      dot += (position(out.axis[a]) - p0[a]) * (p1[a] - p0[a]);
+      dot += (pos[a] - p0[a]) * (p1[a] - p0[a]);
     }
     const double t = len2 > 0 ? std::clamp(dot / len2, 0.0, 1.0) : 0.0;
     double d2 = 0;
     for (size_t a = 0; a < rows_.axes(); ++a) {
-      const double e = position(out.axis[a]) - (p0[a] + t * (p1[a] - p0[a]));
+      const double e = pos[a] - (p0[a] + t * (p1[a] - p0[a]));
       d2 += e * e;
     }
     return std::sqrt(d2);
