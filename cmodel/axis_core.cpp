@@ -51,8 +51,21 @@ void AxisCore::step(const CoreInputs& in, const SyncInputs& s) {
   latch_inputs(in);
 }
 
+void AxisCore::step(const CoreInputs& in, const CoreExtInputs& x, const SyncInputs& s) {
+  latch_write(in);
+  clock_edge<true, true>(x, s);
+  exec_in_.row_push = false;
+  exec_in_.row_replace = false;
+  exec_in_.fifo_flush = false;
+  latch_inputs(in);
+}
+
 bool AxisCore::start_able() const {
   return in_q_.start && !busy() && in_q_.enable && start_into_limit() == 0;
+}
+
+bool AxisCore::start_able(const CoreExtInputs& x) const {
+  return in_q_.start && !busy(x) && in_q_.enable && start_into_limit() == 0;
 }
 
 bool AxisCore::arm_drop() const { return arm_ && (in_q_.abort || in_q_.stop || into_limit() != 0); }

@@ -113,6 +113,13 @@ class AxisCore {
   bool arm_ready() const;
   bool arm_drop() const;
   bool fault_abort() const;
+  // One clock of sc_axis_core #(.ExtStep(1), .SyncStart(1)): one servo axis
+  // of a multi-axis core; its start_able_o and fault_abort_o with the
+  // external source's inputs `x` (its busy holds a start off, its abort
+  // aborts every axis while this executor runs).
+  void step(const CoreInputs& in, const CoreExtInputs& x, const SyncInputs& s);
+  bool start_able(const CoreExtInputs& x) const;
+  bool fault_abort(const CoreExtInputs& x) const { return fault_abort() || (x.abort && exec_.state().run); }
   // One clock holding the inputs of the previous step(), which must not have
   // pushed a row: the same as step(previous inputs), cheaper.
   void tick();

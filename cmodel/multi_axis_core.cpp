@@ -5,41 +5,106 @@
 
 namespace sc {
 
-MultiAxisCore::MultiAxisCore(size_t axes) {
+MultiAxisCore::MultiAxisCore(size_t axes, bool servo) : axes_(axes) {
   if (axes < 1 || axes > size_t(MaxAxes)) {
     throw std::invalid_argument("axes=" + std::to_string(axes) + ": must be 1 .. " + std::to_string(MaxAxes));
   }
-  axes_.resize(axes);
+  if (servo) {
+    servos_.resize(axes);
+  } else {
+    cores_.resize(axes);
+  }
 }
 
 void MultiAxisCore::reset() {
-  for (AxisCore& a : axes_) a.reset();
+  for (AxisCore& a : cores_) a.reset();
+  for (ServoAxis& a : servos_) a.reset();
 }
 
 void MultiAxisCore::step(const MultiCoreInputs& in) {
+  if (servos_.empty()) {
+    step_open(in);
+  } else {
+    step_servo(in);
+  }
+}
+
+namespace {
+
+// The shared ports of sc_multi_axis_core onto one axis's inputs, with the
+// stop and abort every axis broadcasts.
+void apply_shared(const MultiCoreInputs& in, bool stopping_any, bool fault_any, CoreInputs& c) {
+  c.enable = in.enable;
+  c.row_push = in.row_push;
+  c.row_replace = in.row_replace;
+  c.retarget_row = in.retarget_row;
+  c.row.seg.clocks = in.row_clocks;
+  c.fifo_flush = in.fifo_flush;
+  c.start = in.start;
+  c.abort = in.abort || fault_any;
+  c.stop = in.stop || stopping_any;
+}
+
+}  // namespace
+
+void MultiAxisCore::step_open(const MultiCoreInputs& in) {
   // The sync and broadcast signals come from every axis's registers before
   // this clock (sc_multi_axis_core's AND / OR across axes).
   SyncInputs s{true, true, false};
   bool stopping_any = false, fault_any = false;
-  for (const AxisCore& a : axes_) {
+  for (const AxisCore& a : cores_) {
     s.start_ok = s.start_ok && a.start_able();
     s.go = s.go && a.arm_ready();
     s.drop = s.drop || a.arm_drop();
     stopping_any = stopping_any || a.exec().state().stop;
     fault_any = fault_any || a.fault_abort();
   }
-  for (size_t i = 0; i < axes_.size(); ++i) {
+  for (size_t i = 0; i < axes_; ++i) {
     scratch_ = in.axis[i];
-    scratch_.enable = in.enable;
-    scratch_.row_push = in.row_push;
-    scratch_.row_replace = in.row_replace;
-    scratch_.retarget_row = in.retarget_row;
-    scratch_.row.seg.clocks = in.row_clocks;
-    scratch_.fifo_flush = in.fifo_flush;
-    scratch_.start = in.start;
-    scratch_.abort = in.abort || fault_any;
-    scratch_.stop = in.stop || stopping_any;
-    axes_[i].step(scratch_, s);
+    apply_shared(in, stopping_any, fault_any, scratch_);
+    cores_[i].step(scratch_, s);
+  }
+}
+
+void MultiAxisCore::step_servo(const MultiCoreInputs& in) {
+  SyncInputs s{true, true, false};
+  bool stopping_any = false, fault_any = false;
+  for (const ServoAxis& a : servos_) {
+    s.start_ok = s.start_ok && a.start_able();
+    s.go = s.go && a.arm_ready();
+    s.drop = s.drop || a.arm_drop();
+    stopping_any = stopping_any || a.exec().state().stop;
+    fault_any = fault_any || a.fault_abort();
+  }
+  for (size_t i = 0; i < axes_; ++i) {
+    scratch_ = in.axis[i];
+    apply_shared(in, stopping_any, fault_any, scratch_);
+    const CoreInputs& c = scratch_;
+    const LoopInputs& l = in.loop[i];
+    ServoInputs& si = servo_scratch_;
+    si.cfg.enable = c.enable;
+    si.cfg.closed_loop = l.closed_loop;
+    si.cfg.timing = c.cfg;
+    si.cfg.ctl = l.ctl;
+    si.row_push = c.row_push;
+    si.row_replace = c.row_replace;
+    si.retarget_row = c.retarget_row;
+    if (c.row_push) si.row = c.row;
+    si.fifo_flush = c.fifo_flush;
+    si.pos_frac0 = c.pos_frac0;
+    si.start = c.start;
+    si.abort = c.abort;
+    si.stop = c.stop;
+    si.stop_jerk = c.stop_jerk;
+    si.stop_acc = c.stop_acc;
+    si.guard = c.guard;
+    si.lim_fwd = c.lim_fwd;
+    si.lim_rev = c.lim_rev;
+    si.lim_hard = c.lim_hard;
+    si.enc_a = l.enc_a;
+    si.enc_b = l.enc_b;
+    si.enc_z = l.enc_z;
+    servos_[i].step(si, s);
   }
 }
 
@@ -50,16 +115,27 @@ MultiCoreOutputs MultiAxisCore::outputs() const {
 }
 
 void MultiAxisCore::read_outputs(MultiCoreOutputs& o) const {
-  o.axes = axes_.size();
-  for (size_t a = 0; a < axes_.size(); ++a) axes_[a].read_outputs(o.axis[a]);
+  o.axes = axes_;
+  o.servo = servo();
+  for (size_t a = 0; a < axes_; ++a) {
+    if (servos_.empty()) {
+      cores_[a].read_outputs(o.axis[a]);
+    } else {
+      servos_[a].read_core_outputs(o.axis[a]);
+      servos_[a].read_loop_outputs(o.loop[a]);
+    }
+  }
 }
 
 bool MultiAxisCore::outputs_equal(const MultiCoreOutputs& o) const {
-  if (o.axes != axes_.size()) return false;
-  for (size_t a = 0; a < axes_.size(); ++a) {
-    if (!axes_[a].outputs_equal(o.axis[a])) return false;
+  if (o.axes != axes_ || o.servo != servo()) return false;
+  if (servos_.empty()) {
+    for (size_t a = 0; a < axes_; ++a) {
+      if (!cores_[a].outputs_equal(o.axis[a])) return false;
+    }
+    return true;
   }
-  return true;
+  return outputs() == o;
 }
 
 }  // namespace sc

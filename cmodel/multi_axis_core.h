@@ -1,6 +1,7 @@
-// Bit-exact model of rtl/sc_multi_axis_core.sv: Axes open-loop axes
-// (AxisCore, each as sc_axis_core #(.SyncStart(1))) executing one shared row
-// sequence: one row push into every axis, one start, one stop.
+// Bit-exact model of rtl/sc_multi_axis_core.sv: Axes axes executing one
+// shared row sequence (one row push into every axis, one start, one stop),
+// open loop (Servo = 0: AxisCore, each as sc_axis_core #(.SyncStart(1))) or
+// closed-loop capable (Servo = 1: ServoAxis, sc_servo_axis #(.SyncStart(1))).
 #pragma once
 
 #include <array>
@@ -9,6 +10,7 @@
 #include <vector>
 
 #include "axis_core.h"
+#include "servo_axis.h"
 
 namespace sc {
 
@@ -28,16 +30,19 @@ struct MultiCoreInputs {
   bool abort = false;
   bool stop = false;
   std::array<CoreInputs, MaxAxes> axis{};
+  std::array<LoopInputs, MaxAxes> loop{};  // Servo = 1 only
 };
 
 // Every output, per axis (axis[a] for a < axes).
 struct MultiCoreOutputs {
   size_t axes = 0;
+  bool servo = false;
   std::array<CoreOutputs, MaxAxes> axis{};
+  std::array<LoopOutputs, MaxAxes> loop{};  // Servo = 1 only (all 0 otherwise)
   bool operator==(const MultiCoreOutputs& o) const {
-    if (axes != o.axes) return false;
+    if (axes != o.axes || servo != o.servo) return false;
     for (size_t a = 0; a < axes; ++a) {
-      if (!(axis[a] == o.axis[a])) return false;
+      if (!(axis[a] == o.axis[a]) || (servo && !(loop[a] == o.loop[a]))) return false;
     }
     return true;
   }
@@ -45,20 +50,29 @@ struct MultiCoreOutputs {
 
 class MultiAxisCore {
  public:
-  // 1 .. MaxAxes axes (throws std::invalid_argument naming `axes` otherwise).
-  explicit MultiAxisCore(size_t axes);
+  // 1 .. MaxAxes axes (throws std::invalid_argument naming `axes` otherwise);
+  // servo: the Servo = 1 core.
+  explicit MultiAxisCore(size_t axes, bool servo = false);
   void reset();
   void step(const MultiCoreInputs& in);
   MultiCoreOutputs outputs() const;
   void read_outputs(MultiCoreOutputs& o) const;
   bool outputs_equal(const MultiCoreOutputs& o) const;
 
-  size_t axes() const { return axes_.size(); }
-  const AxisCore& axis(size_t a) const { return axes_[a]; }
+  size_t axes() const { return axes_; }
+  bool servo() const { return !servos_.empty(); }
+  // Axis a's open-loop core (a servo axis's own, with Servo = 1).
+  const AxisCore& axis(size_t a) const { return servos_.empty() ? cores_[a] : servos_[a].core(); }
+  const ServoAxis& servo_axis(size_t a) const { return servos_.at(a); }
 
  private:
-  std::vector<AxisCore> axes_;
-  CoreInputs scratch_{};  // one axis's inputs of this clock
+  void step_open(const MultiCoreInputs& in);
+  void step_servo(const MultiCoreInputs& in);
+  size_t axes_;
+  std::vector<AxisCore> cores_;     // Servo = 0
+  std::vector<ServoAxis> servos_;   // Servo = 1
+  CoreInputs scratch_{};            // one axis's inputs of this clock
+  ServoInputs servo_scratch_{};
 };
 
 }  // namespace sc

@@ -42,7 +42,12 @@ double ServoAxis::ref_position() const {
   return double(e.pint) + double(e.frac) / kTwoPowFrac - 0.5;
 }
 
-void ServoAxis::step(const ServoInputs& in) {
+void ServoAxis::step(const ServoInputs& in) { step_impl<false>(in, SyncInputs{}); }
+
+void ServoAxis::step(const ServoInputs& in, const SyncInputs& s) { step_impl<true>(in, s); }
+
+template <bool kSync>
+void ServoAxis::step_impl(const ServoInputs& in, const SyncInputs& s) {
   const ServoConfig& cq = in_q_.cfg;
   const ProfileExec::State& e = core_.exec().state();
   const NeuronPi::State& c = ctl_.state();
@@ -92,7 +97,11 @@ void ServoAxis::step(const ServoInputs& in) {
 
   // exec_start_o is a function of the core's registers: the controller and
   // the NCO start with the executor, after arming.
-  core_.step(ki, x);
+  if constexpr (kSync) {
+    core_.step(ki, x, s);
+  } else {
+    core_.step(ki, x);
+  }
   const bool exec_start = core_.exec_started();
   ci.start = exec_start && closed;
   nco_.step(cq.ctl.div, cq.ctl.shift, exec_start, nco_run, nco_u);
@@ -106,6 +115,36 @@ void ServoAxis::step(const ServoInputs& in) {
     have_last_cfg_ = true;
     in_q_.cfg = registered(in.cfg);
   }
+}
+
+void ServoAxis::read_core_outputs(CoreOutputs& o) const {
+  core_.read_outputs(o);
+  const CoreExtInputs x = ext_inputs();
+  o.busy = core_.busy(x);
+  o.done = core_.done(x);
+  o.phase = ctl_.state().ferr ? uint8_t(Phase::PhFault) : core_.phase(x);
+  o.lim_trip_fwd = core_.lim_trip(true, o.busy);
+  o.lim_trip_rev = core_.lim_trip(false, o.busy);
+}
+
+void ServoAxis::read_loop_outputs(LoopOutputs& o) const {
+  const NeuronPi::State& c = ctl_.state();
+  o.fault_ferr = c.ferr;
+  o.in_pos = c.in_pos;
+  o.enc_pos = dec_.state().count;
+  o.enc_illegal = dec_.state().illegal;
+  o.enc_index = dec_.index();
+  o.ctl_active = c.active;
+  o.ctl_state = c.st;
+  o.u = c.u;
+  o.v_cmd = c.out_p;
+  o.e_p = c.lp[0].ep;
+  o.e_v = c.lp[1].ep;
+  o.w_p1 = c.lp[0].w1;
+  o.w_p2 = c.lp[0].w2;
+  o.w_v1 = c.lp[1].w1;
+  o.w_v2 = c.lp[1].w2;
+  o.nco_phase = nco_.state().acc;
 }
 
 ServoOutputs ServoAxis::outputs() const {

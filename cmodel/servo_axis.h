@@ -79,12 +79,48 @@ struct ServoOutputs {
   bool operator==(const ServoOutputs&) const = default;
 };
 
+// The loop's own ports of one axis of sc_multi_axis_core #(.Servo(1)) (the
+// rest of ServoInputs is the open-loop core's, CoreInputs).
+struct LoopInputs {
+  bool closed_loop = true;
+  NeuronConfig ctl{};
+  bool enc_a = false, enc_b = false, enc_z = false;
+};
+
+// The loop's outputs of one axis of sc_multi_axis_core #(.Servo(1)) (the
+// rest is CoreOutputs, read_core_outputs()).
+struct LoopOutputs {
+  bool fault_ferr = false, in_pos = false;
+  int32_t enc_pos = 0;
+  uint16_t enc_illegal = 0;
+  bool enc_index = false;
+  bool ctl_active = false;
+  uint8_t ctl_state = 0;
+  int32_t u = 0, v_cmd = 0, e_p = 0, e_v = 0;
+  int32_t w_p1 = 0, w_p2 = 0, w_v1 = 0, w_v2 = 0;
+  int64_t nco_phase = 0;
+  bool operator==(const LoopOutputs&) const = default;
+};
+
 class ServoAxis {
  public:
   ServoAxis() { reset(); }
   void reset();
   void step(const ServoInputs& in);
+  // One clock of sc_servo_axis #(.SyncStart(1)): one axis of a multi-axis
+  // core, `s` formed from every axis's state before this clock.
+  void step(const ServoInputs& in, const SyncInputs& s);
   ServoOutputs outputs() const;
+  // The synchronisation outputs (start_able_o, arm_ready_o, arm_drop_o,
+  // fault_abort_o), from the current state.
+  bool start_able() const { return core_.start_able(ext_inputs()); }
+  bool arm_ready() const { return core_.arm_ready(); }
+  bool arm_drop() const { return core_.arm_drop(); }
+  bool fault_abort() const { return core_.fault_abort(ext_inputs()); }
+  // The outputs sc_multi_axis_core takes from this axis: the core's set
+  // (busy, done and phase with the loop's) and the loop's.
+  void read_core_outputs(CoreOutputs& o) const;
+  void read_loop_outputs(LoopOutputs& o) const;
 
   bool busy() const;
   bool done() const;
@@ -120,6 +156,8 @@ class ServoAxis {
   };
   // The core's ext_* inputs: the NCO and the controller's current registers.
   CoreExtInputs ext_inputs() const;
+  template <bool kSync>
+  void step_impl(const ServoInputs& in, const SyncInputs& s);
   AxisCore core_;
   QuadDecoder dec_;
   NeuronPi ctl_;

@@ -113,6 +113,13 @@ module sc_axi_servo (
   logic signed [NWgtW-1:0]     unused_wn_p1, unused_wn_p2, unused_wn_v1, unused_wn_v2;
   logic signed [sc_pkg::NcoW-1:0] unused_nco_phase;
   logic signed [PendW-1:0]     unused_pending;
+  logic [sc_pkg::FracBits-1:0] unused_ref_pos_frac;
+  logic signed [sc_pkg::VelW-1:0]  unused_ref_vel_full;
+  logic signed [sc_pkg::AccW-1:0]  unused_ref_acc;
+  logic signed [sc_pkg::JerkW-1:0] unused_ref_jerk;
+  logic [sc_pkg::SegIdxW-1:0]  unused_seg_idx;
+  logic unused_start_able, unused_arm_ready, unused_arm_drop, unused_fault_abort, unused_arming,
+        unused_exec_start;
 
   // status words (order: CL_STATUS, CTL_U, CTL_V_CMD, CTL_E_P, CTL_E_V, CTL_W_*)
   always_comb begin
@@ -321,7 +328,21 @@ module sc_axi_servo (
     .wn_v1_o           (unused_wn_v1),
     .wn_v2_o           (unused_wn_v2),
     .nco_phase_o       (unused_nco_phase),
-    .step_pending_o    (unused_pending)
+    .step_pending_o    (unused_pending),
+    .ref_pos_frac_o    (unused_ref_pos_frac),
+    .ref_vel_full_o    (unused_ref_vel_full),
+    .ref_acc_o         (unused_ref_acc),
+    .ref_jerk_o        (unused_ref_jerk),
+    .seg_idx_o         (unused_seg_idx),
+    .sync_start_ok_i   (1'b0),  // one axis: no start synchronisation
+    .sync_go_i         (1'b0),
+    .sync_drop_i       (1'b0),
+    .start_able_o      (unused_start_able),
+    .arm_ready_o       (unused_arm_ready),
+    .arm_drop_o        (unused_arm_drop),
+    .fault_abort_o     (unused_fault_abort),
+    .arming_o          (unused_arming),
+    .exec_start_o      (unused_exec_start)
   );
 
   assign done_o  = core_done && !busy_o;

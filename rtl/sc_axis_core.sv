@@ -109,7 +109,7 @@ module sc_axis_core #(
   output logic                        start_able_o,      // this axis would accept the START it sees
   output logic                        arm_ready_o,       // armed, DIR set up: waits for sync_go_i
   output logic                        arm_drop_o,        // this axis drops its arming this clock
-  output logic                        fault_abort_o,     // a hard limit or the step-rate guard stops it at once
+  output logic                        fault_abort_o,     // a hard limit, the step-rate guard or ext_abort_i stops it at once
   output logic                        arming_o,          // a START is arming (DIR to the move, its setup)
   output logic                        abort_o,           // abort_i as registered here, or a hard limit acting
   output logic                        ref_done_o,        // the executor has finished the stream
@@ -215,7 +215,9 @@ module sc_axis_core #(
 
   assign arm_drop_o  = arm_q && (abort_q || stop_q || lim_act);
   assign arm_ready_o = arm_q && !arm_drop_o && sg_dir == arm_fwd_q && arm_cnt_q >= cfg_setup_q;
-  assign fault_abort_o = lim_abort || rate_trip_q;
+  // (an external fault aborts every axis of a multi-axis core while this
+  // executor runs; latched, it must not hold the others' next start off)
+  assign fault_abort_o = lim_abort || rate_trip_q || (ExtStep && ext_abort_i && exec_running);
   assign arming_o      = arm_q;
 
   always_comb begin

@@ -23,8 +23,17 @@
 // along the line they were on. Per-axis ports are flat vectors, axis a in
 // bits [a*W +: W] of a W-bit field (one-dimensional: yosys 0.23 reads no
 // packed arrays of vectors in ports).
+//
+// Servo = 1: every axis is a closed-loop capable sc_servo_axis (its own
+// encoder, neuron-PI cascade and step NCO; closed_loop_i per axis selects
+// the loop or the open-loop path through the same pins). The start, row
+// and stop synchronisation is the same; a following-error fault of one axis
+// stops all: under control with CL_CFG.FERR_STOP (its stopping_o), else
+// at once (its fault_abort_o). Servo = 0: the loop ports are unused and
+// their outputs 0.
 module sc_multi_axis_core #(
-  parameter int Axes = 2
+  parameter int Axes  = 2,
+  parameter bit Servo = 1'b0
 ) (
   input  logic                                   clk_i,
   input  logic                                   rst_ni,
@@ -87,7 +96,30 @@ module sc_multi_axis_core #(
   output logic [Axes*sc_pkg::AccW-1:0] ref_acc_o,
   output logic [Axes*sc_pkg::JerkW-1:0] ref_jerk_o,
   output logic [Axes*sc_pkg::SegIdxW-1:0] seg_idx_o,
-  output logic [Axes*sc_pkg::PendW-1:0] step_pending_o
+  output logic [Axes*sc_pkg::PendW-1:0] step_pending_o,
+
+  // closed loop per axis (Servo = 1)
+  input  logic [Axes-1:0]                        closed_loop_i,
+  input  logic [Axes*sc_pkg::CtlCfgW-1:0]        ctl_cfg_i,
+  input  logic [Axes-1:0]                        enc_a_i,
+  input  logic [Axes-1:0]                        enc_b_i,
+  input  logic [Axes-1:0]                        enc_z_i,
+  output logic [Axes-1:0]                        fault_ferr_o,
+  output logic [Axes-1:0]                        in_pos_o,
+  output logic [Axes*sc_pkg::EncCntW-1:0]        enc_pos_o,
+  output logic [Axes*sc_pkg::EncIllW-1:0]        enc_illegal_o,
+  output logic [Axes-1:0]                        enc_index_o,
+  output logic [Axes-1:0]                        ctl_active_o,
+  output logic [Axes*sc_pkg::CtlStW-1:0]         ctl_state_o,
+  output logic [Axes*sc_pkg::CtlW-1:0]           u_o,
+  output logic [Axes*sc_pkg::CtlW-1:0]           v_cmd_o,
+  output logic [Axes*sc_pkg::CtlW-1:0]           e_p_o,
+  output logic [Axes*sc_pkg::CtlW-1:0]           e_v_o,
+  output logic [Axes*sc_pkg::WgtW-1:0]           w_p1_o,
+  output logic [Axes*sc_pkg::WgtW-1:0]           w_p2_o,
+  output logic [Axes*sc_pkg::WgtW-1:0]           w_v1_o,
+  output logic [Axes*sc_pkg::WgtW-1:0]           w_v2_o,
+  output logic [Axes*sc_pkg::NcoW-1:0]           nco_phase_o
 );
 
 `ifndef SYNTHESIS
@@ -107,93 +139,222 @@ module sc_multi_axis_core #(
   assign abort_all     = abort_i || (|fault_abort);
 
   for (genvar a = 0; a < Axes; a++) begin : g_axis
-    logic unused_abort, unused_ref_done, unused_ref_running, unused_step_busy;
+    if (Servo) begin : g_servo
+      logic [sc_pkg::MulAW-1:0] unused_ref_frac_hi;
+      logic [sc_pkg::MulAW-1:0] unused_ref_vel;
+      logic                     unused_ref_done;
+      logic [sc_pkg::NWgtW-1:0] unused_wn_p1, unused_wn_p2, unused_wn_v1, unused_wn_v2;
 
-    sc_axis_core #(
-      .ExtStep   (1'b0),
-      .SyncStart (1'b1)
-    ) u_core (
-      .clk_i,
-      .rst_ni,
-      .enable_i,
-      .cfg_high_i       (cfg_high_i[a*sc_pkg::PulseTimeW +: sc_pkg::PulseTimeW]),
-      .cfg_low_i        (cfg_low_i[a*sc_pkg::PulseTimeW +: sc_pkg::PulseTimeW]),
-      .cfg_setup_i      (cfg_setup_i[a*sc_pkg::PulseTimeW +: sc_pkg::PulseTimeW]),
-      .cfg_hold_i       (cfg_hold_i[a*sc_pkg::PulseTimeW +: sc_pkg::PulseTimeW]),
-      .row_push_i,
-      .row_replace_i,
-      .retarget_row_i,
-      .row_flags_i      (row_flags_i[a*sc_pkg::RowFlagW +: sc_pkg::RowFlagW]),
-      .row_phase_i      (row_phase_i[a*sc_pkg::PhaseW +: sc_pkg::PhaseW]),
-      .row_clocks_i,
-      .row_jerk_i       (row_jerk_i[a*sc_pkg::JerkW +: sc_pkg::JerkW]),
-      .row_acc0_i       (row_acc0_i[a*sc_pkg::AccW +: sc_pkg::AccW]),
-      .row_vel0_i       (row_vel0_i[a*sc_pkg::VelW +: sc_pkg::VelW]),
-      .fifo_flush_i,
-      .pos_frac0_i      (pos_frac0_i[a*sc_pkg::FracBits +: sc_pkg::FracBits]),
-      .start_i,
-      .abort_i          (abort_all),
-      .stop_i           (stop_all),
-      .stop_jerk_i      (stop_jerk_i[a*sc_pkg::JerkW +: sc_pkg::JerkW]),
-      .stop_acc_i       (stop_acc_i[a*sc_pkg::AccW +: sc_pkg::AccW]),
-      .guard_vel_i      (guard_vel_i[a*sc_pkg::VelW +: sc_pkg::VelW]),
-      .guard_acc_i      (guard_acc_i[a*sc_pkg::AccW +: sc_pkg::AccW]),
-      .guard_jerk_i     (guard_jerk_i[a*sc_pkg::JerkW +: sc_pkg::JerkW]),
-      .lim_fwd_i        (lim_fwd_i[a]),
-      .lim_rev_i        (lim_rev_i[a]),
-      .lim_hard_i       (lim_hard_i[a]),
-      .ext_sel_i        (1'b0),
-      .ext_req_i        (1'b0),
-      .ext_fwd_i        (1'b0),
-      .ext_hint_valid_i (1'b0),
-      .ext_hint_i       (1'b0),
-      .ext_busy_i       (1'b0),
-      .ext_abort_i      (1'b0),
-      .ext_done_i       (1'b0),
-      .sync_start_ok_i  (sync_start_ok),
-      .sync_go_i        (sync_go),
-      .sync_drop_i      (sync_drop),
-      .start_able_o     (start_able[a]),
-      .arm_ready_o      (arm_ready[a]),
-      .arm_drop_o       (arm_drop[a]),
-      .fault_abort_o    (fault_abort[a]),
-      .arming_o         (arming[a]),
-      .exec_start_o     (exec_start[a]),
-      .abort_o          (unused_abort),
-      .ref_done_o       (unused_ref_done),
-      .ref_running_o    (unused_ref_running),
-      .step_busy_o      (unused_step_busy),
-      .lim_trip_fwd_o   (lim_trip_fwd_o[a]),
-      .lim_trip_rev_o   (lim_trip_rev_o[a]),
-      .step_o           (step_o[a]),
-      .dir_o            (dir_o[a]),
-      .en_o             (en_o[a]),
-      .busy_o           (busy_o[a]),
-      .done_o           (done_o[a]),
-      .phase_o          (phase_o[a*sc_pkg::PhaseW +: sc_pkg::PhaseW]),
-      .fault_table_o    (fault_table_o[a]),
-      .fault_overrun_o  (fault_overrun_o[a]),
-      .underrun_o       (underrun_o[a]),
-      .discont_o        (discont_o[a]),
-      .guard_o          (guard_o[a]),
-      .stopping_o       (stopping_o[a]),
-      .overshoot_o      (overshoot_o[a]),
-      .move_done_o      (move_done_o[a]),
-      .move_idx_o       (move_idx_o[a*sc_pkg::MoveIdxW +: sc_pkg::MoveIdxW]),
-      .boundary_pos_o   (boundary_pos_o[a*sc_pkg::PosIntW +: sc_pkg::PosIntW]),
-      .fifo_level_o     (fifo_level_o[a*sc_pkg::RowLevelW +: sc_pkg::RowLevelW]),
-      .row_count_o      (row_count_o[a*sc_pkg::RowCountW +: sc_pkg::RowCountW]),
-      .retarget_refused_o (retarget_refused_o[a]),
-      .fifo_full_o      (fifo_full_o[a]),
-      .pulse_count_o    (pulse_count_o[a*sc_pkg::PosIntW +: sc_pkg::PosIntW]),
-      .ref_pos_int_o    (ref_pos_int_o[a*sc_pkg::PosIntW +: sc_pkg::PosIntW]),
-      .ref_pos_frac_o   (ref_pos_frac_o[a*sc_pkg::FracBits +: sc_pkg::FracBits]),
-      .ref_vel_o        (ref_vel_o[a*sc_pkg::VelW +: sc_pkg::VelW]),
-      .ref_acc_o        (ref_acc_o[a*sc_pkg::AccW +: sc_pkg::AccW]),
-      .ref_jerk_o       (ref_jerk_o[a*sc_pkg::JerkW +: sc_pkg::JerkW]),
-      .seg_idx_o        (seg_idx_o[a*sc_pkg::SegIdxW +: sc_pkg::SegIdxW]),
-      .step_pending_o   (step_pending_o[a*sc_pkg::PendW +: sc_pkg::PendW])
-    );
+      sc_servo_axis #(
+        .SyncStart (1'b1)
+      ) u_servo (
+        .clk_i,
+        .rst_ni,
+        .enable_i,
+        .closed_loop_i    (closed_loop_i[a]),
+        .cfg_high_i       (cfg_high_i[a*sc_pkg::PulseTimeW +: sc_pkg::PulseTimeW]),
+        .cfg_low_i        (cfg_low_i[a*sc_pkg::PulseTimeW +: sc_pkg::PulseTimeW]),
+        .cfg_setup_i      (cfg_setup_i[a*sc_pkg::PulseTimeW +: sc_pkg::PulseTimeW]),
+        .cfg_hold_i       (cfg_hold_i[a*sc_pkg::PulseTimeW +: sc_pkg::PulseTimeW]),
+        .row_push_i,
+        .row_replace_i,
+        .retarget_row_i,
+        .row_flags_i      (row_flags_i[a*sc_pkg::RowFlagW +: sc_pkg::RowFlagW]),
+        .row_phase_i      (row_phase_i[a*sc_pkg::PhaseW +: sc_pkg::PhaseW]),
+        .row_clocks_i,
+        .row_jerk_i       (row_jerk_i[a*sc_pkg::JerkW +: sc_pkg::JerkW]),
+        .row_acc0_i       (row_acc0_i[a*sc_pkg::AccW +: sc_pkg::AccW]),
+        .row_vel0_i       (row_vel0_i[a*sc_pkg::VelW +: sc_pkg::VelW]),
+        .fifo_flush_i,
+        .pos_frac0_i      (pos_frac0_i[a*sc_pkg::FracBits +: sc_pkg::FracBits]),
+        .start_i,
+        .abort_i          (abort_all),
+        .stop_i           (stop_all),
+        .stop_jerk_i      (stop_jerk_i[a*sc_pkg::JerkW +: sc_pkg::JerkW]),
+        .stop_acc_i       (stop_acc_i[a*sc_pkg::AccW +: sc_pkg::AccW]),
+        .guard_vel_i      (guard_vel_i[a*sc_pkg::VelW +: sc_pkg::VelW]),
+        .guard_acc_i      (guard_acc_i[a*sc_pkg::AccW +: sc_pkg::AccW]),
+        .guard_jerk_i     (guard_jerk_i[a*sc_pkg::JerkW +: sc_pkg::JerkW]),
+        .lim_fwd_i        (lim_fwd_i[a]),
+        .lim_rev_i        (lim_rev_i[a]),
+        .lim_hard_i       (lim_hard_i[a]),
+        .enc_a_i          (enc_a_i[a]),
+        .enc_b_i          (enc_b_i[a]),
+        .enc_z_i          (enc_z_i[a]),
+        .ctl_cfg_i        (ctl_cfg_i[a*sc_pkg::CtlCfgW +: sc_pkg::CtlCfgW]),
+        .step_o           (step_o[a]),
+        .dir_o            (dir_o[a]),
+        .en_o             (en_o[a]),
+        .busy_o           (busy_o[a]),
+        .done_o           (done_o[a]),
+        .phase_o          (phase_o[a*sc_pkg::PhaseW +: sc_pkg::PhaseW]),
+        .fault_table_o    (fault_table_o[a]),
+        .fault_overrun_o  (fault_overrun_o[a]),
+        .underrun_o       (underrun_o[a]),
+        .discont_o        (discont_o[a]),
+        .guard_o          (guard_o[a]),
+        .stopping_o       (stopping_o[a]),
+        .overshoot_o      (overshoot_o[a]),
+        .move_done_o      (move_done_o[a]),
+        .move_idx_o       (move_idx_o[a*sc_pkg::MoveIdxW +: sc_pkg::MoveIdxW]),
+        .boundary_pos_o   (boundary_pos_o[a*sc_pkg::PosIntW +: sc_pkg::PosIntW]),
+        .fifo_level_o     (fifo_level_o[a*sc_pkg::RowLevelW +: sc_pkg::RowLevelW]),
+        .row_count_o      (row_count_o[a*sc_pkg::RowCountW +: sc_pkg::RowCountW]),
+        .retarget_refused_o (retarget_refused_o[a]),
+        .fifo_full_o      (fifo_full_o[a]),
+        .lim_trip_fwd_o   (lim_trip_fwd_o[a]),
+        .lim_trip_rev_o   (lim_trip_rev_o[a]),
+        .fault_ferr_o     (fault_ferr_o[a]),
+        .in_pos_o         (in_pos_o[a]),
+        .pulse_count_o    (pulse_count_o[a*sc_pkg::PosIntW +: sc_pkg::PosIntW]),
+        .enc_pos_o        (enc_pos_o[a*sc_pkg::EncCntW +: sc_pkg::EncCntW]),
+        .enc_illegal_o    (enc_illegal_o[a*sc_pkg::EncIllW +: sc_pkg::EncIllW]),
+        .enc_index_o      (enc_index_o[a]),
+        .ref_pos_int_o    (ref_pos_int_o[a*sc_pkg::PosIntW +: sc_pkg::PosIntW]),
+        .ref_frac_hi_o    (unused_ref_frac_hi),
+        .ref_vel_o        (unused_ref_vel),
+        .ref_done_o       (unused_ref_done),
+        .ctl_active_o     (ctl_active_o[a]),
+        .ctl_state_o      (ctl_state_o[a*sc_pkg::CtlStW +: sc_pkg::CtlStW]),
+        .u_o              (u_o[a*sc_pkg::CtlW +: sc_pkg::CtlW]),
+        .v_cmd_o          (v_cmd_o[a*sc_pkg::CtlW +: sc_pkg::CtlW]),
+        .e_p_o            (e_p_o[a*sc_pkg::CtlW +: sc_pkg::CtlW]),
+        .e_v_o            (e_v_o[a*sc_pkg::CtlW +: sc_pkg::CtlW]),
+        .w_p1_o           (w_p1_o[a*sc_pkg::WgtW +: sc_pkg::WgtW]),
+        .w_p2_o           (w_p2_o[a*sc_pkg::WgtW +: sc_pkg::WgtW]),
+        .w_v1_o           (w_v1_o[a*sc_pkg::WgtW +: sc_pkg::WgtW]),
+        .w_v2_o           (w_v2_o[a*sc_pkg::WgtW +: sc_pkg::WgtW]),
+        .wn_p1_o          (unused_wn_p1),
+        .wn_p2_o          (unused_wn_p2),
+        .wn_v1_o          (unused_wn_v1),
+        .wn_v2_o          (unused_wn_v2),
+        .nco_phase_o      (nco_phase_o[a*sc_pkg::NcoW +: sc_pkg::NcoW]),
+        .step_pending_o   (step_pending_o[a*sc_pkg::PendW +: sc_pkg::PendW]),
+        .ref_pos_frac_o   (ref_pos_frac_o[a*sc_pkg::FracBits +: sc_pkg::FracBits]),
+        .ref_vel_full_o   (ref_vel_o[a*sc_pkg::VelW +: sc_pkg::VelW]),
+        .ref_acc_o        (ref_acc_o[a*sc_pkg::AccW +: sc_pkg::AccW]),
+        .ref_jerk_o       (ref_jerk_o[a*sc_pkg::JerkW +: sc_pkg::JerkW]),
+        .seg_idx_o        (seg_idx_o[a*sc_pkg::SegIdxW +: sc_pkg::SegIdxW]),
+        .sync_start_ok_i  (sync_start_ok),
+        .sync_go_i        (sync_go),
+        .sync_drop_i      (sync_drop),
+        .start_able_o     (start_able[a]),
+        .arm_ready_o      (arm_ready[a]),
+        .arm_drop_o       (arm_drop[a]),
+        .fault_abort_o    (fault_abort[a]),
+        .arming_o         (arming[a]),
+        .exec_start_o     (exec_start[a])
+      );
+    end else begin : g_open
+      logic unused_abort, unused_ref_done, unused_ref_running, unused_step_busy;
+
+      sc_axis_core #(
+        .ExtStep   (1'b0),
+        .SyncStart (1'b1)
+      ) u_core (
+        .clk_i,
+        .rst_ni,
+        .enable_i,
+        .cfg_high_i       (cfg_high_i[a*sc_pkg::PulseTimeW +: sc_pkg::PulseTimeW]),
+        .cfg_low_i        (cfg_low_i[a*sc_pkg::PulseTimeW +: sc_pkg::PulseTimeW]),
+        .cfg_setup_i      (cfg_setup_i[a*sc_pkg::PulseTimeW +: sc_pkg::PulseTimeW]),
+        .cfg_hold_i       (cfg_hold_i[a*sc_pkg::PulseTimeW +: sc_pkg::PulseTimeW]),
+        .row_push_i,
+        .row_replace_i,
+        .retarget_row_i,
+        .row_flags_i      (row_flags_i[a*sc_pkg::RowFlagW +: sc_pkg::RowFlagW]),
+        .row_phase_i      (row_phase_i[a*sc_pkg::PhaseW +: sc_pkg::PhaseW]),
+        .row_clocks_i,
+        .row_jerk_i       (row_jerk_i[a*sc_pkg::JerkW +: sc_pkg::JerkW]),
+        .row_acc0_i       (row_acc0_i[a*sc_pkg::AccW +: sc_pkg::AccW]),
+        .row_vel0_i       (row_vel0_i[a*sc_pkg::VelW +: sc_pkg::VelW]),
+        .fifo_flush_i,
+        .pos_frac0_i      (pos_frac0_i[a*sc_pkg::FracBits +: sc_pkg::FracBits]),
+        .start_i,
+        .abort_i          (abort_all),
+        .stop_i           (stop_all),
+        .stop_jerk_i      (stop_jerk_i[a*sc_pkg::JerkW +: sc_pkg::JerkW]),
+        .stop_acc_i       (stop_acc_i[a*sc_pkg::AccW +: sc_pkg::AccW]),
+        .guard_vel_i      (guard_vel_i[a*sc_pkg::VelW +: sc_pkg::VelW]),
+        .guard_acc_i      (guard_acc_i[a*sc_pkg::AccW +: sc_pkg::AccW]),
+        .guard_jerk_i     (guard_jerk_i[a*sc_pkg::JerkW +: sc_pkg::JerkW]),
+        .lim_fwd_i        (lim_fwd_i[a]),
+        .lim_rev_i        (lim_rev_i[a]),
+        .lim_hard_i       (lim_hard_i[a]),
+        .ext_sel_i        (1'b0),
+        .ext_req_i        (1'b0),
+        .ext_fwd_i        (1'b0),
+        .ext_hint_valid_i (1'b0),
+        .ext_hint_i       (1'b0),
+        .ext_busy_i       (1'b0),
+        .ext_abort_i      (1'b0),
+        .ext_done_i       (1'b0),
+        .sync_start_ok_i  (sync_start_ok),
+        .sync_go_i        (sync_go),
+        .sync_drop_i      (sync_drop),
+        .start_able_o     (start_able[a]),
+        .arm_ready_o      (arm_ready[a]),
+        .arm_drop_o       (arm_drop[a]),
+        .fault_abort_o    (fault_abort[a]),
+        .arming_o         (arming[a]),
+        .exec_start_o     (exec_start[a]),
+        .abort_o          (unused_abort),
+        .ref_done_o       (unused_ref_done),
+        .ref_running_o    (unused_ref_running),
+        .step_busy_o      (unused_step_busy),
+        .lim_trip_fwd_o   (lim_trip_fwd_o[a]),
+        .lim_trip_rev_o   (lim_trip_rev_o[a]),
+        .step_o           (step_o[a]),
+        .dir_o            (dir_o[a]),
+        .en_o             (en_o[a]),
+        .busy_o           (busy_o[a]),
+        .done_o           (done_o[a]),
+        .phase_o          (phase_o[a*sc_pkg::PhaseW +: sc_pkg::PhaseW]),
+        .fault_table_o    (fault_table_o[a]),
+        .fault_overrun_o  (fault_overrun_o[a]),
+        .underrun_o       (underrun_o[a]),
+        .discont_o        (discont_o[a]),
+        .guard_o          (guard_o[a]),
+        .stopping_o       (stopping_o[a]),
+        .overshoot_o      (overshoot_o[a]),
+        .move_done_o      (move_done_o[a]),
+        .move_idx_o       (move_idx_o[a*sc_pkg::MoveIdxW +: sc_pkg::MoveIdxW]),
+        .boundary_pos_o   (boundary_pos_o[a*sc_pkg::PosIntW +: sc_pkg::PosIntW]),
+        .fifo_level_o     (fifo_level_o[a*sc_pkg::RowLevelW +: sc_pkg::RowLevelW]),
+        .row_count_o      (row_count_o[a*sc_pkg::RowCountW +: sc_pkg::RowCountW]),
+        .retarget_refused_o (retarget_refused_o[a]),
+        .fifo_full_o      (fifo_full_o[a]),
+        .pulse_count_o    (pulse_count_o[a*sc_pkg::PosIntW +: sc_pkg::PosIntW]),
+        .ref_pos_int_o    (ref_pos_int_o[a*sc_pkg::PosIntW +: sc_pkg::PosIntW]),
+        .ref_pos_frac_o   (ref_pos_frac_o[a*sc_pkg::FracBits +: sc_pkg::FracBits]),
+        .ref_vel_o        (ref_vel_o[a*sc_pkg::VelW +: sc_pkg::VelW]),
+        .ref_acc_o        (ref_acc_o[a*sc_pkg::AccW +: sc_pkg::AccW]),
+        .ref_jerk_o       (ref_jerk_o[a*sc_pkg::JerkW +: sc_pkg::JerkW]),
+        .seg_idx_o        (seg_idx_o[a*sc_pkg::SegIdxW +: sc_pkg::SegIdxW]),
+        .step_pending_o   (step_pending_o[a*sc_pkg::PendW +: sc_pkg::PendW])
+      );
+
+      // no loop: its ports unused, its outputs 0
+      logic unused_loop_in;
+      assign unused_loop_in = ^{closed_loop_i[a], ctl_cfg_i[a*sc_pkg::CtlCfgW +: sc_pkg::CtlCfgW],
+                                enc_a_i[a], enc_b_i[a], enc_z_i[a]};
+      assign fault_ferr_o[a]  = 1'b0;
+      assign in_pos_o[a]      = 1'b0;
+      assign enc_pos_o[a*sc_pkg::EncCntW +: sc_pkg::EncCntW]   = '0;
+      assign enc_illegal_o[a*sc_pkg::EncIllW +: sc_pkg::EncIllW] = '0;
+      assign enc_index_o[a]   = 1'b0;
+      assign ctl_active_o[a]  = 1'b0;
+      assign ctl_state_o[a*sc_pkg::CtlStW +: sc_pkg::CtlStW] = '0;
+      assign u_o[a*sc_pkg::CtlW +: sc_pkg::CtlW]     = '0;
+      assign v_cmd_o[a*sc_pkg::CtlW +: sc_pkg::CtlW] = '0;
+      assign e_p_o[a*sc_pkg::CtlW +: sc_pkg::CtlW]   = '0;
+      assign e_v_o[a*sc_pkg::CtlW +: sc_pkg::CtlW]   = '0;
+      assign w_p1_o[a*sc_pkg::WgtW +: sc_pkg::WgtW]  = '0;
+      assign w_p2_o[a*sc_pkg::WgtW +: sc_pkg::WgtW]  = '0;
+      assign w_v1_o[a*sc_pkg::WgtW +: sc_pkg::WgtW]  = '0;
+      assign w_v2_o[a*sc_pkg::WgtW +: sc_pkg::WgtW]  = '0;
+      assign nco_phase_o[a*sc_pkg::NcoW +: sc_pkg::NcoW] = '0;
+    end
   end
 
 `ifndef FORMAL

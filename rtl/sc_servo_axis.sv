@@ -18,7 +18,11 @@
 // All control and configuration inputs are registered first (one clock of
 // latency; the core registers its own); the encoder inputs go through the
 // decoder's synchroniser.
-module sc_servo_axis (
+// SyncStart = 1 makes it one axis of sc_multi_axis_core #(.Servo(1)): the
+// core's start synchronisation ports (sc_axis_core) pass through.
+module sc_servo_axis #(
+  parameter bit SyncStart = 1'b0
+) (
   input  logic                                clk_i,
   input  logic                                rst_ni,
 
@@ -109,7 +113,25 @@ module sc_servo_axis (
   output logic signed [sc_pkg::NWgtW-1:0]     wn_v1_o,
   output logic signed [sc_pkg::NWgtW-1:0]     wn_v2_o,
   output logic signed [sc_pkg::NcoW-1:0]      nco_phase_o,
-  output logic signed [sc_pkg::PendW-1:0]     step_pending_o
+  output logic signed [sc_pkg::PendW-1:0]     step_pending_o,
+
+  // the executor's whole state (the multi-axis core's lockstep compares it)
+  output logic [sc_pkg::FracBits-1:0]         ref_pos_frac_o,
+  output logic signed [sc_pkg::VelW-1:0]      ref_vel_full_o,
+  output logic signed [sc_pkg::AccW-1:0]      ref_acc_o,
+  output logic signed [sc_pkg::JerkW-1:0]     ref_jerk_o,
+  output logic [sc_pkg::SegIdxW-1:0]          seg_idx_o,
+
+  // start synchronisation across axes (SyncStart = 1 only; sc_axis_core)
+  input  logic                                sync_start_ok_i,
+  input  logic                                sync_go_i,
+  input  logic                                sync_drop_i,
+  output logic                                start_able_o,
+  output logic                                arm_ready_o,
+  output logic                                arm_drop_o,
+  output logic                                fault_abort_o,
+  output logic                                arming_o,
+  output logic                                exec_start_o
 );
 
   localparam int FracBits   = sc_pkg::FracBits;
@@ -137,12 +159,7 @@ module sc_servo_axis (
   logic signed [CtlW-1:0] ctl_u;
   logic                   nco_req, nco_fwd, nco_run, queue_near_full;
   logic signed [MulAW-1:0] ref_vel_q31;
-  logic signed [sc_pkg::AccW-1:0]  unused_acc;
-  logic signed [sc_pkg::JerkW-1:0] unused_jerk;
-  logic [sc_pkg::SegIdxW-1:0]      unused_seg_idx;
   logic                   unused_enc_a, unused_enc_b;
-  logic [FracBits-MulAW-1:0] unused_frac_lo;
-  logic [VelW-MulAW-1:0]     unused_vel_lo;
 
   // Backpressure: the NCO holds its phase while the step queue is within one
   // step of either end (one request may still be in flight), so it never
@@ -154,14 +171,10 @@ module sc_servo_axis (
   assign ref_vel_q31    = exec_vel[VelW-1 -: MulAW];
   assign cfg_ferr_stop  = ctl_cfg_q[sc_pkg::CtlCfgFerrStopLsb];
   assign ferr_stop      = ctl_ferr && cfg_ferr_stop && ctl_active;
-  assign unused_frac_lo = exec_frac[FracBits-MulAW-1:0];
-  assign unused_vel_lo  = exec_vel[VelW-MulAW-1:0];
-
-  logic unused_start_able, unused_arm_ready, unused_arm_drop, unused_fault_abort,
-        unused_arming;
 
   sc_axis_core #(
-    .ExtStep (1'b1)
+    .ExtStep   (1'b1),
+    .SyncStart (SyncStart)
   ) u_core (
     .clk_i,
     .rst_ni,
@@ -204,14 +217,14 @@ module sc_servo_axis (
     // discontinuity, guard) is not done, as on the open-loop core: in position,
     // the axis is idle with its stop flags.
     .ext_done_i       (ctl_in_pos && exec_finished),
-    .sync_start_ok_i  (1'b0),   // one axis: no start synchronisation
-    .sync_go_i        (1'b0),
-    .sync_drop_i      (1'b0),
-    .start_able_o     (unused_start_able),
-    .arm_ready_o      (unused_arm_ready),
-    .arm_drop_o       (unused_arm_drop),
-    .fault_abort_o    (unused_fault_abort),
-    .arming_o         (unused_arming),
+    .sync_start_ok_i,
+    .sync_go_i,
+    .sync_drop_i,
+    .start_able_o,
+    .arm_ready_o,
+    .arm_drop_o,
+    .fault_abort_o,
+    .arming_o,
     .exec_start_o     (exec_start),
     .abort_o          (core_abort),
     .ref_done_o       (exec_finished),
@@ -243,9 +256,9 @@ module sc_servo_axis (
     .ref_pos_int_o,
     .ref_pos_frac_o   (exec_frac),
     .ref_vel_o        (exec_vel),
-    .ref_acc_o        (unused_acc),
-    .ref_jerk_o       (unused_jerk),
-    .seg_idx_o        (unused_seg_idx),
+    .ref_acc_o,
+    .ref_jerk_o,
+    .seg_idx_o,
     .step_pending_o
   );
 
@@ -330,5 +343,8 @@ module sc_servo_axis (
   assign ref_done_o    = exec_finished;
   assign ctl_active_o  = ctl_active;
   assign u_o           = ctl_u;
+  assign ref_pos_frac_o = exec_frac;
+  assign ref_vel_full_o = exec_vel;
+  assign exec_start_o   = exec_start;
 
 endmodule

@@ -46,10 +46,35 @@ SignalValues render_outputs(const CoreOutputs& o) {
   };
 }
 
+SignalValues render_loop_outputs(const LoopOutputs& o) {
+  return {
+      {"fault_ferr_o", hex_bits(uint64_t(o.fault_ferr), 1)},
+      {"in_pos_o", hex_bits(uint64_t(o.in_pos), 1)},
+      {"enc_pos_o", hex_bits(int64_t(o.enc_pos), EncCntW)},
+      {"enc_illegal_o", hex_bits(uint64_t(o.enc_illegal), EncIllW)},
+      {"enc_index_o", hex_bits(uint64_t(o.enc_index), 1)},
+      {"ctl_active_o", hex_bits(uint64_t(o.ctl_active), 1)},
+      {"ctl_state_o", hex_bits(uint64_t(o.ctl_state), CtlStW)},
+      {"u_o", hex_bits(int64_t(o.u), CtlW)},
+      {"v_cmd_o", hex_bits(int64_t(o.v_cmd), CtlW)},
+      {"e_p_o", hex_bits(int64_t(o.e_p), CtlW)},
+      {"e_v_o", hex_bits(int64_t(o.e_v), CtlW)},
+      {"w_p1_o", hex_bits(int64_t(o.w_p1), WgtW)},
+      {"w_p2_o", hex_bits(int64_t(o.w_p2), WgtW)},
+      {"w_v1_o", hex_bits(int64_t(o.w_v1), WgtW)},
+      {"w_v2_o", hex_bits(int64_t(o.w_v2), WgtW)},
+      {"nco_phase_o", hex_bits(int64_t(o.nco_phase), NcoW)},
+  };
+}
+
 SignalValues render_multi_outputs(const MultiCoreOutputs& o) {
   SignalValues all;
   for (size_t a = 0; a < o.axes; ++a) {
     for (auto& [name, value] : render_outputs(o.axis[a])) all.emplace_back(fmt::format("ax{}.{}", a, name), value);
+    if (!o.servo) continue;
+    for (auto& [name, value] : render_loop_outputs(o.loop[a])) {
+      all.emplace_back(fmt::format("ax{}.{}", a, name), value);
+    }
   }
   return all;
 }

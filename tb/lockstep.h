@@ -135,8 +135,11 @@ class LockstepChecker : public Lockstep<CoreOutputs> {
   explicit LockstepChecker(size_t max_errors = 1) : Lockstep<CoreOutputs>(&render_outputs, max_errors) {}
 };
 
-// The multi-axis core (sc_multi_axis_core): every axis's outputs, named
-// "axN.<port>".
+// The loop's outputs of one axis of the multi-axis core (Servo = 1).
+SignalValues render_loop_outputs(const LoopOutputs& o);
+
+// The multi-axis core (sc_multi_axis_core): every axis's outputs (with the
+// loop's, Servo = 1), named "axN.<port>".
 SignalValues render_multi_outputs(const MultiCoreOutputs& o);
 
 class MultiLockstepChecker : public Lockstep<MultiCoreOutputs> {

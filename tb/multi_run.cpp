@@ -69,8 +69,13 @@ class Run {
  public:
   // trace: record options.trace_every's trace (not in the pre-pass).
   Run(const MultiRows& rows, const MultiRunOptions& options, bool rtl, bool stop, bool trace)
-      : rows_(rows), opt_(options), model_(rows.axes()), stop_(stop), trace_every_(trace ? options.trace_every : 0) {
-    if (rtl) rtl_ = std::make_unique<RtlMultiAxisCore>(rows.axes());
+      : rows_(rows),
+        opt_(options),
+        model_(rows.axes(), options.loop.has_value()),
+        stop_(stop),
+        trace_every_(trace ? options.trace_every : 0),
+        closed_(options.loop && options.loop->closed) {
+    if (rtl) rtl_ = std::make_unique<RtlMultiAxisCore>(rows.axes(), options.loop.has_value());
     in_.enable = true;
     for (size_t a = 0; a < rows.axes(); ++a) {
       CoreInputs& x = in_.axis[a];
@@ -81,9 +86,19 @@ class Run {
         x.stop_acc = options.stop[a].acc;
       }
       PinRules r{options.timing};
-      r.profile_phases = !stop;
-      r.accounting = StepAccounting::ReferencePosition;
+      // Closed loop: the pulses follow the controller, counted against the
+      // step generator's counter (no exact reference to count against).
+      r.profile_phases = !stop && !closed_;
+      r.accounting = closed_ ? StepAccounting::PulseCounter : StepAccounting::ReferencePosition;
       pins_.emplace_back(r);
+      if (options.loop) {
+        in_.loop[a].closed_loop = options.loop->closed;
+        in_.loop[a].ctl = options.loop->ctl_per_axis.empty() ? options.loop->ctl : options.loop->ctl_per_axis.at(a);
+        const bool own = !options.loop->plant_per_axis.empty();
+        PlantConfig pc = own ? options.loop->plant_per_axis.at(a) : options.loop->plant;
+        if (!own) pc.seed += a;
+        plants_.emplace_back(pc, double(ClkHz));
+      }
     }
     if (rtl_) rtl_->reset();
     model_.reset();
@@ -167,7 +182,11 @@ class Run {
       }
       for (size_t a = 0; a < n; ++a) {
         const CoreOutputs& o = out.axis[a];
-        pins_[a].on_clock(clock, o);
+        if (closed_) {
+          pins_[a].on_clock(clock, o.step, o.dir, o.done, o.phase, o.pulse_count);
+        } else {
+          pins_[a].on_clock(clock, o);
+        }
         if (o.stopping && r.stop_clock[a] == UINT64_MAX) r.stop_clock[a] = clock - start_clock;
         const int s = o.ref_vel > 0 ? 1 : o.ref_vel < 0 ? -1 : 0;
         if (s != 0) {
@@ -183,6 +202,7 @@ class Run {
           }
         }
       }
+      if (!plants_.empty()) track(r, out, clock, start_clock, started, moves_done);
       double v2 = 0, a2 = 0;
       for (size_t a = 0; a < n; ++a) {
         const CoreOutputs& o = out.axis[a];
@@ -238,6 +258,7 @@ class Run {
       sample(r.trace, clock - start_clock, out, contour_now, vel_lsb);
     }
     if (contour_clocks > 0) r.contour_rms = std::sqrt(contour_sum2 / double(contour_clocks));
+    if (measured_clocks_ > 0) r.measured_contour_rms = std::sqrt(measured_sum2_ / double(measured_clocks_));
     r.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     r.clocks = clock - start_clock;
     r.compared = check.matched() + check.mismatches();
@@ -249,19 +270,64 @@ class Run {
       r.ref_pos.push_back(out.axis[a].ref_pos_int);
       r.pin_steps.push_back(pins_[a].net_steps());
       r.done.push_back(out.axis[a].done);
+      if (!plants_.empty()) {
+        r.measured_pos.push_back(measured(out, a));
+        r.final_error.push_back(double(out.axis[a].ref_pos_int) - measured(out, a));
+        r.in_pos.push_back(out.loop[a].in_pos);
+        r.ferr.push_back(out.loop[a].fault_ferr);
+      }
     }
     return r;
+  }
+
+  // The measured position of axis a, pulses.
+  double measured(const MultiCoreOutputs& out, size_t a) const {
+    return double(out.loop[a].enc_pos) / opt_.loop->plant.counts_per_step;
+  }
+
+  // The plants take this clock's pins; their encoders are next clock's
+  // inputs. Tracking and the measured contour once the motion started.
+  void track(MultiRunResult& r, const MultiCoreOutputs& out, uint64_t clock, uint64_t start_clock, bool started,
+             uint32_t moves_done) {
+    const size_t n = rows_.axes();
+    if (r.max_tracking_error.size() != n) r.max_tracking_error.assign(n, 0);
+    std::array<double, MaxAxes> meas{};
+    for (size_t a = 0; a < n; ++a) {
+      const CoreOutputs& o = out.axis[a];
+      plants_[a].clock(o.step, o.dir);
+      in_.loop[a].enc_a = plants_[a].enc_a();
+      in_.loop[a].enc_b = plants_[a].enc_b();
+      in_.loop[a].enc_z = plants_[a].enc_z();
+      // (the polyline is in the reference's coordinates, P* = measured + 1/2)
+      meas[a] = measured(out, a) + 0.5;
+      if (!started || clock <= start_clock) continue;
+      // The loop follows P* - 1/2 while the reference moves, its integer
+      // position at rest (sc_neuron_pi's reference).
+      const double ref = o.ref_vel != 0 || o.ref_acc != 0 ? position(o) - 0.5 : double(o.ref_pos_int);
+      r.max_tracking_error[a] = std::max(r.max_tracking_error[a], std::abs(ref - measured(out, a)));
+    }
+    if (started && opt_.polyline.size() >= 2 && out.axis[0].row_count > 0) {
+      const double d = contour_of(meas.data(), std::min<size_t>(moves_done, opt_.polyline.size() - 2));
+      r.measured_contour_max = std::max(r.measured_contour_max, d);
+      measured_sum2_ += d * d;
+      ++measured_clocks_;
+    }
   }
 
   // The reference's distance from polyline segment k (its projection
   // clamped to the segment).
   double contour_distance(const MultiCoreOutputs& out, size_t k) const {
+    std::array<double, MaxAxes> pos{};
+    for (size_t a = 0; a < rows_.axes(); ++a) pos[a] = position(out.axis[a]);
+    return contour_of(pos.data(), k);
+  }
+
+  // The distance of a point (one position per axis) from polyline segment k.
+  double contour_of(const double* pos, size_t k) const {
     const std::vector<double>& p0 = opt_.polyline[k];
     const std::vector<double>& p1 = opt_.polyline[k + 1];
-    std::array<double, MaxAxes> pos{};
     double len2 = 0, dot = 0;
     for (size_t a = 0; a < rows_.axes(); ++a) {
-      pos[a] = position(out.axis[a]);
       len2 += (p1[a] - p0[a]) * (p1[a] - p0[a]);
       dot += (pos[a] - p0[a]) * (p1[a] - p0[a]);
     }
@@ -298,11 +364,19 @@ class Run {
   std::vector<PinMonitor> pins_;
   bool stop_;
   uint64_t trace_every_;
+  bool closed_;
+  std::vector<Plant> plants_;  // with options.loop
+  double measured_sum2_ = 0;
+  uint64_t measured_clocks_ = 0;
   uint64_t sync_errors_ = 0;
 };
 
 std::vector<double> end_positions(const MultiRows& rows, const MultiRunOptions& options) {
-  Run pre(rows, options, false, false, false);
+  // The reference does not depend on the loop: the open-loop core finds it
+  // without waiting for the loops to settle.
+  MultiRunOptions open = options;
+  open.loop.reset();
+  Run pre(rows, open, false, false, false);
   pre.run(nullptr);
   return pre.final_positions();
 }
@@ -326,6 +400,13 @@ MultiRunResult run_multi(const MultiRows& rows, const MultiRunOptions& options) 
         throw std::invalid_argument(fmt::format("run_multi: row {} lasts {} clocks on one axis, {} on axis 0", k,
                                                 r[k].seg.clocks, rows.rows[0][k].seg.clocks));
       }
+    }
+  }
+  if (options.loop) {
+    const size_t plants = options.loop->plant_per_axis.size(), ctls = options.loop->ctl_per_axis.size();
+    if ((plants != 0 && plants != rows.axes()) || (ctls != 0 && ctls != rows.axes())) {
+      throw std::invalid_argument(fmt::format("run_multi: {} plants and {} controller settings for {} axes", plants,
+                                              ctls, rows.axes()));
     }
   }
   std::vector<double> line;

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "multi_axis_core.h"
+#include "plant.h"
 #include "scurve/line_planner.h"
 #include "scurve/path_planner.h"
 #include "scurve/reg_encode.h"
@@ -32,8 +33,21 @@ MultiRows line_rows(const scurve::LinePlan& plan);
 // The rows of a planned path (every move back to back, its flags).
 MultiRows path_rows(const scurve::PathPlan& plan);
 
+// The closed-loop capable core (sc_multi_axis_core #(.Servo(1))): every
+// axis drives its own plant (the model of tb/plant.h, seed + axis index)
+// from STEP/DIR and reads its encoder back, in the loop or (closed = false)
+// on the open-loop path of the same core.
+struct MultiLoop {
+  bool closed = true;
+  NeuronConfig ctl{};  // every axis's controller settings (to_servo_config)
+  PlantConfig plant{};
+  std::vector<NeuronConfig> ctl_per_axis;   // empty: `ctl` on every axis
+  std::vector<PlantConfig> plant_per_axis;  // empty: `plant` on every axis
+};
+
 struct MultiRunOptions {
   bool rtl = true;  // RTL and model in lockstep; false: the model alone
+  std::optional<MultiLoop> loop;  // unset: the open-loop core (Servo = 0)
   PulseTiming timing{};
   // STOP_JERK / STOP_ACC per axis (empty: the registers' reset values).
   std::vector<scurve::StopLimitCodes> stop;
@@ -98,6 +112,15 @@ struct MultiRunResult {
   double peak_path_velocity = 0, peak_path_acceleration = 0;
   std::vector<double> peak_velocity, peak_acceleration, peak_jerk;
   MultiTrace trace;  // options.trace_every > 0
+  // With options.loop: the measured position (encoder counts / counts per
+  // pulse) per axis at the end, the largest tracking error |reference -
+  // measured| (pulses, every clock; the reference at rest is its integer
+  // position, where the loop settles), the steady-state error at the end
+  // (REF_POS - measured, pulses), each axis in position at the end, and the
+  // contour error of the measured position from the polyline.
+  std::vector<double> measured_pos, max_tracking_error, final_error;
+  std::vector<bool> in_pos, ferr;  // in position / following-error fault at the end
+  double measured_contour_max = 0, measured_contour_rms = 0;
   double wall_seconds = 0;
   bool ok() const { return errors.empty() && mismatches == 0; }
 };

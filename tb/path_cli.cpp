@@ -20,6 +20,7 @@
 #include <optional>
 #include <string_view>
 
+#include "closed_loop_run.h"
 #include "multi_run.h"
 #include "planner.h"
 #include "rtl_multi_axis_core.h"
@@ -49,6 +50,9 @@ void add_path_command(CLI::App& app, PathCli& p) {
       ->check(CLI::IsMember({"exact-stop"}));
   c->add_option("--engine", p.engine, "lockstep (default: RTL and model, every clock compared) | model")
       ->check(CLI::IsMember({"lockstep", "model"}));
+  c->add_flag("--closed-loop", p.closed_loop,
+              "every axis in its own closed loop (neuron-PI cascade, default settings) on the stepper plant "
+              "model; lockstep: 2 axes");
   c->add_option("--plot", p.plot_dir,
                 "write path_trace.csv (the reference sampled, at most ~200,000 samples) and path_xy.png, "
                 "path_axes.png here (created if missing; python3 with matplotlib)")
@@ -281,6 +285,15 @@ nlohmann::json report_json(const scurve::cli::PathProgram& prog, const scurve::P
   out["peak_axis_velocity"] = r.peak_velocity;
   out["peak_axis_acceleration"] = r.peak_acceleration;
   out["peak_axis_jerk"] = r.peak_jerk;
+  out["closed_loop"] = !r.in_pos.empty();
+  if (!r.in_pos.empty()) {
+    out["measured_final_position"] = r.measured_pos;
+    out["max_tracking_error_pulses"] = r.max_tracking_error;
+    out["steady_state_error_pulses"] = r.final_error;
+    out["in_position"] = r.in_pos;
+    out["measured_contour_error_max_pulses"] = r.measured_contour_max;
+    out["measured_contour_error_rms_pulses"] = r.measured_contour_rms;
+  }
   out["mismatches"] = r.mismatches;
   out["compared_clocks"] = r.compared;
   out["wall_s"] = r.wall_seconds;
@@ -327,6 +340,15 @@ std::string report_table(const scurve::cli::PathProgram& prog, const scurve::Pat
     t += fmt::format("  axis {}: peak velocity {:.1f}, acceleration {:.4g}, jerk {:.4g}\n", a, r.peak_velocity[a],
                      r.peak_acceleration[a], r.peak_jerk[a]);
   }
+  if (!r.in_pos.empty()) {
+    t += fmt::format("closed loop: measured contour error max {:.3g} pulses, rms {:.3g} pulses\n",
+                     r.measured_contour_max, r.measured_contour_rms);
+    for (size_t a = 0; a < prog.axes; ++a) {
+      t += fmt::format("  axis {}: measured {:.0f}, max tracking error {:.3g} pulses, steady-state error {}, {}\n", a,
+                       r.measured_pos[a] + double(prog.start[a]), r.max_tracking_error[a], r.final_error[a],
+                       r.in_pos[a] ? "in position" : "NOT in position");
+    }
+  }
   t += fmt::format("mismatches {} over {} clocks; {:.2f} s wall, {:.3g} clocks/s\n", r.mismatches, r.compared,
                    r.wall_seconds, r.wall_seconds > 0 ? double(r.clocks) / r.wall_seconds : 0.0);
   for (const std::string& f : fails) t += "FAIL: " + f + "\n";
@@ -353,8 +375,9 @@ int run_path_cli(const PathCli& p) {
   auto loaded = scurve::cli::load_path_file(p.file, fo);
   if (const std::string* e = std::get_if<std::string>(&loaded)) return bad_input(*e);
   const scurve::cli::PathProgram& prog = std::get<scurve::cli::PathProgram>(loaded);
-  if (p.engine == "lockstep" && !RtlMultiAxisCore::supported(prog.axes)) {
-    return bad_input(fmt::format("axes={}: the RTL is built for 2 and 3 axes (use --engine model)", prog.axes));
+  if (p.engine == "lockstep" && !RtlMultiAxisCore::supported(prog.axes, p.closed_loop)) {
+    return bad_input(fmt::format("axes={}: the RTL is built for 2 and 3 axes{} (use --engine model)", prog.axes,
+                                 p.closed_loop ? ", 2 with --closed-loop" : ""));
   }
   const PulseTiming timing = to_model(scurve::cli::to_timing(p.timing));
   auto planned = scurve::plan_path(scurve::Planner{model_clock()}, scurve::cli::to_path_request(prog), to_host(timing));
@@ -377,6 +400,16 @@ int run_path_cli(const PathCli& p) {
   // The plan's clocks, the arming of each START and a margin: a path that
   // does not come to rest by then fails (it does not run on without end).
   o.max_clocks = plan.total_clocks + 1'000'000;
+  if (p.closed_loop) {
+    MultiLoop loop;
+    ServoConfig cfg;
+    if (const std::string e = to_servo_config(ControllerParams{}, loop.plant, timing, cfg); !e.empty()) {
+      return bad_input(e);
+    }
+    loop.ctl = cfg.ctl;
+    o.loop = loop;
+    o.max_clocks += uint64_t(ClkHz);  // the loops settle after the reference
+  }
   // The polyline in the reference's coordinates (REF_POS starts at 0): each
   // move's start point with the fraction the plan starts it from, the end
   // mid-pulse on the last target.
@@ -426,6 +459,16 @@ int run_path_cli(const PathCli& p) {
     }
   }
   if (r.contour_max >= 0.01) fails.push_back(fmt::format("contour error {:.3g} pulses >= 0.01", r.contour_max));
+  for (size_t a = 0; a < r.in_pos.size(); ++a) {
+    // The loop settles on the target (steady-state error 0) and tracks
+    // within the single-axis closed loop's bound.
+    if (!r.in_pos[a]) fails.push_back(fmt::format("axis {}: not in position at the end", a));
+    if (r.final_error[a] != 0) fails.push_back(fmt::format("axis {}: steady-state error {}", a, r.final_error[a]));
+    if (r.max_tracking_error[a] >= kMaxErrorWithFf) {
+      fails.push_back(fmt::format("axis {}: tracking error {:.3g} pulses >= {}", a, r.max_tracking_error[a],
+                                  kMaxErrorWithFf));
+    }
+  }
 
   const nlohmann::json out = report_json(prog, plan, r, p.engine, fails, plot ? &*plot : nullptr);
   if (p.timing.json) {

@@ -6,6 +6,8 @@
 
 #include "Vsc_multi_axis_core2.h"
 #include "Vsc_multi_axis_core3.h"
+#include "Vsc_multi_servo_core2.h"
+#include "sc_layout.h"
 #include "verilated_top.h"
 
 namespace sc {
@@ -57,7 +59,7 @@ namespace {
 template <class V>
 class MultiImpl final : public RtlMultiAxisCore::Impl {
  public:
-  explicit MultiImpl(size_t axes) : axes_(axes), top_("sc_multi_axis_core") {
+  MultiImpl(size_t axes, bool servo) : axes_(axes), servo_(servo), top_("sc_multi_axis_core") {
     drive(last_, true);
     top_.top().eval();
   }
@@ -102,6 +104,27 @@ class MultiImpl final : public RtlMultiAxisCore::Impl {
       c.step_pending = int8_t(wrap_signed(i128(SC_GET(step_pending_o, a, PendW)), PendW));
       c.lim_trip_fwd = SC_GET(lim_trip_fwd_o, a, 1) != 0;
       c.lim_trip_rev = SC_GET(lim_trip_rev_o, a, 1) != 0;
+    }
+    o.servo = servo_;
+    if (!servo_) return;
+    for (size_t a = 0; a < axes_; ++a) {
+      LoopOutputs& l = o.loop[a];
+      l.fault_ferr = SC_GET(fault_ferr_o, a, 1) != 0;
+      l.in_pos = SC_GET(in_pos_o, a, 1) != 0;
+      l.enc_pos = int32_t(uint32_t(SC_GET(enc_pos_o, a, EncCntW)));
+      l.enc_illegal = uint16_t(SC_GET(enc_illegal_o, a, EncIllW));
+      l.enc_index = SC_GET(enc_index_o, a, 1) != 0;
+      l.ctl_active = SC_GET(ctl_active_o, a, 1) != 0;
+      l.ctl_state = uint8_t(SC_GET(ctl_state_o, a, CtlStW));
+      l.u = int32_t(uint32_t(SC_GET(u_o, a, CtlW)));
+      l.v_cmd = int32_t(uint32_t(SC_GET(v_cmd_o, a, CtlW)));
+      l.e_p = int32_t(uint32_t(SC_GET(e_p_o, a, CtlW)));
+      l.e_v = int32_t(uint32_t(SC_GET(e_v_o, a, CtlW)));
+      l.w_p1 = int32_t(wrap_signed(i128(SC_GET(w_p1_o, a, WgtW)), WgtW));
+      l.w_p2 = int32_t(wrap_signed(i128(SC_GET(w_p2_o, a, WgtW)), WgtW));
+      l.w_v1 = int32_t(wrap_signed(i128(SC_GET(w_v1_o, a, WgtW)), WgtW));
+      l.w_v2 = int32_t(wrap_signed(i128(SC_GET(w_v2_o, a, WgtW)), WgtW));
+      l.nco_phase = int64_t(wrap_signed(i128(SC_GET(nco_phase_o, a, NcoW)), NcoW));
     }
   }
 
@@ -150,23 +173,42 @@ class MultiImpl final : public RtlMultiAxisCore::Impl {
         SC_SET(lim_rev_i, a, 1, x.lim_rev);
         SC_SET(lim_hard_i, a, 1, x.lim_hard);
       }
+      if (!servo_) continue;
+      const LoopInputs& y = in.loop[a];
+      const LoopInputs& k = last_.loop[a];
+      if (all || y.closed_loop != k.closed_loop) SC_SET(closed_loop_i, a, 1, y.closed_loop);
+      if (all || !(y.ctl == k.ctl)) {
+        const auto words = ctl_cfg_pack(y.ctl);
+        for (size_t w = 0; w < words.size(); ++w) {
+          const int lsb = int(w) * 32;
+          put_bits(m.ctl_cfg_i, int(a) * CtlCfgW + lsb, std::min(32, CtlCfgW - lsb), words[w]);
+        }
+      }
+      if (all || y.enc_a != k.enc_a) SC_SET(enc_a_i, a, 1, y.enc_a);
+      if (all || y.enc_b != k.enc_b) SC_SET(enc_b_i, a, 1, y.enc_b);
+      if (all || y.enc_z != k.enc_z) SC_SET(enc_z_i, a, 1, y.enc_z);
     }
   }
 
   size_t axes_;
+  bool servo_;
   VerilatedTop<V> top_;
   MultiCoreInputs last_{};
 };
 
 }  // namespace
 
-RtlMultiAxisCore::RtlMultiAxisCore(size_t axes) : axes_(axes) {
-  if (axes == 2) {
-    impl_ = std::make_unique<MultiImpl<Vsc_multi_axis_core2>>(axes);
-  } else if (axes == 3) {
-    impl_ = std::make_unique<MultiImpl<Vsc_multi_axis_core3>>(axes);
+RtlMultiAxisCore::RtlMultiAxisCore(size_t axes, bool servo) : axes_(axes), servo_(servo) {
+  if (!supported(axes, servo)) {
+    throw std::invalid_argument("axes=" + std::to_string(axes) + ": the RTL is built for 2 and 3 axes (" +
+                                "2 with the closed loop)");
+  }
+  if (servo) {
+    impl_ = std::make_unique<MultiImpl<Vsc_multi_servo_core2>>(axes, true);
+  } else if (axes == 2) {
+    impl_ = std::make_unique<MultiImpl<Vsc_multi_axis_core2>>(axes, false);
   } else {
-    throw std::invalid_argument("axes=" + std::to_string(axes) + ": the RTL is built for 2 and 3 axes");
+    impl_ = std::make_unique<MultiImpl<Vsc_multi_axis_core3>>(axes, false);
   }
 }
 

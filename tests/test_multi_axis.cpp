@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "closed_loop_run.h"
 #include "multi_run.h"
 #include "planner.h"
 
@@ -259,6 +260,157 @@ void random_paths(size_t axes, int count, uint64_t seed) {
 TEST(MultiAxisLockstep, RandomTwoAxisPathsWithExactStopsEndEveryMoveOnItsTarget) { random_paths(2, 20, 51); }
 
 TEST(MultiAxisLockstep, RandomThreeAxisPathsWithExactStopsEndEveryMoveOnItsTarget) { random_paths(3, 8, 61); }
+
+// ---- the closed-loop capable core (Servo = 1): a servo loop per axis ------
+
+MultiLoop servo_loop(const ControllerParams& c = ControllerParams{}) {
+  MultiLoop l;
+  l.closed = c.closed_loop;
+  ServoConfig cfg;
+  const std::string err = to_servo_config(c, l.plant, PulseTiming{}, cfg);
+  if (!err.empty()) throw std::runtime_error(err);
+  l.ctl = cfg.ctl;
+  return l;
+}
+
+// Every axis in its own loop on its own plant: RTL = model every clock (the
+// controllers' state included), the pins against each step counter, every
+// axis's reference on its exact target, the loop settled in position on it
+// and the tracking within the single-axis bound.
+void expect_closed_loop_line(const Line& l, const MultiRunResult& r) {
+  const std::string what = l.what();
+  EXPECT_EQ(r.mismatches, 0u) << what;
+  EXPECT_GT(r.compared, 0u) << what;
+  for (const std::string& e : r.errors) ADD_FAILURE() << what << ": " << e;
+  ASSERT_EQ(r.in_pos.size(), r.axes) << what;
+  for (size_t a = 0; a < r.axes; ++a) {
+    EXPECT_EQ(r.ref_pos[a], l.distances[a]) << what << " axis " << a;
+    EXPECT_TRUE(r.done[a]) << what << " axis " << a;
+    EXPECT_TRUE(r.in_pos[a]) << what << " axis " << a;
+    EXPECT_EQ(r.final_error[a], 0.0) << what << " axis " << a << ": steady-state error";
+    EXPECT_EQ(double(r.pin_steps[a]), r.measured_pos[a]) << what << " axis " << a << ": pulses vs encoder";
+    EXPECT_LT(r.max_tracking_error[a], kMaxErrorWithFf) << what << " axis " << a;
+  }
+  EXPECT_LT(r.max_line_deviation, 0.01) << what;
+}
+
+// A random line a stepper on the default plant (163 Hz rotor) can follow:
+// the single-axis closed-loop tests' range of speeds, both directions.
+Line random_servo_line(std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> u(0, 1);
+  Line l;
+  for (int i = 0; i < 2; ++i) {
+    l.distances.push_back(int64_t(std::llround(50 + 1450 * u(rng))) * (u(rng) < 0.5 ? -1 : 1));
+  }
+  l.v = 3000 + 9000 * u(rng);
+  l.a = 1e5 + 3e5 * u(rng);
+  l.j = 5e6 + 3e7 * u(rng);
+  return l;
+}
+
+TEST(MultiAxisClosedLoop, RandomTwoAxisLinesInTheLoopMatchSettleAndTrack) {
+  std::mt19937_64 rng(71);
+  MultiRunOptions o;
+  o.loop = servo_loop();
+  double worst = 0;
+  uint64_t clocks = 0;
+  double wall = 0;
+  for (int i = 0; i < 5; ++i) {
+    const Line l = random_servo_line(rng);
+    const MultiRunResult r = run_multi(line_rows(plan(l)), o);
+    expect_closed_loop_line(l, r);
+    for (double e : r.max_tracking_error) worst = std::max(worst, e);
+    clocks += r.compared;
+    wall += r.wall_seconds;
+  }
+  ::testing::Test::RecordProperty("closed_loop_max_tracking_error_pulses", std::to_string(worst));
+  std::printf("5 closed-loop lines: max tracking error %.3g pulses, %.3g M clocks at %.3g M clocks/s\n", worst,
+              double(clocks) * 1e-6, double(clocks) * 1e-6 / wall);
+}
+
+// CMD.STOP in the middle of a line in the loop: every reference stops on
+// the same clock along the line, every loop settles in position on its
+// reference's integer stop position, the pulses equal the encoder.
+TEST(MultiAxisClosedLoop, StopInTheMiddleOfALineStopsBothLoopsTogetherInPosition) {
+  std::mt19937_64 rng(75);
+  for (int i = 0; i < 2; ++i) {
+    const Line l = random_servo_line(rng);
+    const scurve::LinePlan p = plan(l);
+    MultiRunOptions o = stop_options(l, p.total_clocks / 3 + rng() % (p.total_clocks / 3));
+    o.loop = servo_loop();
+    const MultiRunResult r = run_multi(line_rows(p), o);
+    const std::string what = l.what();
+    EXPECT_EQ(r.mismatches, 0u) << what;
+    for (const std::string& e : r.errors) ADD_FAILURE() << what << ": " << e;
+    ASSERT_EQ(r.in_pos.size(), 2u);
+    EXPECT_EQ(r.stop_clock[0], r.stop_clock[1]) << what;
+    for (size_t a = 0; a < 2; ++a) {
+      EXPECT_NE(r.stop_clock[a], UINT64_MAX) << what << " axis " << a;
+      EXPECT_FALSE(r.done[a]) << what << " axis " << a << ": a stopped move is not done";
+      EXPECT_TRUE(r.in_pos[a]) << what << " axis " << a;
+      EXPECT_EQ(r.final_error[a], 0.0) << what << " axis " << a;
+      EXPECT_LT(std::abs(int64_t(r.ref_pos[a])), std::abs(l.distances[a])) << what << " axis " << a;
+      EXPECT_FALSE(r.reversed[a]) << what << " axis " << a;
+    }
+    EXPECT_LT(r.max_line_deviation, 0.01) << what;
+  }
+}
+
+// A following error on one axis (its limit below the tracking error the
+// move needs) stops both: with CL_CFG.FERR_STOP under control along the line
+// (the other axis one register stage later, as for a limit), each loop
+// settling in position on its reference's stop position; else at once (both
+// references freeze on the same clock, the loops stop). The fault stays on
+// the axis that had it.
+TEST(MultiAxisClosedLoop, AFollowingErrorOnOneAxisStopsBothAxes) {
+  for (bool ferr_stop : {true, false}) {
+    const Line l{{1200, 900}, 8000, 2e5, 2e7};
+    const scurve::LinePlan p = plan(l);
+    ControllerParams c;
+    c.ferr_stop = ferr_stop;
+    MultiRunOptions o = stop_options(l, 0);
+    o.stop_at.reset();
+    o.loop = servo_loop(c);
+    c.ferr_lim = 1.0;
+    o.loop->ctl_per_axis = {o.loop->ctl, servo_loop(c).ctl};
+    o.check_sync = false;  // axis 1 stops first
+    const MultiRunResult r = run_multi(line_rows(p), o);
+    const std::string what = ferr_stop ? "ferr_stop" : "ferr abort";
+    EXPECT_EQ(r.mismatches, 0u) << what;
+    for (const std::string& e : r.errors) ADD_FAILURE() << what << ": " << e;
+    ASSERT_EQ(r.ferr.size(), 2u) << what;
+    EXPECT_FALSE(r.ferr[0]) << what;
+    EXPECT_TRUE(r.ferr[1]) << what;
+    for (size_t a = 0; a < 2; ++a) {
+      EXPECT_FALSE(r.done[a]) << what << " axis " << a;
+      EXPECT_LT(std::abs(int64_t(r.ref_pos[a])), std::abs(l.distances[a])) << what << " axis " << a << " ran on";
+      if (ferr_stop) {
+        EXPECT_TRUE(r.in_pos[a]) << what << " axis " << a;
+        EXPECT_EQ(r.final_error[a], 0.0) << what << " axis " << a;
+      }
+    }
+    if (ferr_stop) {
+      EXPECT_NE(r.stop_clock[1], UINT64_MAX) << what;
+      EXPECT_GE(r.stop_clock[0], r.stop_clock[1]) << what;
+      EXPECT_LE(r.stop_clock[0] - r.stop_clock[1], 2u) << what;
+      EXPECT_LT(r.max_line_deviation, 0.01) << what;
+    }
+  }
+}
+
+// The same core with the loop off runs the open-loop path through the same
+// pins: exact, pins = reference, synchronised as the open-loop core.
+TEST(MultiAxisClosedLoop, TheServoCoreWithTheLoopOffRunsLinesOpenLoopExactly) {
+  std::mt19937_64 rng(73);
+  ControllerParams c;
+  c.closed_loop = false;
+  MultiRunOptions o;
+  o.loop = servo_loop(c);
+  for (int i = 0; i < 4; ++i) {
+    const Line l = random_line(rng, 2);
+    expect_exact(l, run_multi(line_rows(plan(l)), o));
+  }
+}
 
 TEST(MultiAxisModel, AxisCountOutsideOneToMaxAxesIsRefusedNamingIt) {
   EXPECT_THROW(MultiAxisCore(0), std::invalid_argument);
