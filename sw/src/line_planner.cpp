@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <optional>
 #include <string>
@@ -78,6 +79,16 @@ LineResult plan_line(const Planner& planner, const LineRequest& r, const PulseTi
   if (auto e = check_positive("v_path", r.v_path)) return *e;
   if (auto e = check_positive("a_path", r.a_path)) return *e;
   if (auto e = check_positive("j_path", r.j_path)) return *e;
+  if (r.jerks) {
+    static const char* kJerkNames[4] = {"Ts1", "Ts2", "Te1", "Te2"};
+    for (size_t k = 0; k < 4; ++k) {
+      const double j = (*r.jerks)[k];
+      if (!(std::isfinite(j) && j > 0 && j <= r.j_path)) {
+        return Error{"jerks", fmt::format("jerks[{}] ({})={}: needs a finite number > 0 and <= j_path={} pulses/s^3",
+                                          k, kJerkNames[k], j, r.j_path)};
+      }
+    }
+  }
   if (!r.axis_limits.empty() && r.axis_limits.size() != n) {
     return Error{"axis_limits", fmt::format("axis_limits: {} entries for {} axes, needs none or one per axis",
                                             r.axis_limits.size(), n)};
@@ -136,6 +147,11 @@ LineResult plan_line(const Planner& planner, const LineRequest& r, const PulseTi
   lead_req.v_cruise = path.v * lead_share;
   lead_req.a_max = path.a * lead_share;
   lead_req.j_max = path.j * lead_share;
+  if (r.jerks) {
+    std::array<double, 4> lead_jerks{};
+    for (size_t k = 0; k < 4; ++k) lead_jerks[k] = std::min((*r.jerks)[k], path.j) * lead_share;
+    lead_req.jerks = lead_jerks;
+  }
   PlanResult lead_plan = [&] {
     if (!carried) return planner.plan(lead_req, timing);
     // From its own fraction (signed: plan_from takes the executor's state).
@@ -147,6 +163,7 @@ LineResult plan_line(const Planner& planner, const LineRequest& r, const PulseTi
     const std::string field = e->parameter == "v_cruise" ? "v_path"
                               : e->parameter == "a_max"  ? "a_path"
                               : e->parameter == "j_max"  ? "j_path"
+                              : e->parameter.rfind("jerk_", 0) == 0 ? "jerks"
                                                          : "distances";
     return Error{field, fmt::format("lead axis {} (distance {}, {:.6g} of the path): {}", lead,
                                     r.distances[lead], lead_share, e->message)};

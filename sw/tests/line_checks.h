@@ -65,3 +65,27 @@ inline double run_rows_per_clock(const std::vector<const std::vector<Segment>*>&
 }
 
 }  // namespace scurve::test
+
+namespace scurve::test {
+
+// Runs rows [first, last) of every axis clock by clock from `state` (the
+// recurrence of run_rows_per_clock) and calls on_clock(state) at the start
+// and after every clock.
+template <class OnClock>
+void run_rows_each_clock(const std::vector<const std::vector<Segment>*>& rows, size_t first, size_t last,
+                         AxesState& state, OnClock&& on_clock) {
+  const size_t n = rows.size();
+  on_clock(state);
+  for (size_t k = first; k < last; ++k) {
+    for (uint64_t t = 0; t < (*rows[0])[k].clocks; ++t) {
+      for (size_t i = 0; i < n; ++i) {
+        state.pos[i] += state.vel[i];
+        state.vel[i] += state.acc[i];
+        state.acc[i] += (*rows[i])[k].jerk;
+      }
+      on_clock(state);
+    }
+  }
+}
+
+}  // namespace scurve::test

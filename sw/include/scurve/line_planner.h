@@ -28,7 +28,9 @@
 // pulse from line to line instead of drifting.
 #pragma once
 
+#include <array>
 #include <cstdint>
+#include <optional>
 #include <variant>
 #include <vector>
 
@@ -46,6 +48,12 @@ struct LineRequest {
   double v_path = 0;               // path speed (Euclidean, in pulses of the axes), pulses/s
   double a_path = 0;               // path acceleration, pulses/s^2
   double j_path = 0;               // path jerk, pulses/s^3
+  // Paper 002's asymmetric S-shape along the path, pulses/s^3: the jerk
+  // while |a| rises / falls when speeding up (Ts1, Ts2) and when slowing
+  // down (Te1, Te2), each in (0, j_path]. The lead axis is planned with
+  // them scaled to its share, as MoveRequest::jerks; an axis limit that
+  // lowers the path jerk caps each of them. Unset: j_path throughout.
+  std::optional<std::array<double, 4>> jerks;
   std::vector<AxisLimits> axis_limits;  // empty, or one per axis
   // Where each axis's executor position fraction is at the start (rest), in
   // [0, 2^FracBits): a line that continues another in one row stream, where
@@ -70,7 +78,7 @@ struct LinePlan {
 using LineResult = std::variant<LinePlan, Error>;
 
 // Errors name the field and the bound: "distances" (count, range, all 0),
-// "v_path" / "a_path" / "j_path", "axis_limits" (count or a value),
+// "v_path" / "a_path" / "j_path", "jerks" (a value), "axis_limits" (count or a value),
 // "start_fracs" (count or a value), and the lead's plan() errors with the
 // path limits as they scaled.
 LineResult plan_line(const Planner& planner, const LineRequest& request, const PulseTiming& timing);
