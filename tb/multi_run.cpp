@@ -41,6 +41,24 @@ MultiRows path_rows(const scurve::PathPlan& plan) {
   return m;
 }
 
+std::vector<std::vector<double>> path_polyline(const scurve::PathPlan& plan) {
+  std::vector<std::vector<double>> poly;
+  if (plan.moves.empty()) return poly;
+  const std::vector<int64_t>& origin = plan.moves.front().start;
+  const double one = std::ldexp(1.0, FracBits);
+  for (const scurve::PlannedPathMove& m : plan.moves) {
+    std::vector<double> v;
+    for (size_t a = 0; a < origin.size(); ++a) {
+      v.push_back(double(m.start[a] - origin[a]) + double(m.line.axes[a].pos_frac0) / one);
+    }
+    poly.push_back(std::move(v));
+  }
+  std::vector<double> last;
+  for (size_t a = 0; a < origin.size(); ++a) last.push_back(double(plan.moves.back().target[a] - origin[a]) + 0.5);
+  poly.push_back(std::move(last));
+  return poly;
+}
+
 std::variant<std::vector<scurve::StopLimitCodes>, scurve::Error> line_stop_codes(
     const std::vector<int64_t>& distances, double stop_jerk, double stop_acc, scurve::Clock clock) {
   double length2 = 0;
@@ -88,7 +106,7 @@ class Run {
       PinRules r{options.timing};
       // Closed loop: the pulses follow the controller, counted against the
       // step generator's counter (no exact reference to count against).
-      r.profile_phases = !stop && !closed_;
+      r.profile_phases = !stop && !closed_ && options.check_phases;
       r.accounting = closed_ ? StepAccounting::PulseCounter : StepAccounting::ReferencePosition;
       pins_.emplace_back(r);
       if (options.loop) {
@@ -322,8 +340,15 @@ class Run {
     return contour_of(pos.data(), k);
   }
 
-  // The distance of a point (one position per axis) from polyline segment k.
+  // The distance of a point (one position per axis) from polyline segment
+  // k (or the next one, if nearer, with contour_adjacent).
   double contour_of(const double* pos, size_t k) const {
+    const double d = segment_distance(pos, k);
+    if (!opt_.contour_adjacent || k + 2 >= opt_.polyline.size()) return d;
+    return std::min(d, segment_distance(pos, k + 1));
+  }
+
+  double segment_distance(const double* pos, size_t k) const {
     const std::vector<double>& p0 = opt_.polyline[k];
     const std::vector<double>& p1 = opt_.polyline[k + 1];
     double len2 = 0, dot = 0;

@@ -32,6 +32,11 @@ struct MultiRows {
 MultiRows line_rows(const scurve::LinePlan& plan);
 // The rows of a planned path (every move back to back, its flags).
 MultiRows path_rows(const scurve::PathPlan& plan);
+// A planned path's polyline in the reference's coordinates (REF_POS starts
+// at 0 at the path's start), for MultiRunOptions::polyline: each move's start
+// point with the fraction the plan starts it from, the end mid-pulse on the
+// last target.
+std::vector<std::vector<double>> path_polyline(const scurve::PathPlan& plan);
 
 // The closed-loop capable core (sc_multi_axis_core #(.Servo(1))): every
 // axis drives its own plant (the model of tb/plant.h, seed + axis index)
@@ -67,6 +72,13 @@ struct MultiRunOptions {
   // coordinates): the contour error is the reference's distance from the
   // segment of the move it is in (the move index), every clock.
   std::vector<std::vector<double>> polyline;
+  // Blended junctions: the distance from the nearer of the move's segment
+  // and the next one (the next move starts before this one ends).
+  bool contour_adjacent = false;
+  // The pin monitor's duty-phase trends (a row's phase says whether the
+  // pulse rate rises or falls): off for blended rows, whose phase is the
+  // earlier line's while the next one's acceleration adds to it.
+  bool check_phases = true;
   uint64_t max_clocks = 400'000'000;
   std::function<void(double)> progress;  // fraction of the rows pushed, now and then
   // A decimated trace of the reference (MultiRunResult::trace): a sample

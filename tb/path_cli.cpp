@@ -46,8 +46,14 @@ void add_path_command(CLI::App& app, PathCli& p) {
   real_flag(c, "--feed-limit", p.feed_limit, "G-code: highest feed and G0's, mm/s (default 100)", 0, 1e6);
   real_flag(c, "--accel", p.accel, "G-code: path acceleration, mm/s^2 (default 1000)", 0, 1e9);
   real_flag(c, "--jerk", p.jerk, "G-code: path jerk, mm/s^3 (default 10000)", 0, 1e12);
-  c->add_option("--junction", p.junction, "junctions: exact-stop (every axis at rest at every corner)")
-      ->check(CLI::IsMember({"exact-stop"}));
+  c->add_option("--junction", p.junction,
+                "junctions: exact-stop (every axis at rest at every corner) | blend (the next line starts while "
+                "the last decelerates, within --tolerance of the corner)")
+      ->check(CLI::IsMember({"exact-stop", "blend"}));
+  c->add_option("--tolerance", p.tolerance,
+                "blend: the largest distance of the tool from a corner point, mm (in pulses: times the smallest "
+                "--pulses-per-mm)")
+      ->type_name("MM");
   c->add_option("--engine", p.engine, "lockstep (default: RTL and model, every clock compared) | model")
       ->check(CLI::IsMember({"lockstep", "model"}));
   c->add_flag("--closed-loop", p.closed_loop,
@@ -259,7 +265,9 @@ nlohmann::json report_json(const scurve::cli::PathProgram& prog, const scurve::P
                      {"target", m.target},
                      {"v_path", m.v_path},
                      {"planned_start_clock", m.start_clock},
-                     {"planned_clocks", m.line.total_clocks}};
+                     {"planned_clocks", m.line.total_clocks},
+                     {"blend_clocks", m.blend_clocks},
+                     {"corner_deviation_pulses", m.corner_deviation}};
     if (k < r.move_ends.size()) {
       std::vector<int64_t> end;
       for (size_t a = 0; a < prog.axes; ++a) end.push_back(int64_t(r.move_ends[k].ref_pos[a]) + prog.start[a]);
@@ -276,6 +284,8 @@ nlohmann::json report_json(const scurve::cli::PathProgram& prog, const scurve::P
   out["clocks"] = r.clocks;
   out["duration_s"] = double(r.clocks) / double(ClkHz);
   out["planned_duration_s"] = plan.duration_s;
+  out["exact_stop_duration_s"] = double(plan.exact_stop_clocks) / double(ClkHz);
+  out["max_corner_deviation_pulses"] = plan.max_corner_deviation;
   out["path_length_pulses"] = plan.path_length;
   out["contour_error_max_pulses"] = r.contour_max;
   out["contour_error_rms_pulses"] = r.contour_rms;
@@ -328,9 +338,12 @@ std::string report_table(const scurve::cli::PathProgram& prog, const scurve::Pat
   }
   std::vector<int64_t> final_pos;
   for (size_t a = 0; a < prog.axes; ++a) final_pos.push_back(int64_t(r.ref_pos[a]) + prog.start[a]);
-  t += fmt::format("engine {}: {} axes, {} moves ({} skipped), {} clocks = {:.6f} s (planned {:.6f} s)\n", engine,
-                   prog.axes, plan.moves.size(), plan.skipped.size(), r.clocks, double(r.clocks) / double(ClkHz),
-                   plan.duration_s);
+  t += fmt::format("engine {}: {} axes, {} moves ({} skipped), {} clocks = {:.6f} s (planned {:.6f} s, with exact "
+                   "stops {:.6f} s)\n", engine, prog.axes, plan.moves.size(), plan.skipped.size(), r.clocks,
+                   double(r.clocks) / double(ClkHz), plan.duration_s, double(plan.exact_stop_clocks) / double(ClkHz));
+  if (plan.max_corner_deviation > 0) {
+    t += fmt::format("blended corners: max distance from a corner point {:.4g} pulses\n", plan.max_corner_deviation);
+  }
   t += fmt::format("final position {} (pins {})\n", join(final_pos), join(r.pin_steps));
   t += fmt::format("contour error: max {:.3g} pulses, rms {:.3g} pulses (planned line deviation {:.3g})\n",
                    r.contour_max, r.contour_rms, plan.max_line_deviation);
@@ -372,15 +385,37 @@ int run_path_cli(const PathCli& p) {
   } catch (const scurve::input::Error& e) {
     return bad_input(e.what());
   }
+  const bool blend = p.junction == "blend";
+  double tolerance_mm = 0;
+  try {
+    if (blend && p.tolerance.empty()) {
+      throw scurve::input::Error("tolerance", "(none)", "--junction blend needs --tolerance MM > 0");
+    }
+    if (!blend && !p.tolerance.empty()) {
+      throw scurve::input::Error("tolerance", p.tolerance, "only with --junction blend");
+    }
+    if (blend) tolerance_mm = scurve::input::parse_real("tolerance", p.tolerance, 1e-9, 1e6);
+  } catch (const scurve::input::Error& e) {
+    return bad_input(e.what());
+  }
   auto loaded = scurve::cli::load_path_file(p.file, fo);
   if (const std::string* e = std::get_if<std::string>(&loaded)) return bad_input(*e);
   const scurve::cli::PathProgram& prog = std::get<scurve::cli::PathProgram>(loaded);
+  // The tolerance in pulse space: a deviation of d pulses is at most
+  // d / (the smallest pulses per mm) mm on the table.
+  const double tolerance =
+      tolerance_mm * *std::min_element(prog.pulses_per_mm.begin(), prog.pulses_per_mm.end());
   if (p.engine == "lockstep" && !RtlMultiAxisCore::supported(prog.axes, p.closed_loop)) {
     return bad_input(fmt::format("axes={}: the RTL is built for 2 and 3 axes{} (use --engine model)", prog.axes,
                                  p.closed_loop ? ", 2 with --closed-loop" : ""));
   }
   const PulseTiming timing = to_model(scurve::cli::to_timing(p.timing));
-  auto planned = scurve::plan_path(scurve::Planner{model_clock()}, scurve::cli::to_path_request(prog), to_host(timing));
+  scurve::PathRequest request = scurve::cli::to_path_request(prog);
+  if (blend) {
+    request.junction = scurve::Junction::kBlend;
+    request.tolerance = tolerance;
+  }
+  auto planned = scurve::plan_path(scurve::Planner{model_clock()}, request, to_host(timing));
   if (const scurve::Error* e = std::get_if<scurve::Error>(&planned)) return bad_input(e->message);
   const scurve::PathPlan& plan = std::get<scurve::PathPlan>(planned);
   if (plan.moves.empty()) return bad_input("FILE=" + p.file + ": every move is to where the axes already are");
@@ -397,6 +432,8 @@ int run_path_cli(const PathCli& p) {
   o.rtl = p.engine == "lockstep";
   o.timing = timing;
   o.measure_line = false;
+  o.contour_adjacent = blend;
+  o.check_phases = !blend;
   // The plan's clocks, the arming of each START and a margin: a path that
   // does not come to rest by then fails (it does not run on without end).
   o.max_clocks = plan.total_clocks + 1'000'000;
@@ -410,20 +447,7 @@ int run_path_cli(const PathCli& p) {
     o.loop = loop;
     o.max_clocks += uint64_t(ClkHz);  // the loops settle after the reference
   }
-  // The polyline in the reference's coordinates (REF_POS starts at 0): each
-  // move's start point with the fraction the plan starts it from, the end
-  // mid-pulse on the last target.
-  const double one = std::ldexp(1.0, FracBits);
-  for (const scurve::PlannedPathMove& m : plan.moves) {
-    std::vector<double> v;
-    for (size_t a = 0; a < prog.axes; ++a) {
-      v.push_back(double(m.start[a] - prog.start[a]) + double(m.line.axes[a].pos_frac0) / one);
-    }
-    o.polyline.push_back(std::move(v));
-  }
-  std::vector<double> last;
-  for (size_t a = 0; a < prog.axes; ++a) last.push_back(double(plan.moves.back().target[a] - prog.start[a]) + 0.5);
-  o.polyline.push_back(std::move(last));
+  o.polyline = path_polyline(plan);
   const bool tty = isatty(2);
   o.progress = [&](double x) {
     if (tty) std::fprintf(stderr, "\r[path %3.0f%%]", 100 * std::min(1.0, x));
@@ -446,10 +470,14 @@ int run_path_cli(const PathCli& p) {
   }
   for (size_t k = 0; k < std::min(r.move_ends.size(), plan.moves.size()); ++k) {
     for (size_t a = 0; a < prog.axes; ++a) {
+      // Where the plan puts the reference when the move's last row ends: its
+      // target with exact stops; in a blend the target plus what the next
+      // move covered by then (the last move: its target).
       const int64_t end = int64_t(r.move_ends[k].ref_pos[a]) + prog.start[a];
-      if (end != plan.moves[k].target[a]) {
-        fails.push_back(fmt::format("move {} axis {}: ended at {}, target {}", plan.moves[k].move, a, end,
-                                    plan.moves[k].target[a]));
+      const int64_t planned_end = int64_t(plan.moves[k].end_position[a] >> FracBits);
+      if (end != planned_end) {
+        fails.push_back(fmt::format("move {} axis {}: ended at {}, planned {} (target {})", plan.moves[k].move, a,
+                                    end, planned_end, plan.moves[k].target[a]));
       }
     }
   }
@@ -458,7 +486,19 @@ int run_path_cli(const PathCli& p) {
       fails.push_back(fmt::format("axis {}: {} net steps on the pins, REF_POS {}", a, r.pin_steps[a], r.ref_pos[a]));
     }
   }
-  if (r.contour_max >= 0.01) fails.push_back(fmt::format("contour error {:.3g} pulses >= 0.01", r.contour_max));
+  // Exact stops keep the reference on the lines; a blend within the
+  // tolerance of each corner (which bounds its distance from the lines).
+  const double contour_bound = blend ? tolerance * (1 + 1e-9) + 1e-6 : 0.01;
+  if (r.contour_max >= contour_bound) {
+    fails.push_back(fmt::format("contour error {:.3g} pulses >= {:.3g}", r.contour_max, contour_bound));
+  }
+  const scurve::PlannedPathMove& final_move = plan.moves.back();
+  for (size_t a = 0; a < prog.axes && !r.ref_pos.empty(); ++a) {
+    if (int64_t(r.ref_pos[a]) + prog.start[a] != final_move.target[a]) {
+      fails.push_back(fmt::format("axis {}: ended at {}, the path's target {}", a,
+                                  int64_t(r.ref_pos[a]) + prog.start[a], final_move.target[a]));
+    }
+  }
   for (size_t a = 0; a < r.in_pos.size(); ++a) {
     // The loop settles on the target (steady-state error 0) and tracks
     // within the single-axis closed loop's bound.

@@ -1,6 +1,6 @@
 // `scurve path FILE`: a path file (JSON points or the G-code subset,
-// sw/cli/include/scurve/cli/path_file.h) planned with exact stops at its
-// corners (scurve::plan_path) and run on the multi-axis core
+// sw/cli/include/scurve/cli/path_file.h) planned with exact stops or blended
+// junctions at its corners (scurve::plan_path) and run on the multi-axis core
 // (sc_multi_axis_core; with --closed-loop every axis in its own loop on the
 // plant model) in RTL/model lockstep or on the model alone; a
 // table or JSON of every move and the whole path; with --plot DIR a decimated
@@ -23,6 +23,7 @@ struct PathCli {
   std::vector<std::string> pulses_per_mm;
   double feed_limit = 0, accel = 0, jerk = 0;  // 0: the file's or the G-code defaults
   std::string junction = "exact-stop";
+  std::string tolerance;  // --tolerance: blend corner tolerance, mm (validated with the other values)
   std::string engine = "lockstep";
   bool closed_loop = false;  // every axis in its own loop (the Servo = 1 core) on the plant model
   std::string plot_dir;  // --plot: trace CSV and PNG figures here (empty: none)

@@ -374,4 +374,21 @@ check_bad "line 2" path "$tmp/bad.json"
 printf 'G1 X30000000 F600\n' > "$tmp/far.gcode"
 check_bad "X" path --engine model "$tmp/far.gcode"
 check_bad "axes" path "$tmp/square.gcode" --axes 4
+check_bad "tolerance=(none): --junction blend needs --tolerance" path "$tmp/square.gcode" --junction blend
+check_bad "tolerance=0.5: only with --junction blend" path "$tmp/square.gcode" --tolerance 0.5
+check_bad "tolerance=0" path "$tmp/square.gcode" --junction blend --tolerance 0
+check_bad "tolerance=-1" path "$tmp/square.gcode" --junction blend --tolerance -1
+# Blended corners in lockstep: the same path within 0.02 mm (2 pulses) of
+# its corners, every move's last row where the plan puts it, the path on its
+# end, shorter than with exact stops.
+"$scurve" path "$tmp/square.gcode" --junction blend --tolerance 0.02 --json > "$tmp/path_blend.json"
+python3 - "$tmp/path_blend.json" <<'PY'
+import json, sys
+r = json.load(open(sys.argv[1]))
+assert r["pass"] and r["mismatches"] == 0, r["failures"]
+assert r["final_position"] == [0, 0] and r["pin_steps"] == [0, 0], r
+assert r["contour_error_max_pulses"] <= 2.0 + 1e-6 and r["max_corner_deviation_pulses"] <= 2.0 + 1e-6, r
+assert r["duration_s"] < r["exact_stop_duration_s"], r
+assert sum(m["blend_clocks"] for m in r["moves"]) > 0, r["moves"]
+PY
 echo "cli ok"

@@ -4,6 +4,7 @@
 // accounting), every axis on its exact integer target, all axes loading
 // every row on the same clock, the reference's distance from the straight
 // line, and the stops (CMD.STOP, a limit on one axis) that halt all axes.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -219,15 +220,22 @@ TEST(MultiAxisLockstep, AStartTowardALimitOnOneAxisIsRefusedByAll) {
   EXPECT_LT(r.clocks, 10u);
 }
 
-// Random paths of 2 to 4 lines with exact stops (scurve::plan_path: one row
-// stream, each line from the fraction the last one left): every move ends
-// on its integer target on every axis, in lockstep, the pins agree.
-void random_paths(size_t axes, int count, uint64_t seed) {
+// Random paths of 2 to 4 lines (scurve::plan_path: one row stream, each line
+// from the fraction the last one left), with exact stops or blended
+// junctions (a random corner tolerance): in lockstep every move's last row
+// ends where the plan puts it on every axis (its integer target with exact
+// stops; with a blend the target plus what the next line covered), the path
+// on its last target, the pins agree, and the reference stays on the lines
+// (exact stops) or within the tolerance of them (blends), every clock.
+void random_paths(size_t axes, int count, uint64_t seed, scurve::Junction junction) {
   std::mt19937_64 rng(seed);
+  const bool blend = junction == scurve::Junction::kBlend;
   for (int i = 0; i < count; ++i) {
     scurve::PathRequest req;
     req.axes = axes;
     req.limits = {40000 + 100000 * double(rng() % 1000) / 1000, 1e7, 2e9};
+    req.junction = junction;
+    if (blend) req.tolerance = 0.5 + double(rng() % 500) / 10;
     std::vector<int64_t> at(axes, 0);
     const int moves = 2 + int(rng() % 3);
     for (int k = 0; k < moves; ++k) {
@@ -243,23 +251,56 @@ void random_paths(size_t axes, int count, uint64_t seed) {
     const scurve::PathPlan& plan = std::get<scurve::PathPlan>(p);
     MultiRunOptions o;
     o.measure_line = false;
+    o.polyline = path_polyline(plan);
+    o.contour_adjacent = blend;
+    o.check_phases = !blend;
     const MultiRunResult r = run_multi(path_rows(plan), o);
-    EXPECT_EQ(r.mismatches, 0u) << "path " << i;
-    for (const std::string& e : r.errors) ADD_FAILURE() << "path " << i << ": " << e;
-    ASSERT_EQ(r.move_ends.size(), plan.moves.size()) << "path " << i;
+    const std::string what = fmt::format("path {} ({} moves, tolerance {})", i, plan.moves.size(), req.tolerance);
+    EXPECT_EQ(r.mismatches, 0u) << what;
+    for (const std::string& e : r.errors) ADD_FAILURE() << what << ": " << e;
+    ASSERT_EQ(r.move_ends.size(), plan.moves.size()) << what;
     for (size_t k = 0; k < plan.moves.size(); ++k) {
       for (size_t a = 0; a < axes; ++a) {
-        EXPECT_EQ(r.move_ends[k].ref_pos[a], plan.moves[k].target[a]) << "path " << i << " move " << k << " axis " << a;
+        const int64_t planned = int64_t(plan.moves[k].end_position[a] >> FracBits);
+        EXPECT_EQ(r.move_ends[k].ref_pos[a], planned) << what << " move " << k << " axis " << a;
+        if (!blend) {
+          EXPECT_EQ(planned, plan.moves[k].target[a]) << what << " move " << k << " axis " << a;
+        }
       }
     }
-    for (size_t a = 0; a < axes; ++a) EXPECT_EQ(r.pin_steps[a], int64_t(r.ref_pos[a])) << "path " << i;
+    for (size_t a = 0; a < axes; ++a) {
+      EXPECT_EQ(r.ref_pos[a], plan.moves.back().target[a]) << what << " axis " << a;
+      EXPECT_EQ(r.pin_steps[a], int64_t(r.ref_pos[a])) << what << " axis " << a;
+    }
+    EXPECT_LT(r.contour_max, blend ? req.tolerance * (1 + 1e-9) + 1e-6 : 0.01) << what;
     if (::testing::Test::HasFailure()) return;
   }
 }
 
-TEST(MultiAxisLockstep, RandomTwoAxisPathsWithExactStopsEndEveryMoveOnItsTarget) { random_paths(2, 20, 51); }
+TEST(MultiAxisLockstep, RandomTwoAxisPathsWithExactStopsEndEveryMoveOnItsTarget) {
+  random_paths(2, 20, 51, scurve::Junction::kExactStop);
+}
 
-TEST(MultiAxisLockstep, RandomThreeAxisPathsWithExactStopsEndEveryMoveOnItsTarget) { random_paths(3, 8, 61); }
+TEST(MultiAxisLockstep, RandomThreeAxisPathsWithExactStopsEndEveryMoveOnItsTarget) {
+  random_paths(3, 8, 61, scurve::Junction::kExactStop);
+}
+
+TEST(MultiAxisLockstep, RandomTwoAxisPathsWithBlendedJunctionsEndExactlyWithinTheTolerance) {
+  random_paths(2, 20, 53, scurve::Junction::kBlend);
+}
+
+TEST(MultiAxisLockstep, RandomThreeAxisPathsWithBlendedJunctionsEndExactlyWithinTheTolerance) {
+  random_paths(3, 8, 63, scurve::Junction::kBlend);
+}
+
+// Nightly size: 100 random 2-axis and 30 random 3-axis paths, half with
+// exact stops and half blended (other seeds than the default suite's).
+TEST(MultiAxisPathsLong, HundredTwoAxisAndThirtyThreeAxisPathsInBothJunctionModes) {
+  random_paths(2, 50, 151, scurve::Junction::kExactStop);
+  random_paths(2, 50, 153, scurve::Junction::kBlend);
+  random_paths(3, 15, 161, scurve::Junction::kExactStop);
+  random_paths(3, 15, 163, scurve::Junction::kBlend);
+}
 
 // ---- the closed-loop capable core (Servo = 1): a servo loop per axis ------
 
