@@ -38,6 +38,11 @@ MultiRows path_rows(const scurve::PathPlan& plan) {
     m.rows.push_back(std::move(r));
     m.pos_frac0.push_back(ax.pos_frac0);
   }
+  for (const scurve::PlannedPathMove& mv : plan.moves) {
+    std::vector<u128> f;
+    for (const scurve::Plan& a : mv.line.axes) f.push_back(a.pos_frac0);
+    m.move_frac0.push_back(std::move(f));
+  }
   return m;
 }
 
@@ -170,20 +175,31 @@ class Run {
     size_t next = 0;
     bool started = false;
     uint64_t clock = 0, start_clock = 0;
+    // settle_each_move: the rows of the move under way end before `push_end`;
+    // the next move is pushed once every axis is done with this one.
+    const bool fine = opt_.settle_each_move;
+    size_t move = 0;
+    size_t push_end = fine ? move_end_row(0) : count;
+    bool move_started = false;
+    uint64_t move_start_clock = 0, last_move_end_clock = 0;
     for (;; ++clock) {
       in_.row_push = false;
       in_.start = false;
       in_.stop = false;
-      if (next < count && out.axis[0].fifo_level < RowFifoDepth) {
+      if (next < push_end && out.axis[0].fifo_level < RowFifoDepth) {
         in_.row_push = true;
         in_.row_clocks = rows_.rows[0][next].seg.clocks;
         for (size_t a = 0; a < n; ++a) in_.axis[a].row = rows_.rows[a][next];
         ++next;
-      } else if (!started) {
+      } else if (!move_started) {
         in_.start = true;
-        started = true;
-        start_clock = clock;
-        if (trace_every_ > 0) next_sample = clock;
+        move_started = true;
+        move_start_clock = clock;
+        if (!started) {
+          started = true;
+          start_clock = clock;
+          if (trace_every_ > 0) next_sample = clock;
+        }
       }
       if (started && stop_ && opt_.stop_at && clock == start_clock + *opt_.stop_at) in_.stop = true;
       if (stop_ && opt_.limit_at && (started ? clock >= start_clock + *opt_.limit_at : *opt_.limit_at == 0)) {
@@ -233,8 +249,9 @@ class Run {
       }
       r.peak_path_velocity = std::max(r.peak_path_velocity, std::sqrt(v2));
       r.peak_path_acceleration = std::max(r.peak_path_acceleration, std::sqrt(a2));
-      if (out.axis[0].move_idx != moves_done) {
-        moves_done = out.axis[0].move_idx;
+      if (out.axis[0].move_done) {
+        ++moves_done;
+        last_move_end_clock = clock;
         MultiMoveEnd e{clock - start_clock, {}};
         for (size_t a = 0; a < n; ++a) e.ref_pos.push_back(out.axis[a].ref_pos_int);
         r.move_ends.push_back(std::move(e));
@@ -265,7 +282,17 @@ class Run {
       if (check.should_stop()) break;
       bool idle = true;
       for (size_t a = 0; a < n; ++a) idle = idle && !out.axis[a].busy;
-      if (started && clock > start_clock + 2 && idle) break;
+      if (move_started && clock > move_start_clock + 2 && idle) {
+        if (!fine || move + 1 >= rows_.move_frac0.size() || next >= count) break;
+        // Every axis done (in position): the next move from the corner, each
+        // axis's POS_FRAC0 the fraction the plan starts it from.
+        ++move;
+        push_end = move_end_row(next);
+        move_started = false;
+        r.junction_wait.push_back(clock + 1 - last_move_end_clock);
+        r.corner_error.push_back(plants_.empty() ? 0.0 : corner_distance(out));
+        for (size_t a = 0; a < n; ++a) in_.axis[a].pos_frac0 = rows_.move_frac0[move][a];
+      }
       if (clock - start_clock > opt_.max_clocks) {
         r.errors.push_back(fmt::format("not at rest after {} clocks (max_clocks)", opt_.max_clocks));
         break;
@@ -296,6 +323,26 @@ class Run {
       }
     }
     return r;
+  }
+
+  // One past the first MOVE_END row at or after row `from` (the end of the
+  // rows when there is none).
+  size_t move_end_row(size_t from) const {
+    const std::vector<Row>& r0 = rows_.rows[0];
+    for (size_t k = from; k < r0.size(); ++k) {
+      if (r0[k].flags & kRowMoveEnd) return k + 1;
+    }
+    return r0.size();
+  }
+
+  // The measured position's distance from where the references rest (pulses).
+  double corner_distance(const MultiCoreOutputs& out) const {
+    double d2 = 0;
+    for (size_t a = 0; a < rows_.axes(); ++a) {
+      const double e = double(out.axis[a].ref_pos_int) - measured(out, a);
+      d2 += e * e;
+    }
+    return std::sqrt(d2);
   }
 
   // The measured position of axis a, pulses.
@@ -415,6 +462,9 @@ MultiRunResult run_multi(const MultiRows& rows, const MultiRunOptions& options) 
   }
   if (rows.rows.empty() || rows.pos_frac0.size() != rows.axes()) {
     throw std::invalid_argument("run_multi: rows and pos_frac0 need one entry per axis");
+  }
+  if (options.settle_each_move && rows.move_frac0.empty()) {
+    throw std::invalid_argument("run_multi: settle_each_move needs the moves' start fractions (path_rows)");
   }
   for (const auto& r : rows.rows) {
     if (r.size() != rows.rows[0].size() || r.empty()) {

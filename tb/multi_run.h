@@ -26,6 +26,9 @@ namespace sc {
 struct MultiRows {
   std::vector<std::vector<Row>> rows;
   std::vector<u128> pos_frac0;
+  // A path's: each move's start fraction per axis (move_frac0[k][axis]), what
+  // POS_FRAC0 holds when the move STARTs on its own (settle_each_move).
+  std::vector<std::vector<u128>> move_frac0;
   size_t axes() const { return rows.size(); }
 };
 // The rows of a planned line (the last row ends the stream).
@@ -72,6 +75,12 @@ struct MultiRunOptions {
   // coordinates): the contour error is the reference's distance from the
   // segment of the move it is in (the move index), every clock.
   std::vector<std::vector<double>> polyline;
+  // Exact stop fine (paper 002): every move (rows up to a MOVE_END row) is
+  // pushed and STARTed on its own once every axis is done with the last one
+  // (closed loop: in position, within its INPOS_WIN for its hold time), so
+  // the next line starts only when every axis has settled at the corner.
+  // Needs MultiRows::move_frac0 (path_rows).
+  bool settle_each_move = false;
   // Blended junctions: the distance from the nearer of the move's segment
   // and the next one (the next move starts before this one ends).
   bool contour_adjacent = false;
@@ -119,6 +128,11 @@ struct MultiRunResult {
   double max_line_deviation = 0;    // pulses, every clock (measure_line)
   double contour_max = 0, contour_rms = 0;  // pulses, from the polyline (options.polyline)
   std::vector<MultiMoveEnd> move_ends;      // one per completed move
+  // settle_each_move: per junction the clocks from the move's last row to
+  // the next START (the settling), and the measured position's distance
+  // from the corner (the reference at rest) at that START, pulses.
+  std::vector<uint64_t> junction_wait;
+  std::vector<double> corner_error;
   // Peaks of the reference, every clock: along the path (Euclidean) and per
   // axis (pulses/s, /s^2; jerk per axis, /s^3).
   double peak_path_velocity = 0, peak_path_acceleration = 0;

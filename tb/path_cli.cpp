@@ -47,12 +47,13 @@ void add_path_command(CLI::App& app, PathCli& p) {
   real_flag(c, "--accel", p.accel, "G-code: path acceleration, mm/s^2 (default 1000)", 0, 1e9);
   real_flag(c, "--jerk", p.jerk, "G-code: path jerk, mm/s^3 (default 10000)", 0, 1e12);
   c->add_option("--junction", p.junction,
-                "junctions: exact-stop (every axis at rest at every corner) | blend (the next line starts while "
-                "the last decelerates, within --tolerance of the corner)")
-      ->check(CLI::IsMember({"exact-stop", "blend"}));
+                "junctions: exact-stop (every axis at rest at every corner) | exact-stop-fine (with --closed-loop: "
+                "the next line starts once every axis is in position within --tolerance) | blend (the next line "
+                "starts while the last decelerates, within --tolerance of the corner)")
+      ->check(CLI::IsMember({"exact-stop", "exact-stop-fine", "blend"}));
   c->add_option("--tolerance", p.tolerance,
-                "blend: the largest distance of the tool from a corner point, mm (in pulses: times the smallest "
-                "--pulses-per-mm)")
+                "blend: the largest distance of the tool from a corner point; exact-stop-fine: the in-position "
+                "window of every axis; mm (in pulses: times the smallest --pulses-per-mm)")
       ->type_name("MM");
   c->add_option("--engine", p.engine, "lockstep (default: RTL and model, every clock compared) | model")
       ->check(CLI::IsMember({"lockstep", "model"}));
@@ -295,6 +296,8 @@ nlohmann::json report_json(const scurve::cli::PathProgram& prog, const scurve::P
   out["peak_axis_velocity"] = r.peak_velocity;
   out["peak_axis_acceleration"] = r.peak_acceleration;
   out["peak_axis_jerk"] = r.peak_jerk;
+  out["junction_wait_clocks"] = r.junction_wait;
+  out["corner_error_pulses"] = r.corner_error;
   out["closed_loop"] = !r.in_pos.empty();
   if (!r.in_pos.empty()) {
     out["measured_final_position"] = r.measured_pos;
@@ -353,6 +356,11 @@ std::string report_table(const scurve::cli::PathProgram& prog, const scurve::Pat
     t += fmt::format("  axis {}: peak velocity {:.1f}, acceleration {:.4g}, jerk {:.4g}\n", a, r.peak_velocity[a],
                      r.peak_acceleration[a], r.peak_jerk[a]);
   }
+  for (size_t k = 0; k < r.junction_wait.size(); ++k) {
+    t += fmt::format("corner {}: settled in {} clocks ({:.3f} ms) after the move's last row, measured {:.3g} pulses "
+                     "from the corner\n", k + 1, r.junction_wait[k], 1e3 * double(r.junction_wait[k]) / double(ClkHz),
+                     r.corner_error[k]);
+  }
   if (!r.in_pos.empty()) {
     t += fmt::format("closed loop: measured contour error max {:.3g} pulses, rms {:.3g} pulses\n",
                      r.measured_contour_max, r.measured_contour_rms);
@@ -385,16 +393,20 @@ int run_path_cli(const PathCli& p) {
   } catch (const scurve::input::Error& e) {
     return bad_input(e.what());
   }
-  const bool blend = p.junction == "blend";
+  const bool blend = p.junction == "blend", fine = p.junction == "exact-stop-fine";
   double tolerance_mm = 0;
   try {
-    if (blend && p.tolerance.empty()) {
-      throw scurve::input::Error("tolerance", "(none)", "--junction blend needs --tolerance MM > 0");
+    if (fine && !p.closed_loop) {
+      throw scurve::input::Error("junction", p.junction,
+                                 "needs --closed-loop (the open loop has no measured position to settle)");
     }
-    if (!blend && !p.tolerance.empty()) {
-      throw scurve::input::Error("tolerance", p.tolerance, "only with --junction blend");
+    if ((blend || fine) && p.tolerance.empty()) {
+      throw scurve::input::Error("tolerance", "(none)", "--junction " + p.junction + " needs --tolerance MM > 0");
     }
-    if (blend) tolerance_mm = scurve::input::parse_real("tolerance", p.tolerance, 1e-9, 1e6);
+    if (!blend && !fine && !p.tolerance.empty()) {
+      throw scurve::input::Error("tolerance", p.tolerance, "only with --junction blend or exact-stop-fine");
+    }
+    if (blend || fine) tolerance_mm = scurve::input::parse_real("tolerance", p.tolerance, 1e-9, 1e6);
   } catch (const scurve::input::Error& e) {
     return bad_input(e.what());
   }
@@ -437,15 +449,21 @@ int run_path_cli(const PathCli& p) {
   // The plan's clocks, the arming of each START and a margin: a path that
   // does not come to rest by then fails (it does not run on without end).
   o.max_clocks = plan.total_clocks + 1'000'000;
+  o.settle_each_move = fine;
   if (p.closed_loop) {
     MultiLoop loop;
     ServoConfig cfg;
-    if (const std::string e = to_servo_config(ControllerParams{}, loop.plant, timing, cfg); !e.empty()) {
+    ControllerParams ctl;
+    // exact-stop-fine: the in-position window is the tolerance (whole pulses:
+    // the loop compares whole encoder counts).
+    if (fine) ctl.inpos_win = std::floor(tolerance);
+    if (const std::string e = to_servo_config(ctl, loop.plant, timing, cfg); !e.empty()) {
       return bad_input(e);
     }
     loop.ctl = cfg.ctl;
     o.loop = loop;
-    o.max_clocks += uint64_t(ClkHz);  // the loops settle after the reference
+    // the loops settle after the reference (at every corner with exact-stop-fine)
+    o.max_clocks += uint64_t(ClkHz) * (fine ? plan.moves.size() : 1);
   }
   o.polyline = path_polyline(plan);
   const bool tty = isatty(2);
@@ -497,6 +515,15 @@ int run_path_cli(const PathCli& p) {
     if (int64_t(r.ref_pos[a]) + prog.start[a] != final_move.target[a]) {
       fails.push_back(fmt::format("axis {}: ended at {}, the path's target {}", a,
                                   int64_t(r.ref_pos[a]) + prog.start[a], final_move.target[a]));
+    }
+  }
+  // exact-stop-fine: each next line started with every axis within its
+  // window of the corner (per axis: within sqrt(axes) windows in distance).
+  const double corner_bound = std::sqrt(double(prog.axes)) * std::floor(tolerance) + 1e-9;
+  for (size_t k = 0; k < r.corner_error.size(); ++k) {
+    if (r.corner_error[k] > corner_bound) {
+      fails.push_back(fmt::format("corner {}: the next line started {:.3g} pulses from the corner (> {:.3g})", k + 1,
+                                  r.corner_error[k], corner_bound));
     }
   }
   for (size_t a = 0; a < r.in_pos.size(); ++a) {

@@ -376,6 +376,9 @@ check_bad "X" path --engine model "$tmp/far.gcode"
 check_bad "axes" path "$tmp/square.gcode" --axes 4
 check_bad "tolerance=(none): --junction blend needs --tolerance" path "$tmp/square.gcode" --junction blend
 check_bad "tolerance=0.5: only with --junction blend" path "$tmp/square.gcode" --tolerance 0.5
+check_bad "junction=exact-stop-fine: needs --closed-loop" path "$tmp/square.gcode" --junction exact-stop-fine \
+  --tolerance 0.01
+check_bad "axes=3" path "$tmp/square.gcode" --axes 3 --closed-loop
 check_bad "tolerance=0" path "$tmp/square.gcode" --junction blend --tolerance 0
 check_bad "tolerance=-1" path "$tmp/square.gcode" --junction blend --tolerance -1
 # Blended corners in lockstep: the same path within 0.02 mm (2 pulses) of

@@ -439,6 +439,44 @@ TEST(MultiAxisClosedLoop, AFollowingErrorOnOneAxisStopsBothAxes) {
   }
 }
 
+// Exact stop fine (paper 002): every line STARTs on its own once both loops
+// are in position within their window at the corner. Lockstep, every move
+// on its exact target, each next line started with the measured position
+// within the window of the corner, after at least the in-position hold time.
+TEST(MultiAxisClosedLoop, ExactStopFineStartsEachLineOnlyOnceEveryAxisSettledAtTheCorner) {
+  scurve::PathRequest req;
+  req.axes = 2;
+  req.limits = {8000, 2e5, 2e7};
+  req.moves = {{{900, 400}, 8000, 1}, {{300, 1100}, 8000, 2}, {{-200, 600}, 8000, 3}};
+  auto p = scurve::plan_path(scurve::Planner{model_clock()}, req, to_host(PulseTiming{}));
+  ASSERT_TRUE(std::holds_alternative<scurve::PathPlan>(p)) << std::get<scurve::Error>(p).message;
+  const scurve::PathPlan& plan = std::get<scurve::PathPlan>(p);
+  ControllerParams c;
+  c.inpos_win = 1;
+  MultiRunOptions o;
+  o.measure_line = false;
+  o.settle_each_move = true;
+  o.polyline = path_polyline(plan);
+  o.loop = servo_loop(c);
+  const MultiRunResult r = run_multi(path_rows(plan), o);
+  EXPECT_EQ(r.mismatches, 0u);
+  for (const std::string& e : r.errors) ADD_FAILURE() << e;
+  ASSERT_EQ(r.move_ends.size(), 3u);
+  for (size_t k = 0; k < 3; ++k) {
+    for (size_t a = 0; a < 2; ++a) EXPECT_EQ(r.move_ends[k].ref_pos[a], plan.moves[k].target[a]) << k << " " << a;
+  }
+  ASSERT_EQ(r.junction_wait.size(), 2u);
+  for (size_t k = 0; k < 2; ++k) {
+    EXPECT_LE(r.corner_error[k], std::sqrt(2.0) * c.inpos_win) << "corner " << k;
+    EXPECT_GE(double(r.junction_wait[k]), c.inpos_hold_s * ClkHz) << "corner " << k;
+  }
+  for (size_t a = 0; a < 2; ++a) {
+    EXPECT_TRUE(r.in_pos[a]) << a;
+    EXPECT_LE(std::abs(r.final_error[a]), c.inpos_win) << a;
+  }
+  EXPECT_LT(r.contour_max, 0.01);
+}
+
 // The same core with the loop off runs the open-loop path through the same
 // pins: exact, pins = reference, synchronised as the open-loop core.
 TEST(MultiAxisClosedLoop, TheServoCoreWithTheLoopOffRunsLinesOpenLoopExactly) {
