@@ -109,7 +109,7 @@ module sc_axis_core #(
   output logic                        start_able_o,      // this axis would accept the START it sees
   output logic                        arm_ready_o,       // armed, DIR set up: waits for sync_go_i
   output logic                        arm_drop_o,        // this axis drops its arming this clock
-  output logic                        fault_abort_o,     // a hard limit, the step-rate guard or ext_abort_i stops it at once
+  output logic                        fault_abort_o,     // a hard limit, the rate guard or ext_abort_i: stop at once
   output logic                        arming_o,          // a START is arming (DIR to the move, its setup)
   output logic                        abort_o,           // abort_i as registered here, or a hard limit acting
   output logic                        ref_done_o,        // the executor has finished the stream

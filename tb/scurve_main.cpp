@@ -5,6 +5,7 @@
 //   scurve stream FILE [--engine ...] [--json]   a stream of moves with look-ahead junctions
 //   scurve jog [--target V[:T] ...] [--stop] [--engine ...] [--json]   velocity mode (jog)
 //   scurve path FILE [--axes N] [--engine lockstep|model] [--plot DIR] [--json]   a path file on the multi-axis core
+//   scurve corner [--seed N] [--budget N] [--engine lockstep|model|none] [--json]   paper 002's corner, jerks searched
 //   scurve home [--switch-at N] [--runs N] [--engine ...] [--json]   homing against a switch in the plant
 //   scurve virtual-board [--pty-link PATH] [--speed X]   the board top behind a pseudo-terminal
 //   scurve board --port DEV info|status|run|stream|stop|estop|clear|home|watch   a board over its UART
@@ -23,6 +24,7 @@
 #include <thread>
 
 #include "closed_loop_cli.h"
+#include "corner_cli.h"
 #include "fst_flags.h"
 #include "planner.h"
 #include "report.h"
@@ -209,6 +211,10 @@ int main(int argc, char** argv) {
   PathCli path;
   add_path_command(app, path);
 
+  // ---- corner: paper 002's corner, its asymmetric jerks searched --------------------
+  CornerCli corner;
+  add_corner_command(app, corner);
+
   // ---- home: the homing sequence against a switch in the plant -----------------
   HomingCli home;
   add_homing_command(app, home);
@@ -229,6 +235,7 @@ int main(int argc, char** argv) {
 
   if (*jog.cmd) return run_jog_cli(jog);
   if (*path.cmd) return run_path_cli(path);
+  if (*corner.cmd) return run_corner_cli(corner);
 
   if (*virtual_board.cmd) return run_virtual_board_cli(virtual_board);
 

@@ -379,6 +379,19 @@ check_bad "tolerance=0.5: only with --junction blend" path "$tmp/square.gcode" -
 check_bad "junction=exact-stop-fine: needs --closed-loop" path "$tmp/square.gcode" --junction exact-stop-fine \
   --tolerance 0.01
 check_bad "axes=3" path "$tmp/square.gcode" --axes 3 --closed-loop
+# scurve corner: paper 002's corner, the search's result never above the
+# symmetric shape, the paper's figures beside ours; bad budgets named.
+"$scurve" corner --budget 40 --engine none --json > "$tmp/corner.json"
+python3 - "$tmp/corner.json" <<'PY'
+import json, sys
+r = json.load(open(sys.argv[1]))
+assert r["pass"] and r["evaluations"] <= 40 + 8, r
+assert r["searched"]["fitness"] <= r["symmetric"]["fitness"], r
+assert abs(r["paper"]["contour_error_m"] - 4.0348e-7) < 1e-12, r["paper"]
+assert r["symmetric"]["duration_s"] > 2.39, r["symmetric"]
+PY
+check_bad "budget" corner --budget 5
+check_bad "seed" corner --seed -1
 check_bad "tolerance=0" path "$tmp/square.gcode" --junction blend --tolerance 0
 check_bad "tolerance=-1" path "$tmp/square.gcode" --junction blend --tolerance -1
 # Blended corners in lockstep: the same path within 0.02 mm (2 pulses) of
