@@ -45,40 +45,42 @@ void apply_shared(const MultiCoreInputs& in, bool stopping_any, bool fault_any, 
   c.stop = in.stop || stopping_any;
 }
 
+// The sync and broadcast signals from every axis's registers before this
+// clock (sc_multi_axis_core's AND / OR across axes).
+struct Broadcast {
+  SyncInputs sync{true, true, false};
+  bool stopping_any = false, fault_any = false;
+};
+
+template <class Axis>
+Broadcast broadcast(const std::vector<Axis>& axes) {
+  Broadcast b;
+  for (const Axis& a : axes) {
+    b.sync.start_ok = b.sync.start_ok && a.start_able();
+    b.sync.go = b.sync.go && a.arm_ready();
+    b.sync.drop = b.sync.drop || a.arm_drop();
+    b.stopping_any = b.stopping_any || a.exec().state().stop;
+    b.fault_any = b.fault_any || a.fault_abort();
+  }
+  return b;
+}
+
 }  // namespace
 
 void MultiAxisCore::step_open(const MultiCoreInputs& in) {
-  // The sync and broadcast signals come from every axis's registers before
-  // this clock (sc_multi_axis_core's AND / OR across axes).
-  SyncInputs s{true, true, false};
-  bool stopping_any = false, fault_any = false;
-  for (const AxisCore& a : cores_) {
-    s.start_ok = s.start_ok && a.start_able();
-    s.go = s.go && a.arm_ready();
-    s.drop = s.drop || a.arm_drop();
-    stopping_any = stopping_any || a.exec().state().stop;
-    fault_any = fault_any || a.fault_abort();
-  }
+  const Broadcast b = broadcast(cores_);
   for (size_t i = 0; i < axes_; ++i) {
     scratch_ = in.axis[i];
-    apply_shared(in, stopping_any, fault_any, scratch_);
-    cores_[i].step(scratch_, s);
+    apply_shared(in, b.stopping_any, b.fault_any, scratch_);
+    cores_[i].step(scratch_, b.sync);
   }
 }
 
 void MultiAxisCore::step_servo(const MultiCoreInputs& in) {
-  SyncInputs s{true, true, false};
-  bool stopping_any = false, fault_any = false;
-  for (const ServoAxis& a : servos_) {
-    s.start_ok = s.start_ok && a.start_able();
-    s.go = s.go && a.arm_ready();
-    s.drop = s.drop || a.arm_drop();
-    stopping_any = stopping_any || a.exec().state().stop;
-    fault_any = fault_any || a.fault_abort();
-  }
+  const Broadcast b = broadcast(servos_);
   for (size_t i = 0; i < axes_; ++i) {
     scratch_ = in.axis[i];
-    apply_shared(in, stopping_any, fault_any, scratch_);
+    apply_shared(in, b.stopping_any, b.fault_any, scratch_);
     const CoreInputs& c = scratch_;
     const LoopInputs& l = in.loop[i];
     ServoInputs& si = servo_scratch_;
@@ -104,7 +106,7 @@ void MultiAxisCore::step_servo(const MultiCoreInputs& in) {
     si.enc_a = l.enc_a;
     si.enc_b = l.enc_b;
     si.enc_z = l.enc_z;
-    servos_[i].step(si, s);
+    servos_[i].step(si, b.sync);
   }
 }
 

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "line_checks.h"
+#include "path_checks.h"
 #include "scurve/cli/path_file.h"
 #include "scurve/cli/user_input.h"
 #include "scurve/path_planner.h"
@@ -63,19 +64,8 @@ std::vector<std::vector<int64_t>> targets(const PathProgram& p) {
   return t;
 }
 
-i128 floor_pulses(i128 pos) {
-  const i128 one = i128(kOne);
-  return pos >= 0 ? pos / one : -((-pos + one - 1) / one);
-}
-
-PathPlan plan_or_fail(const PathRequest& r) {
-  const PathResult p = plan_path(Planner{}, r, PulseTiming{});
-  if (const Error* e = std::get_if<Error>(&p)) {
-    ADD_FAILURE() << e->parameter << ": " << e->message;
-    return {};
-  }
-  return std::get<PathPlan>(p);
-}
+using test::floor_pulses;
+using test::plan_or_fail;
 
 // The checks of one planned path; `per_clock`: also run every clock and
 // measure the distance from each move's line (returned, else -1).

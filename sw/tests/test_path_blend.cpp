@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "line_checks.h"
+#include "path_checks.h"
 #include "scurve/cli/path_file.h"
 #include "scurve/path_planner.h"
 
@@ -26,19 +27,8 @@ namespace {
 
 const std::string kExamples = SCURVE_PATH_EXAMPLES_DIR;
 
-i128 floor_pulses(i128 pos) {
-  const i128 one = i128(kOne);
-  return pos >= 0 ? pos / one : -((-pos + one - 1) / one);
-}
-
-PathPlan plan_or_fail(const PathRequest& r) {
-  const PathResult p = plan_path(Planner{}, r, PulseTiming{});
-  if (const Error* e = std::get_if<Error>(&p)) {
-    ADD_FAILURE() << e->parameter << ": " << e->message;
-    return {};
-  }
-  return std::get<PathPlan>(p);
-}
+using test::floor_pulses;
+using test::plan_or_fail;
 
 // What one blended path measured.
 struct BlendFigures {
