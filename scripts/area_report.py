@@ -16,17 +16,20 @@ import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
-TOPS = ["sc_axis_core", "sc_multi_axis_core", "sc_servo_axis", "sc_neuron_pi", "sc_axi_regs", "sc_uart_bridge",
-        "sc_axi_axis", "sc_axi_servo", "sc_board_top"]
+# A top with parameters: "top:Name=Value,..." (synth_yosys.sh's SC_SYNTH_PARAMS).
+TOPS = ["sc_axis_core", "sc_multi_axis_core", "sc_multi_axis_core:Servo=1", "sc_servo_axis", "sc_neuron_pi",
+        "sc_axi_regs", "sc_uart_bridge", "sc_axi_axis", "sc_axi_servo", "sc_board_top"]
 COLUMNS = ["lut", "lut_mem", "lut_total", "ff", "carry4", "dsp48e1", "bram", "logic_depth"]
 
 
-def synth(top, out):
-    run = subprocess.run([os.path.join(HERE, "synth_yosys.sh"), top, os.path.join(out, top)],
-                         capture_output=True, text=True)
+def synth(entry, out):
+    top, _, params = entry.partition(":")
+    env = dict(os.environ, SC_SYNTH_PARAMS=" ".join(p for p in params.split(",") if p))
+    where = os.path.join(out, entry.replace(":", "_").replace("=", "").replace(",", "_"))
+    run = subprocess.run([os.path.join(HERE, "synth_yosys.sh"), top, where], capture_output=True, text=True, env=env)
     if run.returncode != 0:
-        raise RuntimeError(f"{top}: synthesis failed\n{run.stderr[-2000:]}")
-    with open(os.path.join(out, top, f"{top}.util.json")) as f:
+        raise RuntimeError(f"{entry}: synthesis failed\n{run.stderr[-2000:]}")
+    with open(os.path.join(where, f"{top}.util.json")) as f:
         return json.load(f)
 
 

@@ -2,6 +2,8 @@
 # 7-series synthesis check with yosys: synth_xilinx -family xc7 of a top
 # module; fails on any error or latch; writes a utilization report.
 #   scripts/synth_yosys.sh [top] [outdir]      (default: sc_axis_core build/synth)
+# SC_SYNTH_PARAMS="Name=Value ..." sets the top's parameters (chparam), e.g.
+# SC_SYNTH_PARAMS="Servo=1" for the closed-loop capable multi-axis core.
 # Area budget (fails when over): SC_LUT_BUDGET / SC_DSP_BUDGET in the
 # environment; the single-axis cores (sc_axis_core, sc_servo_axis) default
 # to 8600 LUT (logic + LUTs used as memory) and 8 DSP48E1: with the
@@ -31,9 +33,14 @@ log="$out/$top.yosys.log"
 # on a flattened copy without flops, LUT RAMs (their write side is a
 # register; a read counts as a path start) and clock primitives (whose
 # feedback is a loop), so ltp sees only the logic between registers.
+chparams=""
+for p in ${SC_SYNTH_PARAMS:-}; do
+  chparams="$chparams chparam -set ${p%%=*} ${p#*=} $top;"
+done
 yosys -q -l "$log" -p "
   $xlib
   read_verilog -sv $(echo $srcs | tr '\n' ' ');
+  $chparams
   hierarchy -check -top $top;
   proc;
   select -assert-none t:\$dlatch t:\$adlatch t:\$dlatchsr;
@@ -63,8 +70,13 @@ lut_budget=${SC_LUT_BUDGET:-}; dsp_budget=${SC_DSP_BUDGET:-}
 # the single-axis cores: open loop and with the closed loop
 case "$top" in
   sc_axis_core|sc_servo_axis) lut_budget=${lut_budget:-8600}; dsp_budget=${dsp_budget:-8} ;;
-  # two open-loop axes (its default Axes = 2): 12227 LUT, two single cores
-  sc_multi_axis_core) lut_budget=${lut_budget:-14000}; dsp_budget=${dsp_budget:-0} ;;
+  # two open-loop axes (its default Axes = 2): 12227 LUT, two single cores;
+  # two closed-loop axes (Servo = 1): 16427 LUT, 8 DSP, two servo axes
+  sc_multi_axis_core)
+    case " ${SC_SYNTH_PARAMS:-} " in
+      *" Servo=1 "*) lut_budget=${lut_budget:-17500}; dsp_budget=${dsp_budget:-16} ;;
+      *) lut_budget=${lut_budget:-14000}; dsp_budget=${dsp_budget:-0} ;;
+    esac ;;
 esac
 # the budget counts every LUT: logic and LUTs used as memory
 if [ -n "$lut_budget" ] && [ "$((luts + lut_mem))" -gt "$lut_budget" ]; then
