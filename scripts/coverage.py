@@ -169,8 +169,9 @@ def load_exclusions(path):
     return rules
 
 
-# Verilator's suffix of a parameterised module's name.
-VARIANT = re.compile(r"__[A-Z][A-Za-z0-9]*$")
+# Verilator's suffix of a parameterised module's name: one part per
+# parameter given, joined by "_" (sc_axis_core__Ez1, sc_axis_core__Ez1_Sz2).
+VARIANT = re.compile(r"__[A-Z][A-Za-z0-9]*(_[A-Z][A-Za-z0-9]*)*$")
 
 
 def instance_free(points):
@@ -178,7 +179,7 @@ def instance_free(points):
     of a module counts once however many tops instantiate it (hit if any
     instance hit it). A cover point inside a generate loop keeps its
     generate path (g_x__BRA__3__KET__.c_y) to stay apart from its siblings.
-    Parameterised variants (sc_axis_core__Ez1, the servo's core) are the same
+    Parameterised variants (sc_axis_core__Ez1_Sz2, the servo's core) are the same
     source: a point counts once for them too."""
     merged = {}
     for key, count in points.items():
