@@ -43,34 +43,8 @@ struct AxesState {
   explicit AxesState(std::vector<i128> start) : pos(std::move(start)), vel(pos.size(), 0), acc(pos.size(), 0) {}
 };
 
-// Runs rows [first, last) of every axis (rows[i] is axis i's table; the
-// same clocks row by row) clock by clock, pos += v; v += a; a += j, from
-// `state`, and returns the largest offset from `line` at the start and
-// after every clock (pulses).
-inline double run_rows_per_clock(const std::vector<const std::vector<Segment>*>& rows, size_t first, size_t last,
-                                 AxesState& state, const StraightLine& line) {
-  const size_t n = rows.size();
-  long double worst = line.offset2(state.pos);
-  for (size_t k = first; k < last; ++k) {
-    for (uint64_t t = 0; t < (*rows[0])[k].clocks; ++t) {
-      for (size_t i = 0; i < n; ++i) {
-        state.pos[i] += state.vel[i];
-        state.vel[i] += state.acc[i];
-        state.acc[i] += (*rows[i])[k].jerk;
-      }
-      worst = std::max(worst, line.offset2(state.pos));
-    }
-  }
-  return double(std::sqrt(worst));
-}
-
-}  // namespace scurve::test
-
-namespace scurve::test {
-
-// Runs rows [first, last) of every axis clock by clock from `state` (the
-// recurrence of run_rows_per_clock) and calls on_clock(state) at the start
-// and after every clock.
+// Runs rows [first, last) of every axis clock by clock from `state` and calls
+// on_clock(state) at the start and after every clock.
 template <class OnClock>
 void run_rows_each_clock(const std::vector<const std::vector<Segment>*>& rows, size_t first, size_t last,
                          AxesState& state, OnClock&& on_clock) {
@@ -86,6 +60,18 @@ void run_rows_each_clock(const std::vector<const std::vector<Segment>*>& rows, s
       on_clock(state);
     }
   }
+}
+
+// Runs rows [first, last) of every axis (rows[i] is axis i's table; the
+// same clocks row by row) clock by clock, pos += v; v += a; a += j, from
+// `state`, and returns the largest offset from `line` at the start and
+// after every clock (pulses).
+inline double run_rows_per_clock(const std::vector<const std::vector<Segment>*>& rows, size_t first, size_t last,
+                                 AxesState& state, const StraightLine& line) {
+  long double worst = 0;
+  run_rows_each_clock(rows, first, last, state,
+                      [&](const AxesState& s) { worst = std::max(worst, line.offset2(s.pos)); });
+  return double(std::sqrt(worst));
 }
 
 }  // namespace scurve::test
