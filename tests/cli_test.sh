@@ -379,6 +379,43 @@ check_bad "tolerance=0.5: only with --junction blend" path "$tmp/square.gcode" -
 check_bad "junction=exact-stop-fine: needs --closed-loop" path "$tmp/square.gcode" --junction exact-stop-fine \
   --tolerance 0.01
 check_bad "axes=3" path "$tmp/square.gcode" --axes 3 --closed-loop
+# A JSON point may carry its line's asymmetric jerks (Ts1 Ts2 Te1 Te2 along
+# the path, mm/s^3): every move on its target in lockstep; bad jerks name
+# the point and the jerk, a jerk the planner cannot run names the move.
+cat > "$tmp/jerks.json" <<'JS'
+{"axes": 2, "limits": {"feed": 20, "accel": 1000, "jerk": 10000},
+ "points": [{"to": [2, 1], "jerks": [2500, 10000, 8000, 1000]},
+            {"to": [0.5, 1.75], "feed": 10, "jerks": [10000, 4000, 10000, 2500]}, [0, 0]]}
+JS
+"$scurve" path "$tmp/jerks.json" --json > "$tmp/path_jerks.json"
+python3 - "$tmp/path_jerks.json" <<'PY'
+import json, sys
+r = json.load(open(sys.argv[1]))
+assert r["pass"] and r["mismatches"] == 0 and r["compared_clocks"] > 0, r["failures"]
+assert [m["end_position"] for m in r["moves"]] == [[200, 100], [50, 175], [0, 0]], r["moves"]
+assert r["final_position"] == [0, 0] and r["pin_steps"] == [0, 0], r
+assert r["contour_error_max_pulses"] < 0.01, r
+PY
+jerks_file() {  # jerks of the second point
+  printf '{"axes": 2, "limits": {"feed": 20, "accel": 1000, "jerk": 10000},\n%s\n' \
+    " \"points\": [[1, 1], {\"to\": [2, 0], \"jerks\": $1}]}" > "$tmp/bad_jerks.json"
+}
+jerks_file '[1000, 0, 1000, 1000]'
+check_bad 'points\[1\]\.jerks\[1\]=0: must be a finite number > 0 mm/s' path "$tmp/bad_jerks.json"
+jerks_file '[1000, 1000, -5, 1000]'
+check_bad 'points\[1\]\.jerks\[2\]=-5: must be a finite number > 0' path "$tmp/bad_jerks.json"
+jerks_file '[1000, 1000, 1000, "NaN"]'
+check_bad 'points\[1\]\.jerks\[3\]="NaN": must be a finite number' path "$tmp/bad_jerks.json"
+jerks_file '[1e, 1000, 1000, 1000]'
+check_bad 'line 2 col 48 JSON=.*not JSON' path "$tmp/bad_jerks.json"
+jerks_file '[NaN, 1000, 1000, 1000]'
+check_bad 'line 2 col 46 JSON=.*not JSON' path "$tmp/bad_jerks.json"
+jerks_file '[1000, 1000, 1000]'
+check_bad 'points\[1\]\.jerks=\[1000,1000,1000\]: needs 4 jerks' path "$tmp/bad_jerks.json"
+jerks_file '[10000.5, 1000, 1000, 1000]'
+check_bad 'points\[1\]\.jerks\[0\]=10000.5: must be <= limits.jerk=10000 mm/s' path "$tmp/bad_jerks.json"
+jerks_file '[0.05, 1000, 1000, 1000]'
+check_bad 'move 1 (point 1): lead axis 0 .*jerk_ts1=.*>= 10 pulses/s' path --engine model "$tmp/bad_jerks.json"
 # scurve corner: paper 002's corner, the search's result never above the
 # symmetric shape, the paper's figures beside ours; bad budgets named.
 "$scurve" corner --budget 40 --engine none --json > "$tmp/corner.json"

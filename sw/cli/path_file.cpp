@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <charconv>
 #include <cmath>
@@ -25,11 +26,12 @@ constexpr int64_t kMaxPosition = scurve::PathRequest::kMaxPosition;
 constexpr double kAnyReal = 1e300;  // a finite number; the sign is checked where it matters
 
 // A move as the file gives it: the feed still in mm/s (its factor to pulses
-// needs the move's start).
+// needs the move's start), the jerks in mm/s^3.
 struct FileMove {
   std::vector<int64_t> target;
   double feed_mm_s = 0;
   int source_line = 0;
+  std::optional<std::array<double, 4>> jerks_mm_s3;  // Ts1, Ts2, Te1, Te2 along the path; unset: symmetric
 };
 
 // mm -> pulses, rounded once per absolute position.
@@ -58,6 +60,27 @@ double json_positive(const std::string& param, const nlohmann::json& v, const ch
   return d;
 }
 
+// A line's four jerks along the path (paper 002's Ts1, Ts2, Te1, Te2, as
+// scurve::LineRequest::jerks), mm/s^3: each > 0 and at most the path's
+// jerk limit, the line's j_path.
+std::array<double, 4> json_jerks(const std::string& param, const nlohmann::json& v, double jerk_limit) {
+  const nlohmann::json& a = input::json_array(param, v);
+  if (a.size() != 4) {
+    throw input::Error(param, input::shown(v),
+                       fmt::format("needs 4 jerks (Ts1 Ts2 speeding up, Te1 Te2 slowing down) in mm/s^3, has {}",
+                                   a.size()));
+  }
+  std::array<double, 4> j{};
+  for (size_t k = 0; k < 4; ++k) {
+    const std::string at = fmt::format("{}[{}]", param, k);
+    j[k] = json_positive(at, a[k], "mm/s^3");
+    if (j[k] > jerk_limit) {
+      throw input::Error(at, input::shown(a[k]), fmt::format("must be <= limits.jerk={} mm/s^3", jerk_limit));
+    }
+  }
+  return j;
+}
+
 // Pulses per mm of every axis: the given list, else the default.
 std::vector<double> pulses_per_mm_of(const PathFileOptions& o, size_t axes) {
   if (o.pulses_per_mm.empty()) return std::vector<double>(axes, PathFileOptions::kDefaultPulsesPerMm);
@@ -71,7 +94,9 @@ std::vector<double> pulses_per_mm_of(const PathFileOptions& o, size_t axes) {
 
 // The file's moves in the library's units. The feed along the path scales
 // by the move's length in pulses over its length in mm (pulses_per_mm when
-// the axes have the same); the path limits by the smallest pulses_per_mm.
+// the axes have the same); the path limits and a move's jerks by the
+// smallest pulses_per_mm (so jerks within the jerk limit in mm stay within
+// it in pulses).
 PathProgram finish(size_t axes, std::vector<double> ppm, std::vector<int64_t> start, std::vector<FileMove> moves,
                    double feed_limit, double accel, double jerk) {
   PathProgram p;
@@ -87,7 +112,12 @@ PathProgram finish(size_t axes, std::vector<double> ppm, std::vector<int64_t> st
       mm2 += (d / ppm[i]) * (d / ppm[i]);
     }
     const double scale = mm2 > 0 ? std::sqrt(pulses2 / mm2) : ppm_min;
-    p.moves.push_back(scurve::PathMove{m.target, m.feed_mm_s * scale, m.source_line});
+    scurve::PathMove pm{m.target, m.feed_mm_s * scale, m.source_line};
+    if (m.jerks_mm_s3) {
+      pm.jerks.emplace();
+      for (size_t k = 0; k < 4; ++k) (*pm.jerks)[k] = (*m.jerks_mm_s3)[k] * ppm_min;
+    }
+    p.moves.push_back(std::move(pm));
     at = std::move(m.target);
   }
   p.pulses_per_mm = std::move(ppm);
@@ -296,14 +326,16 @@ PathProgram parse_path_json(const std::string& text, const PathFileOptions& o) {
     m.source_line = int(k);
     m.feed_mm_s = feed_limit;
     if (pts[k].is_object()) {
-      json_known_keys(at, pts[k], {"to", "feed"});
+      json_known_keys(at, pts[k], {"to", "feed", "jerks"});
       if (!pts[k].contains("to")) throw input::Error(at + ".to", "missing", "required");
       m.target = json_position(at + ".to", pts[k]["to"], ppm);
       if (pts[k].contains("feed")) m.feed_mm_s = json_positive(at + ".feed", pts[k]["feed"], "mm/s");
+      if (pts[k].contains("jerks")) m.jerks_mm_s3 = json_jerks(at + ".jerks", pts[k]["jerks"], jerk);
     } else if (pts[k].is_array()) {
       m.target = json_position(at, pts[k], ppm);
     } else {
-      throw input::Error(at, shown(pts[k]), "must be [x, y, ...] or {\"to\": [x, y, ...], \"feed\": mm/s}");
+      throw input::Error(at, shown(pts[k]),
+                         "must be [x, y, ...] or {\"to\": [x, y, ...], \"feed\": mm/s, \"jerks\": [mm/s^3 x 4]}");
     }
     moves.push_back(std::move(m));
   }

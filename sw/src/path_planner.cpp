@@ -69,6 +69,18 @@ std::optional<Error> check_request(const PathRequest& r) {
     if (!std::isfinite(m.feed) || m.feed <= 0) {
       return Error{"feed", fmt::format("{}: feed={}: needs a finite number > 0 pulses/s", at, m.feed)};
     }
+    // As plan_line checks them, but here also for a move that goes nowhere
+    // (skipped, never planned), and before any line is planned.
+    if (m.jerks) {
+      static const char* const kJerkNames[4] = {"Ts1", "Ts2", "Te1", "Te2"};
+      for (size_t q = 0; q < 4; ++q) {
+        const double j = (*m.jerks)[q];
+        if (!(std::isfinite(j) && j > 0 && j <= r.limits.j)) {
+          return Error{"jerks", fmt::format("{}: jerks[{}] ({})={}: needs a finite number > 0 and <= limits.j={} "
+                                            "pulses/s^3", at, q, kJerkNames[q], j, r.limits.j)};
+        }
+      }
+    }
   }
   return std::nullopt;
 }
@@ -474,6 +486,7 @@ PathResult plan_path(const Planner& planner, const PathRequest& r, const PulseTi
     lr.v_path = std::min(m.feed, r.limits.v);
     lr.a_path = r.limits.a;
     lr.j_path = r.limits.j;
+    lr.jerks = m.jerks;  // unset: the symmetric shape, the same rows as without
     lr.axis_limits = r.axis_limits;
     lr.start_fracs = frac;
     LineResult planned = plan_line(planner, lr, timing);

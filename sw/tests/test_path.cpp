@@ -7,11 +7,13 @@
 // line_checks.h.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <functional>
 #include <initializer_list>
+#include <optional>
 #include <random>
 #include <string>
 #include <vector>
@@ -191,6 +193,82 @@ double expect_exact_path(const PathRequest& r, const PathPlan& p, bool per_clock
   return worst;
 }
 
+// Each planned line is plan_line's of the same request: the line's
+// distances, speed cap, the path limits, its move's jerks and the start
+// fractions it starts from (the previous line's end), row for row.
+void expect_lines_as_plan_line(const PathRequest& r, const PathPlan& p, const std::string& what) {
+  for (const PlannedPathMove& m : p.moves) {
+    LineRequest lr;
+    for (size_t i = 0; i < r.axes; ++i) {
+      lr.distances.push_back(m.target[i] - m.start[i]);
+      lr.start_fracs.push_back(m.line.axes[i].pos_frac0);
+    }
+    lr.v_path = m.v_path;
+    lr.a_path = r.limits.a;
+    lr.j_path = r.limits.j;
+    lr.jerks = r.moves[m.move].jerks;
+    lr.axis_limits = r.axis_limits;
+    const LineResult line = plan_line(Planner{}, lr, PulseTiming{});
+    const std::string where = what + " move " + std::to_string(m.move);
+    if (const Error* e = std::get_if<Error>(&line)) {
+      ADD_FAILURE() << where << ": plan_line refuses: " << e->message;
+      continue;
+    }
+    const LinePlan& l = std::get<LinePlan>(line);
+    EXPECT_EQ(l.lead, m.line.lead) << where;
+    ASSERT_EQ(l.axes.size(), m.line.axes.size()) << where;
+    for (size_t i = 0; i < l.axes.size(); ++i) {
+      EXPECT_TRUE(l.axes[i].segments == m.line.axes[i].segments) << where << " axis " << i;
+      EXPECT_EQ(l.axes[i].pos_frac0, m.line.axes[i].pos_frac0) << where << " axis " << i;
+    }
+  }
+}
+
+// The lead axis's jerk magnitude in each phase of its S-curve, pulses/s^3
+// (Ts1, Ts2, Te1, Te2 as LineRequest::jerks orders them; 0 where the
+// phase has no row), and the clocks of the row it is read from: the first
+// row of each phase, since the rows that remove the last velocity at the
+// end reuse the deceleration's phases.
+struct PhaseJerks {
+  std::array<double, 4> jerk{};
+  std::array<uint32_t, 4> clocks{};
+};
+PhaseJerks lead_phase_jerks(const LinePlan& line) {
+  const Phase order[4] = {Phase::PhAccJerkUp, Phase::PhAccJerkDown, Phase::PhDecJerkUp, Phase::PhDecJerkDown};
+  PhaseJerks j;
+  for (const Segment& s : line.axes[line.lead].segments) {
+    for (size_t q = 0; q < 4; ++q) {
+      if (s.phase != order[q] || j.jerk[q] != 0) continue;
+      j.jerk[q] = std::fabs(jerk_to_phys(s.jerk, Clock{}));
+      j.clocks[q] = s.clocks;
+    }
+  }
+  return j;
+}
+
+// The lead runs each requested jerk scaled to its share of the path: the
+// same share in every phase, near its share of the distances. Within
+// plan_from's landing: it trims a ramp's jerk by up to about 1/clocks of
+// the ramp to land it exactly on its acceleration and speed (and the
+// slowing down's jerks by a few 1e-6 to end it mid-pulse).
+void expect_lead_runs_the_jerks(const PlannedPathMove& m, const std::array<double, 4>& requested,
+                                const std::string& what) {
+  const PhaseJerks lead = lead_phase_jerks(m.line);
+  double length2 = 0;
+  for (size_t i = 0; i < m.target.size(); ++i) length2 += double(m.target[i] - m.start[i]) * (m.target[i] - m.start[i]);
+  const size_t l = m.line.lead;
+  const double share = std::fabs(double(m.target[l] - m.start[l])) / std::sqrt(length2);
+  const auto rounding = [&](size_t q) { return 2.0 / std::max<uint32_t>(1, lead.clocks[q]); };
+  for (size_t q = 0; q < 4; ++q) {
+    ASSERT_GT(lead.jerk[q], 0) << what << " jerk " << q << ": no row in its phase";
+    // The share from the travels (from the start fractions to mid-pulse)
+    // differs from the distances' by about a pulse in the line's length.
+    const double ran = lead.jerk[q] / requested[q];
+    EXPECT_NEAR(ran, share, share * (1e-4 + rounding(q)) + 1 / std::sqrt(length2)) << what << " jerk " << q;
+    EXPECT_NEAR(ran, lead.jerk[0] / requested[0], share * (1e-5 + rounding(q) + rounding(0))) << what << " jerk " << q;
+  }
+}
+
 }  // namespace
 
 // ---- parsing ---------------------------------------------------------------------
@@ -297,6 +375,22 @@ TEST(PathFile, JsonPointsFeedsStartAndLimitsInPulses) {
   EXPECT_DOUBLE_EQ(p.axis_limits[1].j_max, 50000);
 }
 
+TEST(PathFile, JsonPointJerksInPulsesAtTheSmallestPulsesPerMm) {
+  const PathProgram p = cli::parse_path_json(R"({
+    "axes": 2, "pulses_per_mm": [100, 50],
+    "limits": {"feed": 20, "accel": 400, "jerk": 8000},
+    "points": [[3, 4], {"to": [-5, 4], "jerks": [1000, 8000, 2.5, 7999.5]}, {"to": [0, 0], "feed": 5}]
+  })");
+  ASSERT_EQ(p.moves.size(), 3u);
+  EXPECT_FALSE(p.moves[0].jerks.has_value());  // unset: the symmetric shape at limits.jerk
+  ASSERT_TRUE(p.moves[1].jerks.has_value());
+  // As the path's jerk limit: mm/s^3 times the smallest pulses_per_mm.
+  EXPECT_EQ(*p.moves[1].jerks, (std::array<double, 4>{50000, 400000, 125, 399975}));
+  EXPECT_DOUBLE_EQ(p.limits.j, 400000);
+  EXPECT_FALSE(p.moves[2].jerks.has_value());
+  EXPECT_EQ(cli::to_path_request(p).moves[1].jerks, p.moves[1].jerks);
+}
+
 TEST(PathFile, FormatFromTheExtensionElseTheContent) {
   const std::string json = R"({"axes": 2, "limits": {"feed": 10, "accel": 100, "jerk": 1000}, "points": [[1, 2]]})";
   EXPECT_EQ(cli::parse_path_text(json, "p.json").source, PathSource::kPoint);
@@ -400,6 +494,29 @@ TEST(PathFileErrors, LimitsZeroOrNegativeNameTheLimit) {
   expect_names(gcode_error("G0 X1\n", o), {"feed_limit=0", "> 0 mm/s"});
 }
 
+TEST(PathFileErrors, BadJerksNameThePointTheValueAndTheBound) {
+  const auto with_jerks = [](const std::string& jerks) {
+    return json_error("{\"axes\": 2, \"limits\": {\"feed\": 10, \"accel\": 100, \"jerk\": 1000},\n"
+                      "\"points\": [[1, 2], {\"to\": [3, 4], \"jerks\": " + jerks + "}]}");
+  };
+  EXPECT_EQ(with_jerks("[1, 1000, 0.5, 999.999]"), "");
+  expect_names(with_jerks("[100, 0, 100, 100]"), {"points[1].jerks[1]=0", "> 0 mm/s^3"});
+  expect_names(with_jerks("[100, 100, -5, 100]"), {"points[1].jerks[2]=-5", "> 0 mm/s^3"});
+  expect_names(with_jerks("[100, 100, 100, \"NaN\"]"), {"points[1].jerks[3]=\"NaN\"", "a finite number"});
+  expect_names(with_jerks("[1000.5, 100, 100, 100]"), {"points[1].jerks[0]=1000.5", "<= limits.jerk=1000 mm/s^3"});
+  expect_names(with_jerks("[100, 100, 100]"), {"points[1].jerks=[100,100,100]", "needs 4 jerks", "has 3"});
+  expect_names(with_jerks("[100, 100, 100, 100, 100]"), {"points[1].jerks=", "needs 4 jerks", "has 5"});
+  expect_names(with_jerks("100"), {"points[1].jerks=100", "JSON array"});
+  // Not JSON numbers: the line and column where the parser stopped.
+  expect_names(with_jerks("[100, 1e, 100, 100]"), {"line 2 col", "not JSON"});
+  expect_names(with_jerks("[NaN, 100, 100, 100]"), {"line 2 col", "not JSON"});
+  expect_names(with_jerks("[1e999, 100, 100, 100]"), {"line 2 col", "1e999", "not a finite number"});
+  // Only in a point object.
+  expect_names(json_error(R"({"axes": 2, "limits": {"feed": 10, "accel": 100, "jerk": 1000},
+                              "jerks": [1, 1, 1, 1], "points": [[1, 2]]})"),
+               {"path.jerks", "unknown key"});
+}
+
 // ---- plan_path ---------------------------------------------------------------------
 
 TEST(PathPlanner, BadRequestsNameTheMoveAndItsSourceLine) {
@@ -451,6 +568,41 @@ TEST(PathPlanner, BadRequestsNameTheMoveAndItsSourceLine) {
   EXPECT_EQ(e.message.rfind("move 0 (point 3): lead axis", 0), 0u) << e.message;
 }
 
+TEST(PathPlanner, BadJerksNameTheMoveItsSourceAndTheBound) {
+  const auto error_of = [](const PathRequest& r) {
+    const PathResult p = plan_path(Planner{}, r, PulseTiming{});
+    const Error* e = std::get_if<Error>(&p);
+    return e ? *e : Error{"", ""};
+  };
+  PathRequest ok;
+  ok.axes = 2;
+  ok.limits = {10000, 1e5, 1e6};
+  ok.source = PathSource::kPoint;
+  ok.moves = {{{1000, 1000}, 5000, 0}, {{0, 2000}, 5000, 1}, {{0, 2000}, 5000, 2}};
+  ok.moves[1].jerks = std::array<double, 4>{2e5, 1e6, 5e5, 3e4};
+  EXPECT_EQ(error_of(ok).parameter, "");
+  for (double bad : {0.0, -1.0, std::nan(""), HUGE_VAL, 1e6 * (1 + 1e-12)}) {
+    PathRequest r = ok;
+    r.moves[1].jerks = std::array<double, 4>{1e6, bad, 1e6, 1e6};
+    const Error e = error_of(r);
+    EXPECT_EQ(e.parameter, "jerks") << bad;
+    EXPECT_EQ(e.message.rfind("move 1 (point 1): jerks[1] (Ts2)=", 0), 0u) << e.message;
+    expect_names(e.message, {"<= limits.j=1000000 pulses/s^3"});
+  }
+  // Also on a move to where the axes already are (skipped, never planned).
+  PathRequest r = ok;
+  r.moves[2].jerks = std::array<double, 4>{1e6, 1e6, 1e6, 2e6};
+  Error e = error_of(r);
+  EXPECT_EQ(e.parameter, "jerks");
+  EXPECT_EQ(e.message.rfind("move 2 (point 2): jerks[3] (Te2)=2000000", 0), 0u) << e.message;
+  // A jerk whose lead share is below the planner's range: plan_line's error.
+  r = ok;
+  r.moves[0].jerks = std::array<double, 4>{1, 1e6, 1e6, 1e6};
+  e = error_of(r);
+  EXPECT_EQ(e.parameter, "jerks");
+  EXPECT_EQ(e.message.rfind("move 0 (point 0): lead axis", 0), 0u) << e.message;
+}
+
 TEST(PathPlanner, ZeroLengthMovesAreSkippedNotRefused) {
   PathRequest r;
   r.axes = 2;
@@ -498,6 +650,36 @@ TEST(PathPlanner, Paper002CornerEndsEveryMoveExactlyOnItsTarget) {
   const double measured = expect_exact_path(r, p, true, "paper 002 corner");
   std::printf("paper 002 corner: %zu rows, %.4f s, max line deviation %.3g pulse (clock by clock %.3g)\n",
               p.axes[0].rows.size(), p.duration_s, p.max_line_deviation, measured);
+}
+
+TEST(PathPlanner, Paper002AsymmetricCornerRunsEachLinesJerksAndEndsExactly) {
+  const auto loaded = cli::load_path_file(kExamples + "/paper002_asymmetric.json");
+  ASSERT_TRUE(std::holds_alternative<PathProgram>(loaded)) << std::get<std::string>(loaded);
+  const PathProgram& program = std::get<PathProgram>(loaded);
+  EXPECT_EQ(targets(program), (std::vector<std::vector<int64_t>>{{7071, 7071}, {0, 14142}}));
+  const PathRequest r = cli::to_path_request(program);
+  ASSERT_TRUE(r.moves[0].jerks && r.moves[1].jerks);
+  EXPECT_DOUBLE_EQ((*r.moves[0].jerks)[0], 136610);  // 1366.1 mm/s^3 at 100 pulses/mm
+  EXPECT_DOUBLE_EQ((*r.moves[1].jerks)[3], 2870);
+  const PathPlan p = plan_or_fail(r);
+  ASSERT_EQ(p.moves.size(), 2u);
+  const double measured = expect_exact_path(r, p, true, "paper 002 asymmetric corner");
+  expect_lines_as_plan_line(r, p, "paper 002 asymmetric corner");
+  for (const PlannedPathMove& m : p.moves) {
+    expect_lead_runs_the_jerks(m, *r.moves[m.move].jerks, "paper 002 asymmetric corner move " +
+                                                               std::to_string(m.move));
+  }
+  // The same file without its jerks: the symmetric corner, the rows of
+  // every jerk at limits.jerk.
+  PathRequest symmetric = r, full = r;
+  for (PathMove& m : symmetric.moves) m.jerks.reset();
+  for (PathMove& m : full.moves) m.jerks = std::array<double, 4>{r.limits.j, r.limits.j, r.limits.j, r.limits.j};
+  const PathPlan s = plan_or_fail(symmetric), f = plan_or_fail(full);
+  for (size_t i = 0; i < 2; ++i) EXPECT_TRUE(s.axes[i].rows == f.axes[i].rows) << "axis " << i;
+  EXPECT_GT(p.total_clocks, s.total_clocks);
+  std::printf("paper 002 asymmetric corner: %zu rows, %.4f s (symmetric %.4f s), max line deviation %.3g pulse "
+              "(clock by clock %.3g)\n",
+              p.axes[0].rows.size(), p.duration_s, s.duration_s, p.max_line_deviation, measured);
 }
 
 namespace {
@@ -584,3 +766,57 @@ void random_paths(size_t axes, int count, uint64_t seed) {
 TEST(PathPlanner, RandomTwoAxisPathsEndEveryMoveExactly) { random_paths(2, 100, 11); }
 
 TEST(PathPlanner, RandomThreeAxisPathsEndEveryMoveExactly) { random_paths(3, 30, 13); }
+
+// Random paths in pulses on 2 and 3 axes, most lines with their own
+// random jerks down to 1/50 of the path's jerk limit, some axes still:
+// every move ends exactly, each line is plan_line's and its lead runs the
+// requested jerks.
+TEST(PathPlanner, RandomPathsWithAsymmetricJerksEndEveryMoveExactly) {
+  std::mt19937_64 g(31);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  const auto log_u = [&](double lo, double hi) {
+    return std::exp(std::log(lo) + (std::log(hi) - std::log(lo)) * u(g));
+  };
+  size_t with_jerks = 0, clock_checked = 0;
+  const int count = 40;
+  for (int n = 0; n < count; ++n) {
+    PathRequest r;
+    r.axes = 2 + size_t(n % 2);
+    r.limits = {log_u(5e3, 4e4), log_u(1e6, 8e6), log_u(2e8, 4e9)};
+    std::vector<int64_t> at(r.axes, 0);
+    const int moves = 2 + int(g() % 4);
+    for (int k = 0; k < moves; ++k) {
+      PathMove m;
+      m.target_pulses = at;
+      do {
+        for (size_t i = 0; i < r.axes; ++i) {
+          if (g() % 6 == 0) continue;  // this axis still
+          m.target_pulses[i] = at[i] + int64_t(std::llround((2 * u(g) - 1) * log_u(20, 6000)));
+        }
+      } while (m.target_pulses == at);
+      m.feed = r.limits.v * log_u(0.3, 1.5);
+      m.source_line = k;
+      if (g() % 4 != 0) {
+        m.jerks.emplace();
+        for (double& j : *m.jerks) j = r.limits.j * log_u(0.02, 1);
+        ++with_jerks;
+      }
+      at = m.target_pulses;
+      r.moves.push_back(m);
+    }
+    const std::string what = std::to_string(r.axes) + "-axis path " + std::to_string(n);
+    const PathPlan p = plan_or_fail(r);
+    if (p.moves.empty()) continue;
+    const bool per_clock = p.total_clocks < 3'000'000;
+    clock_checked += per_clock;
+    expect_exact_path(r, p, per_clock, what);
+    expect_lines_as_plan_line(r, p, what);
+    for (const PlannedPathMove& m : p.moves) {
+      if (r.moves[m.move].jerks) {
+        expect_lead_runs_the_jerks(m, *r.moves[m.move].jerks, what + " move " + std::to_string(m.move));
+      }
+    }
+  }
+  std::printf("%d random paths, %zu lines with their own jerks, %zu paths checked clock by clock\n", count,
+              with_jerks, clock_checked);
+}

@@ -240,9 +240,12 @@ PathRequest blended(PathRequest r, double tolerance) {
 // Random paths of 2 to 5 lines in pulses: every axis moves both ways, some
 // axes stay still, feeds below and above the speed cap, random tolerances
 // from 0.05 to 300 pulses, every fourth path with axis limits; short enough
-// ramps to integrate every overlap clock by clock.
-void random_blends(size_t axes, int count, uint64_t seed) {
+// ramps to integrate every overlap clock by clock. `jerks`: three lines in
+// four with their own asymmetric jerks, down to 1/50 of limits.j (drawn
+// from a generator of their own: the paths are the same as without).
+void random_blends(size_t axes, int count, uint64_t seed, bool jerks = false) {
   std::mt19937_64 g(seed);
+  std::mt19937_64 g_jerks(seed + 1);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   const auto log_u = [&](double lo, double hi) {
     return std::exp(std::log(lo) + (std::log(hi) - std::log(lo)) * u(g));
@@ -270,6 +273,10 @@ void random_blends(size_t axes, int count, uint64_t seed) {
       } while (m.target_pulses == at);
       m.feed = r.limits.v * log_u(0.3, 1.5);
       m.source_line = k + 1;
+      if (jerks && g_jerks() % 4 != 0) {
+        m.jerks.emplace();
+        for (double& j : *m.jerks) j = r.limits.j * std::exp(std::log(0.02) * u(g_jerks));
+      }
       at = m.target_pulses;
       r.moves.push_back(m);
     }
@@ -306,12 +313,13 @@ void random_blends(size_t axes, int count, uint64_t seed) {
     all.clocks_run += f.clocks_run;
     saved_most = std::max(saved_most, 1 - double(f.blend_clocks) / double(f.exact_clocks));
   }
-  std::printf("%d random %zu-axis blended paths, %zu junctions (%zu overlapped, %.3g M clocks integrated): corner "
+  std::printf("%d random %zu-axis blended paths%s, %zu junctions (%zu overlapped, %.3g M clocks integrated): corner "
               "distance <= %.4f tolerance, planner's figure <= %.2g pulse above it; along the path |a| <= %.3f "
               "limits.a, |jerk| <= %.3f limits.j; %.1f %% of the exact-stop time (at best %.1f %% shorter), "
               "blend planning %.0f us per line\n",
-              count, axes, all.junctions, all.blended, double(all.clocks_run) / 1e6, all.worst_ratio,
-              all.worst_report_gap, all.path_acc_ratio, all.path_jerk_ratio,
+              count, axes, jerks ? " with asymmetric jerks" : "", all.junctions, all.blended,
+              double(all.clocks_run) / 1e6, all.worst_ratio, all.worst_report_gap, all.path_acc_ratio,
+              all.path_jerk_ratio,
               100.0 * double(all.blend_clocks) / double(all.exact_clocks), 100 * saved_most,
               1e6 * plan_seconds / double(std::max<size_t>(1, lines)));
 }
@@ -542,6 +550,31 @@ TEST(PathBlend, Paper002CornerBlendsWithinTheTolerance) {
   }
 }
 
+TEST(PathBlend, Paper002AsymmetricCornerBlendsWithinTheTolerance) {
+  // Each line with its own jerks: the blend superposes the same lines.
+  const auto loaded = cli::load_path_file(kExamples + "/paper002_asymmetric.json");
+  ASSERT_TRUE(std::holds_alternative<cli::PathProgram>(loaded)) << std::get<std::string>(loaded);
+  const PathRequest r = cli::to_path_request(std::get<cli::PathProgram>(loaded));
+  const PathPlan exact = plan_or_fail(r);
+  for (double tol : {1.0, 10.0}) {
+    const PathRequest b = blended(r, tol);
+    const PathPlan p = plan_or_fail(b);
+    const BlendFigures f = expect_blended_path(b, p, exact, true, "paper 002 asymmetric corner");
+    ASSERT_EQ(p.moves.size(), 2u);
+    EXPECT_GT(p.moves[1].blend_clocks, 0u);
+    EXPECT_LT(p.total_clocks, exact.total_clocks);
+    std::printf("paper 002 asymmetric corner, tolerance %g pulses: %.4f s (exact stop %.4f s), overlap %llu clocks, "
+                "corner distance %.4g pulse (clock by clock %.4g tolerance)\n",
+                tol, p.duration_s, exact.duration_s, (unsigned long long)p.moves[1].blend_clocks,
+                p.max_corner_deviation, f.worst_ratio);
+  }
+}
+
 TEST(PathBlend, RandomTwoAxisPathsBlendWithinToleranceAndEndExactly) { random_blends(2, 100, 21); }
 
 TEST(PathBlend, RandomThreeAxisPathsBlendWithinToleranceAndEndExactly) { random_blends(3, 30, 23); }
+
+TEST(PathBlend, RandomPathsWithAsymmetricJerksBlendWithinToleranceAndEndExactly) {
+  random_blends(2, 40, 25, /*jerks=*/true);
+  random_blends(3, 15, 27, /*jerks=*/true);
+}

@@ -44,8 +44,10 @@
 // (docs/multiaxis.md, "Blended junctions").
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <variant>
 #include <vector>
 
@@ -58,6 +60,10 @@ struct PathMove {
   std::vector<int64_t> target_pulses;  // absolute position per axis, pulses
   double feed = 0;                     // requested speed along the path, pulses/s (> 0)
   int source_line = 0;                 // where it came from: a file's line (1-based) or a point index
+  // Paper 002's asymmetric S-shape of this line along the path, pulses/s^3
+  // (Ts1, Ts2, Te1, Te2: LineRequest::jerks), each finite, > 0 and <=
+  // PathLimits::j. Unset: PathLimits::j throughout (the symmetric shape).
+  std::optional<std::array<double, 4>> jerks = std::nullopt;
 };
 
 // Limits along the path (Euclidean, in pulses of the axes).
@@ -150,9 +156,10 @@ using PathResult = std::variant<PathPlan, Error>;
 // "moves" (none), "limits.v" / "limits.a" / "limits.j" (finite, > 0),
 // "axis_limits" (count; values as plan_line), "junction" (a known value),
 // "tolerance" (kBlend: finite, > 0), and per move "target_pulses"
-// (count, range) and "feed" (finite, > 0), named by the move's index and
-// source: "move 3 (line 7): feed=0: ...". A line plan_line() refuses gives
-// its Error with the same prefix.
+// (count, range), "feed" (finite, > 0) and "jerks" (each finite, > 0,
+// <= limits.j), named by the move's index and source: "move 3 (line 7):
+// feed=0: ...". A line plan_line() refuses gives its Error with the same
+// prefix.
 PathResult plan_path(const Planner& planner, const PathRequest& request, const PulseTiming& timing);
 
 }  // namespace scurve

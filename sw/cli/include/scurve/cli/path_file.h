@@ -10,6 +10,8 @@
 //          "axis_limits": [{"v_max": 80, "a_max": 800, "j_max": 8000}, {}],  optional, mm units
 //          "start": [0, 0],                                             optional, mm (default 0)
 //          "points": [[12, 80], {"to": [72, 80], "feed": 50}]}          absolute mm; feed mm/s
+//          a point object may add "jerks": [Ts1, Ts2, Te1, Te2]: its line's asymmetric S-shape
+//          (scurve::PathMove::jerks), mm/s^3 along the path, each > 0 and <= limits.jerk
 // G-code: G0/G1 with X Y Z F, G90/G91, G21 (G20 refused), F in mm/min
 //         (modal), G0 at the feed limit, comments ; and ( ), N numbers,
 //         % lines; any other word is an error naming the line and the word.
@@ -51,14 +53,14 @@ struct PathFileOptions {
 // A parsed path in pulses. Each move's feed is its speed along the path in
 // pulses/s: the feed in mm/s times the move's length in pulses over its
 // length in mm (the same factor as pulses_per_mm when every axis has the
-// same). The path limits are the mm limits at the smallest pulses_per_mm
-// (no axis passes its share when the axes differ); axis_limits at each
-// axis's own.
+// same). The path limits and a move's jerks are the mm values at the
+// smallest pulses_per_mm (no axis passes its share when the axes differ);
+// axis_limits at each axis's own.
 struct PathProgram {
   size_t axes = 0;
   std::vector<double> pulses_per_mm;
   std::vector<int64_t> start;                    // pulses per axis
-  std::vector<scurve::PathMove> moves;           // absolute targets (pulses), feed (pulses/s), source_line
+  std::vector<scurve::PathMove> moves;           // absolute targets (pulses), feed (pulses/s), source_line, jerks
   scurve::PathLimits limits;                     // pulses/s, pulses/s^2, pulses/s^3
   std::vector<scurve::AxisLimits> axis_limits;   // empty, or one per axis (0: unbounded)
   scurve::PathSource source = scurve::PathSource::kLine;  // G-code: file lines; JSON: point indices
