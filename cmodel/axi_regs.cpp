@@ -156,7 +156,8 @@ uint32_t AxiRegs::read_word(uint16_t a, const RegsSide& side, const CoreOutputs&
   }
 }
 
-void AxiRegs::step(const AxiIn& in, const RegsSide& side, const CoreOutputs& core, const ServoStatus& st) {
+void AxiRegs::step(const AxiIn& in, const RegsSide& side, const CoreOutputs& core, const ServoStatus& st,
+                   const RegsGroup& g) {
   const State q = q_;
   State d = q;
   d.push = false;
@@ -191,7 +192,12 @@ void AxiRegs::step(const AxiIn& in, const RegsSide& side, const CoreOutputs& cor
     d.bresp = kOkay;
     const uint16_t a = q.awaddr;
     const bool closed_change = a == RegCtrl && (q.wstrb & 1) && (((wd >> CtrlClosedBit) & 1) != uint32_t(q.closed));
-    if (busy_eff && (locked_addr(a) || cfg_index(a) >= 0 || closed_change)) {
+    // The shared row clocks, row push, retarget and START / FLUSH act on every
+    // axis: refused in one axis's window of a multi-axis map.
+    const bool cmd_group = a == RegCmd && (q.wstrb & 1) && !(wd & bit(CmdEstopBit)) && !(wd & bit(CmdStopBit)) &&
+                           (wd & (bit(CmdStartBit) | bit(CmdFlushBit)));
+    const bool group_only = a == RegRowPush || a == RegSegClocks || a == RegRetargetRow || cmd_group;
+    if ((busy_eff && (locked_addr(a) || cfg_index(a) >= 0 || closed_change)) || (!g.group && group_only)) {
       d.bresp = kSlvErr;
       set_reject = true;
     } else {
@@ -217,7 +223,7 @@ void AxiRegs::step(const AxiIn& in, const RegsSide& side, const CoreOutputs& cor
             } else if (wd & bit(CmdStopBit)) {
               d.stop = true;
             } else if (wd & bit(CmdStartBit)) {
-              if (busy_eff || q.err_estop || !q.en) {
+              if (busy_eff || q.err_estop || !q.en || !g.start_ok) {
                 d.bresp = kSlvErr;
                 set_reject = true;
               } else {
@@ -515,6 +521,24 @@ AxiAxisOutputs AxiAxis::outputs() const {
 
 // ---- sc_axi_servo ----------------------------------------------------------------
 
+ServoStatus servo_status(const LoopOutputs& l) {
+  ServoStatus st;
+  st.in_pos = l.in_pos;
+  st.fault_ferr = l.fault_ferr;
+  st.words[0] = (l.in_pos ? bit(ClStInPosBit) : 0) | (l.fault_ferr ? bit(ClStFerrBit) : 0) |
+                (l.ctl_active ? bit(ClStActiveBit) : 0) | (uint32_t(l.ctl_state & ((1u << CtlStW) - 1)) << ClStStateLsb) |
+                (uint32_t(l.enc_illegal) << ClStIllLsb);
+  st.words[1] = uint32_t(l.u);
+  st.words[2] = uint32_t(l.v_cmd);
+  st.words[3] = uint32_t(l.e_p);
+  st.words[4] = uint32_t(l.e_v);
+  st.words[5] = uint32_t(l.w_p1);
+  st.words[6] = uint32_t(l.w_p2);
+  st.words[7] = uint32_t(l.w_v1);
+  st.words[8] = uint32_t(l.w_v2);
+  return st;
+}
+
 ServoConfig AxiServo::decode_config(bool enable, bool closed, const PulseTiming& t,
                                     const std::array<uint32_t, ClCfgWords>& w) {
   ServoConfig c;
@@ -574,20 +598,9 @@ void AxiServo::step(const AxiIn& in, const RegsSide& side) {
   co.retarget_refused = so.retarget_refused;
   co.lim_trip_fwd = so.lim_trip_fwd;
   co.lim_trip_rev = so.lim_trip_rev;
-  ServoStatus st;
-  st.in_pos = so.in_pos;
-  st.fault_ferr = so.fault_ferr;
-  st.words[0] = (so.in_pos ? bit(ClStInPosBit) : 0) | (so.fault_ferr ? bit(ClStFerrBit) : 0) |
-                (so.ctl_active ? bit(ClStActiveBit) : 0) | (uint32_t(so.ctl_state & ((1u << CtlStW) - 1)) << ClStStateLsb) |
-                (uint32_t(so.enc_illegal) << ClStIllLsb);
-  st.words[1] = uint32_t(so.u);
-  st.words[2] = uint32_t(so.v_cmd);
-  st.words[3] = uint32_t(so.e_p);
-  st.words[4] = uint32_t(so.e_v);
-  st.words[5] = uint32_t(so.w_p1);
-  st.words[6] = uint32_t(so.w_p2);
-  st.words[7] = uint32_t(so.w_v1);
-  st.words[8] = uint32_t(so.w_v2);
+  LoopOutputs loop;
+  servo_.read_loop_outputs(loop);
+  const ServoStatus st = servo_status(loop);
   ServoInputs si = servo_inputs();
   si.enc_a = side.enc_ab & 1;
   si.enc_b = (side.enc_ab >> 1) & 1;

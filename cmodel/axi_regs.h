@@ -59,6 +59,16 @@ struct ServoStatus {
   std::array<uint32_t, ClStatWords> words{};
 };
 
+// The status words of an axis's loop (sc_pkg::cl_stat_words).
+ServoStatus servo_status(const LoopOutputs& loop);
+
+// The multi-axis inputs of the register file (group_i, start_ok_i of
+// sc_axi_regs); one axis: both true.
+struct RegsGroup {
+  bool group = true;     // the write in flight reaches every axis (the group window)
+  bool start_ok = true;  // every axis can take a START
+};
+
 class AxiRegs {
  public:
   struct State {
@@ -129,7 +139,8 @@ class AxiRegs {
   explicit AxiRegs(bool servo = false) : servo_(servo) { reset(); }
   void reset();
   // One clock. `core` = the core's outputs during this clock.
-  void step(const AxiIn& in, const RegsSide& side, const CoreOutputs& core, const ServoStatus& st = ServoStatus{});
+  void step(const AxiIn& in, const RegsSide& side, const CoreOutputs& core, const ServoStatus& st = ServoStatus{},
+            const RegsGroup& g = RegsGroup{});
   // Implemented bits and reset value of controller-settings word i.
   static uint32_t cl_mask(int i);
   static uint32_t cl_reset(int i);
@@ -144,6 +155,8 @@ class AxiRegs {
   bool soft_rev(int32_t ref_pos) const { return q_.soft_en && ref_pos < q_.soft_min; }
   // STATUS.BUSY: the core is busy or an accepted START has not reached it yet.
   bool busy(const CoreOutputs& core) const { return core.busy || q_.start || q_.start_d1; }
+  // start_able_o: enabled, idle and not e-stopped.
+  bool start_able(const CoreOutputs& core) const { return !busy(core) && !q_.err_estop && q_.en; }
   const State& state() const { return q_; }
 
  private:

@@ -55,6 +55,7 @@ module sc_axi_axis (
   localparam int FracBits   = sc_pkg::FracBits;
   localparam int PendW      = sc_pkg::PendW;
 
+  logic                        unused_regs_start_able;
   logic                        enable, row_push, fifo_flush, start, abort;
   logic [PulseTimeW-1:0]       cfg_high, cfg_low, cfg_setup, cfg_hold;
   logic [SegIdxW-1:0]          seg_idx;
@@ -176,6 +177,9 @@ module sc_axi_axis (
     .fifo_full_i     (fifo_full),
     .row_count_i     (row_count),
     .retarget_refused_i(retarget_refused),
+    .group_i         (1'b1),  // one axis: every write is the group's
+    .start_ok_i      (1'b1),
+    .start_able_o    (unused_regs_start_able),
     .busy_o,
     .irq_o
   );

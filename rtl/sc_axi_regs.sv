@@ -40,6 +40,10 @@
 // GUARD_VEL / GUARD_ACC / GUARD_JERK are the executor's row limits
 // (guard_*_o, locked while busy); the core's guard_i sets ERR.GUARD and
 // IRQ_STATUS.FAULT when it rises.
+// In a multi-axis map (sc_axi_multi_axis) group_i = 0 marks a write through
+// one axis's own window: ROW_PUSH, SEG_CLOCKS, RETARGET_ROW and CMD.START /
+// FLUSH act on every axis and are refused there (SLVERR, ERR.REJECT); a
+// START is refused unless start_ok_i (every axis can take it).
 module sc_axi_regs #(
   parameter bit Servo = 1'b0
 ) (
@@ -133,6 +137,11 @@ module sc_axi_regs #(
   input  logic [sc_pkg::SwW-1:0]              sw_edge_i,
   input  logic                                lim_trip_fwd_i,
   input  logic                                lim_trip_rev_i,
+
+  // multi-axis register file (sc_axi_multi_axis); one axis: 1, 1, unused
+  input  logic                                group_i,     // the write reaches every axis (held with it)
+  input  logic                                start_ok_i,  // every axis can take a START
+  output logic                                start_able_o, // this axis can take a START
 
   output logic                                busy_o,      // STATUS.BUSY
   output logic                                irq_o
@@ -314,6 +323,7 @@ module sc_axi_regs #(
   logic [31:0] wmask, wd;
   logic        set_reject, set_bad;
   logic        w_locked;          // the written register is locked while busy
+  logic        w_group_only;      // the written register acts on every axis: group window only
   logic [31:0] status_word, rd_word;
   logic [1:0]  rd_resp;
   // closed-loop window decode (write address held)
@@ -342,6 +352,13 @@ module sc_axi_regs #(
       default:                                      w_locked = w_cfg_hit;
     endcase
   end
+
+  // The shared row clocks, row push, retarget and START / FLUSH act on
+  // every axis: in one axis's window of a multi-axis map they are refused.
+  assign w_group_only = awaddr_q == ARowPush || awaddr_q == ASegClocks || awaddr_q == ARetarget ||
+                        (awaddr_q == ACmd && wstrb_q[0] && !wd[CmdEstopBit] && !wd[CmdStopBit] &&
+                         (wd[CmdStartBit] || wd[CmdFlushBit]));
+  assign start_able_o = !busy_eff && !err_estop_q && en_q;
 
   // STATUS and SW_CFG are packed in a block-local word and written once:
   // Icarus 11 counts a constant part-select write as a read of the whole
@@ -614,8 +631,9 @@ module sc_axi_regs #(
       w_full_d  = 1'b0;
       bvalid_d  = 1'b1;
       bresp_d   = RespOkay;
-      if (busy_eff && (w_locked || (awaddr_q == ACtrl && wstrb_q[0] &&
-                                    wd[CtrlClosedBit] != closed_q))) begin
+      if ((busy_eff && (w_locked || (awaddr_q == ACtrl && wstrb_q[0] &&
+                                     wd[CtrlClosedBit] != closed_q))) ||
+          (!group_i && w_group_only)) begin
         bresp_d    = RespSlvErr;
         set_reject = 1'b1;
       end else begin
@@ -640,7 +658,7 @@ module sc_axi_regs #(
               end else if (wd[CmdStopBit]) begin
                 stop_d = 1'b1;
               end else if (wd[CmdStartBit]) begin
-                if (busy_eff || err_estop_q || !en_q) begin
+                if (busy_eff || err_estop_q || !en_q || !start_ok_i) begin
                   bresp_d    = RespSlvErr;
                   set_reject = 1'b1;
                 end else begin

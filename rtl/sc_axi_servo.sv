@@ -118,26 +118,26 @@ module sc_axi_servo (
   logic signed [sc_pkg::AccW-1:0]  unused_ref_acc;
   logic signed [sc_pkg::JerkW-1:0] unused_ref_jerk;
   logic [sc_pkg::SegIdxW-1:0]  unused_seg_idx;
+  logic unused_regs_start_able;
   logic unused_start_able, unused_arm_ready, unused_arm_drop, unused_fault_abort, unused_arming,
         unused_exec_start;
 
-  // status words (order: CL_STATUS, CTL_U, CTL_V_CMD, CTL_E_P, CTL_E_V, CTL_W_*)
-  always_comb begin
-    cl_stat = '0;
-    cl_stat[sc_pkg::ClStInPosBit]                      = in_pos_o;
-    cl_stat[sc_pkg::ClStFerrBit]                       = fault_ferr_o;
-    cl_stat[sc_pkg::ClStActiveBit]                     = ctl_active;
-    cl_stat[sc_pkg::ClStStateLsb +: sc_pkg::CtlStW]    = ctl_state;
-    cl_stat[sc_pkg::ClStIllLsb +: sc_pkg::EncIllW]     = enc_illegal;
-    cl_stat[32*1 +: 32] = 32'(ctl_u);
-    cl_stat[32*2 +: 32] = 32'(ctl_v_cmd);
-    cl_stat[32*3 +: 32] = 32'(ctl_e_p);
-    cl_stat[32*4 +: 32] = 32'(ctl_e_v);
-    cl_stat[32*5 +: 32] = 32'(w_p1);
-    cl_stat[32*6 +: 32] = 32'(w_p2);
-    cl_stat[32*7 +: 32] = 32'(w_v1);
-    cl_stat[32*8 +: 32] = 32'(w_v2);
-  end
+  sc_cl_stat_pack u_cl_stat (
+    .in_pos_i      (in_pos_o),
+    .fault_ferr_i  (fault_ferr_o),
+    .ctl_active_i  (ctl_active),
+    .ctl_state_i   (ctl_state),
+    .enc_illegal_i (enc_illegal),
+    .u_i           (ctl_u),
+    .v_cmd_i       (ctl_v_cmd),
+    .e_p_i         (ctl_e_p),
+    .e_v_i         (ctl_e_v),
+    .w_p1_i        (w_p1),
+    .w_p2_i        (w_p2),
+    .w_v1_i        (w_v1),
+    .w_v2_i        (w_v2),
+    .cl_stat_o     (cl_stat)
+  );
 
   sc_sync #(
     .Width    (2),
@@ -232,6 +232,9 @@ module sc_axi_servo (
     .fifo_full_i     (fifo_full),
     .row_count_i     (row_count),
     .retarget_refused_i(retarget_refused),
+    .group_i         (1'b1),  // one axis: every write is the group's
+    .start_ok_i      (1'b1),
+    .start_able_o    (unused_regs_start_able),
     .busy_o,
     .irq_o
   );

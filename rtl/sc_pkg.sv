@@ -193,6 +193,11 @@ package sc_pkg;
   // the UART bridge's address byte is a word address so it reaches them all);
   // 0x000 .. 0x0FC hold the 2.x map unchanged, the rest is free.
   localparam int RegAddrW      = 10;      // byte address bits of the window
+  // sc_axi_multi_axis: window w answers at byte addresses w << RegAddrW. Window 0
+  // writes every axis in one bus write (reads answer axis 0's registers);
+  // window 1 + a is axis a alone. Windows above the axes answer DECERR.
+  localparam int RegWinW       = 3;       // window-number bits: the group window and MaxAxes axes
+  localparam int MultiRegAddrW = 13;      // RegAddrW + RegWinW: byte address bits of the multi-axis map
   // 0x0306 = 3.6: 1 KiB window, UART word address; switch inputs, guards,
   // probe, soft limits, index latch; ROW_PUSH.HOLD (velocity mode), ROW_PUSH.REPLACE,
   // ROW_COUNT and RETARGET_ROW (retarget)

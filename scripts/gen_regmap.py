@@ -428,6 +428,27 @@ def doc(params, words, enums=None):
             "BOUNDARY_POS follow the moves) and the last row of the stream STREAM_END. A stream "
             "that ends at rest without STREAM_END simply ends; a FIFO that runs dry while the axis "
             "moves stops it and sets ERR.UNDERRUN. A stop empties the FIFO.", "",
+            "## Multi-axis map", "",
+            f"`sc_axi_multi_axis` (1 to {p['MaxAxes']} coordinated axes, `sc_multi_axis_core`, closed-loop "
+            f"capable with Servo = 1) has one AXI4-Lite slave with {p['MultiRegAddrW']}-bit byte addresses: "
+            f"{1 << p['RegWinW']} windows of {1 << p['RegAddrW']} bytes, window w at byte address "
+            f"w * 0x{1 << p['RegAddrW']:X}. Window 1 + a is axis a's register file, the map above "
+            "(its own staging row, pulse timing, stop and guard limits, switches, soft limits, "
+            "closed-loop settings, status). Window 0 is the group window: a write there reaches every "
+            "axis's register file in the same clock and answers with the worst of their responses; a "
+            "read answers axis 0's register. Windows above the axes answer DECERR.", "",
+            "What belongs to all axes is written through the group window only: SEG_CLOCKS (every axis's "
+            "row lasts the same clocks), ROW_PUSH (appends one multi-axis row: every axis's staged row, "
+            "with the write's flags), RETARGET_ROW and CMD.START / CMD.FLUSH. In an axis's window they "
+            "answer SLVERR and set that axis's ERR.REJECT. A START is taken by every axis or by none: "
+            "refused (SLVERR, ERR.REJECT on every axis) unless every axis is enabled, idle and not "
+            "e-stopped. CMD.STOP or CMD.ESTOP in any window stops every axis (controlled, along the "
+            "path, or at once); the core is enabled while CTRL.ENABLE is set on every axis. STATUS.BUSY "
+            "rises on the same clock on every axis and falls on each when its last pulse has left. "
+            "The interrupt output is the OR of the axes'.", "",
+            "Loading a line: POS_FRAC0 per axis in its window; per row the staging registers "
+            "(SEG_PHASE, SEG_JERK, SEG_ACC0, SEG_VEL0) per axis, then SEG_CLOCKS and ROW_PUSH in the "
+            "group window (`scurve::encode_multi_row`); CMD = START in the group window.", "",
             "## UART bridge protocol", "",
             f"115200 baud 8N1 at 20 MHz ({p['UartClksPerBit']} clocks per bit), on the board's "
             "USB-UART. One request at a time; the board answers every complete frame.", "",

@@ -14,18 +14,21 @@
 #include <utility>
 #include <vector>
 
+#include "axi_multi_axis.h"
 #include "axi_regs.h"
 #include "lockstep.h"
 #include "pin_monitor.h"
 #include "plant.h"
 #include "reg_encode.h"
 #include "rtl_axi_axis.h"
+#include "rtl_axi_multi_axis.h"
 #include "uart_line.h"
 
 namespace sc {
 
 SignalValues render_signals(const AxiAxisOutputs& o);
 SignalValues render_signals(const AxiServoOutputs& o);
+SignalValues render_signals(const AxiMultiAxisOutputs& o);
 
 // AXI4-Lite master of the register-level benches: blocking transactions
 // on top of the bench's tick().
@@ -54,6 +57,7 @@ class AxiMaster {
   // The first lockstep mismatch or pin error fails the bench.
   void note(const LockstepLog& checker, const PinMonitor& pins);
   AxiIn in_;
+  uint32_t addr_mask_ = (1u << RegAddrW) - 1;  // the bus's address wires
   bool jitter_ = false;
   std::mt19937 rng_;
   std::string error_;
@@ -147,6 +151,37 @@ class AxiServoBench : public AxiLockstepBench<RtlAxiServo, AxiServo, AxiServoOut
  private:
   std::unique_ptr<Plant> plant_;
   bool inject_ = false;
+};
+
+// sc_axi_multi_axis (2 closed-loop capable axes, the multi-axis map):
+// Verilated RTL and AxiMultiAxis in lockstep every clock; one pin monitor
+// per axis (the pins against its step counter, PULSE_COUNT, with the pulse
+// timing its register file programs); every axis's BUSY rises on one clock.
+class AxiMultiBench : public AxiMaster {
+ public:
+  explicit AxiMultiBench(bool with_rtl = true, uint32_t seed = 1);
+  void reset();
+  void tick() override;
+  bool estop = false;
+  std::array<MultiAxisPins, MaxAxes>& pins_in() { return pins_in_; }
+  const AxiMultiAxisOutputs& out() const { return out_; }
+  const AxiMultiAxis& model() const { return model_; }
+  const PinMonitor& pins(size_t a) const { return monitors_.at(a); }
+  uint64_t clock() const { return clock_; }
+  uint64_t matched() const { return checker_.matched(); }
+
+ protected:
+  AxiOut axi_out() const override { return out_.axi; }
+
+ private:
+  std::unique_ptr<RtlAxiMultiAxis> rtl_;
+  AxiMultiAxis model_;
+  std::array<MultiAxisPins, MaxAxes> pins_in_{};
+  AxiMultiAxisOutputs out_;
+  uint64_t clock_ = 0;
+  Lockstep<AxiMultiAxisOutputs> checker_{&render_signals};
+  std::vector<PinMonitor> monitors_;
+  std::array<bool, MaxAxes> busy_{};  // STATUS.BUSY of the last clock
 };
 
 // Host end of the UART bridge on the Verilated board top: 8N1 at

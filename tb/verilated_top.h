@@ -12,6 +12,7 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 
 #include "coverage_sink.h"
 #include "fixed_point.h"
@@ -147,6 +148,34 @@ void put_bits(W& w, int lsb, int width, u128 v) {
     v >>= n;
     lsb += n;
     width -= n;
+  }
+}
+
+// `width` bits at bit `lsb` of a port: a scalar (CData .. QData) or a
+// Verilated wide port (32-bit words).
+template <class P>
+u128 get_field(const P& p, int lsb, int width) {
+  if constexpr (std::is_integral_v<P>) {
+    return mask_bits(u128(uint64_t(p)) >> lsb, width);
+  } else {
+    u128 v = 0;
+    for (int i = 0; i < width;) {
+      const int bit = lsb + i, off = bit % 32;
+      const int n = std::min(width - i, 32 - off);
+      v |= u128((uint64_t(p[bit / 32]) >> off) & ((uint64_t(1) << n) - 1)) << i;
+      i += n;
+    }
+    return v;
+  }
+}
+
+template <class P>
+void set_field(P& p, int lsb, int width, u128 v) {
+  if constexpr (std::is_integral_v<P>) {
+    const uint64_t m = (width >= 64 ? ~uint64_t(0) : ((uint64_t(1) << width) - 1)) << lsb;
+    p = P((uint64_t(p) & ~m) | ((uint64_t(mask_bits(v, width)) << lsb) & m));
+  } else {
+    put_bits(p, lsb, width, v);
   }
 }
 

@@ -31,6 +31,7 @@ set rtl_files {
   sc_servo_axis.sv
   sc_switch_filter.sv
   sc_axi_regs.sv
+  sc_cl_stat_pack.sv
   sc_axi_servo.sv
   sc_uart_bridge.sv
   sc_uart_tx.sv

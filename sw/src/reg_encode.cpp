@@ -74,6 +74,25 @@ std::vector<RegWrite> encode_row(const Segment& s, RowFlags flags) {
   };
 }
 
+uint32_t multi_axis_addr(std::optional<size_t> axis, uint32_t reg) {
+  const uint32_t window = axis ? uint32_t(*axis) + 1 : 0;
+  return (window << RegAddrW) | (reg & ((uint32_t(1) << RegAddrW) - 1));
+}
+
+std::vector<RegWrite> encode_multi_row(const std::vector<Segment>& axis_rows, RowFlags flags) {
+  std::vector<RegWrite> out;
+  for (size_t a = 0; a < axis_rows.size(); ++a) {
+    for (const RegWrite& w : encode_row(axis_rows[a], flags)) {
+      if (w.addr == uint32_t(RegSegClocks) || w.addr == uint32_t(RegRowPush)) continue;
+      out.push_back({multi_axis_addr(a, w.addr), w.data});
+    }
+  }
+  const uint32_t clocks = axis_rows.empty() ? 0 : axis_rows[0].clocks;
+  out.push_back({multi_axis_addr(std::nullopt, uint32_t(RegSegClocks)), clocks});
+  out.push_back({multi_axis_addr(std::nullopt, uint32_t(RegRowPush)), flags.word()});
+  return out;
+}
+
 StopLimitCodesResult stop_limit_codes(double stop_jerk, double stop_acc, Clock clock) {
   auto check = [](const char* name, double v, LimitRange r) -> std::optional<Error> {
     if (std::isfinite(v) && v >= r.lo && v <= r.hi) return std::nullopt;

@@ -53,6 +53,14 @@ std::vector<RowFlags> move_row_flags(const std::vector<Segment>& rows, bool stre
 std::vector<RowFlags> velocity_row_flags(const VelocityPlan& plan);
 // One row's staging writes and its ROW_PUSH.
 std::vector<RegWrite> encode_row(const Segment& s, RowFlags flags = {});
+// The multi-axis map (sc_axi_multi_axis): the byte address of register
+// `reg` (a one-axis map address) in axis `axis`'s window, or in the group
+// window (whose writes reach every axis) when `axis` is empty.
+uint32_t multi_axis_addr(std::optional<size_t> axis, uint32_t reg);
+// One multi-axis row: each axis's staging (SEG_PHASE, SEG_JERK, SEG_ACC0,
+// SEG_VEL0) in its own window, then the shared SEG_CLOCKS (axis 0's row's:
+// every axis's row lasts the same clocks) and ROW_PUSH in the group window.
+std::vector<RegWrite> encode_multi_row(const std::vector<Segment>& axis_rows, RowFlags flags = {});
 // Retarget: RETARGET_ROW = `row`, then the rows, the first one with
 // ROW_PUSH.REPLACE (it becomes row number `row`; the queued rows from there
 // on are dropped), the rest appended behind it. The executor refuses the

@@ -1,0 +1,73 @@
+#include "rtl_axi_multi_axis.h"
+
+#include "Vsc_axi_multi_axis2.h"
+#include "verilated_top.h"
+
+namespace sc {
+
+RtlAxiMultiAxis::RtlAxiMultiAxis()
+    : top_(std::make_unique<VerilatedTop<Vsc_axi_multi_axis2>>("sc_axi_multi_axis")) {}
+
+RtlAxiMultiAxis::~RtlAxiMultiAxis() = default;
+
+void RtlAxiMultiAxis::reset(int cycles) { top_->reset(cycles); }
+
+void RtlAxiMultiAxis::step(const AxiIn& in, bool estop, const std::array<MultiAxisPins, MaxAxes>& pins) {
+  Vsc_axi_multi_axis2& m = top_->top();
+  m.s_axi_awaddr_i = in.awaddr & ((1u << MultiRegAddrW) - 1);
+  m.s_axi_awvalid_i = in.awvalid;
+  m.s_axi_wdata_i = in.wdata;
+  m.s_axi_wstrb_i = in.wstrb & 0xf;
+  m.s_axi_wvalid_i = in.wvalid;
+  m.s_axi_bready_i = in.bready;
+  m.s_axi_araddr_i = in.araddr & ((1u << MultiRegAddrW) - 1);
+  m.s_axi_arvalid_i = in.arvalid;
+  m.s_axi_rready_i = in.rready;
+  m.estop_i = estop;
+  uint32_t a_bits = 0, b_bits = 0, z_bits = 0, sw = 0;
+  for (size_t a = 0; a < kAxes; ++a) {
+    a_bits |= uint32_t(pins[a].enc_a) << a;
+    b_bits |= uint32_t(pins[a].enc_b) << a;
+    z_bits |= uint32_t(pins[a].enc_z) << a;
+    sw |= uint32_t(pins[a].sw & ((1u << SwW) - 1)) << (a * SwW);
+  }
+  m.enc_a_i = a_bits;
+  m.enc_b_i = b_bits;
+  m.enc_z_i = z_bits;
+  m.sw_i = sw;
+  top_->tick();
+}
+
+AxiMultiAxisOutputs RtlAxiMultiAxis::outputs() const {
+  const Vsc_axi_multi_axis2& m = top_->top();
+  AxiMultiAxisOutputs o;
+  o.axes = kAxes;
+  o.axi.awready = m.s_axi_awready_o;
+  o.axi.wready = m.s_axi_wready_o;
+  o.axi.bvalid = m.s_axi_bvalid_o;
+  o.axi.bresp = m.s_axi_bresp_o;
+  o.axi.arready = m.s_axi_arready_o;
+  o.axi.rvalid = m.s_axi_rvalid_o;
+  o.axi.rdata = m.s_axi_rdata_o;
+  o.axi.rresp = m.s_axi_rresp_o;
+  for (size_t a = 0; a < kAxes; ++a) {
+    AxiMultiAxisOutputs::Axis& x = o.axis[a];
+    const int i = int(a);
+    x.step = get_field(m.step_o, i, 1) != 0;
+    x.dir = get_field(m.dir_o, i, 1) != 0;
+    x.en = get_field(m.en_o, i, 1) != 0;
+    x.busy = get_field(m.busy_o, i, 1) != 0;
+    x.done = get_field(m.done_o, i, 1) != 0;
+    x.fault = get_field(m.fault_o, i, 1) != 0;
+    x.phase = uint8_t(get_field(m.phase_o, i * PhaseW, PhaseW));
+    x.pulse_count = int32_t(uint32_t(get_field(m.pulse_count_o, i * PosIntW, PosIntW)));
+    x.ref_pos = int32_t(uint32_t(get_field(m.ref_pos_o, i * PosIntW, PosIntW)));
+    x.enc_pos = int32_t(uint32_t(get_field(m.enc_pos_o, i * EncCntW, EncCntW)));
+    x.in_pos = get_field(m.in_pos_o, i, 1) != 0;
+    x.fault_ferr = get_field(m.fault_ferr_o, i, 1) != 0;
+  }
+  o.irq = m.irq_o;
+  return o;
+}
+
+}  // namespace sc
