@@ -4,7 +4,10 @@
 //   host -> board  write: A5 01 addr d0 d1 d2 d3 crc     (data little-endian)
 //                  read : A5 02 addr crc
 //   addr: WORD address (bus byte address = addr * 4), so the one byte
-//   reaches all 256 words of the 1 KiB window (register map 3.0 on).
+//   reaches all 256 words of the 1 KiB window (register map 3.0 on). With
+//   AddrW wider than 10 (the multi-axis map) it is AddrBytes bytes, low
+//   byte first; a word address beyond the AddrW-bit map answers DECERR
+//   without a bus access.
 //   board -> host  write: 5A status crc
 //                  read : 5A status d0 d1 d2 d3 crc
 //                  error: 5A 80 crc (CRC wrong) | 5A 81 crc (unknown command)
@@ -16,7 +19,8 @@
 // request is executed or answered are ignored; bytes other than A5 between
 // frames are skipped, so the host can always resynchronise.
 module sc_uart_bridge #(
-  parameter int TimeoutClks = 6960
+  parameter int TimeoutClks = 6960,
+  parameter int AddrW       = sc_pkg::RegAddrW  // bus byte address bits
 ) (
   input  logic                         clk_i,
   input  logic                         rst_ni,
@@ -30,7 +34,7 @@ module sc_uart_bridge #(
   input  logic                         tx_ready_i,
 
   // AXI4-Lite master
-  output logic [sc_pkg::RegAddrW-1:0]  m_axi_awaddr_o,
+  output logic [AddrW-1:0]             m_axi_awaddr_o,
   output logic                         m_axi_awvalid_o,
   input  logic                         m_axi_awready_i,
   output logic [31:0]                  m_axi_wdata_o,
@@ -40,7 +44,7 @@ module sc_uart_bridge #(
   input  logic [1:0]                   m_axi_bresp_i,
   input  logic                         m_axi_bvalid_i,
   output logic                         m_axi_bready_o,
-  output logic [sc_pkg::RegAddrW-1:0]  m_axi_araddr_o,
+  output logic [AddrW-1:0]             m_axi_araddr_o,
   output logic                         m_axi_arvalid_o,
   input  logic                         m_axi_arready_i,
   input  logic [31:0]                  m_axi_rdata_i,
@@ -51,13 +55,17 @@ module sc_uart_bridge #(
   output logic                         crc_err_o     // one clock per rejected frame
 );
 
-  localparam int AW = sc_pkg::RegAddrW;
+  localparam int AW = AddrW;
+  // word-address bytes of a frame, and their bits
+  localparam int AddrBytes = (AW - 2 + 7) / 8;
+  localparam int WordW     = 8 * AddrBytes;
   localparam logic [7:0] ReqSync  = 8'(sc_pkg::UartReqSync);
   localparam logic [7:0] RspSync  = 8'(sc_pkg::UartRspSync);
   localparam logic [7:0] CmdWrite = 8'(sc_pkg::UartCmdWrite);
   localparam logic [7:0] CmdRead  = 8'(sc_pkg::UartCmdRead);
   localparam logic [7:0] StCrcErr = 8'(sc_pkg::UartStCrcErr);
   localparam logic [7:0] StBadCmd = 8'(sc_pkg::UartStBadCmd);
+  localparam logic [1:0] RespDecErr = 2'b11;
   localparam int ToW = $clog2(TimeoutClks + 1);
 
   typedef enum logic [3:0] {
@@ -83,7 +91,8 @@ module sc_uart_bridge #(
 
   state_e          state_q, state_d;
   logic            is_write_q, is_write_d;
-  logic [7:0]      addr_q, addr_d;        // word address as received
+  logic [WordW-1:0] addr_q, addr_d;       // word address as received
+  logic            addr_ok;               // inside the AW-bit map
   logic [31:0]     data_q, data_d;
   logic [1:0]      dcnt_q, dcnt_d;
   logic [7:0]      crc_q, crc_d;
@@ -153,6 +162,7 @@ module sc_uart_bridge #(
           crc_d = crc8(crc_q, rx_data_i);
           if (rx_data_i == CmdWrite || rx_data_i == CmdRead) begin
             is_write_d = rx_data_i == CmdWrite;
+            dcnt_d     = 2'd0;
             state_d    = SAddr;
           end else begin
             // unknown command: answer, then hunt for the next sync
@@ -167,11 +177,15 @@ module sc_uart_bridge #(
       SAddr: begin
         if (rx_valid_i) begin
           crc_d   = crc8(crc_q, rx_data_i);
-          addr_d  = rx_data_i;
-          dcnt_d  = 2'd0;
+          // low byte first: each byte enters at the top
+          addr_d  = WordW'({rx_data_i, addr_q} >> 8);
+          dcnt_d  = dcnt_q + 2'd1;
           data_d  = '0;
-          if (is_write_q) state_d = SData;
-          else            state_d = SCrc;
+          if (dcnt_q == 2'(AddrBytes - 1)) begin
+            dcnt_d = 2'd0;
+            if (is_write_q) state_d = SData;
+            else            state_d = SCrc;
+          end
         end
       end
       SData: begin
@@ -189,6 +203,11 @@ module sc_uart_bridge #(
             status_d   = StCrcErr;
             has_data_d = 1'b0;
             crc_err_d  = 1'b1;
+            state_d    = STx;
+          end else if (!addr_ok) begin
+            status_d   = 8'(RespDecErr);  // no such word: nothing reaches the bus
+            data_d     = '0;
+            has_data_d = !is_write_q;
             state_d    = STx;
           end else begin
             aw_done_d = 1'b0;
@@ -265,6 +284,7 @@ module sc_uart_bridge #(
   end
 
   // word address -> byte address: always aligned, no alias inside the window
+  assign addr_ok        = (WordW'(addr_q) >> (AW - 2)) == '0;
   assign m_axi_awaddr_o  = AW'({addr_q, 2'b00});
   assign m_axi_awvalid_o = state_q == SWrite && !aw_done_q;
   assign m_axi_wdata_o   = data_q;
@@ -422,6 +442,8 @@ module sc_uart_bridge #(
       inv_state: assert (state_q <= STx && (state_q != SWrite || is_write_q) &&
                          (state_q != SRead || !is_write_q));
       inv_cmd: assert (state_q != SCmd || (f_run_q >= 4'd1 && f_b[0] == ReqSync));
+      // (the properties describe the one-byte word address of the 1 KiB map)
+      inv_addr_cnt: assert (state_q != SAddr || dcnt_q == 2'd0);
       inv_addr: assert (state_q != SAddr ||
                         (f_run_q >= 4'd2 && f_b[1] == ReqSync && is_write_q == (f_b[0] == CmdWrite) &&
                          (f_b[0] == CmdWrite || f_b[0] == CmdRead)));

@@ -64,7 +64,7 @@ GROUP_ONLY_ASSUMES = ["a_rate_gap", "a_abort_no_start"]
 STEP_INV = ["inv_high", "inv_low", "inv_prev", "inv_dir_age", "inv_rise_age"]
 
 # sc_uart_bridge: the parser state against the shadow bytes
-UART_INV = ["inv_run", "inv_frame_clean", "inv_state", "inv_cmd", "inv_addr", "inv_data", "inv_at_crc"]
+UART_INV = ["inv_run", "inv_frame_clean", "inv_state", "inv_cmd", "inv_addr_cnt", "inv_addr", "inv_data", "inv_at_crc"]
 
 GROUPS = [
     Group(

@@ -464,6 +464,9 @@ def doc(params, words, enums=None):
             "is addr 0xFF) and an unaligned access cannot be sent. Register map 2.x (8-bit window) "
             "sent the byte address here: a 2.x host talking to a 3.0 board reaches the wrong "
             "registers, so check ID.VERSION first (it is at 0 in both);",
+            f"- the multi-axis map (`sc_board_xy_top`, {p['MultiRegAddrW']}-bit byte addresses) sends the "
+            "word address in 2 bytes, low byte first (a write request is 9 bytes, a read request 5); "
+            "a word address past the map is answered DECERR by the bridge, nothing reaches the bus;",
             "- data little-endian (d0 = bits 7:0);",
             "- crc: CRC-8, polynomial 0x07, initial value 0x00, no reflection, no final XOR, over "
             "every byte after the sync byte;",

@@ -77,6 +77,8 @@ case "$top" in
       *" Servo=1 "*) lut_budget=${lut_budget:-17500}; dsp_budget=${dsp_budget:-16} ;;
       *) lut_budget=${lut_budget:-14000}; dsp_budget=${dsp_budget:-0} ;;
     esac ;;
+  # the two-axis board top: it must fit the xc7a35t (20800 LUT, 90 DSP48E1)
+  sc_board_xy_top) lut_budget=${lut_budget:-20800}; dsp_budget=${dsp_budget:-90} ;;
 esac
 # the budget counts every LUT: logic and LUTs used as memory
 if [ -n "$lut_budget" ] && [ "$((luts + lut_mem))" -gt "$lut_budget" ]; then

@@ -207,15 +207,21 @@ std::pair<uint32_t, uint8_t> AxiMaster::read(uint32_t addr) {
 
 // ---- UART host ------------------------------------------------------------------
 
-UartHost::UartHost(RtlBoard& board, int clks_per_bit)
-    : b_(board), bit100_(5 * clks_per_bit), line_(bit100_) {
+namespace {
+
+// A pulse timing in pin clocks (5 per system clock).
+PulseTiming pin_timing(const PulseTiming& t) {
+  auto pin_clocks = [](uint16_t v) { return uint16_t(std::min(5 * uint32_t(v), uint32_t(UINT16_MAX))); };
+  return PulseTiming{pin_clocks(t.high), pin_clocks(t.low), pin_clocks(t.setup), pin_clocks(t.hold)};
+}
+
+}  // namespace
+
+UartHost::UartHost(RtlBoard& board, int clks_per_bit) : UartLink(clks_per_bit, RegAddrW), b_(board) {
   set_timing(PulseTiming{});
 }
 
-void UartHost::set_timing(const PulseTiming& t) {
-  auto pin_clocks = [](uint16_t v) { return uint16_t(std::min(5 * uint32_t(v), uint32_t(UINT16_MAX))); };
-  pins_.set_timing(PulseTiming{pin_clocks(t.high), pin_clocks(t.low), pin_clocks(t.setup), pin_clocks(t.hold)});
-}
+void UartHost::set_timing(const PulseTiming& t) { pins_.set_timing(pin_timing(t)); }
 
 void UartHost::tick() {
   b_.tick100(line_.tx_level(), true, estop, enc_ab & 1, (enc_ab >> 1) & 1, 0, enc_z);
@@ -224,11 +230,25 @@ void UartHost::tick() {
   line_.clock(p.uart_tx);
 }
 
-void UartHost::idle(uint64_t clocks100) {
+UartHostXY::UartHostXY(RtlBoardXY& board, int clks_per_bit)
+    : UartLink(clks_per_bit, MultiRegAddrW), b_(board) {
+  for (size_t a = 0; a < RtlBoardXY::kAxes; ++a) {
+    pins_.emplace_back(PinRules{pin_timing(PulseTiming{}), false, StepAccounting::None});
+  }
+}
+
+void UartHostXY::tick() {
+  b_.tick100(line_.tx_level());
+  const RtlBoardXY::Pins p = b_.pins();
+  for (size_t a = 0; a < RtlBoardXY::kAxes; ++a) pins_[a].on_clock(b_.clocks100(), p.step[a], p.dir[a], false, 0);
+  line_.clock(p.uart_tx);
+}
+
+void UartLink::idle(uint64_t clocks100) {
   for (uint64_t i = 0; i < clocks100; ++i) tick();
 }
 
-std::vector<uint8_t> UartHost::transact(const std::vector<uint8_t>& frame, size_t expect, int timeout_bits) {
+std::vector<uint8_t> UartLink::transact(const std::vector<uint8_t>& frame, size_t expect, int timeout_bits) {
   (void)line_.take_received();
   for (uint8_t byte : frame) line_.send(byte);
   while (line_.sending()) tick();
@@ -258,14 +278,14 @@ UartResponse refused(const scurve::Error& e) {
 
 }  // namespace
 
-UartResponse UartHost::write(uint32_t addr, uint32_t data) {
-  const scurve::FrameResult f = uart_write_frame(addr, data);
+UartResponse UartLink::write(uint32_t addr, uint32_t data) {
+  const scurve::FrameResult f = uart_write_frame(addr, data, addr_bits_);
   if (const auto* e = std::get_if<scurve::Error>(&f)) return refused(*e);
   return parse_uart_response(transact(std::get<std::vector<uint8_t>>(f), 3), false);
 }
 
-UartResponse UartHost::read(uint32_t addr) {
-  const scurve::FrameResult f = uart_read_frame(addr);
+UartResponse UartLink::read(uint32_t addr) {
+  const scurve::FrameResult f = uart_read_frame(addr, addr_bits_);
   if (const auto* e = std::get_if<scurve::Error>(&f)) return refused(*e);
   return parse_uart_response(transact(std::get<std::vector<uint8_t>>(f), 7), true);
 }

@@ -184,11 +184,14 @@ class AxiMultiBench : public AxiMaster {
   std::array<bool, MaxAxes> busy_{};  // STATUS.BUSY of the last clock
 };
 
-// Host end of the UART bridge on the Verilated board top: 8N1 at
-// clks_per_bit system clocks (x5 pin clocks through the clock stand-in).
-class UartHost {
+// Host end of the UART bridge of a Verilated board top: 8N1 at
+// clks_per_bit system clocks (x5 pin clocks through the clock stand-in),
+// frames for a register map of addr_bits byte address bits. The board's
+// pins are the subclass's (tick()).
+class UartLink {
  public:
-  explicit UartHost(RtlBoard& board, int clks_per_bit);
+  UartLink(int clks_per_bit, int addr_bits) : bit100_(5 * clks_per_bit), addr_bits_(addr_bits), line_(bit100_) {}
+  virtual ~UartLink() = default;
   // Send raw bytes, then collect response bytes until `expect` arrived or
   // `timeout_bits` bit times passed with no byte.
   std::vector<uint8_t> transact(const std::vector<uint8_t>& frame, size_t expect, int timeout_bits = 60);
@@ -201,6 +204,19 @@ class UartHost {
   // The PC's line, to queue line faults before a transact() (pin clocks).
   UartLine& line() { return line_; }
   int pin_clocks_per_bit() const { return bit100_; }
+
+ protected:
+  // One 100 MHz pin clock of the board with the line's level.
+  virtual void tick() = 0;
+  int bit100_;  // pin clocks per bit
+  int addr_bits_;
+  UartLine line_;
+};
+
+// The one-axis board top (sc_board_top).
+class UartHost : public UartLink {
+ public:
+  explicit UartHost(RtlBoard& board, int clks_per_bit);
   bool estop = false;
   uint8_t enc_ab = 0;  // encoder pins: bit 0 = A, bit 1 = B
   bool enc_z = false;  // encoder index pin
@@ -212,11 +228,23 @@ class UartHost {
   const PinMonitor& pins() const { return pins_; }
 
  private:
-  void tick();
+  void tick() override;
   RtlBoard& b_;
-  int bit100_;  // pin clocks per bit
-  UartLine line_;
   PinMonitor pins_{PinRules{PulseTiming{}, false, StepAccounting::None}};
+};
+
+// The two-axis board top (sc_board_xy_top, the multi-axis map): both
+// axes' STEP/DIR pins on a pin monitor each (pulse timing at its reset
+// value, in pin clocks).
+class UartHostXY : public UartLink {
+ public:
+  explicit UartHostXY(RtlBoardXY& board, int clks_per_bit);
+  const PinMonitor& pins(size_t axis) const { return pins_.at(axis); }
+
+ private:
+  void tick() override;
+  RtlBoardXY& b_;
+  std::vector<PinMonitor> pins_;
 };
 
 }  // namespace sc

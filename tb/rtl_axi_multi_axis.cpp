@@ -1,6 +1,7 @@
 #include "rtl_axi_multi_axis.h"
 
 #include "Vsc_axi_multi_axis2.h"
+#include "Vsc_board_xy_top.h"
 #include "verilated_top.h"
 
 namespace sc {
@@ -68,6 +69,47 @@ AxiMultiAxisOutputs RtlAxiMultiAxis::outputs() const {
   }
   o.irq = m.irq_o;
   return o;
+}
+
+RtlBoardXY::RtlBoardXY() : ctx_(std::make_unique<VerilatedContext>()) {
+  m_ = std::make_unique<Vsc_board_xy_top>(ctx_.get(), "sc_board_xy_top");
+  m_->clk100_i = 0;
+  m_->ck_rst_ni = 1;
+  m_->uart_rx_i = 1;
+  m_->eval();
+}
+
+RtlBoardXY::~RtlBoardXY() {
+  m_->final();
+  coverage_collect(*ctx_);
+}
+
+void RtlBoardXY::tick100(bool uart_rx, bool estop, uint8_t sw, bool probe) {
+  m_->uart_rx_i = uart_rx;
+  m_->estop_i = estop;
+  m_->sw_i = sw & 0x3f;
+  m_->probe_i = probe;
+  m_->enc_a_i = 0;
+  m_->enc_b_i = 0;
+  m_->enc_z_i = 0;
+  m_->clk100_i = 1;
+  m_->eval();
+  m_->clk100_i = 0;
+  m_->eval();
+  ++clk100_;
+}
+
+RtlBoardXY::Pins RtlBoardXY::pins() const {
+  Pins p;
+  p.uart_tx = m_->uart_tx_o;
+  for (size_t a = 0; a < kAxes; ++a) {
+    p.step[a] = (m_->step_o >> a) & 1;
+    p.dir[a] = (m_->dir_o >> a) & 1;
+    p.en[a] = (m_->en_o >> a) & 1;
+  }
+  p.irq = m_->irq_o;
+  p.led = m_->led_o;
+  return p;
 }
 
 }  // namespace sc

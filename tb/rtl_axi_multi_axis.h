@@ -8,6 +8,8 @@
 #include "axi_multi_axis.h"
 
 class Vsc_axi_multi_axis2;
+class Vsc_board_xy_top;
+class VerilatedContext;
 
 namespace sc {
 
@@ -28,6 +30,35 @@ class RtlAxiMultiAxis {
 
  private:
   std::unique_ptr<VerilatedTop<Vsc_axi_multi_axis2>> top_;
+};
+
+// The two-axis board top (sc_board_xy_top), Verilated with a fast UART
+// (kClksPerBit system clocks per bit): 100 MHz pin clock (the clock
+// stand-in divides it by 5), UART pins, both axes' Pmod pins, LEDs.
+class RtlBoardXY {
+ public:
+  static constexpr size_t kAxes = 2;
+  static constexpr int kClksPerBit = 16;
+  struct Pins {
+    bool uart_tx = true;
+    std::array<bool, kAxes> step{}, dir{}, en{};
+    bool irq = false;
+    uint8_t led = 0;
+  };
+  RtlBoardXY();
+  ~RtlBoardXY();
+  RtlBoardXY(const RtlBoardXY&) = delete;
+  RtlBoardXY& operator=(const RtlBoardXY&) = delete;
+  // One 100 MHz period with these input levels; sw: X limit -, +, home in
+  // bits 0-2, Y's in bits 3-5.
+  void tick100(bool uart_rx, bool estop = false, uint8_t sw = 0, bool probe = false);
+  Pins pins() const;
+  uint64_t clocks100() const { return clk100_; }
+
+ private:
+  std::unique_ptr<VerilatedContext> ctx_;
+  std::unique_ptr<Vsc_board_xy_top> m_;
+  uint64_t clk100_ = 0;
 };
 
 }  // namespace sc

@@ -4,8 +4,9 @@
 // (the group window reaches every axis, an axis's window only it, the
 // shared row fields and START only through the group); coordinated lines
 // loaded through the registers end every axis on its exact target, the
-// pins counted by a monitor per axis; and random transactions over every
-// window keep the pins, the bus and the stop.
+// pins counted by a monitor per axis; random transactions over every
+// window keep the pins, the bus and the stop; and the two-axis board top
+// does the same over its UART.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -253,6 +254,82 @@ TEST(MultiAxisRegs, RandomTransactionsOverEveryWindowMatchAndStayStoppable) {
   EXPECT_GT(slverr, 10u);
   EXPECT_GT(decerr, 10u);
   EXPECT_GT(lines, 10u);
+}
+
+// The two-axis board top over its UART (two-byte word addresses): the
+// windows answer as on the bus, a line loaded through the group and axis
+// windows runs both axes to their targets, counted on the board's pins; a
+// word beyond the map answers DECERR from the bridge itself.
+TEST(BoardXY, LineOverTheUartRunsBothAxesToTheirTargets) {
+  RtlBoardXY board;
+  UartHostXY host(board, RtlBoardXY::kClksPerBit);
+  host.idle(2000);
+  const uint32_t id = (uint32_t(RegIdMagic) << 16) | uint32_t(RegMapVersion);
+  for (const uint32_t addr : {group("ID"), axis_reg(0, "ID"), axis_reg(1, "ID")}) {
+    const UartResponse r = host.read(addr);
+    ASSERT_TRUE(r.ok) << r.error;
+    EXPECT_EQ(r.status, kOkay);
+    EXPECT_EQ(r.data, id);
+  }
+  EXPECT_EQ(host.read((3u << RegAddrW) | reg_addr("ID")).status, kDecErr) << "no axis 2 on this board";
+  // a word address past the 13-bit map: the bridge answers, no bus access
+  const std::vector<uint8_t> far = {uint8_t(UartReqSync), uint8_t(UartCmdRead), 0x00, 0x08};
+  std::vector<uint8_t> frame = far;
+  frame.push_back(scurve::crc8(frame.data() + 1, frame.size() - 1));
+  const UartResponse beyond = scurve::parse_uart_response(host.transact(frame, 7), true);
+  ASSERT_TRUE(beyond.ok) << beyond.error;
+  EXPECT_EQ(beyond.status, kDecErr);
+
+  scurve::LineRequest req;
+  req.distances = {300, -170};
+  req.v_path = 10000;
+  req.a_path = 2e6;
+  req.j_path = 4e8;
+  auto p = scurve::plan_line(scurve::Planner{model_clock()}, req, to_host(PulseTiming{}));
+  ASSERT_TRUE(std::holds_alternative<scurve::LinePlan>(p));
+  const MultiRows rows = line_rows(std::get<scurve::LinePlan>(p));
+  auto write = [&](uint32_t addr, uint32_t data) {
+    const UartResponse r = host.write(addr, data);
+    EXPECT_TRUE(r.ok) << r.error;
+    EXPECT_EQ(r.status, kOkay) << scurve::reg_name(addr & ((1u << RegAddrW) - 1)) << " window "
+                               << (addr >> RegAddrW);
+  };
+  write(group("CTRL"), field_mask("CTRL", "ENABLE"));
+  for (size_t a = 0; a < kAxes; ++a) {
+    const u128 f = rows.pos_frac0[a];
+    write(axis_reg(a, "POS_FRAC0_0"), uint32_t(f));
+    write(axis_reg(a, "POS_FRAC0_1"), uint32_t(f >> 32));
+    write(axis_reg(a, "POS_FRAC0_2"), uint32_t(f >> 64));
+  }
+  // the first FIFO-full of rows, START, then the rest as the FIFO drains
+  for (size_t k = 0; k < rows.rows[0].size(); ++k) {
+    if (k == size_t(RowFifoDepth)) write(group("CMD"), 1u << CmdStartBit);
+    if (k >= size_t(RowFifoDepth)) {
+      for (int i = 0; i < 1000; ++i) {
+        const UartResponse lv = host.read(group("FIFO_STATUS"));
+        if (lv.ok && (lv.data & field_mask("FIFO_STATUS", "LEVEL")) < uint32_t(RowFifoDepth)) break;
+      }
+    }
+    std::vector<scurve::Segment> segs;
+    for (size_t a = 0; a < kAxes; ++a) segs.push_back(to_host(rows.rows[a][k].seg));
+    scurve::RowFlags f;
+    f.move_end = rows.rows[0][k].flags & (1u << RowFlagMoveEnd);
+    f.stream_end = rows.rows[0][k].flags & (1u << RowFlagStreamEnd);
+    f.acc_step = rows.rows[0][k].flags & (1u << RowFlagAccStep);
+    for (const scurve::RegWrite& w : scurve::encode_multi_row(segs, f)) write(w.addr, w.data);
+  }
+  if (rows.rows[0].size() <= size_t(RowFifoDepth)) write(group("CMD"), 1u << CmdStartBit);
+  for (int i = 0; i < 400; ++i) {
+    host.idle(20'000);
+    const UartResponse st = host.read(group("STATUS"));
+    if (st.ok && !(st.data & field_mask("STATUS", "BUSY"))) break;
+  }
+  for (size_t a = 0; a < kAxes; ++a) {
+    EXPECT_EQ(host.pins(a).net_steps(), req.distances[a]) << "axis " << a;
+    for (const std::string& e : host.pins(a).errors()) ADD_FAILURE() << "axis " << a << ": " << e;
+    const UartResponse ref = host.read(axis_reg(a, "REF_POS"));
+    EXPECT_EQ(int32_t(ref.data), req.distances[a]) << "axis " << a;
+  }
 }
 
 }  // namespace

@@ -2,7 +2,7 @@
 # commands stubbed (ctest vivado_flow_dry_run): catches Tcl errors and
 # prints the RTL files the flow reads, which the test compares with
 # scripts/rtl_deps.py so the Vivado file list cannot drift from the RTL.
-#   tclsh scripts/vivado/stub_check.tcl <outdir>
+#   tclsh scripts/vivado/stub_check.tcl <outdir> <top>
 foreach cmd {set_part read_xdc synth_design write_checkpoint report_utilization
              report_timing_summary opt_design place_design phys_opt_design route_design
              report_clock_utilization report_drc report_methodology write_bitstream
@@ -18,6 +18,6 @@ proc get_cells {args} { return $args }
 proc get_timing_paths {args} { return path }
 proc get_property {p o} { return 0.0 }
 set here [file dirname [file normalize [info script]]]
-set argv [list [lindex $argv 0]]
+set argv [list [lindex $argv 0] [lindex $argv 1]]
 source [file join $here build.tcl]
-source [file join $here .. .. constraints arty_a7_35t.xdc]
+source [file join $here .. .. constraints $xdc_of($top)]

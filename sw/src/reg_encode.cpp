@@ -226,21 +226,28 @@ uint8_t crc8(const uint8_t* data, size_t n, uint8_t crc) {
 
 namespace {
 
-// The frame's address byte (the word address), or why `addr` has none.
-std::variant<uint8_t, Error> frame_addr(uint32_t addr) {
-  constexpr uint32_t kWindow = uint32_t(1) << RegAddrW;  // bytes
-  static_assert(kWindow / 4 <= 256, "a word address must fit the frame's address byte");
+// The frame's address bytes (the word address, low byte first), or why
+// `addr` has none in a map of `addr_bits` byte address bits.
+std::variant<std::vector<uint8_t>, Error> frame_addr(uint32_t addr, int addr_bits) {
+  if (addr_bits != RegAddrW && addr_bits != MultiRegAddrW) {
+    return Error{"addr_bits", fmt::format("addr_bits={}: the register maps have {} (one axis) or {} (multi-axis) "
+                                          "address bits", addr_bits, RegAddrW, MultiRegAddrW)};
+  }
+  const uint32_t map = uint32_t(1) << addr_bits;  // bytes
   if (addr % 4 != 0)
     return Error{"addr", fmt::format("addr=0x{:X}: not word-aligned (must be a multiple of 4)", addr)};
-  if (addr >= kWindow)
-    return Error{"addr", fmt::format("addr=0x{:X}: outside the register window 0x000..0x{:03X}", addr, kWindow - 4)};
-  return uint8_t(addr / 4);
+  if (addr >= map)
+    return Error{"addr", fmt::format("addr=0x{:X}: outside the register map 0x000..0x{:03X}", addr, map - 4)};
+  std::vector<uint8_t> bytes;
+  for (int i = 0; i < uart_addr_bytes(addr_bits); ++i) bytes.push_back(uint8_t((addr / 4) >> (8 * i)));
+  return bytes;
 }
 
-FrameResult request_frame(uint8_t cmd, uint32_t addr, const uint32_t* data) {
-  const std::variant<uint8_t, Error> a = frame_addr(addr);
+FrameResult request_frame(uint8_t cmd, uint32_t addr, const uint32_t* data, int addr_bits) {
+  const auto a = frame_addr(addr, addr_bits);
   if (const Error* e = std::get_if<Error>(&a)) return *e;
-  std::vector<uint8_t> f = {uint8_t(UartReqSync), cmd, std::get<uint8_t>(a)};
+  std::vector<uint8_t> f = {uint8_t(UartReqSync), cmd};
+  for (uint8_t byte : std::get<std::vector<uint8_t>>(a)) f.push_back(byte);
   if (data) {
     for (int i = 0; i < 4; ++i) f.push_back(uint8_t(*data >> (8 * i)));
   }
@@ -250,9 +257,15 @@ FrameResult request_frame(uint8_t cmd, uint32_t addr, const uint32_t* data) {
 
 }  // namespace
 
-FrameResult uart_write_frame(uint32_t addr, uint32_t data) { return request_frame(uint8_t(UartCmdWrite), addr, &data); }
+int uart_addr_bytes(int addr_bits) { return (addr_bits - 2 + 7) / 8; }
 
-FrameResult uart_read_frame(uint32_t addr) { return request_frame(uint8_t(UartCmdRead), addr, nullptr); }
+FrameResult uart_write_frame(uint32_t addr, uint32_t data, int addr_bits) {
+  return request_frame(uint8_t(UartCmdWrite), addr, &data, addr_bits);
+}
+
+FrameResult uart_read_frame(uint32_t addr, int addr_bits) {
+  return request_frame(uint8_t(UartCmdRead), addr, nullptr, addr_bits);
+}
 
 UartResponse parse_uart_response(const std::vector<uint8_t>& b, bool is_read) {
   UartResponse r;

@@ -112,6 +112,34 @@ TEST(RegEncode, UartFrameRefusesUnalignedAndOutOfWindowAddresses) {
   }
 }
 
+TEST(RegEncode, MultiAxisMapFramesCarryTwoAddressBytesLowFirst) {
+  ASSERT_EQ(uart_addr_bytes(hw::RegAddrW), 1);
+  ASSERT_EQ(uart_addr_bytes(hw::MultiRegAddrW), 2);
+  // axis 1's CMD: window 2
+  const uint32_t addr = multi_axis_addr(size_t(1), uint32_t(hw::RegCmd));
+  EXPECT_EQ(addr, (2u << hw::RegAddrW) | uint32_t(hw::RegCmd));
+  const FrameResult r = uart_write_frame(addr, 0x04030201u, hw::MultiRegAddrW);
+  ASSERT_TRUE(std::holds_alternative<std::vector<uint8_t>>(r));
+  const std::vector<uint8_t>& f = std::get<std::vector<uint8_t>>(r);
+  ASSERT_EQ(f.size(), 9u);
+  EXPECT_EQ(f[1], hw::UartCmdWrite);
+  EXPECT_EQ(f[2], uint8_t((addr / 4) & 0xFF));
+  EXPECT_EQ(f[3], uint8_t((addr / 4) >> 8));
+  EXPECT_EQ(f[4], 0x01);
+  EXPECT_EQ(f[8], crc8(f.data() + 1, 7));
+  EXPECT_EQ(std::get<std::vector<uint8_t>>(uart_read_frame(0, hw::MultiRegAddrW)).size(), 5u);
+  // the group window is window 0
+  EXPECT_EQ(multi_axis_addr(std::nullopt, uint32_t(hw::RegCtrl)), uint32_t(hw::RegCtrl));
+  // beyond the multi-axis map, and a map width that does not exist
+  const FrameResult beyond = uart_read_frame(1u << hw::MultiRegAddrW, hw::MultiRegAddrW);
+  ASSERT_TRUE(std::holds_alternative<Error>(beyond));
+  EXPECT_EQ(std::get<Error>(beyond).parameter, "addr");
+  const FrameResult odd = uart_read_frame(0, 12);
+  ASSERT_TRUE(std::holds_alternative<Error>(odd));
+  EXPECT_EQ(std::get<Error>(odd).parameter, "addr_bits");
+  EXPECT_NE(std::get<Error>(odd).message.find("addr_bits=12"), std::string::npos);
+}
+
 TEST(RegEncode, StopLimitsAreTheirRegistersInExecutorUnits) {
   const scurve::Clock clk{20e6};
   const auto r = scurve::encode_stop_limits(2e7, 2e5, clk);

@@ -130,13 +130,17 @@ RegWrite stop_command();
 // CRC-8, polynomial 0x07, initial 0x00, no reflection, no final XOR.
 uint8_t crc8(const uint8_t* data, size_t n, uint8_t crc = 0);
 // UART bridge request frames for the register at byte address `addr` (as in
-// RegWrite and docs/regmap.md). The frame's address byte is the WORD
-// address addr / 4 (register map 3.0: one byte reaches the 1 KiB window).
-// An address that is not word-aligned or lies outside the window is an
-// Error for parameter "addr".
+// RegWrite and docs/regmap.md) of a map with `addr_bits` byte address bits:
+// RegAddrW (one axis, sc_board_top) or MultiRegAddrW (the multi-axis map,
+// sc_board_xy_top). The frame carries the WORD address addr / 4 in
+// uart_addr_bytes(addr_bits) bytes, low byte first (one byte reaches the
+// 1 KiB window of one axis). An address that is not word-aligned or lies
+// outside the map is an Error for parameter "addr"; another width one for
+// "addr_bits".
 using FrameResult = std::variant<std::vector<uint8_t>, Error>;
-FrameResult uart_write_frame(uint32_t addr, uint32_t data);
-FrameResult uart_read_frame(uint32_t addr);
+FrameResult uart_write_frame(uint32_t addr, uint32_t data, int addr_bits = hw::RegAddrW);
+FrameResult uart_read_frame(uint32_t addr, int addr_bits = hw::RegAddrW);
+int uart_addr_bytes(int addr_bits);
 
 struct UartResponse {
   bool ok = false;        // well formed and CRC correct
