@@ -54,7 +54,7 @@ set_property -dict { PACKAGE_PIN G6  IOSTANDARD LVCMOS33 } [get_ports led_irq_o]
 ## ---- IO timing ---------------------------------------------------------------------
 ## Asynchronous inputs (encoder, buttons, UART RX): no phase relation to any
 ## FPGA clock, so no input delay applies. Each data input goes through an
-## sc_sync (two flops meta_q -> sync_q, both ASYNC_REG): u_sync_rx,
+## sc_sync (two flops meta_q -> sync_q, both ASYNC_REG): u_link/u_sync_rx,
 ## u_sync_estop, u_axis/u_servo/u_dec/u_sync_abz (encoder A/B/Z into the
 ## decoder), u_axis/u_sync_enc (encoder A/B for STATUS.ENC_AB) and
 ## u_axis/u_sw/u_sync (the limit and home switches); the reset

@@ -4,7 +4,7 @@
 //
 //   CLK100MHZ --[sc_clkgen: MMCM]--> 20 MHz system clock
 //   ck_rst button AND MMCM locked --[sc_rst_sync]--> rst_n
-//   USB-UART (115200 8N1) --[sc_uart_rx/tx + sc_uart_bridge, 2-byte word
+//   USB-UART (115200 8N1) --[sc_uart_axi_link, 2-byte word
 //       addresses]--> AXI4-Lite --> sc_axi_multi_axis (the multi-axis map,
 //       docs/regmap.md: group window 0, X in window 1, Y in window 2)
 //   X: STEP/DIR/EN on Pmod JA1-3, encoder A/B/Z on JB1/JB2/JB9, limit -,
@@ -63,56 +63,29 @@ module sc_board_xy_top #(
   );
 
   // ---- asynchronous inputs --------------------------------------------------
-  logic rx_sync, estop_sync;
+  logic estop_sync;
 
-  sc_sync #(.Width(1), .ResetVal(1'b1)) u_sync_rx (
-    .clk_i (clk), .rst_ni (rst_n), .d_i (uart_rx_i), .q_o (rx_sync)
-  );
   sc_sync #(.Width(1), .ResetVal(1'b0)) u_sync_estop (
     .clk_i (clk), .rst_ni (rst_n), .d_i (estop_i), .q_o (estop_sync)
   );
 
-  // ---- UART bridge -------------------------------------------------------------
-  logic       rx_valid, rx_ferr, tx_valid, tx_ready, unused_crc_err;
-  logic [7:0] rx_data, tx_data;
-
-  sc_uart_rx #(.ClksPerBit(ClksPerBit)) u_uart_rx (
-    .clk_i       (clk),
-    .rst_ni      (rst_n),
-    .rx_i        (rx_sync),
-    .valid_o     (rx_valid),
-    .data_o      (rx_data),
-    .frame_err_o (rx_ferr)
-  );
-
-  sc_uart_tx #(.ClksPerBit(ClksPerBit)) u_uart_tx (
-    .clk_i   (clk),
-    .rst_ni  (rst_n),
-    .valid_i (tx_valid),
-    .data_i  (tx_data),
-    .ready_o (tx_ready),
-    .tx_o    (uart_tx_o)
-  );
-
+  // ---- UART link: the PC's register reads and writes ----------------------------
   logic [AW-1:0] awaddr, araddr;
   logic          awvalid, awready, wvalid, wready, bvalid, bready;
   logic          arvalid, arready, rvalid, rready;
   logic [31:0]   wdata, rdata;
   logic [3:0]    wstrb;
   logic [1:0]    bresp, rresp;
+  logic          unused_crc_err;
 
-  sc_uart_bridge #(
-    .TimeoutClks (sc_pkg::UartTimeoutBits * ClksPerBit),
-    .AddrW       (AW)
-  ) u_bridge (
+  sc_uart_axi_link #(
+    .ClksPerBit (ClksPerBit),
+    .AddrW      (AW)
+  ) u_link (
     .clk_i           (clk),
     .rst_ni          (rst_n),
-    .rx_valid_i      (rx_valid),
-    .rx_data_i       (rx_data),
-    .rx_frame_err_i  (rx_ferr),
-    .tx_valid_o      (tx_valid),
-    .tx_data_o       (tx_data),
-    .tx_ready_i      (tx_ready),
+    .uart_rx_i,
+    .uart_tx_o,
     .m_axi_awaddr_o  (awaddr),
     .m_axi_awvalid_o (awvalid),
     .m_axi_awready_i (awready),

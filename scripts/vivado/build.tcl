@@ -36,10 +36,11 @@ set rtl_files_of(sc_board_top) {
   sc_switch_filter.sv
   sc_axi_regs.sv
   sc_cl_stat_pack.sv
-  sc_axi_servo.sv
   sc_uart_bridge.sv
   sc_uart_tx.sv
   sc_uart_rx.sv
+  sc_axi_servo.sv
+  sc_uart_axi_link.sv
   sc_sync.sv
   sc_rst_sync.sv
   sc_clkgen.sv
@@ -61,10 +62,11 @@ set rtl_files_of(sc_board_xy_top) {
   sc_axi_regs.sv
   sc_cl_stat_pack.sv
   sc_axi_window_demux.sv
-  sc_axi_multi_axis.sv
   sc_uart_bridge.sv
   sc_uart_tx.sv
   sc_uart_rx.sv
+  sc_axi_multi_axis.sv
+  sc_uart_axi_link.sv
   sc_sync.sv
   sc_rst_sync.sv
   sc_clkgen.sv
