@@ -445,7 +445,10 @@ def doc(params, words, enums=None):
             "e-stopped. CMD.STOP or CMD.ESTOP in any window stops every axis (controlled, along the "
             "path, or at once); the core is enabled while CTRL.ENABLE is set on every axis. STATUS.BUSY "
             "rises on the same clock on every axis and falls on each when its last pulse has left. "
-            "The interrupt output is the OR of the axes'.", "",
+            "The interrupt output is the OR of the axes'. A group write that some axes refuse (a register "
+            "locked while busy, written while one axis still sends its last pulses) answers SLVERR: the axes "
+            "that took it changed, the others set ERR.REJECT; wait until no axis is busy, or write per axis.",
+            "",
             "Loading a line: POS_FRAC0 per axis in its window; per row the staging registers "
             "(SEG_PHASE, SEG_JERK, SEG_ACC0, SEG_VEL0) per axis, then SEG_CLOCKS and ROW_PUSH in the "
             "group window (`scurve::encode_multi_row`); CMD = START in the group window.", "",
