@@ -178,7 +178,10 @@ def instance_free(points):
     """One point per place in the source: the same line, bit or cover point
     of a module counts once however many tops instantiate it (hit if any
     instance hit it). A cover point inside a generate loop keeps its
-    generate path (g_x__BRA__3__KET__.c_y) to stay apart from its siblings.
+    generate path (g_x__BRA__3__KET__.c_y) to stay apart from its siblings,
+    but for a step Verilator's writer already merged (an index written as
+    "*": g_x__BRA__*__KET__, or g_x[*__KET__ where it also folded the
+    generate blocks below it, as inside a multi-axis core's g_axis loop).
     Parameterised variants (sc_axis_core__Ez1_Sz2, the servo's core) are the same
     source: a point counts once for them too."""
     merged = {}
@@ -193,7 +196,7 @@ def instance_free(points):
                 if "__BRA__" not in part and part != f.get("o"):
                     tail.pop(0)
                     break
-            f["gen"] = ".".join(tail)
+            f["gen"] = ".".join(t for t in tail if "*" not in t)
         ident = tuple(sorted(f.items()))
         merged[ident] = merged.get(ident, 0) + count
     return merged

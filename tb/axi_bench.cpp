@@ -308,7 +308,17 @@ void AxiMultiBench::reset() {
   busy_.fill(false);
 }
 
+void AxiMultiBench::attach_plants(const PlantConfig& cfg) {
+  plants_.clear();
+  for (size_t a = 0; a < RtlAxiMultiAxis::kAxes; ++a) plants_.push_back(std::make_unique<Plant>(cfg, double(ClkHz)));
+}
+
 void AxiMultiBench::tick() {
+  for (size_t a = 0; a < plants_.size(); ++a) {
+    pins_in_[a].enc_a = plants_[a]->enc_a();
+    pins_in_[a].enc_b = plants_[a]->enc_b();
+    pins_in_[a].enc_z = plants_[a]->enc_z();
+  }
   if (rtl_) rtl_->step(in_, estop, pins_in_);
   model_.step(in_, estop, pins_in_);
   const AxiMultiAxisOutputs m = model_.outputs();
@@ -330,6 +340,7 @@ void AxiMultiBench::tick() {
   if (any_rose && !all_rose && error_.empty()) {
     error_ = fmt::format("clock {}: STATUS.BUSY rose on some axes only", clock_);
   }
+  for (size_t a = 0; a < plants_.size(); ++a) plants_[a]->clock(out_.axis[a].step, out_.axis[a].dir);
   ++clock_;
 }
 

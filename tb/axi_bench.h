@@ -169,11 +169,16 @@ class AxiMultiBench : public AxiMaster {
   const PinMonitor& pins(size_t a) const { return monitors_.at(a); }
   uint64_t clock() const { return clock_; }
   uint64_t matched() const { return checker_.matched(); }
+  // A stepper plant per axis: the axis's STEP/DIR pins drive it, its
+  // encoder A/B/Z go back to the axis's encoder inputs (the closed loop).
+  void attach_plants(const PlantConfig& cfg);
+  const Plant* plant(size_t a) const { return a < plants_.size() ? plants_[a].get() : nullptr; }
 
  protected:
   AxiOut axi_out() const override { return out_.axi; }
 
  private:
+  std::vector<std::unique_ptr<Plant>> plants_;
   std::unique_ptr<RtlAxiMultiAxis> rtl_;
   AxiMultiAxis model_;
   std::array<MultiAxisPins, MaxAxes> pins_in_{};

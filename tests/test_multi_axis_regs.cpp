@@ -10,12 +10,14 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <optional>
 #include <random>
 #include <string>
 #include <vector>
 
 #include "board_regs.h"
+#include "closed_loop_run.h"
 #include "multi_run.h"
 #include "planner.h"
 
@@ -168,6 +170,60 @@ TEST(MultiAxisRegs, PlannedLinesThroughTheRegistersEndEveryAxisExactly) {
   }
   EXPECT_FALSE(b.failed()) << b.error();
   EXPECT_GT(b.matched(), 100'000u);
+}
+
+// Both axes closed-loop through the multi-axis map, a stepper plant on
+// each: the controller settings written once through the group window,
+// CTRL.CLOSED_LOOP per axis, a line loaded and started through the
+// windows; RTL = model every clock (the controllers' states and weights
+// read back through CL_STATUS .. CTL_W_V2 as they run), both loops in
+// position at the end with the encoder on the target.
+TEST(MultiAxisRegs, ClosedLoopLineThroughTheRegistersSettlesBothAxesOnTarget) {
+  AxiMultiBench b(true, 11);
+  b.attach_plants(PlantConfig{});
+  b.idle(8);
+  ServoConfig cfg;
+  ASSERT_EQ(to_servo_config(ControllerParams{}, PlantConfig{}, PulseTiming{}, cfg), "");
+  for (const RegWrite& w : encode_servo_config(cfg)) {
+    ASSERT_EQ(b.write(multi_axis_addr(std::nullopt, w.addr), w.data), kOkay) << scurve::reg_name(w.addr);
+  }
+  const uint32_t ctrl = field_mask("CTRL", "ENABLE") | field_mask("CTRL", "CLOSED_LOOP");
+  ASSERT_EQ(b.write(group("CTRL"), ctrl), kOkay);
+  scurve::LineRequest r;
+  r.distances = {400, -250};
+  r.v_path = 4000;
+  r.a_path = 1e5;
+  r.j_path = 4e6;
+  auto p = scurve::plan_line(scurve::Planner{model_clock()}, r, to_host(PulseTiming{}));
+  ASSERT_TRUE(std::holds_alternative<scurve::LinePlan>(p));
+  const MultiRows rows = line_rows(std::get<scurve::LinePlan>(p));
+  for (size_t a = 0; a < kAxes; ++a) {
+    const u128 f = rows.pos_frac0[a];
+    ASSERT_EQ(b.write(axis_reg(a, "POS_FRAC0_0"), uint32_t(f)), kOkay);
+    ASSERT_EQ(b.write(axis_reg(a, "POS_FRAC0_1"), uint32_t(f >> 32)), kOkay);
+    ASSERT_EQ(b.write(axis_reg(a, "POS_FRAC0_2"), uint32_t(f >> 64)), kOkay);
+  }
+  size_t next = push_rows(b, rows, 0);
+  ASSERT_EQ(b.write(group("CMD"), 1u << CmdStartBit), kOkay);
+  bool saw_u = false, done = false;
+  for (int i = 0; i < 4000 && !done && !b.failed(); ++i) {
+    next = push_rows(b, rows, next);
+    for (size_t a = 0; a < kAxes; ++a) saw_u = saw_u || b.read(axis_reg(a, "CTL_U")).first != 0;
+    const uint32_t s0 = b.read(axis_reg(0, "STATUS")).first, s1 = b.read(axis_reg(1, "STATUS")).first;
+    done = (s0 & field_mask("STATUS", "DONE")) && (s1 & field_mask("STATUS", "DONE"));
+    b.idle(2000);
+  }
+  EXPECT_TRUE(done) << "both axes in position";
+  EXPECT_TRUE(saw_u);
+  for (size_t a = 0; a < kAxes; ++a) {
+    const uint32_t cs = b.read(axis_reg(a, "CL_STATUS")).first;
+    EXPECT_TRUE(cs & field_mask("CL_STATUS", "IN_POS")) << "axis " << a;
+    EXPECT_FALSE(cs & field_mask("CL_STATUS", "FAULT_FERR")) << "axis " << a;
+    const int32_t enc = int32_t(b.read(axis_reg(a, "ENC_POS")).first);
+    EXPECT_LE(std::abs(enc - int32_t(r.distances[a])), 2) << "axis " << a << " encoder " << enc;
+    EXPECT_EQ(int64_t(int32_t(b.read(axis_reg(a, "REF_POS")).first)), r.distances[a]) << "axis " << a;
+  }
+  EXPECT_FALSE(b.failed()) << b.error();
 }
 
 // Random transactions over all windows: documented registers in the group
