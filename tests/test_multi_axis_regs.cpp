@@ -38,6 +38,36 @@ void enable_all(AxiMultiBench& b) {
   EXPECT_EQ(b.write(group("CTRL"), field_mask("CTRL", "ENABLE")), kOkay);
 }
 
+// Every axis's POS_FRAC0, in its window.
+std::vector<scurve::RegWrite> frac0_writes(const MultiRows& rows) {
+  std::vector<scurve::RegWrite> out;
+  for (size_t a = 0; a < kAxes; ++a) {
+    const u128 f = rows.pos_frac0[a];
+    out.push_back({axis_reg(a, "POS_FRAC0_0"), uint32_t(f)});
+    out.push_back({axis_reg(a, "POS_FRAC0_1"), uint32_t(f >> 32)});
+    out.push_back({axis_reg(a, "POS_FRAC0_2"), uint32_t(f >> 64)});
+  }
+  return out;
+}
+
+// Multi-axis row k: each axis's staging in its window, the clocks and the
+// push (with the row's flags) in the group window.
+std::vector<scurve::RegWrite> row_writes(const MultiRows& rows, size_t k) {
+  std::vector<scurve::Segment> segs;
+  for (size_t a = 0; a < kAxes; ++a) segs.push_back(to_host(rows.rows[a][k].seg));
+  const uint8_t flags = rows.rows[0][k].flags;
+  scurve::RowFlags f;
+  f.move_end = flags & (1u << RowFlagMoveEnd);
+  f.stream_end = flags & (1u << RowFlagStreamEnd);
+  f.acc_step = flags & (1u << RowFlagAccStep);
+  f.hold = flags & (1u << RowFlagHold);
+  return scurve::encode_multi_row(segs, f);
+}
+
+std::string where(uint32_t addr) {
+  return scurve::reg_name(addr & ((1u << RegAddrW) - 1)) + " in window " + std::to_string(addr >> RegAddrW);
+}
+
 // Push multi-axis rows from `from` on while the FIFO has room; returns the
 // next row to push.
 size_t push_rows(AxiMultiBench& b, const MultiRows& rows, size_t from) {
@@ -46,17 +76,7 @@ size_t push_rows(AxiMultiBench& b, const MultiRows& rows, size_t from) {
     const uint32_t level = (b.read(group("FIFO_STATUS")).first & field_mask("FIFO_STATUS", "LEVEL")) >>
                            FifoLevelLsb;
     if (level >= uint32_t(RowFifoDepth)) break;
-    std::vector<scurve::Segment> segs;
-    for (size_t a = 0; a < kAxes; ++a) segs.push_back(to_host(rows.rows[a][from].seg));
-    scurve::RowFlags f;
-    const uint8_t flags = rows.rows[0][from].flags;
-    f.move_end = flags & (1u << RowFlagMoveEnd);
-    f.stream_end = flags & (1u << RowFlagStreamEnd);
-    f.acc_step = flags & (1u << RowFlagAccStep);
-    f.hold = flags & (1u << RowFlagHold);
-    for (const scurve::RegWrite& w : scurve::encode_multi_row(segs, f)) {
-      EXPECT_EQ(b.write(w.addr, w.data), kOkay) << scurve::reg_name(w.addr & ((1u << RegAddrW) - 1));
-    }
+    for (const scurve::RegWrite& w : row_writes(rows, from)) EXPECT_EQ(b.write(w.addr, w.data), kOkay) << where(w.addr);
     ++from;
   }
   return from;
@@ -65,12 +85,7 @@ size_t push_rows(AxiMultiBench& b, const MultiRows& rows, size_t from) {
 // Load a line through the registers (POS_FRAC0 per axis, the rows through
 // the staging windows and group pushes), START, stream the rest, run to rest.
 void run_line(AxiMultiBench& b, const MultiRows& rows) {
-  for (size_t a = 0; a < kAxes; ++a) {
-    const u128 f = rows.pos_frac0[a];
-    EXPECT_EQ(b.write(axis_reg(a, "POS_FRAC0_0"), uint32_t(f)), kOkay);
-    EXPECT_EQ(b.write(axis_reg(a, "POS_FRAC0_1"), uint32_t(f >> 32)), kOkay);
-    EXPECT_EQ(b.write(axis_reg(a, "POS_FRAC0_2"), uint32_t(f >> 64)), kOkay);
-  }
+  for (const scurve::RegWrite& w : frac0_writes(rows)) EXPECT_EQ(b.write(w.addr, w.data), kOkay) << where(w.addr);
   size_t next = push_rows(b, rows, 0);
   EXPECT_EQ(b.write(group("CMD"), 1u << CmdStartBit), kOkay);
   uint64_t guard = 0;
@@ -197,12 +212,7 @@ TEST(MultiAxisRegs, ClosedLoopLineThroughTheRegistersSettlesBothAxesOnTarget) {
   auto p = scurve::plan_line(scurve::Planner{model_clock()}, r, to_host(PulseTiming{}));
   ASSERT_TRUE(std::holds_alternative<scurve::LinePlan>(p));
   const MultiRows rows = line_rows(std::get<scurve::LinePlan>(p));
-  for (size_t a = 0; a < kAxes; ++a) {
-    const u128 f = rows.pos_frac0[a];
-    ASSERT_EQ(b.write(axis_reg(a, "POS_FRAC0_0"), uint32_t(f)), kOkay);
-    ASSERT_EQ(b.write(axis_reg(a, "POS_FRAC0_1"), uint32_t(f >> 32)), kOkay);
-    ASSERT_EQ(b.write(axis_reg(a, "POS_FRAC0_2"), uint32_t(f >> 64)), kOkay);
-  }
+  for (const scurve::RegWrite& w : frac0_writes(rows)) ASSERT_EQ(b.write(w.addr, w.data), kOkay) << where(w.addr);
   size_t next = push_rows(b, rows, 0);
   ASSERT_EQ(b.write(group("CMD"), 1u << CmdStartBit), kOkay);
   bool saw_u = false, done = false;
@@ -347,16 +357,10 @@ TEST(BoardXY, LineOverTheUartRunsBothAxesToTheirTargets) {
   auto write = [&](uint32_t addr, uint32_t data) {
     const UartResponse r = host.write(addr, data);
     EXPECT_TRUE(r.ok) << r.error;
-    EXPECT_EQ(r.status, kOkay) << scurve::reg_name(addr & ((1u << RegAddrW) - 1)) << " window "
-                               << (addr >> RegAddrW);
+    EXPECT_EQ(r.status, kOkay) << where(addr);
   };
   write(group("CTRL"), field_mask("CTRL", "ENABLE"));
-  for (size_t a = 0; a < kAxes; ++a) {
-    const u128 f = rows.pos_frac0[a];
-    write(axis_reg(a, "POS_FRAC0_0"), uint32_t(f));
-    write(axis_reg(a, "POS_FRAC0_1"), uint32_t(f >> 32));
-    write(axis_reg(a, "POS_FRAC0_2"), uint32_t(f >> 64));
-  }
+  for (const scurve::RegWrite& w : frac0_writes(rows)) write(w.addr, w.data);
   // the first FIFO-full of rows, START, then the rest as the FIFO drains
   for (size_t k = 0; k < rows.rows[0].size(); ++k) {
     if (k == size_t(RowFifoDepth)) write(group("CMD"), 1u << CmdStartBit);
@@ -366,13 +370,7 @@ TEST(BoardXY, LineOverTheUartRunsBothAxesToTheirTargets) {
         if (lv.ok && (lv.data & field_mask("FIFO_STATUS", "LEVEL")) < uint32_t(RowFifoDepth)) break;
       }
     }
-    std::vector<scurve::Segment> segs;
-    for (size_t a = 0; a < kAxes; ++a) segs.push_back(to_host(rows.rows[a][k].seg));
-    scurve::RowFlags f;
-    f.move_end = rows.rows[0][k].flags & (1u << RowFlagMoveEnd);
-    f.stream_end = rows.rows[0][k].flags & (1u << RowFlagStreamEnd);
-    f.acc_step = rows.rows[0][k].flags & (1u << RowFlagAccStep);
-    for (const scurve::RegWrite& w : scurve::encode_multi_row(segs, f)) write(w.addr, w.data);
+    for (const scurve::RegWrite& w : row_writes(rows, k)) write(w.addr, w.data);
   }
   if (rows.rows[0].size() <= size_t(RowFifoDepth)) write(group("CMD"), 1u << CmdStartBit);
   for (int i = 0; i < 400; ++i) {
