@@ -217,7 +217,7 @@ PulseTiming pin_timing(const PulseTiming& t) {
 
 }  // namespace
 
-UartHost::UartHost(RtlBoard& board, int clks_per_bit) : UartLink(clks_per_bit, RegAddrW), b_(board) {
+UartHost::UartHost(RtlBoard& board, int clks_per_bit) : BoardUartHost(clks_per_bit, RegAddrW), b_(board) {
   set_timing(PulseTiming{});
 }
 
@@ -231,7 +231,7 @@ void UartHost::tick() {
 }
 
 UartHostXY::UartHostXY(RtlBoardXY& board, int clks_per_bit)
-    : UartLink(clks_per_bit, MultiRegAddrW), b_(board) {
+    : BoardUartHost(clks_per_bit, MultiRegAddrW), b_(board) {
   for (size_t a = 0; a < RtlBoardXY::kAxes; ++a) {
     pins_.emplace_back(PinRules{pin_timing(PulseTiming{}), false, StepAccounting::None});
   }
@@ -244,11 +244,11 @@ void UartHostXY::tick() {
   line_.clock(p.uart_tx);
 }
 
-void UartLink::idle(uint64_t clocks100) {
+void BoardUartHost::idle(uint64_t clocks100) {
   for (uint64_t i = 0; i < clocks100; ++i) tick();
 }
 
-std::vector<uint8_t> UartLink::transact(const std::vector<uint8_t>& frame, size_t expect, int timeout_bits) {
+std::vector<uint8_t> BoardUartHost::transact(const std::vector<uint8_t>& frame, size_t expect, int timeout_bits) {
   (void)line_.take_received();
   for (uint8_t byte : frame) line_.send(byte);
   while (line_.sending()) tick();
@@ -278,13 +278,13 @@ UartResponse refused(const scurve::Error& e) {
 
 }  // namespace
 
-UartResponse UartLink::write(uint32_t addr, uint32_t data) {
+UartResponse BoardUartHost::write(uint32_t addr, uint32_t data) {
   const scurve::FrameResult f = uart_write_frame(addr, data, addr_bits_);
   if (const auto* e = std::get_if<scurve::Error>(&f)) return refused(*e);
   return parse_uart_response(transact(std::get<std::vector<uint8_t>>(f), 3), false);
 }
 
-UartResponse UartLink::read(uint32_t addr) {
+UartResponse BoardUartHost::read(uint32_t addr) {
   const scurve::FrameResult f = uart_read_frame(addr, addr_bits_);
   if (const auto* e = std::get_if<scurve::Error>(&f)) return refused(*e);
   return parse_uart_response(transact(std::get<std::vector<uint8_t>>(f), 7), true);

@@ -193,10 +193,10 @@ class AxiMultiBench : public AxiMaster {
 // clks_per_bit system clocks (x5 pin clocks through the clock stand-in),
 // frames for a register map of addr_bits byte address bits. The board's
 // pins are the subclass's (tick()).
-class UartLink {
+class BoardUartHost {
  public:
-  UartLink(int clks_per_bit, int addr_bits) : bit100_(5 * clks_per_bit), addr_bits_(addr_bits), line_(bit100_) {}
-  virtual ~UartLink() = default;
+  BoardUartHost(int clks_per_bit, int addr_bits) : bit100_(5 * clks_per_bit), addr_bits_(addr_bits), line_(bit100_) {}
+  virtual ~BoardUartHost() = default;
   // Send raw bytes, then collect response bytes until `expect` arrived or
   // `timeout_bits` bit times passed with no byte.
   std::vector<uint8_t> transact(const std::vector<uint8_t>& frame, size_t expect, int timeout_bits = 60);
@@ -219,7 +219,7 @@ class UartLink {
 };
 
 // The one-axis board top (sc_board_top).
-class UartHost : public UartLink {
+class UartHost : public BoardUartHost {
  public:
   explicit UartHost(RtlBoard& board, int clks_per_bit);
   bool estop = false;
@@ -241,7 +241,7 @@ class UartHost : public UartLink {
 // The two-axis board top (sc_board_xy_top, the multi-axis map): both
 // axes' STEP/DIR pins on a pin monitor each (pulse timing at its reset
 // value, in pin clocks).
-class UartHostXY : public UartLink {
+class UartHostXY : public BoardUartHost {
  public:
   explicit UartHostXY(RtlBoardXY& board, int clks_per_bit);
   const PinMonitor& pins(size_t axis) const { return pins_.at(axis); }
