@@ -9,34 +9,6 @@ namespace sc {
 
 namespace {
 
-// The AXI4-Lite slave ports both register-file tops share.
-template <class V>
-void drive_axi(V& m, const AxiIn& in) {
-  m.s_axi_awaddr_i = in.awaddr;
-  m.s_axi_awvalid_i = in.awvalid;
-  m.s_axi_wdata_i = in.wdata;
-  m.s_axi_wstrb_i = in.wstrb & 0xf;
-  m.s_axi_wvalid_i = in.wvalid;
-  m.s_axi_bready_i = in.bready;
-  m.s_axi_araddr_i = in.araddr;
-  m.s_axi_arvalid_i = in.arvalid;
-  m.s_axi_rready_i = in.rready;
-}
-
-template <class V>
-AxiOut read_axi(const V& m) {
-  AxiOut a;
-  a.awready = m.s_axi_awready_o;
-  a.wready = m.s_axi_wready_o;
-  a.bvalid = m.s_axi_bvalid_o;
-  a.bresp = m.s_axi_bresp_o;
-  a.arready = m.s_axi_arready_o;
-  a.rvalid = m.s_axi_rvalid_o;
-  a.rdata = m.s_axi_rdata_o;
-  a.rresp = m.s_axi_rresp_o;
-  return a;
-}
-
 // The axis outputs both register-file tops share.
 template <class V, class O>
 void read_axis(const V& m, O& o) {

@@ -15,15 +15,7 @@ void RtlAxiMultiAxis::reset(int cycles) { top_->reset(cycles); }
 
 void RtlAxiMultiAxis::step(const AxiIn& in, bool estop, const std::array<MultiAxisPins, MaxAxes>& pins) {
   Vsc_axi_multi_axis2& m = top_->top();
-  m.s_axi_awaddr_i = in.awaddr & ((1u << MultiRegAddrW) - 1);
-  m.s_axi_awvalid_i = in.awvalid;
-  m.s_axi_wdata_i = in.wdata;
-  m.s_axi_wstrb_i = in.wstrb & 0xf;
-  m.s_axi_wvalid_i = in.wvalid;
-  m.s_axi_bready_i = in.bready;
-  m.s_axi_araddr_i = in.araddr & ((1u << MultiRegAddrW) - 1);
-  m.s_axi_arvalid_i = in.arvalid;
-  m.s_axi_rready_i = in.rready;
+  drive_axi(m, in);
   m.estop_i = estop;
   uint32_t a_bits = 0, b_bits = 0, z_bits = 0, sw = 0;
   for (size_t a = 0; a < kAxes; ++a) {
@@ -43,14 +35,7 @@ AxiMultiAxisOutputs RtlAxiMultiAxis::outputs() const {
   const Vsc_axi_multi_axis2& m = top_->top();
   AxiMultiAxisOutputs o;
   o.axes = kAxes;
-  o.axi.awready = m.s_axi_awready_o;
-  o.axi.wready = m.s_axi_wready_o;
-  o.axi.bvalid = m.s_axi_bvalid_o;
-  o.axi.bresp = m.s_axi_bresp_o;
-  o.axi.arready = m.s_axi_arready_o;
-  o.axi.rvalid = m.s_axi_rvalid_o;
-  o.axi.rdata = m.s_axi_rdata_o;
-  o.axi.rresp = m.s_axi_rresp_o;
+  o.axi = read_axi(m);
   for (size_t a = 0; a < kAxes; ++a) {
     AxiMultiAxisOutputs::Axis& x = o.axis[a];
     const int i = int(a);

@@ -14,6 +14,7 @@
 #include <string>
 #include <type_traits>
 
+#include "axi_regs.h"
 #include "coverage_sink.h"
 #include "fixed_point.h"
 #include "fst_output.h"
@@ -177,6 +178,35 @@ void set_field(P& p, int lsb, int width, u128 v) {
   } else {
     put_bits(p, lsb, width, v);
   }
+}
+
+// The AXI4-Lite slave ports every register-file top has (sc_axi_axis,
+// sc_axi_servo, sc_axi_multi_axis).
+template <class V>
+void drive_axi(V& m, const AxiIn& in) {
+  m.s_axi_awaddr_i = in.awaddr;
+  m.s_axi_awvalid_i = in.awvalid;
+  m.s_axi_wdata_i = in.wdata;
+  m.s_axi_wstrb_i = in.wstrb & 0xf;
+  m.s_axi_wvalid_i = in.wvalid;
+  m.s_axi_bready_i = in.bready;
+  m.s_axi_araddr_i = in.araddr;
+  m.s_axi_arvalid_i = in.arvalid;
+  m.s_axi_rready_i = in.rready;
+}
+
+template <class V>
+AxiOut read_axi(const V& m) {
+  AxiOut a;
+  a.awready = m.s_axi_awready_o;
+  a.wready = m.s_axi_wready_o;
+  a.bvalid = m.s_axi_bvalid_o;
+  a.bresp = m.s_axi_bresp_o;
+  a.arready = m.s_axi_arready_o;
+  a.rvalid = m.s_axi_rvalid_o;
+  a.rdata = m.s_axi_rdata_o;
+  a.rresp = m.s_axi_rresp_o;
+  return a;
 }
 
 // The low `width` bits of v (a port narrower than its C++ type).
