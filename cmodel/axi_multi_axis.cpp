@@ -103,6 +103,11 @@ AxiMultiAxis::AxiMultiAxis(size_t axes, bool servo)
 }
 
 void AxiMultiAxis::reset() {
+  core_in_ = MultiCoreInputs{};
+  for (size_t a = 0; a < cl_words_.size(); ++a) {
+    for (int i = 0; i < ClCfgWords; ++i) cl_words_[a][size_t(i)] = AxiRegs::cl_reset(i);
+    core_in_.loop[a].ctl = ctl_cfg_from_words(cl_words_[a]);
+  }
   for (AxiRegs& r : regs_) r.reset();
   for (SwitchFilter& s : sw_) s.reset();
   for (Sync& s : enc_sync_) s.reset();
@@ -133,7 +138,11 @@ void AxiMultiAxis::step(const AxiIn& in, bool estop, const std::array<MultiAxisP
     if (core_.servo()) {
       LoopInputs& l = ci.loop[a];
       l.closed_loop = regs_[a].state().closed;
-      l.ctl = ctl_cfg_from_words(regs_[a].state().cl);
+      // decoded only when a settings word changed (core_in_ keeps it)
+      if (regs_[a].state().cl != cl_words_[a]) {
+        cl_words_[a] = regs_[a].state().cl;
+        l.ctl = ctl_cfg_from_words(cl_words_[a]);
+      }
       l.enc_a = pins[a].enc_a;
       l.enc_b = pins[a].enc_b;
       l.enc_z = pins[a].enc_z;

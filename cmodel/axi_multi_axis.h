@@ -108,6 +108,7 @@ class AxiMultiAxis {
   MultiAxisCore core_;
   AxiWindowDemux demux_;
   MultiCoreInputs core_in_{};
+  std::array<std::array<uint32_t, ClCfgWords>, MaxAxes> cl_words_{};  // the settings core_in_.loop[a].ctl decodes
   MultiCoreOutputs core_out_{};
 };
 
