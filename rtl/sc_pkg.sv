@@ -46,6 +46,14 @@ package sc_pkg;
   localparam int RowFlagHold      = 3;  // velocity mode: at its end the row holds its constant
                                         // velocity until a whole move (a MOVE_END row) is queued
 
+  // Row reach (sc_row_reach): the furthest positions a row reaches relative
+  // to its start, with ReachFrac fraction bits (rounded outward), for the
+  // soft-limit look-ahead; ReachAccW is the evaluator's datapath width.
+  localparam int ReachFrac = 16;
+  localparam int ReachW    = 50;  // signed, PosIntW + 2 + ReachFrac: |reach| < 2^(PosIntW+ReachFrac)
+  localparam int ReachAccW = 120;
+  localparam int ReachOpW  = 7;   // iteration counter of one evaluator operation (<= 64)
+
   // ---- coordinated axes ----------------------------------------------------
   localparam int MaxAxes = 4;  // axes of sc_multi_axis_core (its Axes: 1 .. MaxAxes)
 
