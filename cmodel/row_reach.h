@@ -1,6 +1,6 @@
 // Bit-exact model of rtl/sc_row_reach.sv: the furthest positions a row
 // reaches, forward and backward, for the soft-limit look-ahead. Same
-// registers, same operation sequence and clock count; step() is one clock.
+// registers, same micro-program and clock count; step() is one clock.
 #pragma once
 
 #include <cstdint>
@@ -11,16 +11,14 @@ namespace sc {
 
 class RowReach {
  public:
-  static constexpr int kW = ReachAccW;                 // datapath width
-  static constexpr int kQuoW = ReachW;                 // quotient bits of the final division
-  static constexpr int kDivSh = FracBits - ReachFrac;  // 6 S is divided by 6 * 2^kDivSh
+  static constexpr int kW = 116;                       // datapath width (the RTL's W)
+  static constexpr int kDivSh = FracBits - ReachFrac;  // S is divided by 2^kDivSh
   static constexpr int64_t kReachMax = (int64_t(1) << (ReachW - 1)) - 1;
   static constexpr int64_t kReachMin = -(int64_t(1) << (ReachW - 1));
 
-  enum class St : uint8_t { Idle, Op, Dec, Done };
-  enum class Ph : uint8_t { Start, AccEnd, NegK, DivK, V1, V2, S0, S1, S2, S2b, S3, NegS, DivS };
-  enum class Goal : uint8_t { Vk, Vn, Search, Sn, St1, St2 };
-  enum class Op : uint8_t { Mul, Div, Sub };
+  enum class St : uint8_t { Idle, Ld, Run, Dec, Done };
+  enum class Ph : uint8_t { Start, A, K, Vk, Vn, Sn, Srch, Step, St };
+  enum class MSel : uint8_t { Nm1, K, Mid, Hi };
 
   struct Inputs {
     bool start = false;
@@ -33,16 +31,15 @@ class RowReach {
   struct State {
     St st = St::Idle;
     Ph ph = Ph::Start;
-    Goal goal = Goal::Vk;
-    Op op = Op::Mul;
-    uint8_t cnt = 0, len = 0;
-    uint32_t n = 0, k = 0, m = 0, lo = 0, hi = 0;
+    uint8_t pc = 0, cnt = 0;
+    MSel msel = MSel::Nm1;
+    uint32_t nm1 = 0, k = 0, lo = 0, hi = 0;
     int64_t j = 0, a = 0;
     i128 v = 0;
     i128 acc = 0, mcd = 0;  // kW bits, sign-extended
-    uint64_t mlr = 0;
-    bool bad = false, neg = false, srch2 = false;
-    bool clsk = false, clsn = false, cls_ref = false;
+    uint64_t mlr = 0;       // ReachW bits
+    uint8_t r3 = 0;
+    bool one = false, kc = false, clsk = false, clsn = false, ref = false, srch2 = false;
     int64_t fwd = 0, rev = 0;  // ReachW bits
     bool operator==(const State&) const = default;
   };
