@@ -26,7 +26,6 @@ struct CoreInputs {
   uint64_t stop_jerk = StopJerkReset;
   uint64_t stop_acc = StopAccReset;
   GuardLimits guard{};  // the executor's row guards (guard_*_i; 0 = none)
-  SoftWindow soft{};    // the executor's soft-limit look-ahead (soft_*_i)
   // Limits (lim_fwd_i, lim_rev_i, lim_hard_i): a limit switch is active on
   // the + / - side; motion into it stops (hard: at once), a START toward it
   // is refused.
@@ -69,7 +68,6 @@ struct CoreOutputs {
   bool underrun = false;
   bool discont = false;
   bool guard = false;  // a row broke a guard limit (until START)
-  bool reach = false;  // the soft-limit look-ahead refused a row (until START)
   bool stopping = false;
   bool overshoot = false;
   bool move_done = false;
@@ -172,7 +170,6 @@ class AxisCore {
     uint64_t stop_jerk = 0;
     uint64_t stop_acc = 0;
     GuardLimits guard{};
-    SoftWindow soft{};
     bool lim_fwd = false, lim_rev = false, lim_hard = false;
     PulseTiming cfg{0, 0, 0, 0};
     u128 pos_frac0 = 0;

@@ -100,7 +100,6 @@ void MultiAxisCore::step_servo(const MultiCoreInputs& in) {
     si.stop_jerk = c.stop_jerk;
     si.stop_acc = c.stop_acc;
     si.guard = c.guard;
-    si.soft = c.soft;
     si.lim_fwd = c.lim_fwd;
     si.lim_rev = c.lim_rev;
     si.lim_hard = c.lim_hard;

@@ -9,7 +9,6 @@
 
 #include "fixed_point.h"
 #include "row_fifo.h"
-#include "row_reach.h"
 #include "stop_gen.h"
 
 namespace sc {
@@ -44,15 +43,6 @@ struct GuardLimits {
   bool exceeded_by(const Segment& s) const;
 };
 
-// The soft-limit window of the look-ahead (soft_en_i, soft_min_i,
-// soft_max_i): the lowest and highest positions inside.
-struct SoftWindow {
-  bool en = false;
-  int32_t min = 0;
-  int32_t max = 0;
-  bool operator==(const SoftWindow&) const = default;
-};
-
 inline constexpr uint8_t kRowMoveEnd = uint8_t(1u << RowFlagMoveEnd);
 inline constexpr uint8_t kRowStreamEnd = uint8_t(1u << RowFlagStreamEnd);
 inline constexpr uint8_t kRowAccStep = uint8_t(1u << RowFlagAccStep);
@@ -73,7 +63,6 @@ class ProfileExec {
     uint64_t stop_jerk = StopJerkReset;   // JerkW bits (default: the register's reset value)
     uint64_t stop_acc = StopAccReset;     // AccW bits
     GuardLimits guard{};                  // row guards (0 = none)
-    SoftWindow soft{};                    // soft-limit look-ahead
   };
   struct State {
     bool run = false;
@@ -82,8 +71,6 @@ class ProfileExec {
     bool underrun = false;
     bool discont = false;
     bool guard = false;  // a row broke a guard limit (until START)
-    bool reach = false;  // the look-ahead refused a row (until START)
-    uint8_t chk = 0;     // rows at the head of the FIFO whose reach is known
     bool stop = false;  // controlled stop running
     uint8_t idx = 0;
     uint8_t flags = 0;
@@ -146,12 +133,6 @@ class ProfileExec {
   // head_fwd_o: direction of the head row (velocity's sign, else the
   // acceleration's, else the jerk's).
   bool head_forward() const;
-  // start_ready_o: a START may load the head now (its reach is known, or
-  // the look-ahead is off).
-  bool start_ready(bool soft_en) const { return !soft_en || fifo_.empty() || q_.chk != 0; }
-  // The look-ahead has nothing left to evaluate (fast-forward may jump).
-  bool reach_idle() const { return !reach_.busy() && q_.chk == fifo_.level(); }
-  const RowReach& row_reach() const { return reach_; }
 
  private:
   bool jump_safe() const;
@@ -163,14 +144,10 @@ class ProfileExec {
   };
   RowFifo<Queued, RowFifoDepth> fifo_;
   StopGen stop_;
-  RowReach reach_;
-  // The reach of each FIFO entry (sc_row_fifo's side array): forward, backward.
-  std::array<std::array<int64_t, 2>, RowFifoDepth> side_{};
   // The stop limits of the last step() (inputs the RTL sees held while
   // fast_forward() runs without inputs).
   uint64_t held_stop_jerk_ = StopJerkReset, held_stop_acc_ = StopAccReset;
   GuardLimits held_guard_{};
-  SoftWindow held_soft_{};
 };
 
 }  // namespace sc

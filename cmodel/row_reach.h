@@ -11,7 +11,7 @@ namespace sc {
 
 class RowReach {
  public:
-  static constexpr int kW = 116;                       // datapath width (the RTL's W)
+  static constexpr int kW = ReachAccW;                 // datapath width (the RTL's W)
   static constexpr int kDivSh = FracBits - ReachFrac;  // S is divided by 2^kDivSh
   static constexpr int64_t kReachMax = (int64_t(1) << (ReachW - 1)) - 1;
   static constexpr int64_t kReachMin = -(int64_t(1) << (ReachW - 1));

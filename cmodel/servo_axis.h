@@ -39,7 +39,6 @@ struct ServoInputs {
   uint64_t stop_jerk = StopJerkReset;  // controlled-stop limits (as CoreInputs)
   uint64_t stop_acc = StopAccReset;
   GuardLimits guard{};   // row guards (as CoreInputs)
-  SoftWindow soft{};     // soft-limit look-ahead (as CoreInputs)
   bool lim_fwd = false;  // limits (as CoreInputs)
   bool lim_rev = false;
   bool lim_hard = false;
@@ -54,7 +53,7 @@ struct ServoOutputs {
   bool busy = false, done = false;
   uint8_t phase = 0;
   bool fault_table = false, fault_overrun = false, fault_ferr = false, in_pos = false;
-  bool underrun = false, discont = false, guard = false, reach = false, move_done = false, fifo_full = false;
+  bool underrun = false, discont = false, guard = false, move_done = false, fifo_full = false;
   bool stopping = false, overshoot = false;
   bool lim_trip_fwd = false, lim_trip_rev = false;
   uint32_t move_idx = 0;

@@ -82,8 +82,6 @@ module sc_axi_servo (
   logic [sc_pkg::VelW-1:0]     guard_vel;
   logic [sc_pkg::AccW-1:0]     guard_acc;
   logic [sc_pkg::JerkW-1:0]    guard_jerk;
-  logic                        soft_en, reach;
-  logic signed [sc_pkg::PosIntW-1:0] soft_min, soft_max;
   logic                        stop, stopping, overshoot;
   logic [sc_pkg::JerkW-1:0]    stop_jerk;
   logic [sc_pkg::AccW-1:0]     stop_acc;
@@ -199,9 +197,6 @@ module sc_axi_servo (
     .guard_vel_o     (guard_vel),
     .guard_acc_o     (guard_acc),
     .guard_jerk_o    (guard_jerk),
-    .soft_en_o       (soft_en),
-    .soft_min_o      (soft_min),
-    .soft_max_o      (soft_max),
     .closed_loop_o   (closed_loop),
     .ctl_cfg_o       (ctl_cfg),
     .busy_i          (core_busy),
@@ -228,7 +223,6 @@ module sc_axi_servo (
     .underrun_i      (underrun),
     .discont_i       (discont),
     .guard_i         (guard),
-    .reach_i         (reach),
     .stopping_i      (stopping),
     .overshoot_i     (overshoot),
     .move_done_i     (move_done),
@@ -283,9 +277,6 @@ module sc_axi_servo (
     .guard_vel_i       (guard_vel),
     .guard_acc_i       (guard_acc),
     .guard_jerk_i      (guard_jerk),
-    .soft_en_i         (soft_en),
-    .soft_min_i        (soft_min),
-    .soft_max_i        (soft_max),
     .lim_fwd_i         (lim_fwd),
     .lim_rev_i         (lim_rev),
     .lim_hard_i        (lim_hard),
@@ -304,7 +295,6 @@ module sc_axi_servo (
     .underrun_o        (underrun),
     .discont_o         (discont),
     .guard_o           (guard),
-    .reach_o           (reach),
     .stopping_o        (stopping),
     .overshoot_o       (overshoot),
     .move_done_o       (move_done),

@@ -88,9 +88,6 @@ module sc_axis_core #(
   input  logic [sc_pkg::VelW-1:0]             guard_vel_i,  // row guard limits (0 = none)
   input  logic [sc_pkg::AccW-1:0]             guard_acc_i,
   input  logic [sc_pkg::JerkW-1:0]            guard_jerk_i,
-  input  logic                        soft_en_i,    // soft-limit look-ahead on every row (sc_profile_exec)
-  input  logic signed [sc_pkg::PosIntW-1:0]   soft_min_i,
-  input  logic signed [sc_pkg::PosIntW-1:0]   soft_max_i,
   input  logic                        lim_fwd_i,    // a limit is active on the + side
   input  logic                        lim_rev_i,    // a limit is active on the - side
   input  logic                        lim_hard_i,   // 1: a limit stops at once, 0: controlled stop
@@ -133,7 +130,6 @@ module sc_axis_core #(
   output logic                        underrun_o,
   output logic                        discont_o,
   output logic                        guard_o,      // a row broke a guard limit (until START)
-  output logic                        reach_o,      // the soft-limit look-ahead refused a row (until START)
   output logic                        stopping_o,   // a controlled stop runs
   output logic                        overshoot_o,  // the last stop could not avoid a reversal
   output logic                        move_done_o,
@@ -177,9 +173,6 @@ module sc_axis_core #(
   logic [sc_pkg::VelW-1:0]  guard_vel_q;
   logic [sc_pkg::AccW-1:0]  guard_acc_q;
   logic [sc_pkg::JerkW-1:0] guard_jerk_q;
-  logic   soft_en_q;
-  logic signed [sc_pkg::PosIntW-1:0] soft_min_q, soft_max_q;
-  logic   exec_ready;                    // the head row's reach is known (or not needed)
   logic   head_fwd;                      // direction of the FIFO's head row
   logic   arm_q, arm_d;                  // start accepted, waiting for DIR
   logic   arm_fwd_q, arm_fwd_d;
@@ -221,7 +214,7 @@ module sc_axis_core #(
                          (!ExtStep || ref_moving) ? !ref_vel_o[sc_pkg::VelW-1] : ext_hint_i;
 
   assign arm_drop_o  = arm_q && (abort_q || stop_q || lim_act);
-  assign arm_ready_o = arm_q && !arm_drop_o && sg_dir == arm_fwd_q && arm_cnt_q >= cfg_setup_q && exec_ready;
+  assign arm_ready_o = arm_q && !arm_drop_o && sg_dir == arm_fwd_q && arm_cnt_q >= cfg_setup_q;
   // (an external fault aborts every axis of a multi-axis core while this
   // executor runs; latched, it must not hold the others' next start off)
   assign fault_abort_o = lim_abort || rate_trip_q || (ExtStep && ext_abort_i && exec_running);
@@ -242,9 +235,8 @@ module sc_axis_core #(
       end else if (sg_dir != arm_fwd_q) begin
         arm_cnt_d = '0;
       end else if (arm_cnt_q >= cfg_setup_q) begin
-        // set up (and the head row's reach known): start now, or
-        // (SyncStart) hold until every axis is
-        if (exec_ready && (!SyncStart || sync_go_i)) begin
+        // set up: start now, or (SyncStart) hold until every axis is
+        if (!SyncStart || sync_go_i) begin
           arm_d      = 1'b0;
           exec_start = 1'b1;
         end
@@ -276,17 +268,12 @@ module sc_axis_core #(
     .guard_vel_i (guard_vel_q),
     .guard_acc_i (guard_acc_q),
     .guard_jerk_i (guard_jerk_q),
-    .soft_en_i   (soft_en_q),
-    .soft_min_i  (soft_min_q),
-    .soft_max_i  (soft_max_q),
     .running_o   (exec_running),
     .finished_o  (exec_finished),
     .fault_o     (exec_fault),
     .underrun_o,
     .discont_o,
     .guard_o,
-    .reach_o,
-    .start_ready_o (exec_ready),
     .stopping_o,
     .overshoot_o,
     .move_done_o,
@@ -347,9 +334,6 @@ module sc_axis_core #(
       guard_vel_q <= '0;
       guard_acc_q <= '0;
       guard_jerk_q <= '0;
-      soft_en_q   <= 1'b0;
-      soft_min_q  <= '0;
-      soft_max_q  <= '0;
       cfg_high_q  <= '0;
       cfg_low_q   <= '0;
       cfg_setup_q <= '0;
@@ -373,9 +357,6 @@ module sc_axis_core #(
       guard_vel_q <= guard_vel_i;
       guard_acc_q <= guard_acc_i;
       guard_jerk_q <= guard_jerk_i;
-      soft_en_q   <= soft_en_i;
-      soft_min_q  <= soft_min_i;
-      soft_max_q  <= soft_max_i;
       cfg_high_q  <= cfg_high_i;
       cfg_low_q   <= cfg_low_i;
       cfg_setup_q <= cfg_setup_i;

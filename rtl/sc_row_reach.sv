@@ -48,7 +48,7 @@ module sc_row_reach (
 
   // |6 S| <= 6 (2^32 - 1) 2^80 < 2^115 for a row in range and |2 v_m| < 2^112
   // for any: 116 bits hold every result exactly (modulo 2^W in between).
-  localparam int W      = 116;
+  localparam int W      = sc_pkg::ReachAccW;
   localparam int NW     = sc_pkg::SegClkW;
   localparam int RW     = sc_pkg::ReachW;
   localparam int VelW   = sc_pkg::VelW;

@@ -52,9 +52,6 @@ module sc_servo_axis #(
   input  logic [sc_pkg::VelW-1:0]             guard_vel_i, // row guard limits: sc_axis_core
   input  logic [sc_pkg::AccW-1:0]             guard_acc_i,
   input  logic [sc_pkg::JerkW-1:0]            guard_jerk_i,
-  input  logic                                soft_en_i,   // soft-limit look-ahead: sc_axis_core
-  input  logic signed [sc_pkg::PosIntW-1:0]   soft_min_i,
-  input  logic signed [sc_pkg::PosIntW-1:0]   soft_max_i,
   input  logic                                lim_fwd_i,   // limits: sc_axis_core
   input  logic                                lim_rev_i,
   input  logic                                lim_hard_i,
@@ -78,7 +75,6 @@ module sc_servo_axis #(
   output logic                                underrun_o,
   output logic                                discont_o,
   output logic                                guard_o,
-  output logic                                reach_o,
   output logic                                stopping_o,
   output logic                                overshoot_o,
   output logic                                move_done_o,
@@ -206,9 +202,6 @@ module sc_servo_axis #(
     .guard_vel_i,
     .guard_acc_i,
     .guard_jerk_i,
-    .soft_en_i,
-    .soft_min_i,
-    .soft_max_i,
     .lim_fwd_i,
     .lim_rev_i,
     .lim_hard_i,
@@ -250,7 +243,6 @@ module sc_servo_axis #(
     .underrun_o,
     .discont_o,
     .guard_o,
-    .reach_o,
     .stopping_o,
     .overshoot_o,
     .move_done_o,

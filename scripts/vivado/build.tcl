@@ -25,7 +25,6 @@ file mkdir $out
 set rtl_files_of(sc_board_top) {
   sc_pkg.sv
   sc_stop_gen.sv
-  sc_row_reach.sv
   sc_row_fifo.sv
   sc_step_gen.sv
   sc_profile_exec.sv
@@ -50,7 +49,6 @@ set rtl_files_of(sc_board_top) {
 set rtl_files_of(sc_board_xy_top) {
   sc_pkg.sv
   sc_stop_gen.sv
-  sc_row_reach.sv
   sc_row_fifo.sv
   sc_step_gen.sv
   sc_profile_exec.sv

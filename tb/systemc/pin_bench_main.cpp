@@ -256,7 +256,7 @@ int sc_main(int argc, char** argv) {
   dut.sync_start_ok_i(ext_off);  // one axis: no start synchronisation
   dut.sync_go_i(ext_off);
   dut.sync_drop_i(ext_off);
-  // No limit switches, no guard limits (0 = none) and no soft limits on this bench.
+  // No limit switches and no guard limits (0 = none) on this bench.
   sc_signal<VelBv> guard_vel("guard_vel");
   sc_signal<uint64_t> guard_acc("guard_acc"), guard_jerk("guard_jerk");
   sc_signal<bool> guard("guard");
@@ -264,13 +264,6 @@ int sc_main(int argc, char** argv) {
   dut.guard_acc_i(guard_acc);
   dut.guard_jerk_i(guard_jerk);
   dut.guard_o(guard);
-  // no soft-limit window
-  sc_signal<uint32_t> soft_min("soft_min"), soft_max("soft_max");
-  sc_signal<bool> reach("reach");
-  dut.soft_en_i(ext_off);
-  dut.soft_min_i(soft_min);
-  dut.soft_max_i(soft_max);
-  dut.reach_o(reach);
   dut.lim_fwd_i(ext_off);
   dut.lim_rev_i(ext_off);
   dut.lim_hard_i(ext_off);
