@@ -11,6 +11,7 @@
 #include <optional>
 #include <random>
 
+#include "profile_exec.h"
 #include "row_reach.h"
 #include "rtl_row_reach.h"
 
@@ -18,14 +19,10 @@ using namespace sc;
 
 namespace {
 
-struct Row {
-  uint32_t clocks = 0;
-  int64_t jerk = 0;
-  int64_t acc0 = 0;
-  i128 vel0 = 0;
-};
+// A row's segment as the executor queues it (the evaluator reads all but its phase).
+Segment row(uint32_t clocks, int64_t jerk, int64_t acc0, i128 vel0) { return {Phase::PhIdle, clocks, jerk, acc0, vel0}; }
 
-std::string describe(const Row& r) {
+std::string describe(const Segment& r) {
   return "clocks " + std::to_string(r.clocks) + " jerk " + std::to_string(r.jerk) + " acc0 " +
          std::to_string(r.acc0) + " vel0 " + to_string_i128(r.vel0);
 }
@@ -44,7 +41,7 @@ struct Reach {
 const Reach kSaturated{RowReach::kReachMax, RowReach::kReachMin};
 
 // The executor's recurrence, clock by clock: pos += v; v += a; a += j.
-Reach reach_by_recurrence(const Row& r) {
+Reach reach_by_recurrence(const Segment& r) {
   i128 p = 0, v = r.vel0, a = r.acc0, lo = 0, hi = 0;
   for (uint32_t n = 0; n < r.clocks; ++n) {
     if (v < -kVelLim || v >= kVelLim) return kSaturated;
@@ -61,7 +58,7 @@ Reach reach_by_recurrence(const Row& r) {
 // Any length: S(n) exactly (the planner's closed form) at the ends and at the
 // integers around the real roots of v(x) = v0 + x a0 + x (x - 1) / 2 j; the
 // range checks at the ends and at the vertex of v.
-Reach reach_by_roots(const Row& r) {
+Reach reach_by_roots(const Segment& r) {
   const uint32_t N = r.clocks;
   if (N == 0) return {};
   auto vel = [&](uint64_t n) { return vel_after(r.vel0, r.acc0, r.jerk, n); };
@@ -108,10 +105,10 @@ Reach reach_by_roots(const Row& r) {
 // A row of `clocks` clocks that stays in range with a sign change of v
 // inside as often as not: v0, a0 and j drawn so that the row's velocity
 // changes by up to about its start velocity.
-Row random_row(std::mt19937_64& rng, uint32_t max_clocks) {
+Segment random_row(std::mt19937_64& rng, uint32_t max_clocks) {
   std::uniform_int_distribution<uint32_t> nd(1, max_clocks);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
-  Row r;
+  Segment r;
   r.clocks = nd(rng);
   const long double N = r.clocks;
   const long double vmax = std::ldexp(1.0L, VelW - 2) * std::pow(2.0L, -20.0L * std::fabs(u(rng)));
@@ -140,7 +137,7 @@ struct Evaluation {
 };
 
 // One evaluation from idle; with `rtl`, both every clock.
-Evaluation evaluate(const Row& r, RowReach& model, RtlRowReach* rtl) {
+Evaluation evaluate(const Segment& r, RowReach& model, RtlRowReach* rtl) {
   Evaluation run;
   RowReach::Inputs in;
   in.start = true;
@@ -175,7 +172,7 @@ TEST(RowReachLockstep, RtlMatchesModelEveryClockOnRandomRows) {
   uint64_t clocks = 0, mismatches = 0, longest = 0;
   int rows = 0;
   for (; rows < 400; ++rows) {
-    const Row r = random_row(rng, rows % 2 ? 5000 : 0xffffffffu);
+    const Segment r = random_row(rng, rows % 2 ? 5000 : 0xffffffffu);
     const Evaluation run = evaluate(r, model, &rtl);
     ASSERT_LT(run.clocks, 100000u) << describe(r);
     clocks += run.clocks;
@@ -207,7 +204,7 @@ TEST(RowReachReference, ShortRowsMatchTheExecutorRecurrence) {
   std::mt19937_64 rng(12);
   int reversing = 0, saturated = 0;
   for (int i = 0; i < 3000; ++i) {
-    const Row r = random_row(rng, 3000);
+    const Segment r = random_row(rng, 3000);
     const Reach want = reach_by_recurrence(r);
     const Evaluation run = evaluate(r, model, nullptr);
     ASSERT_EQ(run.reach, want) << describe(r) << ": fwd " << run.reach.fwd << " rev " << run.reach.rev
@@ -225,7 +222,7 @@ TEST(RowReachReference, RowsOfAnyLengthMatchTheRootsOfTheVelocity) {
   std::mt19937_64 rng(13);
   uint64_t longest = 0;
   for (int i = 0; i < 3000; ++i) {
-    const Row r = random_row(rng, 0xffffffffu);
+    const Segment r = random_row(rng, 0xffffffffu);
     const Reach want = reach_by_roots(r);
     const Evaluation run = evaluate(r, model, nullptr);
     ASSERT_EQ(run.reach, want) << describe(r);
@@ -236,25 +233,25 @@ TEST(RowReachReference, RowsOfAnyLengthMatchTheRootsOfTheVelocity) {
 
 TEST(RowReachEdges, DirectedRows) {
   RowReach model;
-  auto reach = [&](Row r) { return evaluate(r, model, nullptr).reach; };
+  auto reach = [&](Segment r) { return evaluate(r, model, nullptr).reach; };
   const int64_t one = int64_t(1) << ReachFrac;  // one pulse
   // No clocks: nothing moves.
-  EXPECT_EQ(reach({0, 0, 0, 0}), (Reach{0, 0}));
+  EXPECT_EQ(reach(row(0, 0, 0, 0)), (Reach{0, 0}));
   // One clock at half a pulse per clock: half a pulse forward.
-  EXPECT_EQ(reach({1, 0, 0, kOne / 2}), (Reach{one / 2, 0}));
+  EXPECT_EQ(reach(row(1, 0, 0, kOne / 2)), (Reach{one / 2, 0}));
   // Cruise backward, 1000 clocks at -1/4 pulse per clock: -250 pulses.
-  EXPECT_EQ(reach({1000, 0, 0, -kOne / 4}), (Reach{0, -250 * one}));
+  EXPECT_EQ(reach(row(1000, 0, 0, -kOne / 4)), (Reach{0, -250 * one}));
   // Decelerate through zero: v0 = 1/2, a = -1/1000 per clock: peak past
   // the start, end behind it; both against the recurrence.
-  const Row rev{300000, 0, -(int64_t(1) << 62), kOne / 2};  // a = -2^-18 pulses/clock^2
+  const Segment rev = row(300000, 0, -(int64_t(1) << 62), kOne / 2);  // a = -2^-18 pulses/clock^2
   EXPECT_EQ(reach(rev), reach_by_recurrence(rev));
   EXPECT_EQ(reach(rev), reach_by_roots(rev));
   EXPECT_GT(reach(rev).fwd, 30000 * one);
   EXPECT_LT(reach(rev).rev, 0);
   // The largest velocity for 2^32 - 1 clocks: under 2^32 pulses, in range.
-  const Row far{0xffffffffu, 0, 0, kVelLim - 1};
+  const Segment far = row(0xffffffffu, 0, 0, kVelLim - 1);
   EXPECT_EQ(reach(far), reach_by_roots(far));
   EXPECT_LT(reach(far).fwd, RowReach::kReachMax);
   // An acceleration that wraps the velocity inside the row: unbounded.
-  EXPECT_EQ(reach({1000000, 0, int64_t(1) << 62, 0}), kSaturated);
+  EXPECT_EQ(reach(row(1000000, 0, int64_t(1) << 62, 0)), kSaturated);
 }
