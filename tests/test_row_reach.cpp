@@ -20,7 +20,9 @@ using namespace sc;
 namespace {
 
 // A row's segment as the executor queues it (the evaluator reads all but its phase).
-Segment row(uint32_t clocks, int64_t jerk, int64_t acc0, i128 vel0) { return {Phase::PhIdle, clocks, jerk, acc0, vel0}; }
+Segment row(uint32_t clocks, int64_t jerk, int64_t acc0, i128 vel0) {
+  return {Phase::PhIdle, clocks, jerk, acc0, vel0};
+}
 
 std::string describe(const Segment& r) {
   return "clocks " + std::to_string(r.clocks) + " jerk " + std::to_string(r.jerk) + " acc0 " +
