@@ -41,9 +41,13 @@ module sc_stop_gen (
   localparam int VW    = VelW + 1;  // mirrored velocity
   localparam int BW    = AccW + 1;  // mirrored level
   localparam int UW    = 88;        // bound u
-  localparam int DW    = 86;        // division registers
+  // Division registers: b0 << k0, J << 2k0 < 2^(2 msb(b0) - msb(J) + 1) <= 2^84 (else uinf);
+  // J << k0 < 2^(msb(b0) + 1) <= 2^64; all only shift down from there.
+  localparam int DW    = 84;        // remk, j2k
+  localparam int JKW   = 64;        // jk
   localparam int CW    = 90;        // compare width
   localparam int KW    = 7;         // division bit index
+  localparam int RW    = 64;        // division remainder: a dividing b0 is at most 2^63
   localparam int JW    = JerkW - 1; // latched J (positive)
   localparam int AW    = AccW - 1;  // latched D (positive)
   localparam int InfExp = 84;
@@ -59,12 +63,13 @@ module sc_stop_gen (
   logic signed [BW-1:0]  b_q, b_d;
   logic signed [UW-1:0]  u_q, u_d;
   logic signed [BW-1:0]  g_q, g_d;
+  logic                  gz_q, gz_d;  // g == 0
   logic [JW-1:0]         j_q, j_d;
   logic [AW-1:0]         dlim_q, dlim_d;
   logic [KW-1:0]         k_q, k_d;
   logic [1:0]            prep_q, prep_d;  // division set-up: 1 = J << k next, 2 = J << 2k next
-  logic [BW-1:0]         rem_q, rem_d;
-  logic [DW-1:0]         jk_q, jk_d;
+  logic [RW-1:0]         rem_q, rem_d;
+  logic [JKW-1:0]        jk_q, jk_d;
   logic [DW-1:0]         j2k_q, j2k_d;
   logic [DW-1:0]         remk_q, remk_d;
 
@@ -79,32 +84,40 @@ module sc_stop_gen (
   logic [5:0]           eb, ej;
   logic [KW-1:0]        k_ld;
   logic [KW:0]          inf_exp;
+  logic                 b_ld_le_j;
 
-  // Like the scan below, evaluated only in the start clock.
+  // Start-clock logic. The defaults are don't-cares ('x): synthesis drops
+  // the gating (no AND per bit), and the simulator skips the wide terms in
+  // every other clock; nothing reads them outside the start clock.
   always_comb begin
-    vel_x  = '0;
-    acc_x  = '0;
-    neg_ld = 1'b0;
-    v_ld   = '0;
-    b_ld   = '0;
-    j_ld   = JW'(1);
-    d_ld   = AW'(1);
+    vel_x     = 'x;
+    acc_x     = 'x;
+    neg_ld    = 1'bx;
+    v_ld      = 'x;
+    b_ld      = 'x;
+    j_ld      = 'x;
+    d_ld      = 'x;
+    b_ld_le_j = 1'bx;
     if (start_i) begin
       vel_x  = VW'(vel_i);
       acc_x  = BW'(acc_i);
-      neg_ld = vel_i < 0 || (vel_i == '0 && acc_i < 0);
-      v_ld   = neg_ld ? -vel_x : vel_x;
-      b_ld   = neg_ld ? acc_x : -acc_x;
+      neg_ld = vel_i[VelW-1] || (vel_i == '0 && acc_i[AccW-1]);
+      // conditional negation as XOR and carry in: one adder, no mux
+      v_ld   = (vel_x ^ {VW{neg_ld}}) + VW'(neg_ld);
+      b_ld   = (acc_x ^ {BW{!neg_ld}}) + BW'(!neg_ld);
       j_ld   = stop_jerk_i == '0 ? JW'(1) : stop_jerk_i[JerkW-1] ? '1 : stop_jerk_i[JW-1:0];
       d_ld   = stop_acc_i == '0 ? AW'(1) : stop_acc_i[AccW-1] ? '1 : stop_acc_i[AW-1:0];
+      b_ld_le_j = b_ld <= $signed(BW'({1'b0, j_ld}));
     end
   end
 
   // Highest set bits of b (a braking start: 0 < J < b <= 2^63) and J.
   always_comb begin
-    eb = '0;
-    ej = '0;
+    eb = 'x;
+    ej = 'x;
     if (start_i) begin
+      eb = '0;
+      ej = '0;
       for (int i = 0; i < 64; i++) begin
         if (b_ld[i]) eb = 6'(i);
       end
@@ -116,20 +129,21 @@ module sc_stop_gen (
   assign k_ld    = KW'(eb) - KW'(ej);
 
   // One shifter sets the division up over three clocks: b0 << k0 in the start
-  // clock (the first bound), then J << k0, then (J << k0) << k0 = J << 2k0.
-  // (inputs below 2^(BW-1): b0 <= 2^63, J << k0 < 2^(msb(b0)+1); k0 <= 63)
-  logic [BW-1:0] sh_in;
-  logic [5:0]    sh_amt;
-  logic [DW-1:0] sh_out;
+  // clock (the first bound), then J << k0, then (J << k0) << k0 = J << 2k0
+  // (jk holds J from the start clock, so the shifter has two sources).
+  // Inputs below 2^64: b0 <= 2^63, J << k0 < 2^(msb(b0)+1); k0 <= 63.
+  logic [JKW-1:0]  sh_in;
+  logic [5:0]      sh_amt;
+  logic [DW-1:0]   sh_out;
+  logic [JKW+2:0]  sh_1;
+  logic [JKW+14:0] sh_2;
   always_comb begin
-    sh_in  = '0;
-    sh_amt = '0;
-    sh_out = '0;
-    if (start_i || (active_q && div_q && prep_q != 2'd0)) begin
-      sh_in  = start_i ? b_ld : prep_q == 2'd1 ? BW'({1'b0, j_q}) : jk_q[BW-1:0];
-      sh_amt = start_i ? k_ld[5:0] : k_q[5:0];
-      sh_out = DW'(sh_in) << sh_amt;
-    end
+    sh_in  = start_i ? JKW'(b_ld) : jk_q;
+    sh_amt = start_i ? k_ld[5:0] : k_q[5:0];
+    // three stages of 4:1, each only as wide as it can fill
+    sh_1   = (JKW+3)'(sh_in) << sh_amt[1:0];
+    sh_2   = (JKW+15)'(sh_1) << {sh_amt[3:2], 2'b00};
+    sh_out = DW'(sh_2) << {sh_amt[5:4], 4'b0000};
   end
   assign inf_exp = {1'b0, eb, 1'b0} - (KW+1)'(ej);
 
@@ -141,29 +155,33 @@ module sc_stop_gen (
   logic signed [LW-1:0] v1_lo;     // v1 when 0 <= v1 < 2^JW (landing range)
   logic signed [UW-1:0] u1;
   logic                 clamp_up, up_ok, land_ok, hold_ok, v1_small;
+  logic                 b1_zero, bdn_zero;
   logic                 take;
   logic [DW:0]          dec;
 
-  // Evaluated only while the stop runs: idle, every term is zero, so the
-  // wide datapath costs a simulator nothing in the clocks of normal motion.
+  // Evaluated while the stop runs; otherwise don't-cares ('x, as above): no
+  // gating in synthesis, and the clocks of normal motion cost the simulator
+  // nothing here.
   always_comb begin
-    v1       = '0;
-    v1_small = 1'b0;
-    v1_lo    = '0;
-    u        = '0;
-    b        = '0;
-    j        = '0;
-    dl       = '0;
-    bsum     = '0;
-    clamp_up = 1'b0;
-    bu       = '0;
-    uu       = '0;
-    up_ok    = 1'b0;
-    land_ok  = 1'b0;
-    hold_ok  = 1'b0;
-    bdn      = '0;
-    b1       = '0;
-    u1       = '0;
+    v1       = 'x;
+    v1_small = 'x;
+    v1_lo    = 'x;
+    u        = 'x;
+    b        = 'x;
+    j        = 'x;
+    dl       = 'x;
+    bsum     = 'x;
+    clamp_up = 'x;
+    bu       = 'x;
+    uu       = 'x;
+    up_ok    = 'x;
+    land_ok  = 'x;
+    hold_ok  = 'x;
+    bdn      = 'x;
+    bdn_zero = 'x;
+    b1       = 'x;
+    u1       = 'x;
+    b1_zero  = 'x;
     if (active_q) begin
       v1       = CW'(v_q) - CW'(b_q);
       v1_small = v1[CW-1:JW] == '0;
@@ -172,35 +190,43 @@ module sc_stop_gen (
       b        = LW'(b_q);
       j        = LW'({1'b0, j_q});
       dl       = LW'({1'b0, dlim_q});
+      // the level of a move up: b + J, clamped at D
       bsum     = b + j;
       clamp_up = bsum > dl;
       bu       = clamp_up ? dl : bsum;
-      if (b <= 0) begin
-        uu = bu > 0 ? CW'(bu) : '0;
+      if (b_q[BW-1] || b_q == '0) begin  // b <= 0: max(bu, 0)
+        uu = bu[LW-1] ? '0 : CW'(bu);
       end else begin
         uu = u + CW'(bu);
       end
       up_ok   = b < dl && !uinf_q && v1 >= uu;
       land_ok = v1_small && v1_lo <= j && v1_lo <= dl && v1_lo <= bsum && v1_lo >= b - j;
       hold_ok = b <= dl && !uinf_q && v1 >= u;
+      // b1 == 0 per move, beside the level mux (b - J > 0 here; D >= 1)
       if (b > j) begin
-        bdn = clamp_q ? LW'(g_q) : b - j;
+        bdn      = clamp_q ? LW'(g_q) : b - j;
+        bdn_zero = clamp_q && gz_q;
       end else begin
-        bdn = b > 0 ? '0 : b;
+        bdn      = b_q[BW-1] ? b : '0;
+        bdn_zero = !b_q[BW-1];
       end
       if (up_ok) begin
-        b1 = bu;
-        u1 = UW'(uu);
+        b1      = bu;
+        u1      = UW'(uu);
+        b1_zero = !clamp_up && bsum == '0;
       end else if (land_ok) begin
-        b1 = v1_lo;
-        u1 = UW'(v1_lo);
+        b1      = v1_lo;
+        u1      = UW'(v1_lo);
+        b1_zero = v1[JW-1:0] == '0;
       end else if (hold_ok) begin
-        b1 = b;
-        u1 = u_q;
+        b1      = b;
+        u1      = u_q;
+        b1_zero = b_q == '0;
       end else begin
-        b1 = bdn;
+        b1      = bdn;
+        b1_zero = bdn_zero;
         if (bdn <= j) begin
-          u1 = bdn > 0 ? UW'(bdn) : '0;
+          u1 = bdn[LW-1] ? '0 : UW'(bdn);
         end else begin
           u1 = UW'(u - CW'(b));
         end
@@ -221,6 +247,7 @@ module sc_stop_gen (
     b_d      = b_q;
     u_d      = u_q;
     g_d      = g_q;
+    gz_d     = gz_q;
     j_d      = j_q;
     dlim_d   = dlim_q;
     k_d      = k_q;
@@ -242,31 +269,24 @@ module sc_stop_gen (
       clamp_d  = 1'b0;
       v_d      = v_ld;
       b_d      = b_ld;
-      u_d      = '0;
-      g_d      = '0;
       j_d      = j_ld;
       dlim_d   = d_ld;
-      k_d      = '0;
-      prep_d   = '0;
-      rem_d    = '0;
-      jk_d     = '0;
-      j2k_d    = '0;
-      remk_d   = '0;
+      // The division state (k, prep, rem, remk; jk, j2k follow in the set-up)
+      // is read only while div_q, g only while clamp_q, u only while active
+      // and not uinf: load them without the cases that leave them unused.
+      k_d      = k_ld;
+      jk_d     = JKW'(j_ld);
+      prep_d   = 2'd1;
+      rem_d    = RW'(b_ld);
+      remk_d   = sh_out;
+      u_d      = b_ld_le_j ? (b_ld[BW-1] ? '0 : UW'(b_ld)) : UW'({sh_out, 1'b0});
       if (v_ld == '0 && b_ld == '0) begin
         done_d = 1'b1;
       end else begin
         active_d = 1'b1;
-        if (b_ld <= $signed(BW'({1'b0, j_ld}))) begin
-          u_d = b_ld > 0 ? UW'(b_ld) : '0;
-        end else if (inf_exp >= (KW+1)'(InfExp)) begin
-          uinf_d = 1'b1;
-        end else begin
-          div_d  = 1'b1;
-          prep_d = 2'd1;
-          k_d    = k_ld;
-          rem_d  = b_ld;
-          remk_d = sh_out;
-          u_d    = UW'({sh_out, 1'b0});
+        if (!b_ld_le_j) begin
+          uinf_d = inf_exp >= (KW+1)'(InfExp);
+          div_d  = inf_exp < (KW+1)'(InfExp);
         end
       end
     end else if (active_q) begin
@@ -274,44 +294,44 @@ module sc_stop_gen (
       b_d     = BW'(b1);
       u_d     = u1;
       clamp_d = up_ok ? clamp_up : (!land_ok && hold_ok && clamp_q);
-      if (up_ok && clamp_up) begin
-        g_d = b_q;
+      if (up_ok) begin
+        g_d  = b_q;
+        gz_d = b_q == '0;
       end
       if (b1 <= j) begin
         // at or below one jerk step the bound is exact (R(b) = b)
         div_d  = 1'b0;
         uinf_d = 1'b0;
       end else if (div_q && prep_q == 2'd1) begin
-        jk_d   = sh_out;
+        jk_d   = JKW'(sh_out);
         prep_d = 2'd2;
       end else if (div_q && prep_q == 2'd2) begin
         j2k_d  = sh_out;
         prep_d = 2'd0;
       end else if (div_q) begin
-        take = rem_q >= BW'(jk_q);
-        dec  = take ? ((DW+1)'(j2k_q) + {j2k_q, 1'b0} - (DW+1)'(jk_q)) >> 1 : (DW+1)'(remk_q);
+        take = rem_q >= RW'(jk_q);
+        // 3 j2k - jk < 2^(DW+2): j2k = J << 2k >= jk = J << k
+        dec  = take ? (DW+1)'(((DW+2)'(j2k_q) + (DW+2)'({j2k_q, 1'b0}) - (DW+2)'(jk_q)) >> 1)
+                    : (DW+1)'(remk_q);
         u_d  = u1 - UW'(dec);
         if (take) begin
-          rem_d  = rem_q - BW'(jk_q);
-          remk_d = remk_q - j2k_q;
+          rem_d  = rem_q - RW'(jk_q);
         end
-        if (k_q == '0) begin
-          div_d = 1'b0;
-        end else begin
-          k_d    = k_q - KW'(1);
-          jk_d   = jk_q >> 1;
-          j2k_d  = j2k_q >> 2;
-          remk_d = (take ? remk_q - j2k_q : remk_q) >> 1;
-        end
+        // after the last bit (k = 0) the division state is no longer read
+        div_d  = k_q != '0;
+        k_d    = k_q - KW'(1);
+        jk_d   = jk_q >> 1;
+        j2k_d  = j2k_q >> 2;
+        remk_d = (take ? remk_q - j2k_q : remk_q) >> 1;
       end
-      if (v1 < 0) begin
+      if (v1[CW-1]) begin
         over_d = 1'b1;
-        if (b1 == '0) begin
+        if (b1_zero) begin
           neg_d = !neg_q;
           v_d   = VW'(-v1);
         end
       end
-      if (v1 == '0 && b1 == '0) begin
+      if (v1 == '0 && b1_zero) begin
         active_d = 1'b0;
         done_d   = 1'b1;
         div_d    = 1'b0;
@@ -333,6 +353,7 @@ module sc_stop_gen (
       b_q      <= '0;
       u_q      <= '0;
       g_q      <= '0;
+      gz_q     <= 1'b1;
       j_q      <= JW'(1);
       dlim_q   <= AW'(1);
       k_q      <= '0;
@@ -353,6 +374,7 @@ module sc_stop_gen (
       b_q      <= b_d;
       u_q      <= u_d;
       g_q      <= g_d;
+      gz_q     <= gz_d;
       j_q      <= j_d;
       dlim_q   <= dlim_d;
       k_q      <= k_d;

@@ -7,9 +7,9 @@
 # Area budget (fails when over): SC_LUT_BUDGET / SC_DSP_BUDGET in the
 # environment; the single-axis cores (sc_axis_core, sc_servo_axis) default
 # to 8600 LUT (logic + LUTs used as memory) and 8 DSP48E1: with the
-# controlled-stop generator (about 4300 LUT in the servo axis, docs/stop.md),
+# controlled-stop generator (about 3500 LUT in the servo axis, docs/stop.md),
 # the row stream with retarget and the HOLD count, the closed-loop axis
-# measures 8222 (the board top 10090 of the xc7a35t's 20800: 48.5 %, room
+# measures 7430 (the board top 9463 of the xc7a35t's 20800: 45.5 %, room
 # for a second axis beside it). The margin covers yosys' own spread: the
 # same sc_profile_exec source came out at 1138 or 1578 LUT inside
 # sc_servo_axis when only the servo and sc_pkg changed elsewhere (the
