@@ -69,14 +69,16 @@ RtlBoardXY::~RtlBoardXY() {
   coverage_collect(*ctx_);
 }
 
-void RtlBoardXY::tick100(bool uart_rx, bool estop, uint8_t sw, bool probe) {
+void RtlBoardXY::tick100(bool uart_rx, bool estop, uint8_t sw, bool probe, uint8_t enc_a, uint8_t enc_b,
+                         uint8_t enc_z, bool rst_n) {
+  m_->ck_rst_ni = rst_n;
   m_->uart_rx_i = uart_rx;
   m_->estop_i = estop;
   m_->sw_i = sw & 0x3f;
   m_->probe_i = probe;
-  m_->enc_a_i = 0;
-  m_->enc_b_i = 0;
-  m_->enc_z_i = 0;
+  m_->enc_a_i = enc_a & 0x3;
+  m_->enc_b_i = enc_b & 0x3;
+  m_->enc_z_i = enc_z & 0x3;
   m_->clk100_i = 1;
   m_->eval();
   m_->clk100_i = 0;

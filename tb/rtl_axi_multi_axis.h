@@ -50,8 +50,9 @@ class RtlBoardXY {
   RtlBoardXY(const RtlBoardXY&) = delete;
   RtlBoardXY& operator=(const RtlBoardXY&) = delete;
   // One 100 MHz period with these input levels; sw: X limit -, +, home in
-  // bits 0-2, Y's in bits 3-5.
-  void tick100(bool uart_rx, bool estop = false, uint8_t sw = 0, bool probe = false);
+  // bits 0-2, Y's in bits 3-5; encoder pins: bit a for axis a.
+  void tick100(bool uart_rx, bool estop = false, uint8_t sw = 0, bool probe = false, uint8_t enc_a = 0,
+               uint8_t enc_b = 0, uint8_t enc_z = 0, bool rst_n = true);
   Pins pins() const;
   uint64_t clocks100() const { return clk100_; }
 

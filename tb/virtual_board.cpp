@@ -14,6 +14,7 @@
 #include <cstdio>
 #include <cstring>
 #include <iostream>
+#include <stdexcept>
 #include <thread>
 
 #include "scurve/cli/move_flags.h"
@@ -29,11 +30,25 @@ constexpr int kPinClocksPerClock = 5;  // the board's 100 MHz pin clock over its
 }  // namespace
 
 VirtualBoard::VirtualBoard(const VirtualBoardConfig& cfg)
-    : cfg_(cfg), plant_(cfg.plant, double(ClkHz)),
-      line_(kPinClocksPerClock * scurve::hw::UartClksPerBit) {
-  if (cfg.home_at) home_.emplace(*cfg.home_at, cfg.home_dir, 0, false, cfg.seed);
-  if (cfg.limit_neg_at) lim_neg_.emplace(*cfg.limit_neg_at, -1, 0, false, cfg.seed + 1);
-  if (cfg.limit_pos_at) lim_pos_.emplace(*cfg.limit_pos_at, 1, 0, false, cfg.seed + 2);
+    : cfg_(cfg),
+      line_(kPinClocksPerClock * (cfg.axes == 1 ? int(scurve::hw::UartClksPerBit) : RtlBoardXY::kClksPerBit)) {
+  if (cfg.axes == 1) {
+    rtl_ = std::make_unique<RtlBoard>();
+  } else if (cfg.axes == RtlBoardXY::kAxes) {
+    rtl_xy_ = std::make_unique<RtlBoardXY>();
+  } else {
+    throw std::invalid_argument(fmt::format("axes={}: needs 1 or {}", cfg.axes, RtlBoardXY::kAxes));
+  }
+  for (size_t a = 0; a < cfg.axes; ++a) {
+    PlantConfig pc = cfg.plant;
+    pc.seed = cfg.plant.seed + 7 * a;
+    Axis x{Plant(pc, double(ClkHz)), {}, {}, {}};
+    const uint64_t seed = cfg.seed + 3 * a;
+    if (cfg.home_at) x.home.emplace(*cfg.home_at, cfg.home_dir, 0, false, seed);
+    if (cfg.limit_neg_at) x.lim_neg.emplace(*cfg.limit_neg_at, -1, 0, false, seed + 1);
+    if (cfg.limit_pos_at) x.lim_pos.emplace(*cfg.limit_pos_at, 1, 0, false, seed + 2);
+    axes_.push_back(std::move(x));
+  }
   // The reset synchroniser and the clock stand-in's lock.
   for (int i = 0; i < 40; ++i) clock(true);
 }
@@ -51,19 +66,42 @@ void VirtualBoard::receive_from_host(const uint8_t* data, size_t n) {
   }
 }
 
-void VirtualBoard::clock(bool reset_n) {
-  const int64_t pos = plant_.commanded();
+uint8_t VirtualBoard::Axis::switches() {
+  const int64_t pos = plant.commanded();
   uint8_t sw = 0;
-  if (lim_neg_ && lim_neg_->pin(pos)) sw |= 1;
-  if (lim_pos_ && lim_pos_->pin(pos)) sw |= 2;
-  if (home_ && home_->pin(pos)) sw |= 4;
-  RtlBoard::Pins p;
-  for (int i = 0; i < kPinClocksPerClock; ++i) {
-    rtl_.tick100(line_.tx_level(), reset_n, false, plant_.enc_a(), plant_.enc_b(), sw, plant_.enc_z());
-    p = rtl_.pins();
-    line_.clock(p.uart_tx);
+  if (lim_neg && lim_neg->pin(pos)) sw |= 1;
+  if (lim_pos && lim_pos->pin(pos)) sw |= 2;
+  if (home && home->pin(pos)) sw |= 4;
+  return sw;
+}
+
+void VirtualBoard::clock(bool reset_n) {
+  if (rtl_) {
+    Axis& x = axes_[0];
+    const uint8_t sw = x.switches();
+    RtlBoard::Pins p;
+    for (int i = 0; i < kPinClocksPerClock; ++i) {
+      rtl_->tick100(line_.tx_level(), reset_n, false, x.plant.enc_a(), x.plant.enc_b(), sw, x.plant.enc_z());
+      p = rtl_->pins();
+      line_.clock(p.uart_tx);
+    }
+    x.plant.clock(p.step, p.dir);
+  } else {
+    uint8_t sw = 0, a = 0, b = 0, z = 0;
+    for (size_t k = 0; k < axes_.size(); ++k) {
+      sw = uint8_t(sw | axes_[k].switches() << (3 * k));
+      a = uint8_t(a | uint8_t(axes_[k].plant.enc_a()) << k);
+      b = uint8_t(b | uint8_t(axes_[k].plant.enc_b()) << k);
+      z = uint8_t(z | uint8_t(axes_[k].plant.enc_z()) << k);
+    }
+    RtlBoardXY::Pins p;
+    for (int i = 0; i < kPinClocksPerClock; ++i) {
+      rtl_xy_->tick100(line_.tx_level(), false, sw, false, a, b, z, reset_n);
+      p = rtl_xy_->pins();
+      line_.clock(p.uart_tx);
+    }
+    for (size_t k = 0; k < axes_.size(); ++k) axes_[k].plant.clock(p.step[k], p.dir[k]);
   }
-  plant_.clock(p.step, p.dir);
   ++clocks_;
 }
 
@@ -80,6 +118,22 @@ void VirtualBoard::run(uint64_t clocks, std::vector<uint8_t>& to_host) {
 void VirtualBoard::press_reset() {
   for (int i = 0; i < 10; ++i) clock(false);
   for (int i = 0; i < 40; ++i) clock(true);
+}
+
+std::optional<scurve::Error> VirtualBoardChannel::send(const std::vector<uint8_t>& bytes) {
+  b_.receive_from_host(bytes.data(), bytes.size());
+  return std::nullopt;
+}
+
+std::optional<scurve::Error> VirtualBoardChannel::receive(std::vector<uint8_t>& out, size_t n, double timeout) {
+  const uint64_t until = b_.clocks() + uint64_t(std::ceil(timeout * double(ClkHz)));
+  for (;;) {
+    size_t k = 0;
+    for (; k < pending_.size() && out.size() < n; ++k) out.push_back(pending_[k]);
+    pending_.erase(pending_.begin(), pending_.begin() + ptrdiff_t(k));
+    if (out.size() >= n || b_.clocks() >= until) return std::nullopt;
+    b_.run(std::min<uint64_t>(200, until - b_.clocks()), pending_);
+  }
 }
 
 // ---- the pseudo-terminal ------------------------------------------------------------
@@ -143,8 +197,10 @@ int run_virtual_board(const VirtualBoardCliOptions& opt) {
     if (g_reset.exchange(false)) vb.press_reset();
     const ssize_t n = ::read(master, buf, sizeof buf);
     if (n > 0) vb.receive_from_host(buf, size_t(n));
-    // Short steps while bytes move (answers go out promptly), 1 ms otherwise.
-    const uint64_t step = (n > 0 || vb.line_busy()) ? 2000 : 20000;
+    // 100 us of board time between looks at the terminal: a request waits
+    // at most that long (the host's exchanges, not the simulation, set the
+    // rate at which rows reach the FIFO).
+    const uint64_t step = 2000;
     vb.run(step, out);
     for (size_t done = 0; done < out.size();) {
       const ssize_t w = ::write(master, out.data() + done, out.size() - done);
@@ -168,10 +224,13 @@ int run_virtual_board(const VirtualBoardCliOptions& opt) {
     }
   }
   const double wall_s = std::chrono::duration<double>(clk::now() - t0).count();
-  std::cerr << fmt::format("virtual board: {} clocks ({:.3f} s of board time) in {:.3f} s, position {}, encoder {}, {} "
-                           "host bytes corrupted\n",
-                           vb.clocks(), double(vb.clocks()) / hz, wall_s, vb.position(), vb.encoder(),
-                           vb.corrupted());
+  std::string where;
+  for (size_t a = 0; a < vb.axes(); ++a) {
+    where += fmt::format("{}position {}, encoder {}, ", vb.axes() > 1 ? fmt::format("axis {}: ", a) : "",
+                         vb.position(a), vb.encoder(a));
+  }
+  std::cerr << fmt::format("virtual board: {} clocks ({:.3f} s of board time) in {:.3f} s, {}{} host bytes corrupted\n",
+                           vb.clocks(), double(vb.clocks()) / hz, wall_s, where, vb.corrupted());
   if (!opt.pty_link.empty()) ::unlink(opt.pty_link.c_str());
   ::close(slave);
   ::close(master);
@@ -186,6 +245,9 @@ void add_virtual_board_command(CLI::App& app, VirtualBoardCli& v) {
                        "pseudo-terminal: scurve board --port drives it as it drives the Arty");
   v.cmd = c;
   c->add_option("--pty-link", v.opt.pty_link, "a symbolic link to the terminal (replaced when it is one)");
+  int_flag(c, "--axes", v.opt.board.axes, 1, int64_t(RtlBoardXY::kAxes),
+           "1 (default: the one-axis board, sc_board_top) or 2 (the two-axis board, sc_board_xy_top, on the "
+           "multi-axis map; switches on both axes)");
   real_flag(c, "--speed", v.opt.speed, "x real time (default 1; 0: as fast as the simulation runs)", 0, 1000);
   real_flag(c, "--max-seconds", v.opt.max_seconds, "exit after this many wall seconds (default 0: at SIGINT/SIGTERM)",
             0, 1e7);

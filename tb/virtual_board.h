@@ -1,5 +1,6 @@
-// The virtual board: the Verilated board top (sc_board_top) with the plant of
-// the testbench on its pins (a stepper and an encoder with an index on
+// The virtual board: the Verilated board top (sc_board_top, or with two
+// axes sc_board_xy_top on the multi-axis map) with the plant of the
+// testbench on its pins (per axis a stepper and an encoder with an index on
 // STEP/DIR and A/B/Z, optionally a home switch and limit switches), its
 // UART carried to a byte stream. `scurve virtual-board` puts that stream on
 // a pseudo-terminal, so `scurve board --port` drives simulated hardware
@@ -15,14 +16,20 @@
 #include <vector>
 
 #include "plant.h"
+#include "scurve/board.h"
 #include "rtl_axi_axis.h"
+#include "rtl_axi_multi_axis.h"
 #include "switch_plant.h"
 #include "uart_line.h"
 
 namespace sc {
 
 struct VirtualBoardConfig {
-  PlantConfig plant;              // default: the stepper, one count per pulse; index below
+  // 1: sc_board_top (UartClksPerBit clocks per bit, 1-byte frames); 2:
+  // sc_board_xy_top (RtlBoardXY::kClksPerBit clocks per bit, 2-byte frames).
+  size_t axes = 1;
+  PlantConfig plant;              // per axis; default: the stepper, one count per pulse; index below
+  // Switches, on every axis at the same positions:
   std::optional<int64_t> home_at; // a home switch, active at and beyond this pulse position toward home_dir
   int home_dir = -1;
   std::optional<int64_t> limit_neg_at, limit_pos_at;  // limit switches, active at and beyond
@@ -42,21 +49,43 @@ class VirtualBoard {
   void press_reset();
   bool line_busy() const { return line_.sending() || line_.receiving(); }
   uint64_t clocks() const { return clocks_; }
-  int64_t position() const { return plant_.commanded(); }  // net STEP pulses on the pins
-  int64_t encoder() const { return plant_.count(); }
+  size_t axes() const { return axes_.size(); }
+  int64_t position(size_t axis = 0) const { return axes_.at(axis).plant.commanded(); }  // net STEP pulses
+  int64_t encoder(size_t axis = 0) const { return axes_.at(axis).plant.count(); }
   uint64_t corrupted() const { return corrupted_; }
 
  private:
+  struct Axis {
+    Plant plant;
+    std::optional<SwitchPlant> home, lim_neg, lim_pos;
+    uint8_t switches();  // limit -, limit +, home in bits 0-2 (the pins this clock)
+  };
   void clock(bool reset_n);
   VirtualBoardConfig cfg_;
-  RtlBoard rtl_;
-  Plant plant_;
+  std::unique_ptr<RtlBoard> rtl_;      // one axis
+  std::unique_ptr<RtlBoardXY> rtl_xy_; // two axes
+  std::vector<Axis> axes_;
   UartLine line_;
-  std::optional<SwitchPlant> home_, lim_neg_, lim_pos_;
   uint64_t clocks_ = 0;
   uint64_t host_bytes_ = 0;
   uint64_t corrupted_ = 0;
   bool reset_pending_ = false;
+};
+
+// The virtual board as the host library's byte line, in process (the
+// pseudo-terminal's stand-in for tests): what the host sends goes onto the
+// board's UART; a receive runs the board until the bytes are there, the
+// timeout counted in board time.
+class VirtualBoardChannel : public scurve::ByteChannel {
+ public:
+  explicit VirtualBoardChannel(VirtualBoard& board) : b_(board) {}
+  std::optional<scurve::Error> send(const std::vector<uint8_t>& bytes) override;
+  std::optional<scurve::Error> receive(std::vector<uint8_t>& out, size_t n, double timeout) override;
+  void discard_input() override { pending_.clear(); }
+
+ private:
+  VirtualBoard& b_;
+  std::vector<uint8_t> pending_;  // sent by the board, not yet received
 };
 
 struct VirtualBoardCliOptions {

@@ -5,8 +5,11 @@
 # e-stop, homing, line noise the retries mend, a CRC error on every frame, a
 # board that stops answering, a board that resets in the middle of a stream,
 # a port that answers garbage, and ports that are no board.
-#   board_pty_test.sh SCURVE SOURCE_DIR [paper]
+#   board_pty_test.sh SCURVE SOURCE_DIR [paper|xy]
 # With `paper`: paper 000's group 1 (30,000 pulses) over the line instead.
+# With `xy`: the two-axis board (the multi-axis map, 2-byte frames) instead:
+# the map detected, paths with exact stops and blends on both axes, a stop,
+# an e-stop, and what the one map refuses that the other takes.
 set -euo pipefail
 scurve=$1
 src=$2
@@ -52,6 +55,63 @@ run_rc() {
   fi
 }
 json() { python3 -c "import json,sys; d=json.load(open('$tmp/out')); print($1)"; }
+
+if [ "$mode" = xy ]; then
+  start_board xy --axes 2
+  X=(board --port "$tmp/xy")
+  run_rc 0 "$scurve" "${X[@]}" --json info
+  [ "$(json 'd["axes"]')" = 2 ] || fail "xy info axes: $(cat "$tmp/out")"
+  [ "$(json 'd["map"]')" = multi ] || fail "xy info map: $(cat "$tmp/out")"
+  [ "$(json 'd["closed_loop"]')" = True ] || fail "xy info closed loop: $(cat "$tmp/out")"
+  # a path with exact stops, relative moves in mm (100 pulses/mm), the pins on the targets
+  printf 'G21 G91\nG1 X2 Y1 F1200\nG1 X1 Y-2.5\nG1 X-1.5 Y0.5\n' > "$tmp/p.gcode"
+  run_rc 0 "$scurve" "${X[@]}" --json path "$tmp/p.gcode" --accel 2000 --jerk 100000
+  [ "$(json 'd["pass"]')" = True ] || fail "xy path: $(cat "$tmp/out")"
+  [ "$(json '[a["status"]["ref_pos"] for a in d["axes"]]')" = "[150, -100]" ] || fail "xy path REF_POS: $(cat "$tmp/out")"
+  [ "$(json '[a["status"]["pulse_count"] for a in d["axes"]]')" = "[150, -100]" ] || fail "xy PULSE_COUNT: $(cat "$tmp/out")"
+  [ "$(json '[a["status"]["enc_pos"] for a in d["axes"]]')" = "[150, -100]" ] || fail "xy plant: $(cat "$tmp/out")"
+  [ "$(json 'd["boundaries_checked"] > 0')" = True ] || fail "xy boundaries: $(cat "$tmp/out")"
+  # the same path blended, planned from where the axes are: back by the sum
+  printf 'G21 G91\nG1 X-1 Y-1 F1200\nG1 X-0.5 Y2\n' > "$tmp/q.gcode"
+  run_rc 0 "$scurve" "${X[@]}" --json path "$tmp/q.gcode" --accel 2000 --jerk 100000 --blend 0.1
+  [ "$(json 'd["junction"]')" = blend ] || fail "xy blend: $(cat "$tmp/out")"
+  [ "$(json '[a["status"]["ref_pos"] for a in d["axes"]]')" = "[0, 0]" ] || fail "xy blend REF_POS: $(cat "$tmp/out")"
+  run_rc 0 "$scurve" "${X[@]}" --json status
+  [ "$(json '[a["enc_pos"] for a in d["axes"]]')" = "[0, 0]" ] || fail "xy status: $(cat "$tmp/out")"
+  # a long move stopped under control by CMD.STOP from the host: both axes at rest, short of the target
+  printf 'G21 G91\nG1 X40 Y30 F600\n' > "$tmp/long.gcode"
+  run_rc 0 "$scurve" "${X[@]}" --json path "$tmp/long.gcode" --accel 500 --jerk 10000 --no-wait
+  [ "$(json 'd["started"] and not d["pass"]')" = True ] || fail "xy path --no-wait: $(cat "$tmp/out")"
+  sleep 2
+  run_rc 0 "$scurve" "${X[@]}" --json stop
+  [ "$(json '[a["busy"] for a in d["axes"]]')" = "[False, False]" ] || fail "xy stop: $(cat "$tmp/out")"
+  [ "$(json '0 < d["axes"][0]["ref_pos"] < 4000 and 0 < d["axes"][1]["ref_pos"] < 3000')" = True ] ||
+    fail "xy stop position: $(cat "$tmp/out")"
+  [ "$(json 'all(a["ref_pos"] == a["pulse_count"] for a in d["axes"])')" = True ] || fail "xy stop counts: $(cat "$tmp/out")"
+  # an e-stop from the group window disables both axes until clear
+  run_rc 0 "$scurve" "${X[@]}" --json estop
+  [ "$(json '[a["enabled"] for a in d["axes"]]')" = "[False, False]" ] || fail "xy estop: $(cat "$tmp/out")"
+  run_rc 0 "$scurve" "${X[@]}" --json clear
+  [ "$(json '[a["faults"] for a in d["axes"]]')" = "[[], []]" ] || fail "xy clear: $(cat "$tmp/out")"
+  # what this map refuses, one line each
+  run_rc 2 "$scurve" "${X[@]}" run --distance 100 --v-cruise 1000 --a-max 1e5 --j-max 1e7
+  grep -q "multi-axis map" "$tmp/err" || fail "xy run: $(cat "$tmp/err")"
+  printf 'G21\nG1 X1 M3\n' > "$tmp/bad.gcode"
+  run_rc 2 "$scurve" "${X[@]}" path "$tmp/bad.gcode"
+  grep -q "line 2" "$tmp/err" || fail "xy bad G-code: $(cat "$tmp/err")"
+  printf 'G21\nG1 X1 Y1 Z1 F600\n' > "$tmp/xyz.gcode"
+  run_rc 2 "$scurve" "${X[@]}" path "$tmp/xyz.gcode" --pulses-per-mm 100 100 100
+  run_rc 2 "$scurve" "${X[@]}" --map axis --timeout-ms 50 --retries 0 info
+  stop_board
+  # and the one-axis board: no path
+  start_board one
+  run_rc 2 "$scurve" board --port "$tmp/one" path "$tmp/p.gcode"
+  grep -q "one-axis map" "$tmp/err" || fail "path on the one-axis board: $(cat "$tmp/err")"
+  run_rc 0 "$scurve" board --port "$tmp/one" --map axis --json info
+  [ "$(json 'd["axes"]')" = 1 ] || fail "one-axis info: $(cat "$tmp/out")"
+  echo "PASS (two-axis board over the line)"
+  exit 0
+fi
 
 start_board b --home-at -700
 B=(board --port "$tmp/b")

@@ -6,7 +6,7 @@
 // loaded through the registers end every axis on its exact target, the
 // pins counted by a monitor per axis; random transactions over every
 // window keep the pins, the bus and the stop; and the two-axis board top
-// does the same over its UART.
+// does the same over its UART, driven by the host library's AxisGroup.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -20,6 +20,9 @@
 #include "closed_loop_run.h"
 #include "multi_run.h"
 #include "planner.h"
+#include "scurve/board.h"
+#include "scurve/path_planner.h"
+#include "virtual_board.h"
 
 namespace sc {
 namespace {
@@ -384,6 +387,83 @@ TEST(BoardXY, LineOverTheUartRunsBothAxesToTheirTargets) {
     const UartResponse ref = host.read(axis_reg(a, "REF_POS"));
     EXPECT_EQ(int32_t(ref.data), req.distances[a]) << "axis " << a;
   }
+}
+
+// The host's link to the in-process virtual board; waiting is board time.
+class VirtualLink : public scurve::UartLink {
+ public:
+  VirtualLink(VirtualBoardChannel& line, VirtualBoard& board, const scurve::LinkOptions& o)
+      : scurve::UartLink(line, o), b_(board) {}
+  void wait(double seconds) override {
+    std::vector<uint8_t> none;
+    b_.run(uint64_t(seconds * double(ClkHz)), none);
+  }
+
+ private:
+  VirtualBoard& b_;
+};
+
+TEST(BoardXY, TheHostDriverRunsRandomPathsEveryAxisEndingOnItsTargets) {
+  VirtualBoardConfig vc;
+  vc.axes = kAxes;
+  VirtualBoard board(vc);
+  VirtualBoardChannel line(board);
+  scurve::LinkOptions lo;
+  lo.addr_bits = MultiRegAddrW;
+  lo.timeout = 0.005;  // board time: an exchange takes about 0.1 ms
+  VirtualLink link(line, board, lo);
+  std::vector<uint8_t> none;
+  board.run(1000, none);
+  auto bits = scurve::detect_addr_bits(line, lo);
+  ASSERT_TRUE(std::holds_alternative<int>(bits));
+  EXPECT_EQ(std::get<int>(bits), MultiRegAddrW);
+  scurve::AxisGroup xy(link, scurve::Clock{double(ClkHz)});
+  auto info = xy.identify();
+  ASSERT_TRUE(std::holds_alternative<scurve::BoardInfo>(info)) << std::get<scurve::Error>(info).message;
+  ASSERT_EQ(xy.axes(), kAxes);
+  scurve::BoardConfig cfg;
+  ASSERT_FALSE(xy.configure(cfg));
+
+  std::mt19937_64 rng(20261206);
+  auto uni = [&](double lo_, double hi_) { return lo_ + (hi_ - lo_) * double(rng() >> 11) * 0x1.0p-53; };
+  std::vector<int64_t> at(kAxes, 0);
+  for (int path = 0; path < 3; ++path) {
+    scurve::PathRequest req;
+    req.axes = kAxes;
+    req.start = at;
+    const int moves = 3 + path % 2;
+    std::vector<int64_t> p = at;
+    for (int m = 0; m < moves; ++m) {
+      for (size_t a = 0; a < kAxes; ++a) {
+        const int64_t d = int64_t(uni(40, 400)) * (rng() & 1 ? 1 : -1);
+        p[a] += (rng() % 5 == 0) ? 0 : d;  // now and then an axis stays
+      }
+      req.moves.push_back({p, uni(3000, 8000), m + 1});
+    }
+    req.limits = {8000, uni(2e5, 5e5), uni(1e7, 3e7)};
+    if (path == 2) {
+      req.junction = scurve::Junction::kBlend;
+      req.tolerance = 5;
+    }
+    auto planned = scurve::plan_path(scurve::Planner{scurve::Clock{double(ClkHz)}}, req, scurve::PulseTiming{});
+    ASSERT_TRUE(std::holds_alternative<scurve::PathPlan>(planned)) << std::get<scurve::Error>(planned).message;
+    const scurve::PathPlan& plan = std::get<scurve::PathPlan>(planned);
+    auto run = xy.run_path(plan, 600);
+    ASSERT_TRUE(std::holds_alternative<scurve::PathRunReport>(run))
+        << "path " << path << ": " << std::get<scurve::Error>(run).message;
+    const scurve::PathRunReport& r = std::get<scurve::PathRunReport>(run);
+    EXPECT_GT(r.boundaries_checked, 0u);
+    EXPECT_GT(r.rows, size_t(RowFifoDepth)) << "the FIFO is topped up while the path runs";
+    for (size_t a = 0; a < kAxes; ++a) {
+      // The pins, counted on the plant: not the board's own account.
+      EXPECT_EQ(board.position(a), plan.moves.back().target[a]) << "path " << path << " axis " << a;
+      EXPECT_EQ(board.encoder(a), plan.moves.back().target[a]) << "path " << path << " axis " << a;
+      EXPECT_EQ(r.final_status[a].ref_pos, plan.moves.back().target[a]);
+      EXPECT_TRUE(r.final_status[a].faults().empty());
+    }
+    at = plan.moves.back().target;
+  }
+  EXPECT_EQ(link.stats().retries, 0u);
 }
 
 }  // namespace

@@ -142,6 +142,65 @@ std::variant<nlohmann::json, Error> run_stream_on_board(
                         {"status", board_status_json(r.final_status)}};
 }
 
+std::variant<nlohmann::json, Error> run_path_on_board(AxisGroup& group, const BoardPathRequest& request,
+                                                      const std::function<void(const BoardStatus&, size_t moves)>&
+                                                          progress) {
+  auto st = group.status();
+  if (const Error* e = std::get_if<Error>(&st)) return *e;
+  PathFileOptions fo = request.options;
+  if (fo.axes == 0) fo.axes = group.axes();  // G-code: as many axes as the board has
+  // The program starts where the axes are: REF_POS is the machine position.
+  fo.start.clear();
+  for (const BoardStatus& s : std::get<std::vector<BoardStatus>>(st)) fo.start.push_back(s.ref_pos);
+  if (request.options.axes != 0 && request.options.axes != group.axes()) {
+    return Error{"axes", fmt::format("axes={}: the board has {}", request.options.axes, group.axes())};
+  }
+  auto loaded = load_path_file(request.file, fo);
+  if (const std::string* e = std::get_if<std::string>(&loaded)) return Error{"FILE", *e};
+  const PathProgram& prog = std::get<PathProgram>(loaded);
+  PathRequest req = to_path_request(prog);
+  if (request.tolerance_mm > 0) {
+    req.junction = Junction::kBlend;
+    req.tolerance = request.tolerance_mm * *std::min_element(prog.pulses_per_mm.begin(), prog.pulses_per_mm.end());
+  }
+  auto planned = plan_path(Planner{group.clock()}, req, request.timing);
+  if (const Error* e = std::get_if<Error>(&planned)) return *e;
+  const PathPlan& plan = std::get<PathPlan>(planned);
+  if (plan.moves.empty()) {
+    return Error{"FILE", fmt::format("FILE={}: every move is to where the axes already are", request.file)};
+  }
+  BoardConfig cfg;
+  cfg.timing = request.timing;
+  cfg.closed_loop = request.closed_loop;
+  cfg.stop = StopLimits{req.limits.j, req.limits.a};
+  if (auto e = group.configure(cfg)) return *e;
+  auto run = group.run_path(
+      plan, request.timeout, 0.005,
+      [&](const BoardStatus& b) {
+        if (progress) progress(b, plan.moves.size());
+      },
+      request.wait);
+  if (const Error* e = std::get_if<Error>(&run)) return *e;
+  const PathRunReport& r = std::get<PathRunReport>(run);
+  nlohmann::json axes = nlohmann::json::array();
+  for (size_t a = 0; a < group.axes(); ++a) {
+    axes.push_back({{"start_ref", r.start_ref[a]},
+                    {"target", plan.moves.back().target[a]},
+                    {"status", board_status_json(r.final_status[a])}});
+  }
+  return nlohmann::json{{"action", "path"},
+                        {"moves", r.moves},
+                        {"rows", r.rows},
+                        {"junction", req.junction == Junction::kBlend ? "blend" : "exact-stop"},
+                        {"duration_s", plan.duration_s},
+                        {"path_length", plan.path_length},
+                        {"max_line_deviation", plan.max_line_deviation},
+                        {"boundaries_checked", r.boundaries_checked},
+                        {"started", true},
+                        {"pass", request.wait},  // not waited for: started, nothing checked yet
+                        {"axes", axes}};
+}
+
 namespace {
 
 std::string status_table(const BoardStatus& s) {
@@ -168,6 +227,10 @@ class BoardCommandImpl : public BoardCommand {
              "tries again after a timeout or a garbled answer (default 3)");
     real_flag(cmd_, "--clock-hz", clock_hz_, "the board's system clock, Hz (default 20e6)");
     cmd_->add_flag("--json", json_, "JSON on stdout");
+    cmd_->add_option("--map", map_,
+                     "the board's register map: auto (default: asks the board), axis (the one-axis board, 1-byte "
+                     "address frames), multi (the multi-axis map of the two-axis board, 2-byte frames)")
+        ->check(CLI::IsMember({"auto", "axis", "multi"}));
 
     info_ = sub("info", "identify the board: ID, register map version, axes, closed loop");
     status_ = sub("status", "one reading of the axis: positions, phase, FIFO, faults");
@@ -181,6 +244,23 @@ class BoardCommandImpl : public BoardCommand {
     add_timing_flags(stream_, stream_timing_);
     stream_->add_flag("--closed-loop", closed_loop_, "run it closed loop (the servo axis)");
     real_flag(stream_, "--timeout", run_timeout_, "seconds the stream may take (default 120)", 0, 1e6);
+    path_cmd_ = sub("path", "multi-axis board: plan a path file (JSON points or G-code) from where the axes are and "
+                        "run it, the FIFO kept topped up, every axis checked on its targets");
+    path_cmd_->add_option("FILE", path_req_.file, "path file: .json points or G-code (docs/multiaxis.md \"Path files\")")
+        ->required();
+    path_cmd_->add_option("--pulses-per-mm", path_req_.options.pulses_per_mm,
+                      "pulses per mm, one per axis (default: the file's, else 100)")
+        ->expected(1, 4);
+    real_flag(path_cmd_, "--feed-limit", path_req_.options.feed_limit, "G-code: highest feed and G0's, mm/s (default 100)",
+              0, 1e6);
+    real_flag(path_cmd_, "--accel", path_req_.options.accel, "G-code: path acceleration, mm/s^2 (default 1000)", 0, 1e9);
+    real_flag(path_cmd_, "--jerk", path_req_.options.jerk, "G-code: path jerk, mm/s^3 (default 10000)", 0, 1e12);
+    real_flag(path_cmd_, "--blend", path_req_.tolerance_mm,
+              "blend the corners within this distance of each corner point, mm (default 0: exact stops)", 0, 1e6);
+    add_timing_flags(path_cmd_, path_timing_);
+    path_cmd_->add_flag("--closed-loop", closed_loop_, "every axis closed loop (servo axes)");
+    path_cmd_->add_flag("--no-wait", no_wait_, "return once started (a path of at most a FIFO of rows)");
+    real_flag(path_cmd_, "--timeout", run_timeout_, "seconds the path may take (default 120)", 0, 1e6);
     stop_ = sub("stop", "controlled stop (CMD.STOP), then wait for rest");
     estop_ = sub("estop", "e-stop (CMD.ESTOP): the axis stops at once and is disabled until `clear`");
     clear_ = sub("clear", "clear every ERR and IRQ_STATUS flag (after an e-stop or a fault)");
@@ -219,7 +299,19 @@ class BoardCommandImpl : public BoardCommand {
     auto opened = open_serial_port({port_, lo.baud});
     if (const Error* e = std::get_if<Error>(&opened)) return fail(*e);
     std::unique_ptr<ByteChannel> line = std::move(std::get<std::unique_ptr<ByteChannel>>(opened));
+    if (map_ == "auto") {
+      auto bits = detect_addr_bits(*line, lo);
+      if (const Error* e = std::get_if<Error>(&bits)) return fail(*e);
+      lo.addr_bits = std::get<int>(bits);
+    } else {
+      lo.addr_bits = map_ == "multi" ? hw::MultiRegAddrW : hw::RegAddrW;
+    }
     UartLink link(*line, lo);
+    if (lo.addr_bits == hw::MultiRegAddrW) return run_group(link);
+    if (*path_cmd_) {
+      return bad_input("board path: the board speaks the one-axis map: run a move with `run` or a stream with "
+                       "`stream` (path needs the multi-axis map of a board with several axes)");
+    }
     Board board(link, Clock{clock_hz_});
     auto info = board.identify();
     if (const Error* e = std::get_if<Error>(&info)) return fail(*e);
@@ -241,6 +333,121 @@ class BoardCommandImpl : public BoardCommand {
     UartLink& link;
     BoardInfo info;
   };
+
+  // The multi-axis map: the axes as an AxisGroup.
+  int run_group(UartLink& link) const {
+    AxisGroup group(link, Clock{clock_hz_});
+    auto ident = group.identify();
+    if (const Error* e = std::get_if<Error>(&ident)) return fail(*e);
+    const BoardInfo& info = std::get<BoardInfo>(ident);
+    auto out = [&](nlohmann::json j, const std::string& text, int rc) {
+      if (json_) {
+        j["port"] = port_;
+        j["map"] = "multi";
+        j["link"] = link_json(link.stats());
+        std::cout << j.dump(2) << "\n";
+      } else {
+        std::cout << text;
+      }
+      return rc;
+    };
+    auto statuses = [&](const std::vector<BoardStatus>& st, nlohmann::json& j, std::string& text) {
+      j["axes"] = nlohmann::json::array();
+      for (size_t a = 0; a < st.size(); ++a) {
+        j["axes"].push_back(board_status_json(st[a]));
+        text += fmt::format("axis {}:\n{}", a, status_table(st[a]));
+      }
+    };
+    // An action, then every axis's reading.
+    auto act_then_status = [&](std::optional<Error> e, const char* what, bool wait) {
+      if (e) return fail(*e);
+      auto st = wait ? group.wait_idle(run_timeout_) : group.status();
+      if (const Error* e2 = std::get_if<Error>(&st)) return fail(*e2);
+      nlohmann::json j = {{"action", what}};
+      std::string text = fmt::format("{}: {}\n", what, wait ? "at rest" : "done");
+      statuses(std::get<std::vector<BoardStatus>>(st), j, text);
+      return out(j, text, 0);
+    };
+    if (*info_) {
+      nlohmann::json j = board_info_json(info);
+      return out(j,
+                 fmt::format("board on {}: ID 0x{:08X}, register map {}.{}, {} axes on the multi-axis map, {}\n",
+                             port_, info.id, info.version_major, info.version_minor, info.axes,
+                             info.closed_loop ? "closed-loop servo axes" : "open-loop axes"),
+                 0);
+    }
+    if (*status_) return act_then_status(std::nullopt, "status", false);
+    if (*stop_) return act_then_status(group.stop(), "stop", true);
+    if (*estop_) return act_then_status(group.estop(), "estop", false);
+    if (*clear_) return act_then_status(group.clear_faults(), "clear", false);
+    if (*path_cmd_) return do_path(group, out);
+    if (*watch_) return do_watch_group(group);
+    const char* action = *run_ ? "run" : *stream_ ? "stream" : "home";
+    return bad_input(fmt::format("board {}: the board has {} axes on the multi-axis map: moves go through `path` "
+                                 "(run, stream and home drive the one-axis board)", action, info.axes));
+  }
+
+  template <class Out>
+  int do_path(AxisGroup& group, Out& out) const {
+    BoardPathRequest r = path_req_;
+    r.options.axes = 0;  // the board's
+    r.timing = to_timing(path_timing_);
+    r.closed_loop = closed_loop_;
+    r.timeout = run_timeout_;
+    r.wait = !no_wait_;
+    const bool tty = isatty(2);
+    auto progress = [&](const BoardStatus& b, size_t moves) {
+      if (tty) std::fprintf(stderr, "\r[path: move %u of %zu, FIFO %d]", b.move_index, moves, b.fifo_level());
+    };
+    auto res = run_path_on_board(group, r, progress);
+    if (tty) std::fputs("\n", stderr);
+    if (const Error* e = std::get_if<Error>(&res)) {
+      // A file or plan refused: bad input (exit 2); the board's answers: exit 1.
+      if (e->parameter == "board" || e->parameter == "port" || e->parameter == "timeout") return fail(*e);
+      return bad_input(e->message);
+    }
+    const nlohmann::json& j = std::get<nlohmann::json>(res);
+    if (no_wait_) {
+      return out(j, fmt::format("path: started, {} moves, {} rows\n", j["moves"].get<uint64_t>(),
+                                j["rows"].get<uint64_t>()), 0);
+    }
+    std::string text = fmt::format("path: {} moves, {} rows, {:.6f} s planned ({}), {} boundaries checked\n",
+                                   j["moves"].get<uint64_t>(), j["rows"].get<uint64_t>(),
+                                   j["duration_s"].get<double>(), j["junction"].get<std::string>(),
+                                   j["boundaries_checked"].get<uint64_t>());
+    for (size_t a = 0; a < j["axes"].size(); ++a) {
+      const nlohmann::json& x = j["axes"][a];
+      text += fmt::format("axis {}: REF_POS {} -> {} (planned {}), PULSE_COUNT {}, ENC_POS {}\n", a,
+                          x["start_ref"].get<int64_t>(), x["status"]["ref_pos"].get<int64_t>(),
+                          x["target"].get<int64_t>(), x["status"]["pulse_count"].get<int64_t>(),
+                          x["status"]["enc_pos"].get<int64_t>());
+    }
+    return out(j, text + "PASS\n", 0);
+  }
+
+  int do_watch_group(AxisGroup& group) const {
+    for (int n = 0; watch_count_ == 0 || n < watch_count_; ++n) {
+      if (n > 0) std::this_thread::sleep_for(std::chrono::duration<double>(watch_interval_));
+      auto st = group.status();
+      if (const Error* e = std::get_if<Error>(&st)) return fail(*e);
+      const auto& axes = std::get<std::vector<BoardStatus>>(st);
+      if (json_) {
+        nlohmann::json j = {{"axes", nlohmann::json::array()}};
+        for (const BoardStatus& b : axes) j["axes"].push_back(board_status_json(b));
+        std::cout << j.dump() << std::endl;  // JSON Lines
+        continue;
+      }
+      std::string line;
+      for (size_t a = 0; a < axes.size(); ++a) {
+        const std::vector<std::string> f = axes[a].faults();
+        line += fmt::format("{}axis {}: REF_POS {:>11}  ENC_POS {:>11}  {:<14} faults: {}", a ? "  |  " : "", a,
+                            axes[a].ref_pos, axes[a].enc_pos, phase_name(axes[a].phase()),
+                            f.empty() ? "none" : fmt::format("{}", fmt::join(f, ",")));
+      }
+      std::cout << line << "\n" << std::flush;
+    }
+    return 0;
+  }
 
   int emit(const Session& s, nlohmann::json j, const std::string& text, int rc) const {
     if (json_) {
@@ -402,7 +609,7 @@ class BoardCommandImpl : public BoardCommand {
 
   CLI::App* cmd_ = nullptr;
   CLI::App *info_ = nullptr, *status_ = nullptr, *run_ = nullptr, *stream_ = nullptr, *stop_ = nullptr;
-  CLI::App *estop_ = nullptr, *clear_ = nullptr, *home_ = nullptr, *watch_ = nullptr;
+  CLI::App *estop_ = nullptr, *clear_ = nullptr, *home_ = nullptr, *watch_ = nullptr, *path_cmd_ = nullptr;
   std::string port_;
   LinkOptions link_;
   double timeout_ms_ = 200;
@@ -412,6 +619,9 @@ class BoardCommandImpl : public BoardCommand {
   bool closed_loop_ = false, no_wait_ = false;
   double run_timeout_ = 120;
   std::string stream_file_;
+  std::string map_ = "auto";
+  BoardPathRequest path_req_;
+  MoveFlags path_timing_;
   HomingFlags home_flags_;
   double watch_interval_ = 0.2;
   int watch_count_ = 0;

@@ -7,6 +7,7 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -82,6 +83,20 @@ std::array<double, 4> json_jerks(const std::string& param, const nlohmann::json&
 }
 
 // Pulses per mm of every axis: the given list, else the default.
+// PathFileOptions::start: one position per axis, within the planner's range.
+std::vector<int64_t> given_start(const std::vector<int64_t>& start, size_t axes) {
+  if (start.size() != axes) {
+    throw input::Error("start", fmt::format("{} values", start.size()), fmt::format("needs {} (one per axis)", axes));
+  }
+  for (size_t i = 0; i < axes; ++i) {
+    if (std::llabs(start[i]) > scurve::PathRequest::kMaxPosition) {
+      throw input::Error(fmt::format("start[{}]", i), fmt::format("{}", start[i]),
+                         fmt::format("must be within +-{} pulses", scurve::PathRequest::kMaxPosition));
+    }
+  }
+  return start;
+}
+
 std::vector<double> pulses_per_mm_of(const PathFileOptions& o, size_t axes) {
   if (o.pulses_per_mm.empty()) return std::vector<double>(axes, PathFileOptions::kDefaultPulsesPerMm);
   if (o.pulses_per_mm.size() != axes) {
@@ -315,8 +330,9 @@ PathProgram parse_path_json(const std::string& text, const PathFileOptions& o) {
     }
   }
 
-  const std::vector<int64_t> start =
+  std::vector<int64_t> start =
       j.contains("start") ? json_position("start", j["start"], ppm) : std::vector<int64_t>(axes, 0);
+  if (!o.start.empty()) start = given_start(o.start, axes);
   const nlohmann::json& pts = json_array("points", j["points"]);
   if (pts.empty()) throw input::Error("points", "[]", "needs at least one point");
   std::vector<FileMove> moves;
@@ -360,7 +376,10 @@ PathProgram parse_path_gcode(const std::string& text, const PathFileOptions& o) 
   std::optional<int> motion;
   bool absolute = true;
   std::optional<double> feed_mm_s;
+  const std::vector<int64_t> start =
+      o.start.empty() ? std::vector<int64_t>(axes, 0) : given_start(o.start, axes);
   std::vector<double> pos_mm(axes, 0.0);
+  for (size_t i = 0; i < axes; ++i) pos_mm[i] = double(start[i]) / ppm[i];
   std::vector<FileMove> moves;
 
   int line = 0;
@@ -462,7 +481,7 @@ PathProgram parse_path_gcode(const std::string& text, const PathFileOptions& o) 
     moves.push_back(std::move(m));
   }
   if (moves.empty()) throw input::Error("moves", "none", "the file has no G0/G1 move");
-  return finish(axes, ppm, std::vector<int64_t>(axes, 0), std::move(moves), o.feed_limit, o.accel, o.jerk);
+  return finish(axes, ppm, start, std::move(moves), o.feed_limit, o.accel, o.jerk);
 }
 
 PathProgram parse_path_text(const std::string& text, const std::string& file_name, const PathFileOptions& o) {

@@ -23,7 +23,13 @@ constexpr int kRetryGapBits = hw::UartTimeoutBits + 10;
 constexpr double kMaxTimeout = 60.0;  // s
 constexpr int kMaxRetries = 20;
 
-std::string reg_label(uint32_t addr) { return fmt::format("{} (0x{:03X})", reg_name(addr), addr); }
+// "REF_POS (0x028)"; in an axis window of the multi-axis map "axis 1 REF_POS (0x828)".
+std::string reg_label(uint32_t addr) {
+  const uint32_t window = addr >> hw::RegAddrW;
+  const std::string name = reg_name(addr & ((uint32_t(1) << hw::RegAddrW) - 1));
+  if (window == 0) return fmt::format("{} (0x{:03X})", name, addr);
+  return fmt::format("axis {} {} (0x{:03X})", window - 1, name, addr);
+}
 
 const char* bus_status_name(uint8_t s) {
   switch (s) {
@@ -72,7 +78,28 @@ std::optional<Error> check_link_options(const LinkOptions& o) {
     return Error{"baud", fmt::format("baud={}: not a serial rate (one of {})", o.baud,
                                      fmt::join(serial_baud_rates(), ", "))};
   }
+  if (o.addr_bits != hw::RegAddrW && o.addr_bits != hw::MultiRegAddrW) {
+    return Error{"addr_bits", fmt::format("addr_bits={}: needs {} (the one-axis map) or {} (the multi-axis map)",
+                                          o.addr_bits, hw::RegAddrW, hw::MultiRegAddrW)};
+  }
   return std::nullopt;
+}
+
+std::variant<int, Error> detect_addr_bits(ByteChannel& line, const LinkOptions& options) {
+  if (auto e = check_link_options(options)) return *e;
+  LinkOptions multi = options;
+  multi.addr_bits = hw::MultiRegAddrW;
+  multi.retries = 0;
+  UartLink probe(line, multi);
+  auto id = probe.read(hw::RegId);
+  const uint32_t magic = uint32_t(hw::RegIdMagic);
+  if (const uint32_t* v = std::get_if<uint32_t>(&id); v && (*v >> hw::IdMagicLsb) == magic) return hw::MultiRegAddrW;
+  LinkOptions single = options;
+  single.addr_bits = hw::RegAddrW;
+  UartLink link(line, single);
+  auto id1 = link.read(hw::RegId);
+  if (const Error* e = std::get_if<Error>(&id1)) return *e;
+  return hw::RegAddrW;
 }
 
 UartLink::UartLink(ByteChannel& line, const LinkOptions& options) : line_(line), o_(options) {}
@@ -101,10 +128,12 @@ void UartLink::wait(double seconds) {
 std::variant<UartResponse, Error> UartLink::exchange(uint32_t addr, const uint32_t* data) {
   ++stats_.accesses;
   const bool is_read = data == nullptr;
-  const FrameResult frame = is_read ? uart_read_frame(addr) : uart_write_frame(addr, *data);
+  const FrameResult frame =
+      is_read ? uart_read_frame(addr, o_.addr_bits) : uart_write_frame(addr, *data, o_.addr_bits);
   if (const Error* e = std::get_if<Error>(&frame)) return *e;
-  const bool repeatable = is_read || !(addr == uint32_t(hw::RegRowPush) ||
-                                       (addr == uint32_t(hw::RegCmd) && (*data & bit(hw::CmdStartBit))));
+  const uint32_t reg = addr & ((uint32_t(1) << hw::RegAddrW) - 1);  // in any window
+  const bool repeatable = is_read || !(reg == uint32_t(hw::RegRowPush) ||
+                                       (reg == uint32_t(hw::RegCmd) && (*data & bit(hw::CmdStartBit))));
   const std::string what = is_read ? fmt::format("a read of {}", reg_label(addr))
                                    : fmt::format("a write of 0x{:08X} to {}", *data, reg_label(addr));
   std::string last;          // what went wrong with the last try
@@ -308,9 +337,9 @@ std::variant<int, Error> Board::fifo_level() {
   return s.fifo_level();
 }
 
-std::optional<Error> Board::push_row(const Segment& row, RowFlags flags, std::optional<int> idle_level) {
-  for (const RegWrite& x : encode_row(row, flags)) {
-    const bool push = x.addr == uint32_t(hw::RegRowPush);
+std::optional<Error> Board::push_row(const std::vector<RegWrite>& writes, std::optional<int> idle_level) {
+  for (const RegWrite& x : writes) {
+    const bool push = (x.addr & ((uint32_t(1) << hw::RegAddrW) - 1)) == uint32_t(hw::RegRowPush);
     if (!push) {
       auto it = staged_.find(x.addr);
       if (it != staged_.end() && it->second == x.data) continue;
@@ -338,17 +367,25 @@ std::optional<Error> Board::push_row(const Segment& row, RowFlags flags, std::op
   return std::nullopt;
 }
 
-std::optional<Error> Board::prepare_rows(u128 pos_frac0) {
+std::optional<Error> Board::begin_load() {
   staged_.clear();  // another host, or a reset, may have written the staging registers
   if (auto e = require_idle("load")) return e;
   if (auto e = write(hw::RegCmd, bit(hw::CmdFlushBit))) return e;
   const uint32_t ctrl = bit(hw::CtrlEnableBit) | (cfg_.closed_loop ? bit(hw::CtrlClosedBit) : 0u);
-  if (auto e = write(hw::RegCtrl, ctrl)) return e;
+  return write(hw::RegCtrl, ctrl);
+}
+
+std::optional<Error> Board::write_pos_frac0(u128 pos_frac0) {
   const u128 f = mask_bits(pos_frac0, hw::FracBits);
   for (int i = 0; i < 3; ++i) {
     if (auto e = write(uint32_t(hw::RegPosFrac0 + 4 * i), uint32_t(f >> (32 * i)))) return e;
   }
   return std::nullopt;
+}
+
+std::optional<Error> Board::prepare_rows(u128 pos_frac0) {
+  if (auto e = begin_load()) return e;
+  return write_pos_frac0(pos_frac0);
 }
 
 std::optional<Error> Board::load_move(const Plan& plan) {
@@ -359,7 +396,7 @@ std::optional<Error> Board::load_move(const Plan& plan) {
   if (auto e = prepare_rows(plan.pos_frac0)) return e;
   const std::vector<RowFlags> flags = move_row_flags(plan.segments);
   for (size_t i = 0; i < plan.segments.size(); ++i) {
-    if (auto e = push_row(plan.segments[i], flags[i], int(i))) return e;
+    if (auto e = push_row(encode_row(plan.segments[i], flags[i]), int(i))) return e;
   }
   auto level = fifo_level();
   if (const Error* e = std::get_if<Error>(&level)) return *e;
@@ -439,6 +476,98 @@ std::variant<BoardStatus, Error> Board::wait_idle(double timeout, double poll) {
   }
 }
 
+std::variant<BoardStatus, Error> Board::stream_rows(const RowStream& stream, double timeout, double poll,
+                                                    const std::function<void(const BoardStatus&)>& progress,
+                                                    uint64_t& boundaries_checked) {
+  if (!stream.wait && stream.rows > size_t(hw::RowFifoDepth)) {
+    return Error{"plan", fmt::format("plan: {} rows do not fit the FIFO of {} (a stream that is not waited for must)",
+                                     stream.rows, hw::RowFifoDepth)};
+  }
+  size_t pushed = 0;
+  bool running = false;  // before START the FIFO level tells whether a row arrived
+  auto push = [&](int room) -> std::optional<Error> {
+    for (; room > 0 && pushed < stream.rows; --room, ++pushed) {
+      const std::optional<int> idle_level = running ? std::nullopt : std::optional<int>(int(pushed));
+      if (auto e = push_row(stream.row_writes(pushed), idle_level)) return e;
+    }
+    return std::nullopt;
+  };
+  if (auto e = push(hw::RowFifoDepth)) return *e;
+  auto level = fifo_level();
+  if (const Error* e = std::get_if<Error>(&level)) return *e;
+  if (size_t(std::get<int>(level)) != pushed) {
+    return Error{"board", fmt::format("stream: the FIFO holds {} rows after loading {} (a row was lost): not started",
+                                      std::get<int>(level), pushed)};
+  }
+  loaded_rows_ = int(pushed);
+  if (auto e = start()) return *e;
+  running = true;
+  if (!stream.wait) return status();
+  BoardStatus s;
+
+  using clk = std::chrono::steady_clock;
+  const auto t0 = clk::now();
+  auto abort = [&](Error e) -> Error {
+    (void)stop();  // best effort: never leave the axis running on a broken stream
+    return e;
+  };
+  // While rows remain, each round reads FIFO_STATUS and STATUS only (the
+  // line is the bottleneck: about 1 ms a register access at 115200 baud)
+  // and fills the room; the move boundaries are read between rounds.
+  for (;;) {
+    auto st = read(hw::RegStatus);
+    if (const Error* e = std::get_if<Error>(&st)) return abort(*e);
+    s.status = std::get<uint32_t>(st);
+    if (!s.busy()) break;
+    if (pushed < stream.rows) {
+      auto f = read(hw::RegFifoStatus);
+      if (const Error* e = std::get_if<Error>(&f)) return abort(*e);
+      s.fifo_status = std::get<uint32_t>(f);
+      if (auto e = push(hw::RowFifoDepth - s.fifo_level())) return abort(*e);
+    } else {
+      port_.wait(poll);
+    }
+    auto mi = read(hw::RegMoveIndex);
+    if (const Error* e = std::get_if<Error>(&mi)) return abort(*e);
+    auto bp = stream.read_boundaries();
+    if (const Error* e = std::get_if<Error>(&bp)) return abort(*e);
+    s.move_index = std::get<uint32_t>(mi);
+    const std::vector<int32_t>& seen = std::get<std::vector<int32_t>>(bp);
+    if (!seen.empty()) s.boundary_pos = seen[0];
+    // BOUNDARY_POS holds the boundary of the last move ended (MOVE_INDEX of
+    // them); a move may end between the reads, so a boundary is checked
+    // when a second MOVE_INDEX read agrees.
+    auto mi2 = read(hw::RegMoveIndex);
+    if (const Error* e = std::get_if<Error>(&mi2)) return abort(*e);
+    if (std::get<uint32_t>(mi2) == s.move_index && s.move_index > 0 && s.move_index <= stream.moves) {
+      const std::vector<int64_t> want = stream.planned_boundaries(s.move_index);
+      for (size_t a = 0; a < seen.size() && a < want.size(); ++a) {
+        if (int64_t(seen[a]) != int64_t(int32_t(uint32_t(want[a])))) {
+          return abort(Error{"board", fmt::format("stream: move {} ended at BOUNDARY_POS {}{}, planned {}",
+                                                  s.move_index, seen[a],
+                                                  seen.size() > 1 ? fmt::format(" on axis {}", a) : "", want[a])});
+        }
+      }
+      ++boundaries_checked;
+    }
+    if (progress) progress(s);
+    if (std::chrono::duration<double>(clk::now() - t0).count() > timeout) {
+      return abort(Error{"timeout", fmt::format("timeout={} s: the stream is still running", timeout)});
+    }
+  }
+  auto fin = status();
+  if (const Error* e = std::get_if<Error>(&fin)) return *e;
+  s = std::get<BoardStatus>(fin);
+  const std::vector<std::string> f = s.faults();
+  if (s.move_index != stream.moves || pushed != stream.rows || !s.done()) {
+    return Error{"board", fmt::format("stream: the axis went idle after move {} of {} ({} of {} rows sent){}{}",
+                                      s.move_index, stream.moves, pushed, stream.rows,
+                                      f.empty() ? ": no fault flag (a reset?)" : ": ",
+                                      fmt::join(f, ", "))};
+  }
+  return s;
+}
+
 std::variant<StreamRunReport, Error> Board::run_stream(const std::vector<StreamedMove>& moves, u128 start_frac,
                                                        double timeout, double poll,
                                                        const std::function<void(const BoardStatus&)>& progress) {
@@ -458,87 +587,166 @@ std::variant<StreamRunReport, Error> Board::run_stream(const std::vector<Streame
   rep.start_ref = int32_t(std::get<uint32_t>(ref0));
   rep.expected_end = int64_t(rep.start_ref) + moves.back().end_position;
 
-  size_t pushed = 0;
-  bool running = false;  // before START the FIFO level tells whether a row arrived
-  auto push = [&](int room) -> std::optional<Error> {
-    for (; room > 0 && pushed < rows.size(); --room, ++pushed) {
-      const std::optional<int> idle_level = running ? std::nullopt : std::optional<int>(int(pushed));
-      if (auto e = push_row(*rows[pushed].first, rows[pushed].second, idle_level)) return e;
-    }
-    return std::nullopt;
-  };
-  if (auto e = push(hw::RowFifoDepth)) return *e;
-  auto level = fifo_level();
-  if (const Error* e = std::get_if<Error>(&level)) return *e;
-  if (size_t(std::get<int>(level)) != pushed) {
-    return Error{"board", fmt::format("stream: the FIFO holds {} rows after loading {} (a row was lost): not started",
-                                      std::get<int>(level), pushed)};
-  }
-  loaded_rows_ = int(pushed);
-  if (auto e = start()) return *e;
-  running = true;
-  BoardStatus s;
-
-  using clk = std::chrono::steady_clock;
-  const auto t0 = clk::now();
-  auto abort = [&](Error e) -> Error {
-    (void)stop();  // best effort: never leave the axis running on a broken stream
-    return e;
-  };
-  // While rows remain, each round reads FIFO_STATUS and STATUS only (the
-  // line is the bottleneck: about 1 ms a register access at 115200 baud)
-  // and fills the room; the move boundaries are read between rounds.
-  for (;;) {
-    auto st = read(hw::RegStatus);
-    if (const Error* e = std::get_if<Error>(&st)) return abort(*e);
-    s.status = std::get<uint32_t>(st);
-    if (!s.busy()) break;
-    if (pushed < rows.size()) {
-      auto f = read(hw::RegFifoStatus);
-      if (const Error* e = std::get_if<Error>(&f)) return abort(*e);
-      s.fifo_status = std::get<uint32_t>(f);
-      if (auto e = push(hw::RowFifoDepth - s.fifo_level())) return abort(*e);
-    } else {
-      port_.wait(poll);
-    }
-    auto mi = read(hw::RegMoveIndex);
+  RowStream stream;
+  stream.rows = rows.size();
+  stream.row_writes = [&](size_t k) { return encode_row(*rows[k].first, rows[k].second); };
+  stream.moves = moves.size();
+  stream.read_boundaries = [&]() -> std::variant<std::vector<int32_t>, Error> {
     auto bp = read(hw::RegBoundaryPos);
-    if (const Error* e = std::get_if<Error>(&mi)) return abort(*e);
-    if (const Error* e = std::get_if<Error>(&bp)) return abort(*e);
-    s.move_index = std::get<uint32_t>(mi);
-    s.boundary_pos = int32_t(std::get<uint32_t>(bp));
-    // BOUNDARY_POS holds the boundary of the last move ended (MOVE_INDEX of
-    // them); a move may end between the two reads, so a boundary is
-    // checked when a second MOVE_INDEX read agrees.
-    auto mi2 = read(hw::RegMoveIndex);
-    if (const Error* e = std::get_if<Error>(&mi2)) return abort(*e);
-    if (std::get<uint32_t>(mi2) == s.move_index && s.move_index > 0 && s.move_index <= moves.size()) {
-      const int64_t want = int64_t(rep.start_ref) + moves[s.move_index - 1].end_position;
-      if (int64_t(s.boundary_pos) != int64_t(int32_t(uint32_t(want)))) {
-        return abort(Error{"board", fmt::format("stream: move {} ended at BOUNDARY_POS {}, planned {}", s.move_index,
-                                                s.boundary_pos, want)});
-      }
-      ++rep.boundaries_checked;
-    }
-    if (progress) progress(s);
-    if (std::chrono::duration<double>(clk::now() - t0).count() > timeout) {
-      return abort(Error{"timeout", fmt::format("timeout={} s: the stream is still running", timeout)});
-    }
-  }
-  auto fin = status();
+    if (const Error* e = std::get_if<Error>(&bp)) return *e;
+    return std::vector<int32_t>{int32_t(std::get<uint32_t>(bp))};
+  };
+  stream.planned_boundaries = [&](size_t done) {
+    return std::vector<int64_t>{int64_t(rep.start_ref) + moves[done - 1].end_position};
+  };
+  auto fin = stream_rows(stream, timeout, poll, progress, rep.boundaries_checked);
   if (const Error* e = std::get_if<Error>(&fin)) return *e;
-  s = std::get<BoardStatus>(fin);
+  const BoardStatus& s = std::get<BoardStatus>(fin);
   rep.final_status = s;
   rep.end_ref = s.ref_pos;
-  const std::vector<std::string> f = s.faults();
-  if (s.move_index != moves.size() || pushed != rows.size() || !s.done()) {
-    return Error{"board", fmt::format("stream: the axis went idle after move {} of {} ({} of {} rows sent){}{}",
-                                      s.move_index, moves.size(), pushed, rows.size(),
-                                      f.empty() ? ": no fault flag (a reset?)" : ": ",
-                                      fmt::join(f, ", "))};
-  }
   if (int64_t(s.ref_pos) != int32_t(uint32_t(rep.expected_end))) {
     return Error{"board", fmt::format("stream: REF_POS {} at the end, planned {}", s.ref_pos, rep.expected_end)};
+  }
+  return rep;
+}
+
+// ---- the multi-axis map -----------------------------------------------------------
+
+std::optional<Error> WindowPort::write(uint32_t addr, uint32_t data) {
+  return port_.write(multi_axis_addr(axis_, addr), data);
+}
+
+std::variant<uint32_t, Error> WindowPort::read(uint32_t addr) { return port_.read(multi_axis_addr(axis_, addr)); }
+
+// The group window is window 0: the one-axis addresses as they are (and the
+// row writes, which name each axis's window, pass through unchanged).
+AxisGroup::AxisGroup(RegisterPort& port, Clock clock) : port_(port), clock_(clock), group_(port, clock) {}
+
+std::variant<BoardInfo, Error> AxisGroup::identify() {
+  auto group = group_.identify();
+  if (const Error* e = std::get_if<Error>(&group)) return *e;
+  BoardInfo info = std::get<BoardInfo>(group);
+  axis_ports_.clear();
+  axes_.clear();
+  info.closed_loop = true;
+  for (size_t a = 0; a < size_t(hw::MaxAxes); ++a) {
+    // Past the last axis the map answers DECERR (no register file sees it).
+    auto id = port_.read(multi_axis_addr(a, hw::RegId));
+    if (const Error* e = std::get_if<Error>(&id)) {
+      if (e->parameter != "board") return *e;
+      break;
+    }
+    axis_ports_.push_back(std::make_unique<WindowPort>(port_, a));
+    axes_.push_back(std::make_unique<Board>(*axis_ports_.back(), clock_));
+    auto ai = axes_.back()->identify();
+    if (const Error* e = std::get_if<Error>(&ai)) return *e;
+    info.closed_loop = info.closed_loop && std::get<BoardInfo>(ai).closed_loop;
+  }
+  if (axes_.empty()) return Error{"board", "the multi-axis map answers ID in its group window but in no axis window"};
+  info.axes = int(axes_.size());
+  return info;
+}
+
+std::optional<Error> AxisGroup::configure(const BoardConfig& cfg) {
+  if (axes_.empty()) return Error{"board", "configure: identify the axes first"};
+  // A group write reaches every axis's register file (the axes run one
+  // stream: idle together); a group read answers axis 0's register.
+  return group_.configure(cfg);
+}
+
+std::variant<std::vector<BoardStatus>, Error> AxisGroup::status() {
+  std::vector<BoardStatus> out;
+  for (auto& a : axes_) {
+    auto st = a->status();
+    if (const Error* e = std::get_if<Error>(&st)) return *e;
+    out.push_back(std::get<BoardStatus>(st));
+  }
+  return out;
+}
+
+std::variant<std::vector<BoardStatus>, Error> AxisGroup::wait_idle(double timeout, double poll) {
+  auto st = group_.wait_idle(timeout, poll);
+  if (const Error* e = std::get_if<Error>(&st)) return *e;
+  return status();
+}
+
+std::variant<PathRunReport, Error> AxisGroup::run_path(const PathPlan& plan, double timeout, double poll,
+                                                       const std::function<void(const BoardStatus&)>& progress,
+                                                       bool wait) {
+  const size_t n = axes_.size();
+  if (n == 0) return Error{"board", "run_path: identify the axes first"};
+  if (plan.axes.size() != n) {
+    return Error{"plan", fmt::format("plan: {} axes planned, the board has {}", plan.axes.size(), n)};
+  }
+  if (plan.moves.empty() || plan.axes[0].rows.empty()) return Error{"plan", "plan: no move (nothing to run)"};
+  PathRunReport rep;
+  rep.moves = plan.moves.size();
+  rep.rows = plan.axes[0].rows.size();
+  for (size_t a = 0; a < n; ++a) {
+    if (plan.axes[a].rows.size() != rep.rows || plan.axes[a].flags.size() != rep.rows) {
+      return Error{"plan", fmt::format("plan: axis {} has {} rows, axis 0 {}", a, plan.axes[a].rows.size(),
+                                       rep.rows)};
+    }
+  }
+  auto st0 = status();
+  if (const Error* e = std::get_if<Error>(&st0)) return *e;
+  for (size_t a = 0; a < n; ++a) {
+    const BoardStatus& s = std::get<std::vector<BoardStatus>>(st0)[a];
+    if (s.busy()) return Error{"board", fmt::format("path: axis {} is moving (stop it first)", a)};
+    rep.start_ref.push_back(s.ref_pos);
+    if (int64_t(s.ref_pos) != plan.moves.front().start.at(a)) {
+      return Error{"plan", fmt::format("plan: axis {} starts at {}, the board's REF_POS is {} (plan from where the "
+                                       "axes are)", a, plan.moves.front().start.at(a), s.ref_pos)};
+    }
+  }
+  if (auto e = group_.begin_load()) return *e;
+  for (size_t a = 0; a < n; ++a) {
+    if (auto e = axes_[a]->write_pos_frac0(plan.axes[a].pos_frac0)) return *e;
+  }
+  // Move m's boundary: every axis's integer part of its exact position
+  // where the move's MOVE_END row ends.
+  RowStream stream;
+  stream.rows = size_t(rep.rows);
+  stream.row_writes = [&](size_t k) {
+    std::vector<Segment> rows;
+    for (size_t a = 0; a < n; ++a) rows.push_back(plan.axes[a].rows[k]);
+    return encode_multi_row(rows, plan.axes[0].flags[k]);
+  };
+  stream.moves = plan.moves.size();
+  stream.read_boundaries = [&]() -> std::variant<std::vector<int32_t>, Error> {
+    std::vector<int32_t> out;
+    for (size_t a = 0; a < n; ++a) {
+      auto bp = port_.read(multi_axis_addr(a, hw::RegBoundaryPos));
+      if (const Error* e = std::get_if<Error>(&bp)) return *e;
+      out.push_back(int32_t(std::get<uint32_t>(bp)));
+    }
+    return out;
+  };
+  stream.planned_boundaries = [&](size_t done) {
+    std::vector<int64_t> out;
+    for (size_t a = 0; a < n; ++a) out.push_back(int64_t(plan.moves[done - 1].end_position[a] >> hw::FracBits));
+    return out;
+  };
+  stream.wait = wait;
+  auto fin = group_.stream_rows(stream, timeout, poll, progress, rep.boundaries_checked);
+  if (const Error* e = std::get_if<Error>(&fin)) return *e;
+  auto st = status();
+  if (const Error* e = std::get_if<Error>(&st)) return *e;
+  rep.final_status = std::get<std::vector<BoardStatus>>(st);
+  if (!wait) return rep;
+  const bool open_loop = !group_.config().closed_loop;
+  for (size_t a = 0; a < n; ++a) {
+    const BoardStatus& s = rep.final_status[a];
+    const int64_t target = plan.moves.back().target.at(a);
+    if (int64_t(s.ref_pos) != int32_t(uint32_t(target))) {
+      return Error{"board", fmt::format("path: axis {} REF_POS {} at the end, planned {}", a, s.ref_pos, target)};
+    }
+    const int64_t distance = target - rep.start_ref[a];
+    if (open_loop && int64_t(s.pulse_count) != distance) {
+      return Error{"board", fmt::format("path: axis {} PULSE_COUNT {} at the end, planned {}", a, s.pulse_count,
+                                        distance)};
+    }
+    if (!s.done()) return Error{"board", fmt::format("path: axis {} is not DONE at the end", a)};
   }
   return rep;
 }

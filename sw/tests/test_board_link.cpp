@@ -26,11 +26,26 @@ class ScriptedBoard : public ByteChannel {
   int fifo_level = 0;
   int drop_pushes = 0;       // ROW_PUSHes answered OKAY but lost inside the board
   std::vector<std::pair<uint32_t, uint32_t>> executed;  // writes that took effect
+  // The map: 1-byte frames (the one-axis board), or 2-byte frames and
+  // `axes` axis windows (the multi-axis map: DECERR past the last).
+  int addr_bytes = 1;
+  size_t axes = 0;
 
-  std::optional<Error> send(const std::vector<uint8_t>& f) override {
-    EXPECT_EQ(f[0], uint8_t(hw::UartReqSync));
-    const bool is_write = f[1] == uint8_t(hw::UartCmdWrite);
-    const uint32_t addr = uint32_t(f[2]) * 4;
+  std::optional<Error> send(const std::vector<uint8_t>& bytes) override {
+    EXPECT_EQ(bytes[0], uint8_t(hw::UartReqSync));
+    const bool is_write = bytes[1] == uint8_t(hw::UartCmdWrite);
+    // The bridge takes as many bytes as its frames have and checks their
+    // CRC: a frame of the other map fails it (the rest is skipped).
+    const size_t len = size_t(3 + addr_bytes + (is_write ? 4 : 0));
+    if (bytes.size() < len) return std::nullopt;  // waits for more: dropped after the gap
+    const std::vector<uint8_t> f(bytes.begin(), bytes.begin() + ptrdiff_t(len));
+    if (crc8(f.data() + 1, len - 2) != f.back()) return answer({uint8_t(hw::UartStCrcErr)});
+    uint32_t addr = uint32_t(f[2]) * 4;
+    if (addr_bytes == 2) addr = (uint32_t(f[2]) | uint32_t(f[3]) << 8) * 4;
+    if (addr_bytes == 2 && (addr >> hw::RegAddrW) > axes) {  // DECERR: no such window (a read answers 4 data bytes)
+      return is_write ? answer({3}) : answer({3, 0, 0, 0, 0});
+    }
+    const size_t data_at = size_t(2 + addr_bytes);
     Fault fault = Fault::None;
     if (!script.empty()) {
       fault = script.front();
@@ -44,7 +59,8 @@ class ScriptedBoard : public ByteChannel {
     if (fault == Fault::BusError) return answer({2});
     uint32_t data = 0;
     if (is_write) {
-      data = uint32_t(f[3]) | uint32_t(f[4]) << 8 | uint32_t(f[5]) << 16 | uint32_t(f[6]) << 24;
+      data = uint32_t(f[data_at]) | uint32_t(f[data_at + 1]) << 8 | uint32_t(f[data_at + 2]) << 16 |
+             uint32_t(f[data_at + 3]) << 24;
       execute(addr, data);
     }
     if (fault == Fault::ExecuteAndLoseAnswer) return std::nullopt;
@@ -99,7 +115,7 @@ class ScriptedBoard : public ByteChannel {
   uint32_t read(uint32_t addr) const {
     if (addr == uint32_t(hw::RegFifoStatus)) return uint32_t(fifo_level);
     auto it = regs.find(addr);
-    if (addr == uint32_t(hw::RegId) && it == regs.end()) {
+    if ((addr & ((1u << hw::RegAddrW) - 1)) == uint32_t(hw::RegId) && it == regs.end()) {
       return uint32_t(hw::RegIdMagic) << 16 | uint32_t(hw::RegMapVersion);
     }
     return it == regs.end() ? 0 : it->second;
@@ -209,7 +225,61 @@ TEST(UartLink, OptionsOutOfRangeAreRefusedNamingTheParameter) {
   ASSERT_TRUE(e);
   EXPECT_EQ(e->parameter, "baud");
   EXPECT_NE(e->message.find("115201"), std::string::npos);
+  o = LinkOptions{};
+  o.addr_bits = 12;
+  EXPECT_EQ(check_link_options(o)->parameter, "addr_bits");
   EXPECT_FALSE(check_link_options(LinkOptions{}));
+  o.addr_bits = hw::MultiRegAddrW;
+  EXPECT_FALSE(check_link_options(o));
+}
+
+TEST(BoardMap, TheMapIsToldByTheAnswerToAMultiAxisFrame) {
+  ScriptedBoard one;
+  auto bits = detect_addr_bits(one, LinkOptions{});
+  ASSERT_TRUE(std::holds_alternative<int>(bits)) << std::get<Error>(bits).message;
+  EXPECT_EQ(std::get<int>(bits), hw::RegAddrW) << "the one-axis bridge answers the longer frame with a CRC error";
+  ScriptedBoard two;
+  two.addr_bytes = 2;
+  two.axes = 2;
+  bits = detect_addr_bits(two, LinkOptions{});
+  ASSERT_TRUE(std::holds_alternative<int>(bits)) << std::get<Error>(bits).message;
+  EXPECT_EQ(std::get<int>(bits), hw::MultiRegAddrW);
+  ScriptedBoard silent;
+  silent.script.assign(10, F::LoseAnswer);
+  bits = detect_addr_bits(silent, LinkOptions{});
+  ASSERT_TRUE(std::holds_alternative<Error>(bits));
+  EXPECT_EQ(std::get<Error>(bits).parameter, "port");
+}
+
+TEST(BoardMap, AnAxisGroupHasTheAxesWhoseWindowsAnswerAndConfiguresThemThroughTheGroup) {
+  for (size_t axes : {size_t(1), size_t(2), size_t(4)}) {
+    ScriptedBoard b;
+    b.addr_bytes = 2;
+    b.axes = axes;
+    LinkOptions o;
+    o.addr_bits = hw::MultiRegAddrW;
+    UartLink link(b, o);
+    AxisGroup group(link);
+    auto info = group.identify();
+    ASSERT_TRUE(std::holds_alternative<BoardInfo>(info)) << std::get<Error>(info).message;
+    EXPECT_EQ(std::get<BoardInfo>(info).axes, int(axes));
+    EXPECT_EQ(group.axes(), axes);
+    b.executed.clear();
+    BoardConfig cfg;
+    cfg.timing.high = 7;
+    ASSERT_FALSE(group.configure(cfg));
+    bool pulse_time = false;
+    for (const auto& w : b.executed) {
+      EXPECT_EQ(w.first >> hw::RegAddrW, 0u) << "configure writes the group window only";
+      pulse_time = pulse_time || (w.first == uint32_t(hw::RegPulseTime) && (w.second >> hw::PulseHighLsb & 0xFFFF) == 7);
+    }
+    EXPECT_TRUE(pulse_time);
+    // An axis's status reads its own window.
+    b.regs[multi_axis_addr(axes - 1, hw::RegRefPos)] = 1234;
+    auto st = group.status();
+    ASSERT_TRUE(std::holds_alternative<std::vector<BoardStatus>>(st));
+    EXPECT_EQ(std::get<std::vector<BoardStatus>>(st).back().ref_pos, 1234);
+  }
 }
 
 TEST(BoardLoad, AMoveWithALostRowIsNeverStarted) {

@@ -44,12 +44,15 @@ add_test(NAME tools.output_files_whole_or_refused
   COMMAND ${SC_TESTS_DIR}/output_files_test.sh $<TARGET_FILE:scurve> $<TARGET_FILE:sc_bench> ${pin_bench})
 add_test(NAME tools.board_driver_over_a_pty
   COMMAND ${SC_TESTS_DIR}/board_pty_test.sh $<TARGET_FILE:scurve> ${PROJECT_SOURCE_DIR})
+add_test(NAME tools.board_driver_drives_the_two_axis_board_over_a_pty
+  COMMAND ${SC_TESTS_DIR}/board_pty_test.sh $<TARGET_FILE:scurve> ${PROJECT_SOURCE_DIR} xy)
 add_test(NAME tools.regress_shards_cover_list
   COMMAND ${SC_SYSTEM_PYTHON} ${SC_TESTS_DIR}/systemc/check_regress.py shards $<TARGET_FILE:scurve>
           ${SC_TESTS_DIR}/systemc/shard_list.json ${CMAKE_BINARY_DIR}/regress-shards)
 set_tests_properties(tools.cli_contract tools.cli_contract_closed_loop tools.cli_bad_input_closed_loop tools.cli_clock_hz
                      tools.regs_cli_uart_frames tools.regs_cli_closed_loop tools.output_files_whole_or_refused
-                     tools.regress_shards_cover_list tools.board_driver_over_a_pty PROPERTIES LABELS tools TIMEOUT 600)
+                     tools.regress_shards_cover_list tools.board_driver_over_a_pty
+                     tools.board_driver_drives_the_two_axis_board_over_a_pty PROPERTIES LABELS tools TIMEOUT 600)
 # Paper 000's group 1 over the pseudo-terminal: 278 M clocks of the board
 # top (minutes here): CI's extended stage, not the sanitizer build.
 if(NOT SC_SANITIZE)

@@ -8,6 +8,15 @@
 //   board.load_move(plan);  board.start();   // all rows acknowledged before START
 //   auto st = board.wait_idle(30.0);         // BoardStatus: positions, phase, FIFO, faults
 //
+// A board on the multi-axis map (the two-axis sc_board_xy_top) talks in
+// 2-byte address frames (LinkOptions::addr_bits = MultiRegAddrW; or ask the
+// board: detect_addr_bits) and is driven as an AxisGroup: a Board per axis
+// window for what is per axis, the group window for the shared row stream.
+//
+//   scurve::AxisGroup xy{link};
+//   xy.identify();  xy.configure(cfg);        // every axis the same settings
+//   auto r = xy.run_path(path_plan, 60.0);    // rows of every axis, the FIFO topped up
+//
 // The UART bridge protocol is docs/regmap.md "UART bridge protocol". Every
 // function returns the one error type of the host library; its `parameter`
 // says where the trouble lies: "port" (the line: no such device, no board
@@ -25,6 +34,7 @@
 #include <variant>
 #include <vector>
 
+#include "scurve/path_planner.h"
 #include "scurve/planner.h"
 #include "scurve/reg_encode.h"
 #include "scurve/register_port.h"
@@ -61,9 +71,13 @@ struct LinkOptions {
   double timeout = 0.2;  // s from the end of a request to the end of its response
   int retries = 3;       // further tries after a timeout or a garbled exchange
   int baud = 115200;     // the line rate (the quiet gap before a retry is counted in bit times)
+  // Byte address bits of the board's map: RegAddrW (the one-axis board,
+  // 1-byte word addresses in the frames) or MultiRegAddrW (the multi-axis
+  // map, 2-byte word addresses).
+  int addr_bits = hw::RegAddrW;
 };
 // The one place link options are validated: an Error naming "timeout",
-// "retries" or "baud" with the value and the bound.
+// "retries", "baud" or "addr_bits" with the value and the bound.
 std::optional<Error> check_link_options(const LinkOptions& o);
 
 struct LinkStats {
@@ -148,6 +162,45 @@ struct StreamRunReport {
   BoardStatus final_status;
 };
 
+// Which map the board on the line speaks, as LinkOptions::addr_bits: one
+// ID read in a multi-axis frame (2-byte address, one try), which the
+// multi-axis board answers and the one-axis board's bridge answers 0x80
+// (the frame is a byte longer than it expects, so its CRC fails); then, if
+// need be, the ID in a one-axis frame with the options' retries. An Error
+// naming "port" when neither is answered with an ID.
+std::variant<int, Error> detect_addr_bits(ByteChannel& line, const LinkOptions& options);
+
+// One register window of the multi-axis map as a port of its own: the
+// one-axis map's addresses moved into axis `axis`'s window, or into the
+// group window when `axis` is empty (multi_axis_addr).
+class WindowPort : public RegisterPort {
+ public:
+  WindowPort(RegisterPort& port, std::optional<size_t> axis) : port_(port), axis_(axis) {}
+  std::optional<Error> write(uint32_t addr, uint32_t data) override;
+  std::variant<uint32_t, Error> read(uint32_t addr) override;
+  void wait(double seconds) override { port_.wait(seconds); }
+
+ private:
+  RegisterPort& port_;
+  std::optional<size_t> axis_;
+};
+
+// A stream of rows for Board::stream_rows: row k's register writes (its
+// staging words, then its ROW_PUSH last), and the moves' boundaries.
+struct RowStream {
+  size_t rows = 0;
+  std::function<std::vector<RegWrite>(size_t row)> row_writes;
+  size_t moves = 0;
+  // BOUNDARY_POS of every axis the stream drives, as the board reports them now.
+  std::function<std::variant<std::vector<int32_t>, Error>()> read_boundaries;
+  // The planned BOUNDARY_POS of every axis once `moves_done` moves (1 ..
+  // moves) have ended.
+  std::function<std::vector<int64_t>(size_t moves_done)> planned_boundaries;
+  // false: return once started (the whole stream must fit the FIFO: else an
+  // Error naming "plan", before anything is sent).
+  bool wait = true;
+};
+
 // The board-level operations on any register port (a UartLink, a
 // simulation bench). The axis is the one behind the register window.
 class Board {
@@ -187,23 +240,90 @@ class Board {
   const BoardConfig& config() const { return cfg_; }
   Clock clock() const { return clock_; }
 
+  // The stream machinery run_stream is made of, for a group of axes behind
+  // one FIFO (AxisGroup): begin_load empties the FIFO and forgets the
+  // staging words (the axis idle); stream_rows then fills the FIFO, STARTs,
+  // keeps it topped up, checks every move boundary it sees against the
+  // plan and waits for rest. It returns the status at rest (every move run,
+  // DONE) and counts the boundaries it compared; an axis that goes idle
+  // early is an Error naming "board", and on any error while running the
+  // axis is stopped (CMD.STOP).
+  std::optional<Error> begin_load();
+  std::variant<BoardStatus, Error> stream_rows(const RowStream& stream, double timeout, double poll,
+                                               const std::function<void(const BoardStatus&)>& progress,
+                                               uint64_t& boundaries_checked);
+  std::optional<Error> write_pos_frac0(u128 pos_frac0);
+
  private:
+  std::optional<Error> require_idle(const char* what);
   std::optional<Error> write(uint32_t addr, uint32_t data);
   std::variant<uint32_t, Error> read(uint32_t addr);
-  std::optional<Error> require_idle(const char* what);
   std::optional<Error> prepare_rows(u128 pos_frac0);
-  // One row: the staging words that differ from what this host last wrote
-  // there (the board keeps them across ROW_PUSH), then ROW_PUSH. With the
-  // axis idle and `idle_level` rows in the FIFO, a ROW_PUSH whose answer was
-  // lost is checked against the FIFO level and sent again if it did not
-  // arrive.
-  std::optional<Error> push_row(const Segment& row, RowFlags flags, std::optional<int> idle_level = std::nullopt);
+  // One row's writes: the staging words that differ from what this host
+  // last wrote there (the board keeps them across ROW_PUSH), then ROW_PUSH.
+  // With the axis idle and `idle_level` rows in the FIFO, a ROW_PUSH whose
+  // answer was lost is checked against the FIFO level and sent again if it
+  // did not arrive.
+  std::optional<Error> push_row(const std::vector<RegWrite>& writes, std::optional<int> idle_level = std::nullopt);
   std::variant<int, Error> fifo_level();
   RegisterPort& port_;
   Clock clock_;
   BoardConfig cfg_;
   std::map<uint32_t, uint32_t> staged_;  // staging register -> the value written; cleared before each load
   int loaded_rows_ = 0;                  // rows loaded for the next START (0: unknown)
+};
+
+// A path's run on a group of axes (AxisGroup::run_path).
+struct PathRunReport {
+  uint64_t moves = 0;
+  uint64_t rows = 0;
+  std::vector<int32_t> start_ref;        // REF_POS per axis at the START
+  std::vector<BoardStatus> final_status; // per axis, at rest
+  uint64_t boundaries_checked = 0;       // MOVE_INDEX readings whose BOUNDARY_POS (every axis) was compared
+};
+
+// The axes of a multi-axis map (sc_axi_multi_axis): window 0 is the group
+// (its writes reach every axis; what the axes share - SEG_CLOCKS, ROW_PUSH,
+// CMD.START, CMD.FLUSH - goes only there), window 1 + a is axis a.
+class AxisGroup {
+ public:
+  explicit AxisGroup(RegisterPort& port, Clock clock = Clock{});
+  // ID in the group window (the magic and the register map, as
+  // Board::identify), then the axes: the windows that answer ID (the map
+  // answers DECERR past the last). BoardInfo::closed_loop: every axis has
+  // the servo.
+  std::variant<BoardInfo, Error> identify();
+  size_t axes() const { return axes_.size(); }
+  // Axis a's window (its status, its own settings); valid after identify().
+  Board& axis(size_t a) { return *axes_.at(a); }
+  // The same settings on every axis, through the group window.
+  std::optional<Error> configure(const BoardConfig& cfg);
+  // Runs a planned path (plan_path with as many axes as the board has,
+  // planned from where the axes are: its first move's start must be every
+  // axis's REF_POS): POS_FRAC0 per axis, the multi-axis rows streamed
+  // through the group window, every move boundary checked on every axis
+  // against the plan, and at rest every axis's REF_POS on the last target
+  // (and, open loop, PULSE_COUNT the distance from the start). An Error
+  // naming "board" for anything the board did differently, "plan" for a
+  // plan that does not fit the board. !wait: returns once started, the
+  // statuses as they are then (a path of at most a FIFO of rows).
+  std::variant<PathRunReport, Error> run_path(const PathPlan& plan, double timeout, double poll = 0.005,
+                                              const std::function<void(const BoardStatus&)>& progress = {},
+                                              bool wait = true);
+  std::variant<std::vector<BoardStatus>, Error> status();
+  std::optional<Error> stop() { return group_.stop(); }    // CMD.STOP stops every axis under control
+  std::optional<Error> estop() { return group_.estop(); }  // CMD.ESTOP: every axis at once
+  std::optional<Error> clear_faults() { return group_.clear_faults(); }
+  // Waits until the axes are idle (they run one row stream: they go idle together).
+  std::variant<std::vector<BoardStatus>, Error> wait_idle(double timeout, double poll = 0.01);
+  Clock clock() const { return clock_; }
+
+ private:
+  RegisterPort& port_;
+  Clock clock_;
+  Board group_;  // on port_ itself: window 0
+  std::vector<std::unique_ptr<WindowPort>> axis_ports_;
+  std::vector<std::unique_ptr<Board>> axes_;
 };
 
 // Exit code of a board command for an error: 1 when the board reported a

@@ -48,6 +48,10 @@ struct PathFileOptions {
   double accel = kDefaultAccel;
   double jerk = kDefaultJerk;
   PathFormat format = PathFormat::kAuto;  // kAuto: by the file's extension, else its first character
+  // Where the program starts, pulses per axis: empty for the file's own
+  // start (a JSON "start", else 0); given (a board's REF_POS), it replaces
+  // that: G91 moves count from it and the first move leaves from it.
+  std::vector<int64_t> start;
 };
 
 // A parsed path in pulses. Each move's feed is its speed along the path in
