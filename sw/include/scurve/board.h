@@ -197,7 +197,7 @@ struct RowStream {
   // moves) have ended.
   std::function<std::vector<int64_t>(size_t moves_done)> planned_boundaries;
   // false: return once started (the whole stream must fit the FIFO: else an
-  // Error naming "plan", before anything is sent).
+  // Error naming "plan", before any row is sent).
   bool wait = true;
 };
 
