@@ -47,7 +47,6 @@ class VirtualBoard {
   void run(uint64_t clocks, std::vector<uint8_t>& to_host);
   // Holds the reset button for a few clocks (the board restarts from reset).
   void press_reset();
-  bool line_busy() const { return line_.sending() || line_.receiving(); }
   uint64_t clocks() const { return clocks_; }
   size_t axes() const { return axes_.size(); }
   int64_t position(size_t axis = 0) const { return axes_.at(axis).plant.commanded(); }  // net STEP pulses
