@@ -150,6 +150,9 @@ void NeuronPi::step(const NeuronConfig& cfg, const Inputs& in) {
     case UpcLearn: case UpcFerr: case UpcWin:
       c.a = AT; c.b = BCfg; c.sub = true;
       c.cfg = upc == UpcLearn ? (q.sel ? CfDzV : CfDzP) : upc == UpcFerr ? CfFerr : CfWin;
+      if (upc == UpcLearn && cfg.pid) {  // PID: no learning; the multiplier forms d = K_V x2
+        c.ra = RfX2; c.mb = MbCfg; c.cfg = CfKV; c.s20 = true; c.we = true; c.wa = RfH; c.w = WMul;
+      }
       break;
     case UpcT1:
       c.ra = RfE; c.rb = uint8_t(RfN1 | s); c.we = true; c.wa = RfT1; c.w = WMul;
@@ -174,11 +177,11 @@ void NeuronPi::step(const NeuronConfig& cfg, const Inputs& in) {
       c.we = true; c.wa = uint8_t(RfAcc | s); c.w = q.hush ? WZero : WSat;
       break;
     case UpcTot:
-      c.ra = uint8_t(RfAcc | s); c.rb = RfVff; c.a = ARf;
-      c.b = (q.sel && cfg.ff_en) ? BRf : BZero; c.we = true; c.wa = RfTot; c.w = WSat;
+      c.ra = uint8_t(RfAcc | s); c.rb = cfg.pid ? RfH : RfVff; c.a = ARf;
+      c.b = ((q.sel && cfg.ff_en) || (cfg.pid && !q.hush)) ? BRf : BZero; c.we = true; c.wa = RfTot; c.w = WSat;
       break;
     case UpcHi: case UpcLo:
-      c.ra = RfTot; c.a = ARf; c.b = BCfg; c.cfg = q.sel ? CfULim : CfVLim;
+      c.ra = RfTot; c.a = ARf; c.b = BCfg; c.cfg = (q.sel || cfg.pid) ? CfULim : CfVLim;
       c.sub = upc == UpcHi; c.wa = uint8_t(RfEs | s);
       break;  // write enable and data depend on the sum (below)
     case UpcOut:
@@ -336,7 +339,7 @@ void NeuronPi::step(const NeuronConfig& cfg, const Inputs& in) {
     case UpcErr: d.eraw = wrap32(alu_r); break;
     case UpcEq: d.eq = alu_z; break;
     case UpcEp: if (!q.sel) d.hush = hush_now; break;
-    case UpcLearn: d.learn = !hush_now && !alu_n && !alu_z; break;
+    case UpcLearn: d.learn = !cfg.pid && !hush_now && !alu_n && !alu_z; break;
     case UpcFerr:
       if (!q.sel && !alu_n && !alu_z) {
         d.ferr = true;
@@ -367,7 +370,10 @@ void NeuronPi::step(const NeuronConfig& cfg, const Inputs& in) {
         }
       }
       break;
-    case UpcOut: if (q.sel) d.u = wrap32(alu_r); break;
+    case UpcOut:
+      if (q.sel || cfg.pid) d.u = wrap32(alu_r);
+      if (cfg.pid) d.upc = UpcIdle;  // PID: no weight updates, no speed loop
+      break;
     default: break;
   }
   if (upc >= UpcW1 && upc <= UpcW8 && upc != UpcH2 && upc != UpcDw2) {

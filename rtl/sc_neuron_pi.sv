@@ -22,6 +22,10 @@
 // speed:    r = out_p + FF*V*, y = P - P_prev, b = FF*V*, lim = u_lim;
 // u = out_speed drives the step NCO. Every product is rounded half up
 // ((p + 2^(s-1)) >>> s) and saturated to the CtlW word.
+// CL_CFG.PID: paper 003's fixed-gain PID with back-calculation instead, on
+// the same steps: the position loop alone, learning off (fixed weights: P
+// gain K wn_2, I gain K wn_1), the D term d = K_V x2 formed in the Learn
+// step, tot = acc + d, limited to u_lim, out drives u; no speed loop.
 // Following-error fault: |e_p| > ferr_lim latches; it stops the loop (u = 0)
 // unless CL_CFG.FERR_STOP asks for a controlled stop of the reference, which
 // the loop then keeps tracking to rest.
@@ -126,6 +130,7 @@ module sc_neuron_pi (
   logic [sc_pkg::CtlCfgShiftW-1:0] cfg_shift;
   logic cfg_ff_en;
   logic cfg_ferr_stop;
+  logic cfg_pid;
   logic [sc_pkg::CtlCfgLearnShiftW-1:0] cfg_learn_shift;
   logic [sc_pkg::CtlCfgLearnDzPW-1:0] cfg_learn_dz_p;
   logic [sc_pkg::CtlCfgLearnDzVW-1:0] cfg_learn_dz_v;
@@ -155,6 +160,7 @@ module sc_neuron_pi (
   assign cfg_shift = ctl_cfg_i[sc_pkg::CtlCfgShiftLsb +: sc_pkg::CtlCfgShiftW];
   assign cfg_ff_en = ctl_cfg_i[sc_pkg::CtlCfgFfEnLsb];
   assign cfg_ferr_stop = ctl_cfg_i[sc_pkg::CtlCfgFerrStopLsb];
+  assign cfg_pid = ctl_cfg_i[sc_pkg::CtlCfgPidLsb];
   assign cfg_learn_shift = ctl_cfg_i[sc_pkg::CtlCfgLearnShiftLsb +: sc_pkg::CtlCfgLearnShiftW];
   assign cfg_learn_dz_p = ctl_cfg_i[sc_pkg::CtlCfgLearnDzPLsb +: sc_pkg::CtlCfgLearnDzPW];
   assign cfg_learn_dz_v = ctl_cfg_i[sc_pkg::CtlCfgLearnDzVLsb +: sc_pkg::CtlCfgLearnDzVW];
@@ -516,6 +522,16 @@ module sc_neuron_pi (
         b_src   = BCfg;
         cfg_sel = (upc_q == sc_pkg::UpcLearn) ? (sel_q ? CfDzV : CfDzP) : (upc_q == sc_pkg::UpcFerr) ? CfFerr : CfWin;
         alu_sub = 1'b1;
+        if (upc_q == sc_pkg::UpcLearn && cfg_pid) begin
+          // PID: no learning; the multiplier forms the D term d = K_V x2
+          ra      = RfX2;
+          mb_src  = MbCfg;
+          cfg_sel = CfKV;
+          mul_s20 = 1'b1;
+          rf_we   = 1'b1;
+          rf_wa   = RfH;
+          w_src   = WMul;
+        end
       end
       sc_pkg::UpcT1: begin
         st    = sc_pkg::CtlStT1;
@@ -574,9 +590,9 @@ module sc_neuron_pi (
       sc_pkg::UpcTot: begin
         st    = sc_pkg::CtlStBc;
         ra    = RfAcc | {4'd0, sel_q};
-        rb    = RfVff;
+        rb    = cfg_pid ? RfH : RfVff;
         a_src = ARf;
-        b_src = (sel_q && cfg_ff_en) ? BRf : BZero;
+        b_src = ((sel_q && cfg_ff_en) || (cfg_pid && !hush_q)) ? BRf : BZero;
         rf_we = 1'b1;
         rf_wa = RfTot;
         w_src = WSat;
@@ -586,7 +602,7 @@ module sc_neuron_pi (
         ra      = RfTot;
         a_src   = ARf;
         b_src   = BCfg;
-        cfg_sel = sel_q ? CfULim : CfVLim;
+        cfg_sel = (sel_q || cfg_pid) ? CfULim : CfVLim;
         alu_sub = (upc_q == sc_pkg::UpcHi);
         // es = tot - lim when tot > lim (else 0), then tot + lim when < -lim
         rf_we   = (upc_q == sc_pkg::UpcHi) || alu_n;
@@ -765,7 +781,7 @@ module sc_neuron_pi (
       sc_pkg::UpcErr: eraw_d = alu_r[CtlW-1:0];
       sc_pkg::UpcEq: eq_d = alu_z;
       sc_pkg::UpcEp: if (!sel_q) hush_d = hush_now;
-      sc_pkg::UpcLearn: learn_d = !hush_now && !alu_n && !alu_z;
+      sc_pkg::UpcLearn: learn_d = !cfg_pid && !hush_now && !alu_n && !alu_z;
       sc_pkg::UpcFerr: begin
         if (!sel_q && !alu_n && !alu_z) begin
           ferr_d = 1'b1;
@@ -798,7 +814,10 @@ module sc_neuron_pi (
           end
         end
       end
-      sc_pkg::UpcOut: if (sel_q) u_d = alu_r[CtlW-1:0];
+      sc_pkg::UpcOut: begin
+        if (sel_q || cfg_pid) u_d = alu_r[CtlW-1:0];
+        if (cfg_pid) upc_d = sc_pkg::UpcIdle;   // PID: no weight updates, no speed loop
+      end
       default: ;
     endcase
     if (u2 == sc_pkg::UpcW2 && upc_q != sc_pkg::UpcH2 && upc_q != sc_pkg::UpcDw2) over_d = !alu_n && !alu_z;
@@ -987,6 +1006,10 @@ module sc_neuron_pi (
     c_w2_max: cover property (@(posedge clk_i) rst_ni && sel_q == 1'(l) && upc_q == sc_pkg::UpcW8 && over_q);
     c_w2_min: cover property (@(posedge clk_i) rst_ni && sel_q == 1'(l) && upc_q == sc_pkg::UpcW8 && under_q);
   end
+  // the PID: its period ends at Out, its output clamp on both sides
+  c_pid_out: cover property (@(posedge clk_i) rst_ni && cfg_pid && upc_q == sc_pkg::UpcOut);
+  c_pid_clamp_hi: cover property (@(posedge clk_i) rst_ni && cfg_pid && upc_q == sc_pkg::UpcHi && !alu_n && !alu_z);
+  c_pid_clamp_lo: cover property (@(posedge clk_i) rst_ni && cfg_pid && upc_q == sc_pkg::UpcLo && alu_n);
 `endif
 
 endmodule

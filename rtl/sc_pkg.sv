@@ -335,6 +335,7 @@ package sc_pkg;
   localparam int ClEncShiftLsb = 4;      //@field CL_CFG ENC_SHIFT EncShiftW reset=0 cfg=shift unit=log2 "log2(encoder counts per STEP pulse)"
   localparam int ClFfEnBit     = 8;      //@field CL_CFG FF_EN 1 reset=RstFfEn cfg=ff_en unit=flag "velocity feed-forward from V*"
   localparam int ClFerrStopBit = 9;      //@field CL_CFG FERR_STOP 1 reset=0 cfg=ferr_stop unit=flag "following-error fault: 1 = controlled stop (STOP_JERK / STOP_ACC), the controller keeps tracking; 0 = immediate (u = 0, executor aborted)"
+  localparam int ClPidBit      = 10;     //@field CL_CFG PID 1 reset=0 cfg=pid unit=flag "controller: 0 = neuron-PI cascade; 1 = fixed-gain PID with back-calculation anti-windup (paper 003): the position loop alone drives u, learning off, its P and I gains K_P times the normalised weights W_P2 / W_P1, K_V its D gain, U_LIM its output limit"
   localparam int ClLearnShLsb  = 12;     //@field CL_CFG LEARN_SHIFT LearnShW reset=RstLearnShift cfg=learn_shift unit=log2 "Hebb scale: dw = eta e x / 2^LEARN_SHIFT"
   localparam int RegClPeriod   = 32'h0000_006C;  //@reg CL_PERIOD RW servo "closed loop: control period and in-position hold"
   localparam int ClDivLsb      = 0;      //@field CL_PERIOD DIV CtlDivW reset=RstCtlDiv cfg=div unit=clocks "control period, clocks (2000 = 10 kHz; at least 256)"
@@ -479,15 +480,17 @@ package sc_pkg;
   // vector, first field at the MSB (the layout of a struct packed with
   // these members in this order).
   localparam int ClCfgWords = 25;
-  localparam int CtlCfgW    = 654;
-  localparam int CtlCfgEncFiltLsb = 650;  // enc_filt: EncFiltW, CL_CFG.ENC_FILT
+  localparam int CtlCfgW    = 655;
+  localparam int CtlCfgEncFiltLsb = 651;  // enc_filt: EncFiltW, CL_CFG.ENC_FILT
   localparam int CtlCfgEncFiltW = 4;
-  localparam int CtlCfgShiftLsb = 647;  // shift: EncShiftW, CL_CFG.ENC_SHIFT
+  localparam int CtlCfgShiftLsb = 648;  // shift: EncShiftW, CL_CFG.ENC_SHIFT
   localparam int CtlCfgShiftW = 3;
-  localparam int CtlCfgFfEnLsb = 646;  // ff_en: 1, CL_CFG.FF_EN
+  localparam int CtlCfgFfEnLsb = 647;  // ff_en: 1, CL_CFG.FF_EN
   localparam int CtlCfgFfEnW = 1;
-  localparam int CtlCfgFerrStopLsb = 645;  // ferr_stop: 1, CL_CFG.FERR_STOP
+  localparam int CtlCfgFerrStopLsb = 646;  // ferr_stop: 1, CL_CFG.FERR_STOP
   localparam int CtlCfgFerrStopW = 1;
+  localparam int CtlCfgPidLsb = 645;  // pid: 1, CL_CFG.PID
+  localparam int CtlCfgPidW = 1;
   localparam int CtlCfgLearnShiftLsb = 640;  // learn_shift: LearnShW, CL_CFG.LEARN_SHIFT
   localparam int CtlCfgLearnShiftW = 5;
   localparam int CtlCfgDivLsb = 624;  // div: CtlDivW, CL_PERIOD.DIV
@@ -566,7 +569,7 @@ package sc_pkg;
       32'hFFFFFFFF,  // LEARN_DZ_V
       32'hFFFFFFFF,  // LEARN_DZ_P
       32'hFFFFFFFF,  // CL_PERIOD
-      32'h0001F37F  // CL_CFG
+      32'h0001F77F  // CL_CFG
   };
   localparam logic [ClCfgWords*32-1:0] ClCfgReset = {
       32'h00000CCD,  // SETTLE_RATE
@@ -602,6 +605,7 @@ package sc_pkg;
       cl_words[32*0 + ClEncShiftLsb +: EncShiftW],  // shift
       cl_words[32*0 + ClFfEnBit +: 1],  // ff_en
       cl_words[32*0 + ClFerrStopBit +: 1],  // ferr_stop
+      cl_words[32*0 + ClPidBit +: 1],  // pid
       cl_words[32*0 + ClLearnShLsb +: LearnShW],  // learn_shift
       cl_words[32*1 + ClDivLsb +: CtlDivW],  // div
       cl_words[32*1 + ClInposHoldLsb +: HoldW],  // inpos_hold

@@ -31,6 +31,9 @@ struct ClosedLoopCli {
 };
 
 void add_closed_loop_flags(CLI::App* sim, ClosedLoopCli& f);
+// The controller's flags (--controller and one per controller_params()
+// row), in `group`: shared by `scurve sim --closed-loop` and `scurve path`.
+void add_controller_flags(CLI::App* cmd, ControllerInput& ctl, const std::string& group);
 
 // Runs every job (name, request) in closed loop; prints the results table,
 // the paper's Table 3 layout for paper groups, and with compare the

@@ -314,6 +314,7 @@ ClosedLoopResult run_rows(RowJob job, const ClosedLoopOptions& opt) {
   // metrics
   const double L = double(res.distance);
   double max_err = 0, sum_sq = 0;
+  int64_t peak_ref_vel = 0;  // the largest |V*|, Q.VffFrac pulses/clock
   uint64_t n_err = 0;
   uint64_t ref_done_clock = 0;
   const uint32_t kin_every = ClkHz / 1000;  // 1 ms samples
@@ -354,6 +355,7 @@ ClosedLoopResult run_rows(RowJob job, const ClosedLoopOptions& opt) {
       res.moves.push_back(m);
       ++moves_done;
     }
+    peak_ref_vel = std::max(peak_ref_vel, std::abs(int64_t(out.ref_vel)));
     const double e = ref_pos(out) - double(out.enc_pos) * inv_cps;
     const double ae = std::fabs(e);
     if (ae > max_err) max_err = ae;
@@ -444,7 +446,13 @@ ClosedLoopResult run_rows(RowJob job, const ClosedLoopOptions& opt) {
   if (stop.seen() && out.done) fail("a stopped move reads done");
   if (stop_taken && out.busy) fail("busy at the end of the run after the stop");
   if (res.fault_ferr) fail("following-error fault");
-  const double max_error_limit = opt.max_error_limit.value_or(default_max_error_limit(opt.ctl));
+  // The PID (no feed-forward) lags by about v / Kp on a ramp: its bound is
+  // that lag at the reference's peak speed, with a margin for the ramps.
+  const double v_peak = double(peak_ref_vel) * ClkHz / std::ldexp(1.0, VffFrac);
+  const double pid_lag_limit =
+      opt.ctl.pid_kp > 0 ? 1.25 * v_peak / opt.ctl.pid_kp + 5.0 : 0.0;  // no P: no bound
+  const double max_error_limit = opt.max_error_limit.value_or(
+      opt.ctl.kind == scurve::ControllerKind::kPidAw ? pid_lag_limit : default_max_error_limit(opt.ctl));
   if (max_error_limit > 0 && res.max_error > max_error_limit) {
     fail(fmt::format("max tracking error {:.3f} > {} pulses", res.max_error, max_error_limit));
   }

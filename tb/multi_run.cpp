@@ -355,7 +355,11 @@ class Run {
   void track(MultiRunResult& r, const MultiCoreOutputs& out, uint64_t clock, uint64_t start_clock, bool started,
              uint32_t moves_done) {
     const size_t n = rows_.axes();
-    if (r.max_tracking_error.size() != n) r.max_tracking_error.assign(n, 0);
+    if (r.max_tracking_error.size() != n) {
+      r.max_tracking_error.assign(n, 0);
+      r.overshoot.assign(n, 0);
+      r.overshoot_percent.assign(n, 0);
+    }
     std::array<double, MaxAxes> meas{};
     for (size_t a = 0; a < n; ++a) {
       const CoreOutputs& o = out.axis[a];
@@ -370,6 +374,7 @@ class Run {
       // position at rest (sc_neuron_pi's reference).
       const double ref = o.ref_vel != 0 || o.ref_acc != 0 ? position(o) - 0.5 : double(o.ref_pos_int);
       r.max_tracking_error[a] = std::max(r.max_tracking_error[a], std::abs(ref - measured(out, a)));
+      if (opt_.polyline.size() >= 2) overshoot(r, a, o, meas[a], moves_done);
     }
     if (started && opt_.polyline.size() >= 2 && out.axis[0].row_count > 0) {
       const double d = contour_of(meas.data(), std::min<size_t>(moves_done, opt_.polyline.size() - 2));
@@ -377,6 +382,24 @@ class Run {
       measured_sum2_ += d * d;
       ++measured_clocks_;
     }
+  }
+
+  // Overshoot of axis a: how far the measured position (reference
+  // coordinates) passes the target of the last line that moved the axis, in
+  // the direction of that line, pulses and percent of the axis's travel on
+  // it (paper 003's index; the axis's own target, so a line that moves the
+  // axis on is not counted against the previous one once it moves).
+  void overshoot(MultiRunResult& r, size_t a, const CoreOutputs& o, double pos, uint32_t moves_done) {
+    const size_t last = opt_.polyline.size() - 2;
+    if (o.ref_vel != 0) moving_line_[a] = std::min<size_t>(moves_done, last);
+    const size_t k = moving_line_[a];
+    if (k > last) return;  // the axis has not moved yet
+    const double from = opt_.polyline[k][a], to = opt_.polyline[k + 1][a];
+    if (to == from) return;
+    const double past = to > from ? pos - to : to - pos;
+    if (past > r.overshoot[a]) r.overshoot[a] = past;
+    const double pct = 100 * past / std::abs(to - from);
+    if (pct > r.overshoot_percent[a]) r.overshoot_percent[a] = pct;
   }
 
   // The reference's distance from polyline segment k (its projection
@@ -440,6 +463,12 @@ class Run {
   std::vector<Plant> plants_;  // with options.loop
   double measured_sum2_ = 0;
   uint64_t measured_clocks_ = 0;
+  // per axis: the last line (polyline segment) its reference moved on; none yet: SIZE_MAX
+  std::array<size_t, MaxAxes> moving_line_ = [] {
+    std::array<size_t, MaxAxes> a{};
+    a.fill(SIZE_MAX);
+    return a;
+  }();
   uint64_t sync_errors_ = 0;
 };
 

@@ -146,6 +146,11 @@ struct MultiRunResult {
   // contour error of the measured position from the polyline.
   std::vector<double> measured_pos, max_tracking_error, final_error;
   std::vector<bool> in_pos, ferr;  // in position / following-error fault at the end
+  // With options.loop and a polyline, per axis: the largest overshoot of the
+  // measured position past the target of the line that moved the axis, in
+  // that line's direction (pulses), and the largest as a percentage of the
+  // axis's travel on its line (each maximum on its own).
+  std::vector<double> overshoot, overshoot_percent;
   double measured_contour_max = 0, measured_contour_rms = 0;
   double wall_seconds = 0;
   bool ok() const { return errors.empty() && mismatches == 0; }

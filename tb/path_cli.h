@@ -9,6 +9,8 @@
 
 #include <CLI/CLI.hpp>
 #include <string>
+
+#include "scenario_json.h"
 #include <vector>
 
 #include "scurve/cli/move_flags.h"
@@ -26,6 +28,7 @@ struct PathCli {
   std::string tolerance;  // --tolerance: blend corner tolerance, mm (validated with the other values)
   std::string engine = "lockstep";
   bool closed_loop = false;  // every axis in its own loop (the Servo = 1 core) on the plant model
+  ControllerInput ctl{};     // --controller and its settings (with --closed-loop)
   std::string plot_dir;  // --plot: trace CSV and PNG figures here (empty: none)
 };
 

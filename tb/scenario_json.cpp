@@ -52,6 +52,12 @@ const std::vector<ControllerParam>& controller_params() {
       {"k-p", "k_p", 0, kMaxCoef, false, "position neuron gain K_p, per control period", SC_FIELD(k_p)},
       {"k-v", "k_v", 0, kMaxCoef, false, "speed neuron gain K_v, per control period", SC_FIELD(k_v)},
       {"kb", "kb", 0, kMaxCoef, false, "back-calculation anti-windup gain Kb", SC_FIELD(kb)},
+      {"pid-kp", "pid_kp", 0, kMaxPidGain, false, "PID (--controller pid-aw): proportional gain Kp, 1/s",
+       SC_FIELD(pid_kp)},
+      {"pid-ki", "pid_ki", 0, kMaxPidGain, false, "PID: integral gain Ki, 1/s^2", SC_FIELD(pid_ki)},
+      {"pid-kd", "pid_kd", 0, kMaxCoef, false, "PID: derivative gain Kd (pulses/s per pulse/s)", SC_FIELD(pid_kd)},
+      {"pid-kb", "pid_kb", 0, kMaxPidGain, false, "PID: back-calculation gain Kb, 1/s (0: no anti-windup)",
+       SC_FIELD(pid_kb)},
       {"eta-p1", "eta_p1", 0, kMaxCoef, false, "learning rate, position loop, integral weight", SC_FIELD(eta_p1)},
       {"eta-p2", "eta_p2", 0, kMaxCoef, false, "learning rate, position loop, proportional weight", SC_FIELD(eta_p2)},
       {"eta-v1", "eta_v1", 0, kMaxCoef, false, "learning rate, speed loop, integral weight", SC_FIELD(eta_v1)},
@@ -156,9 +162,16 @@ std::string apply_scenario_json(const std::string& text, ControllerInput& c, Pla
     }
     if (j.contains("controller")) {
       const auto& q = json_object("scenario.controller", j["controller"]);
-      std::vector<std::string_view> keys = {"ff", "adaptive", "ferr_stop"};
+      std::vector<std::string_view> keys = {"kind", "ff", "adaptive", "ferr_stop"};
       for (const ControllerParam& prm : controller_params()) keys.push_back(prm.key);
       json_known_keys("scenario.controller", q, keys);
+      if (q.contains("kind")) {
+        const std::string kind = json_string("scenario.controller.kind", q["kind"]);
+        if (kind != "neuron" && kind != "pid-aw") {
+          throw Error("scenario.controller.kind", "'" + kind + "'", "must be neuron or pid-aw");
+        }
+        c.values.kind = kind == "pid-aw" ? scurve::ControllerKind::kPidAw : scurve::ControllerKind::kNeuron;
+      }
       if (q.contains("ff")) c.values.ff = json_bool("scenario.controller.ff", q["ff"]);
       if (q.contains("adaptive")) c.values.adaptive = json_bool("scenario.controller.adaptive", q["adaptive"]);
       if (q.contains("ferr_stop")) c.values.ferr_stop = json_bool("scenario.controller.ferr_stop", q["ferr_stop"]);

@@ -25,6 +25,7 @@
 
 #include "closed_loop_cli.h"
 #include "corner_cli.h"
+#include "square_cli.h"
 #include "fst_flags.h"
 #include "planner.h"
 #include "report.h"
@@ -215,6 +216,10 @@ int main(int argc, char** argv) {
   CornerCli corner;
   add_corner_command(app, corner);
 
+  // ---- square: paper 003's X-Y square, closed loop -------------------------------
+  SquareCli square;
+  add_square_command(app, square);
+
   // ---- home: the homing sequence against a switch in the plant -----------------
   HomingCli home;
   add_homing_command(app, home);
@@ -236,6 +241,7 @@ int main(int argc, char** argv) {
   if (*jog.cmd) return run_jog_cli(jog);
   if (*path.cmd) return run_path_cli(path);
   if (*corner.cmd) return run_corner_cli(corner);
+  if (*square.cmd) return run_square_cli(square);
 
   if (*virtual_board.cmd) return run_virtual_board_cli(virtual_board);
 

@@ -379,6 +379,13 @@ check_bad "tolerance=0.5: only with --junction blend" path "$tmp/square.gcode" -
 check_bad "junction=exact-stop-fine: needs --closed-loop" path "$tmp/square.gcode" --junction exact-stop-fine \
   --tolerance 0.01
 check_bad "axes=3" path "$tmp/square.gcode" --axes 3 --closed-loop
+check_bad "controller=pid-aw: needs --closed-loop" path "$tmp/square.gcode" --controller pid-aw
+check_bad "pid-kp=10: a controller setting: needs --closed-loop" path "$tmp/square.gcode" --pid-kp 10
+check_bad "pid-kp=1000000: 1000.* per control period of 0.001 s exceeds" path "$tmp/square.gcode" --closed-loop \
+  --controller pid-aw --ctl-rate 1000 --pid-kp 1e6
+check_bad "pid-kb=-1: must be a finite number in \[0," path "$tmp/square.gcode" --closed-loop --controller pid-aw \
+  --pid-kb -1
+check_bad "controller: pid not in" path "$tmp/square.gcode" --closed-loop --controller pid
 # A JSON point may carry its line's asymmetric jerks (Ts1 Ts2 Te1 Te2 along
 # the path, mm/s^3): every move on its target (on the model: 15 M clocks,
 # minutes in lockstep under the sanitizers; the rows are plain rows to the

@@ -155,6 +155,130 @@ TEST(NeuronPi, FixedPointMatchesDoubleReference) {
               max_dout, max_dw);
 }
 
+// CL_CFG.PID: paper 003's PID with back-calculation, in double precision
+// (docs/closed_loop.md): P and I from the fixed weights, D = Kd x2 outside
+// the accumulator, u = clamp(acc + d, +-u_lim), es = tot - u, the integral
+// reduced by Kb es(k-1); no learning, no speed loop.
+NeuronConfig pid_cfg(double k, double w1, double w2, double kd, double kb, double u_lim) {
+  NeuronConfig c = base_cfg();
+  c.pid = true;
+  c.k_p = uint32_t(std::llround(k * kC));
+  c.w_p1 = int32_t(std::llround(w1 * kW));
+  c.w_p2 = int32_t(std::llround(w2 * kW));
+  c.k_v = uint32_t(std::llround(kd * kC));
+  c.kb = uint32_t(std::llround(kb * kC));
+  c.u_lim = uint32_t(std::llround(u_lim * kQ));
+  c.ferr_lim = uint32_t(30000 * kQ);  // no following-error fault in the error ranges used here
+  return c;
+}
+
+TEST(PidAw, FixedPointMatchesDoubleReferenceAndNeverLearns) {
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> uni(-1.0, 1.0);
+  const NeuronConfig c = pid_cfg(0.3, 0.5, 60.0, 0.8, 0.25, 40.0);
+  NeuronPi::Inputs in;
+  NeuronPi n = started(c, in);
+  double acc = 0, es = 0, ep = 0, max_du = 0;
+  int clamped = 0;
+  int32_t enc = 0;
+  int64_t refq = 0;
+  for (int k = 0; k < 3000; ++k) {
+    const NeuronPi::State s0 = n.state();
+    const double scale = std::pow(10.0, 3.0 * std::fabs(uni(rng)) - 1.0);
+    refq += int64_t(std::llround(uni(rng) * scale * kQ)) - refq / 64;  // a walk pulled back to 0
+    enc += int32_t(std::llround(uni(rng) * 2.0));
+    in.ref_int = int32_t(refq >> CtlFrac);
+    in.ref_frac = uint32_t(refq & ((1 << CtlFrac) - 1));
+    in.enc_pos = enc;
+    in.ref_vel = int32_t(uni(rng) * 1e-3 * std::ldexp(1.0, VffFrac));  // no feed-forward in PID mode
+    run_period(n, c, in);
+    const NeuronPi::State& s1 = n.state();
+    ASSERT_EQ(s1.st, CtlStIdle);
+    // the weights are the loaded ones, the speed loop never ran
+    ASSERT_EQ(s1.lp[0].w1, c.w_p1);
+    ASSERT_EQ(s1.lp[0].w2, c.w_p2);
+    ASSERT_EQ(s1.lp[1].ep, 0);
+    ASSERT_EQ(s1.acc(1), 0);
+    if (k == 0) {
+      acc = s1.acc(0) / kQ;
+      es = s1.es(0) / kQ;
+      ep = s1.lp[0].ep / kQ;
+      continue;
+    }
+    // reference from the fixed-point state before the period (no compounding)
+    acc = s0.acc(0) / kQ;
+    es = s0.es(0) / kQ;
+    ep = s0.lp[0].ep / kQ;
+    const double sum = std::fabs(c.w_p1 / kW) + std::fabs(c.w_p2 / kW);
+    const double wn1 = s1.lp[0].n1 / kN, wn2 = s1.lp[0].n2 / kN;
+    ASSERT_NEAR(wn1, c.w_p1 / kW / sum, 1.0 / kN);
+    ASSERT_NEAR(wn2, c.w_p2 / kW / sum, 1.0 / kN);
+    const double e = (double(refq) - kQ / 2) / kQ - double(enc);
+    const double x2 = e - ep;
+    const double acc1 = acc + c.k_p / kC * (wn1 * e + wn2 * x2) - c.kb / kC * es;
+    const double tot = acc1 + c.k_v / kC * x2;
+    const double lim = c.u_lim / kQ;
+    const double u = std::clamp(tot, -lim, lim);
+    if (u != tot) ++clamped;
+    const double du = std::fabs(s1.u / kQ - u);
+    ASSERT_LE(du, 1e-4 + std::fabs(u) * std::ldexp(1.0, -15)) << "period " << k;
+    ASSERT_NEAR(s1.acc(0) / kQ, acc1, 1e-4 + std::fabs(acc1) * std::ldexp(1.0, -15)) << "period " << k;
+    ASSERT_NEAR(s1.es(0) / kQ, tot - u, 1e-4 + std::fabs(tot) * std::ldexp(1.0, -15)) << "period " << k;
+    EXPECT_EQ(s1.out_p, s1.u);  // v_cmd shows the PID's output too
+    max_du = std::max(max_du, du);
+  }
+  EXPECT_GT(clamped, 100);  // the output limit and the back-calculation were exercised
+  std::printf("PID: max |fixed - double| %.3g counts/period; %d of 3000 periods at the limit\n", max_du, clamped);
+}
+
+TEST(PidAw, PeriodEndsAfterThePositionLoop) {
+  const NeuronConfig c = pid_cfg(0.3, 0.5, 60.0, 0.8, 0.25, 40.0);
+  NeuronPi::Inputs in;
+  NeuronPi n = started(c, in);
+  for (int i = 0; i < c.div; ++i) n.step(c, in);  // initialisation and the first period
+  int busy = 0;
+  for (int i = 0; i < c.div; ++i) {
+    n.step(c, in);
+    if (n.state().st != CtlStIdle) ++busy;
+  }
+  // Vff + the position loop up to Out: 1 + (3 + 2 x 17 + 10 + 5 + 6)
+  EXPECT_EQ(busy, 1 + 3 + 2 * (NWgtFrac + 1) + 10 + 5 + 6);
+}
+
+// Without back-calculation the integral winds up while the output is
+// clamped and the error persists; with it the excess is bled off, and the
+// PID leaves the limit sooner once the error reverses.
+TEST(PidAw, BackCalculationBoundsTheIntegralWhileClamped) {
+  for (const int sign : {1, -1}) {
+    double peak[2] = {0, 0};
+    int unclamp_period[2] = {0, 0};
+    for (int aw = 0; aw < 2; ++aw) {
+      const NeuronConfig c = pid_cfg(0.2, 20.0, 20.0, 0.0, aw ? 0.5 : 0.0, 5.0);
+      NeuronPi::Inputs in;
+      NeuronPi n = started(c, in);
+      in.ref_int = sign * 200;  // a 200-count error the clamped output (5 counts/period) cannot close
+      for (int k = 0; k < 300; ++k) {
+        run_period(n, c, in);
+        const NeuronPi::State& s = n.state();
+        peak[aw] = std::max(peak[aw], std::fabs(s.acc(0) / kQ));
+        ASSERT_LE(std::fabs(s.u / kQ), 5.0 + 1e-9);
+      }
+      in.ref_int = -sign * 200;  // the error reverses: count the periods until u leaves its limit
+      for (int k = 0; k < 5000; ++k) {
+        run_period(n, c, in);
+        if (sign * n.state().u / kQ < 5.0 - 1e-6) {
+          unclamp_period[aw] = k;
+          break;
+        }
+        unclamp_period[aw] = k + 1;
+      }
+    }
+    EXPECT_GT(peak[0], 100.0) << "sign " << sign << ": winds up without back-calculation";
+    EXPECT_LT(peak[1], 50.0) << "sign " << sign << ": bounded with Kb = 0.5";
+    EXPECT_LT(unclamp_period[1] * 10, unclamp_period[0]) << "sign " << sign;
+  }
+}
+
 TEST(NeuronPi, DatapathFitsTheControlPeriod) {
   NeuronConfig c = base_cfg();
   NeuronPi::Inputs in;

@@ -130,7 +130,7 @@ enum Cov {
   kPeriods, kInPos, kFerr, kHoldDone, kCorrSet, kCorrSat, kCorrSatDone, kCorrDone, kHush, kLearnOn, kLearnOff,
   kEbClamp, kEbMin, kSatT12, kLimP, kLimV, kLimZero, kLimHuge, kBackCalc, kWMin, kWMax, kWBeyond, kSatVff, kSatT,
   kSatDu, kSatH, kSatAcc, kSatTot, kDivZero, kDivBig, kWnOne, kX2Wrap, kRefWrap, kVmeasHuge, kSettleNeg,
-  kStartMidFsm, kStopMidFsm, kStartStop, kReset, kCovN
+  kStartMidFsm, kStopMidFsm, kStartStop, kReset, kPidPeriods, kPidD, kPidLim, kCovN
 };
 constexpr const char* kCovName[] = {
     "control periods", "in-position latched", "following-error fault", "hold reached", "corrective steps set",
@@ -142,7 +142,8 @@ constexpr const char* kCovName[] = {
     "accumulator saturated", "acc + feed-forward saturated", "division by |w1|+|w2| = 0",
     "division by |w1|+|w2| > 2^23", "|wn| = 1.0", "x2 = e - e_prev wraps", "speed ref out_p + Vff wraps",
     "encoder jump >= 2^14 counts/period", "settle rate >= 2^31 (u negative)",
-    "start mid-FSM", "stop mid-FSM", "start and stop together", "synchronous reset mid-run"};
+    "start mid-FSM", "stop mid-FSM", "start and stop together", "synchronous reset mid-run",
+    "PID periods (position loop alone)", "PID D term K_V x2 != 0", "PID output at u_lim"};
 
 static_assert(std::size(kCovName) == kCovN);
 using Coverage = std::array<uint64_t, kCovN>;
@@ -203,7 +204,11 @@ void count(Coverage& c, bool& corr_sat, const NeuronConfig& cfg, const NeuronPi:
       if (!p.sel && q.hush) ++c[kHush];
       break;
     case UpcLearn:
-      if (!hush_now) ++c[q.learn ? kLearnOn : kLearnOff];
+      if (cfg.pid) {
+        if (q.rf[N::RfH] != 0) ++c[kPidD];
+      } else if (!hush_now) {
+        ++c[q.learn ? kLearnOn : kLearnOff];
+      }
       break;
     case UpcWin:
       if (!p.sel && p.fin && p.corr == 0 && q.hold == 0 && (q.in_pos || q.corr != 0)) ++c[kHoldDone];
@@ -223,18 +228,22 @@ void count(Coverage& c, bool& corr_sat, const NeuronConfig& cfg, const NeuronPi:
     case UpcDu:
       if (sat(q.rf[N::RfDu])) ++c[kSatDu];
       break;
+    case UpcOut:
+      if (cfg.pid) ++c[kPidPeriods];
+      break;
     case UpcAcc2:
       if (cfg.kb != 0 && p.es(s) != 0 && !p.hush) ++c[kBackCalc];
       if (sat(q.acc(s))) ++c[kSatAcc];
       break;
     case UpcTot: {
-      const int64_t tot = int64_t(p.acc(s)) + ((p.sel && cfg.ff_en) ? p.vff() : 0);
+      const int64_t b = (cfg.pid && !p.hush) ? p.rf[N::RfH] : (p.sel && cfg.ff_en) ? p.vff() : 0;
+      const int64_t tot = int64_t(p.acc(s)) + b;
       if (tot > INT32_MAX || tot < INT32_MIN) ++c[kSatTot];
       break;
     }
     case UpcLo: {
-      const uint32_t lim = p.sel ? cfg.u_lim : cfg.v_lim;
-      if (q.es(s) != 0) ++c[p.sel ? kLimV : kLimP];
+      const uint32_t lim = (p.sel || cfg.pid) ? cfg.u_lim : cfg.v_lim;
+      if (q.es(s) != 0) ++c[cfg.pid ? kPidLim : p.sel ? kLimV : kLimP];
       if (lim == 0) ++c[kLimZero];
       if (lim >= (1u << 31)) ++c[kLimHuge];
       break;
@@ -416,6 +425,9 @@ NeuronConfig random_config(Rng& r, Kind kind) {
       c.settle_rate = uint32_t(std::min<uint64_t>(0x7fffffffu, step_per_clock / uint64_t(r.range(1, 400))));
       break;
   }
+  // PID mode in about a quarter of the moves, drawn from bits already drawn
+  // so that the cascade's moves keep their random stream
+  c.pid = ((c.ferr_lim ^ c.inpos_win ^ c.k_p) & 3) == 1;
   return c;
 }
 

@@ -29,6 +29,22 @@ int32_t wgt(double v) { return int32_t(std::llround(v * double(1 << WgtFrac))); 
 
 }  // namespace
 
+const char* controller_kind_name(ControllerKind k) { return k == ControllerKind::kPidAw ? "pid-aw" : "neuron"; }
+
+PidGains realised_pid_gains(const NeuronConfig& n, double rate_hz) {
+  // The normalisation of sc_neuron_pi: wn_i = floor(|w_i| 2^NWgtFrac / (|w_1| + |w_2|)).
+  const int64_t a1 = std::abs(int64_t(n.w_p1)), a2 = std::abs(int64_t(n.w_p2));
+  const int64_t sum = a1 + a2;
+  auto wn = [&](int64_t a) { return sum == 0 ? 0.0 : double((a << NWgtFrac) / sum) / double(1 << NWgtFrac); };
+  const double k = double(n.k_p) / double(1u << CoefFrac);
+  PidGains g;
+  g.kp = k * wn(a2) * rate_hz;
+  g.ki = k * wn(a1) * rate_hz * rate_hz;
+  g.kd = double(n.k_v) / double(1u << CoefFrac);
+  g.kb = double(n.kb) / double(1u << CoefFrac) * rate_hz;
+  return g;
+}
+
 ControllerParams controller_defaults(double rate_hz) {
   ControllerParams p;
   p.rate_hz = rate_hz;
@@ -155,6 +171,38 @@ ServoConfigResult to_servo_config(const ControllerParams& p, double counts_per_s
     return Error{"inpos-hold", fmt::format("inpos-hold={} s: {} control periods exceed 65535", show(p.inpos_hold_s), hold)};
   }
   n.inpos_hold = uint16_t(std::max(hold, 1.0));
+  if (p.kind == ControllerKind::kPidAw) {
+    // The position loop's fixed-gain incremental PI is the PID's P and I:
+    // du = K (wn_1 e + wn_2 (e - e_prev)) per period, so K = Kp T + Ki T^2
+    // and the weights split K in the ratio Ki T : Kp (the larger at 64, the
+    // other scaled: the normalised weight carries the ratio to 2^-16); the D
+    // term K_V (e - e_prev) is Kd (per period and per second alike); the
+    // back-calculation KB = Kb T.
+    for (const auto& [name, v] : {std::pair{"pid-kp", p.pid_kp}, std::pair{"pid-ki", p.pid_ki},
+                                  std::pair{"pid-kd", p.pid_kd}, std::pair{"pid-kb", p.pid_kb}}) {
+      if (!(std::isfinite(v) && v >= 0)) {
+        return Error{name, fmt::format("{}={}: must be a finite number >= 0", name, show(v))};
+      }
+    }
+    const double T = div / f;
+    const double kp = p.pid_kp * T, ki = p.pid_ki * T * T;
+    for (const auto& [name, v, words] : {std::tuple{"pid-kp", p.pid_kp, kp + ki}, std::tuple{"pid-ki", p.pid_ki, kp + ki},
+                                         std::tuple{"pid-kd", p.pid_kd, p.pid_kd},
+                                         std::tuple{"pid-kb", p.pid_kb, p.pid_kb * T}}) {
+      if (words > kMaxCoef) {
+        return Error{name, fmt::format("{}={}: {} per control period of {} s exceeds the register's {}", name,
+                                       show(v), show(words), show(T), show(kMaxCoef))};
+      }
+    }
+    n.pid = true;
+    n.k_p = coef(kp + ki);
+    const double big = 64.0;
+    n.w_p1 = wgt(ki >= kp ? big : big * ki / kp);
+    n.w_p2 = wgt(kp >= ki ? big : big * kp / ki);
+    n.k_v = coef(p.pid_kd);
+    n.kb = coef(p.pid_kb * T);
+    n.eta_p1 = n.eta_p2 = n.eta_v1 = n.eta_v2 = 0;
+  }
   return c;
 }
 

@@ -23,6 +23,9 @@ inline constexpr int kMaxControlDiv = (1 << hw::CtlCfgDivW) - 1;
 // learning rates (unsigned Q.CoefFrac), weights (signed Q.WgtFrac), shifts.
 inline constexpr double kMaxCoef = double(1u << (hw::CoefW - hw::CoefFrac)) - 1.0 / double(1u << hw::CoefFrac);
 inline constexpr double kMaxWeight = double(1 << (hw::WgtW - 1 - hw::WgtFrac)) - 1.0 / double(1 << hw::WgtFrac);
+// PID gains per second (Kp, Ki, Kb): the register bound depends on the
+// control rate and is checked by to_servo_config; this is the flags' range.
+inline constexpr double kMaxPidGain = 1e9;
 inline constexpr int kMaxLearnShift = (1 << hw::LearnShW) - 1;
 inline constexpr int kMaxEncFilter = (1 << hw::EncFiltW) - 1;
 // Speeds (v_lim, u_lim, settle_rate), pulses/s; their per-period words are
@@ -49,9 +52,27 @@ struct ServoConfig {
   NeuronConfig ctl{};  // incl. the decoder's glitch filter (ctl.enc_filt)
 };
 
+// The position controller of the closed loop.
+enum class ControllerKind {
+  kNeuron,  // the neuron-PI cascade (paper 000): position loop, then speed loop
+  kPidAw,   // paper 003's fixed-gain PID with back-calculation anti-windup:
+            // the position loop alone, its output the step rate u (CL_CFG.PID)
+};
+const char* controller_kind_name(ControllerKind k);  // "neuron", "pid-aw"
+
 // Controller settings in physical units.
 struct ControllerParams {
   bool closed_loop = true;
+  ControllerKind kind = ControllerKind::kNeuron;
+  // PID (kind kPidAw), per second: u = Kp e + Ki integral(e) + Kd de/dt in
+  // pulses/s for e in pulses, limited to u_lim; the integral is reduced by
+  // Kb (u - sat(u)) (back-calculation, paper 003 eq. 15; Kb = 0: none).
+  // Defaults: paper 003's X axis (Table 1) scaled to pulses
+  // (docs/closed_loop.md, "PID with anti-windup").
+  double pid_kp = 65.5;    // 1/s
+  double pid_ki = 6.55;    // 1/s^2
+  double pid_kd = 0.0655;  // s^0 (pulses/s per pulse/s)
+  double pid_kb = 0.5;     // 1/s
   double rate_hz = 10000;       // control rate (div = clock / rate)
   bool ff = true;               // velocity feed-forward from V*
   bool adaptive = true;         // false: learning rates 0 (fixed-gain PI)
@@ -95,6 +116,15 @@ inline constexpr double kTunedControlRate = 10000;
 ControllerParams controller_defaults(double rate_hz);
 
 using ServoConfigResult = std::variant<ServoConfig, Error>;
+
+// The PID gains the registers of a CL_CFG.PID configuration realise, per
+// second at `rate_hz` (the hardware's normalised weights are truncated to
+// Q1.NWgtFrac, so Ki and Kp differ from the requested ones by their
+// quantisation; to_servo_config's choice keeps that below 2^-16 of K_P).
+struct PidGains {
+  double kp = 0, ki = 0, kd = 0, kb = 0;
+};
+PidGains realised_pid_gains(const NeuronConfig& n, double rate_hz);
 
 // Register values for the settings, an encoder with `counts_per_step`
 // counts per pulse (a power of two), this pulse timing and clock rate.
