@@ -9,7 +9,7 @@
 # to 8600 LUT (logic + LUTs used as memory) and 8 DSP48E1: with the
 # controlled-stop generator (about 3500 LUT in the servo axis, docs/stop.md),
 # the row stream with retarget and the HOLD count, the closed-loop axis
-# measures 7430 (the board top 9463 of the xc7a35t's 20800: 45.5 %, room
+# measures 7622 (7430 before the PID mode; the board top 9463 of the xc7a35t's 20800: 45.5 %, room
 # for a second axis beside it). The margin covers yosys' own spread: the
 # same sc_profile_exec source came out at 1138 or 1578 LUT inside
 # sc_servo_axis when only the servo and sc_pkg changed elsewhere (the

@@ -68,7 +68,7 @@ struct ControllerParams {
   // pulses/s for e in pulses, limited to u_lim; the integral is reduced by
   // Kb (u - sat(u)) (back-calculation, paper 003 eq. 15; Kb = 0: none).
   // Defaults: paper 003's X axis (Table 1) scaled to pulses
-  // (docs/closed_loop.md, "PID with anti-windup").
+  // (docs/closed_loop.md, "Paper 003's square").
   double pid_kp = 65.5;    // 1/s
   double pid_ki = 6.55;    // 1/s^2
   double pid_kd = 0.0655;  // s^0 (pulses/s per pulse/s)
