@@ -5,14 +5,17 @@
   scripts/plot_path.py DIR/path_trace.csv [--out-dir DIR]   # replots an existing trace
 
 Figures (in --out-dir, default: the trace's directory):
-  path_xy.png    X-Y path (axes 0 and 1, mm): the planned polyline and the sampled
-                 reference, and a zoom of a few pulses around each corner (up to 12; of
-                 more, the 12 with the largest contour error near them)
-  path_axes.png  velocity of every axis (mm/s) and the contour error (pulses) over time
+  path_xy.png    X-Y path (axes 0 and 1, mm): the planned polyline, the sampled
+                 reference and (closed loop) the measured position, and a zoom around
+                 each corner (up to 12; of more, the 12 with the largest contour error
+                 near them): a few pulses, or wide enough for the measured path
+  path_axes.png  velocity of every axis (mm/s) and the contour error (pulses) over time;
+                 closed loop: each axis's tracking error (reference - measured, pulses)
 
 The trace: "# key=value" lines (clk_hz, every_clocks, pulses_per_mm, vertex per polyline
 vertex in pulses, move_end_s, contour_max_pulses, ...), a header line, then one row per
-sample: t_s, pos<a>_pulses, vel<a>_pulses_per_s per axis, contour_error_pulses.
+sample: t_s, pos<a>_pulses, vel<a>_pulses_per_s per axis, contour_error_pulses, and in
+closed loop meas<a>_pulses per axis (the encoder plus 1/2 pulse: the reference's coordinates).
 Uses Debian's python3-matplotlib (hence /usr/bin/python3). Each PNG is written as
 "<name>.part" and renamed when whole.
 """
@@ -84,6 +87,7 @@ def main():
     pos = [c[f"pos{a}_pulses"] for a in range(axes)]
     vel = [c[f"vel{a}_pulses_per_s"] for a in range(axes)]
     contour = c["contour_error_pulses"]
+    meas = [c[f"meas{a}_pulses"] for a in range(axes)] if "meas0_pulses" in c else None
     vertices = np.array(meta["vertex"]) if meta["vertex"] else np.zeros((0, axes))
     ends = floats(meta, "move_end_s")
     letters = "XYZA"
@@ -98,12 +102,21 @@ def main():
         return x, y, vx, vy
 
     x, y, px, py = xy(pos, vertices)
+    if meas is not None:
+        mx, my, _, _ = xy(meas, vertices)
     corners = list(range(1, len(vertices) - 1))  # every vertex between two moves
     half = [ZOOM_PULSES / ppm[0], ZOOM_PULSES / (ppm[1] if axes > 1 else ppm[0])]
     near = {}
+    zoom = {}  # per corner: half-width in mm per axis
     for k in corners:
         box = (np.abs(x - px[k]) <= half[0]) & (np.abs(y - py[k]) <= half[1])
         near[k] = box
+        zoom[k] = half
+        if meas is not None and np.any(box):
+            # wide enough for where the measured position is while the reference passes
+            reach = max(float(np.max(np.abs(mx[box] - px[k]))), float(np.max(np.abs(my[box] - py[k]))))
+            w = max(half[0], half[1], 1.2 * reach)
+            zoom[k] = [w, w]
     shown = corners
     if len(corners) > MAX_CORNERS:
         worst = sorted(corners, key=lambda k: -float(np.max(contour[near[k]], initial=0.0)))
@@ -118,6 +131,8 @@ def main():
     ax = fig.add_subplot(grid[:, 0])
     ax.plot(px, py, "-", lw=5, color="0.8", label="planned polyline")
     ax.plot(x, y, "-", lw=0.9, color="C0", label="reference (sampled)")
+    if meas is not None:
+        ax.plot(mx, my, "-", lw=0.9, color="C2", label="measured (encoder)")
     for k in shown:
         ax.plot(px[k], py[k], "o", ms=7, mfc="none", color="C3")
         ax.annotate(str(k), (px[k], py[k]), textcoords="offset points", xytext=(6, 6), fontsize=8, color="C3")
@@ -138,11 +153,14 @@ def main():
         ax.plot(px, py, "-", lw=5, color="0.8", label="planned")
         ax.plot(np.where(keep, x, np.nan), np.where(keep, y, np.nan), ".-", ms=1.5, lw=0.6, color="C0",
                 label="reference")
-        ax.set_xlim(px[k] - half[0], px[k] + half[0])
-        ax.set_ylim(py[k] - half[1], py[k] + half[1])
+        if meas is not None:
+            ax.plot(mx, my, "-", lw=0.6, color="C2", label="measured")
+        ax.set_xlim(px[k] - zoom[k][0], px[k] + zoom[k][0])
+        ax.set_ylim(py[k] - zoom[k][1], py[k] + zoom[k][1])
         ax.set_aspect("equal", adjustable="box")
         worst = float(np.max(contour[near[k]], initial=0.0))
-        ax.set_title(f"corner {k} at ({px[k]:.3f}, {py[k]:.3f}) mm, +-{ZOOM_PULSES:g} pulses\n"
+        width = f"+-{ZOOM_PULSES:g} pulses" if zoom[k] is half else f"+-{zoom[k][0]:.3g} mm"
+        ax.set_title(f"corner {k} at ({px[k]:.3f}, {py[k]:.3f}) mm, {width}\n"
                      f"contour error here: max {worst:.2g} pulses (sampled)", fontsize=8)
         ax.tick_params(labelsize=7)
         ax.locator_params(nbins=4)
@@ -151,7 +169,15 @@ def main():
     save(fig, out, "path_xy.png")
 
     # ---- velocities and contour error over time -------------------------------------------
-    fig, (av, ac) = plt.subplots(2, 1, figsize=(11, 7), sharex=True)
+    if meas is None:
+        fig, (av, ac) = plt.subplots(2, 1, figsize=(11, 7), sharex=True)
+    else:
+        fig, (av, ac, at) = plt.subplots(3, 1, figsize=(11, 10), sharex=True)
+        for a in range(axes):
+            at.plot(t, pos[a] - meas[a], lw=0.8, label=f"axis {a} ({letters[a]})")
+        at.set_ylabel("tracking error, pulses")
+        at.set_title("tracking error per axis: reference - measured (the loop follows P* - 1/2)")
+        at.legend(fontsize=8, loc="best")
     for a in range(axes):
         av.plot(t, vel[a] / ppm[a], lw=1.0, label=f"axis {a} ({letters[a]})")
     av.set_ylabel("velocity, mm/s")
@@ -161,10 +187,10 @@ def main():
     if cmax is not None:
         ac.axhline(float(cmax), ls="--", lw=0.8, color="k", label=f"max over every clock: {float(cmax):.3g}")
     ac.set_ylabel("contour error, pulses")
-    ac.set_xlabel("time, s")
+    (ac if meas is None else at).set_xlabel("time, s")
     ac.set_title("contour error: the reference's distance from the planned polyline")
     for i, e in enumerate(ends):
-        for a in (av, ac):
+        for a in (av, ac) if meas is None else (av, ac, at):
             a.axvline(e, ls=":", lw=0.7, color="0.5", label="move end" if i == 0 else None)
     av.legend(fontsize=8, loc="best")
     ac.legend(fontsize=8, loc="best")

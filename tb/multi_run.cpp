@@ -153,6 +153,7 @@ class Run {
       r.trace.clock.reserve(expect);
       r.trace.pos.reserve(expect * n);
       r.trace.vel.reserve(expect * n);
+      if (opt_.loop) r.trace.measured.reserve(expect * n);
       r.trace.contour.reserve(expect);
     }
     uint32_t moves_done = 0;
@@ -440,6 +441,8 @@ class Run {
     for (size_t a = 0; a < rows_.axes(); ++a) {
       t.pos.push_back(position(out.axis[a]));
       t.vel.push_back(double(out.axis[a].ref_vel) * vel_lsb);
+      // in the reference's coordinates, where the loop at rest equals P*
+      if (opt_.loop) t.measured.push_back(measured(out, a) + 0.5);
     }
     t.contour.push_back(contour);
   }

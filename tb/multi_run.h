@@ -103,6 +103,9 @@ struct MultiTrace {
   std::vector<uint64_t> clock;
   std::vector<double> pos;      // reference position, pulses (REF_POS plus its fraction)
   std::vector<double> vel;      // reference velocity, pulses/s
+  // closed loop: the measured position (encoder) plus 1/2 pulse, pulses: the
+  // reference's coordinates (the loop follows P* - 1/2); empty in open loop
+  std::vector<double> measured;
   std::vector<double> contour;  // contour error, pulses (0 without a polyline or before the first row)
   size_t size() const { return clock.size(); }
 };

@@ -208,7 +208,8 @@ std::string write_trace_csv(const PlotSetup& s, const std::string& file, const s
   const size_t n = prog.axes;
   std::string buf;
   auto out = std::back_inserter(buf);
-  fmt::format_to(out, "# scurve path trace: the reference sampled from START, at every move end and at the end\n");
+  fmt::format_to(out, "# scurve path trace: the reference (closed loop: and the measured position) sampled from "
+                      "START, at every move end and at the end\n");
   fmt::format_to(out, "# file={}\n# engine={}\n# axes={}\n# clk_hz={}\n# every_clocks={}\n# samples={}\n",
                  scurve::input::printable(file), engine, n, ClkHz, s.every, t.size());
   fmt::format_to(out, "# pulses_per_mm={}\n# start={}\n", fmt::join(prog.pulses_per_mm, ","),
@@ -226,7 +227,10 @@ std::string write_trace_csv(const PlotSetup& s, const std::string& file, const s
   fmt::format_to(out, "t_s");
   for (size_t a = 0; a < n; ++a) fmt::format_to(out, ",pos{}_pulses", a);
   for (size_t a = 0; a < n; ++a) fmt::format_to(out, ",vel{}_pulses_per_s", a);
-  fmt::format_to(out, ",contour_error_pulses\n");
+  fmt::format_to(out, ",contour_error_pulses");
+  const bool loop = !t.measured.empty();
+  for (size_t a = 0; loop && a < n; ++a) fmt::format_to(out, ",meas{}_pulses", a);
+  fmt::format_to(out, "\n");
 
   const std::string part = s.csv + ".part";
   std::FILE* f = std::fopen(part.c_str(), "w");
@@ -237,7 +241,11 @@ std::string write_trace_csv(const PlotSetup& s, const std::string& file, const s
     // Positions in the file's coordinates: REF_POS is their floor.
     for (size_t a = 0; a < n; ++a) fmt::format_to(out, ",{:.9f}", t.pos[i * n + a] + double(prog.start[a]));
     for (size_t a = 0; a < n; ++a) fmt::format_to(out, ",{:.6f}", t.vel[i * n + a]);
-    fmt::format_to(out, ",{:.6g}\n", t.contour[i]);
+    fmt::format_to(out, ",{:.6g}", t.contour[i]);
+    for (size_t a = 0; loop && a < n; ++a) {
+      fmt::format_to(out, ",{:.4f}", t.measured[i * n + a] + double(prog.start[a]));
+    }
+    fmt::format_to(out, "\n");
     if (buf.size() > (1u << 20)) {
       ok = std::fwrite(buf.data(), 1, buf.size(), f) == buf.size();
       buf.clear();

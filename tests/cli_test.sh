@@ -356,6 +356,26 @@ assert round(rows[-1][0] * 20e6) == r["clocks"], (rows[-1], r["clocks"])
 assert [math.floor(x) for x in rows[-1][1:3]] == r["final_position"], (rows[-1], r["final_position"])
 assert max(row[5] for row in rows) <= r["contour_error_max_pulses"] * (1 + 1e-5), r["contour_error_max_pulses"]
 PY
+# Closed loop with paper 003's PID: the trace adds the measured position per
+# axis (reference coordinates: at rest on the reference), the report the
+# overshoot; the figures are drawn with the measured path and tracking error.
+"$scurve" path "$tmp/square.gcode" --engine model --closed-loop --controller pid-aw --ctl-rate 1000 \
+  --plot "$tmp/plot/loop" --json > "$tmp/path_loop.json"
+python3 - "$tmp/path_loop.json" "$tmp/plot/loop" <<'PY'
+import json, math, os, sys
+r, d = json.load(open(sys.argv[1])), sys.argv[2]
+assert r["pass"] and r["closed_loop"] and r["steady_state_error_pulses"] == [0, 0], r
+assert len(r["overshoot_pulses"]) == 2 and len(r["overshoot_percent"]) == 2, r
+lines = [l.strip() for l in open(os.path.join(d, "path_trace.csv")) if not l.startswith("#")]
+head = lines[0].split(",")
+assert head[-3:] == ["contour_error_pulses", "meas0_pulses", "meas1_pulses"], head
+last = [float(x) for x in lines[-1].split(",")]
+assert [math.floor(x) for x in last[6:8]] == [math.floor(x) for x in last[1:3]] == r["final_position"], last
+assert max(abs(float(l.split(",")[1]) - float(l.split(",")[6])) for l in lines[1:]) <= \
+    r["max_tracking_error_pulses"][0] + 1.0, r["max_tracking_error_pulses"]
+for name in ("path_xy.png", "path_axes.png"):
+    assert os.path.getsize(os.path.join(d, name)) > 10000, name
+PY
 # An unusable --plot directory, or no matplotlib, is refused before the run.
 check_bad "--plot=$tmp/square.gcode/plot: cannot create the directory" path "$tmp/square.gcode" --engine model \
   --plot "$tmp/square.gcode/plot"
