@@ -303,6 +303,14 @@ int run_closed_loop_cli(ClosedLoopCli f, const std::vector<std::pair<std::string
   }
   if (f.plant_kind == "first-order") f.plant.kind = PlantConfig::Kind::FirstOrder;
   const ControllerParams ctl = f.ctl.resolve();
+  if (f.compare && ctl.kind == scurve::ControllerKind::kPidAw) {
+    // the comparison's variants are the cascade's (adaptive, fixed gain, feed-forward)
+    std::fprintf(stderr, "error: %s\n",
+                 input::Error("controller", "pid-aw", "--compare compares the neuron cascade's variants; "
+                                                      "compare the PID with scurve square")
+                     .what());
+    return 2;
+  }
   ClEngine eng = engine == "rtl" ? ClEngine::RtlOnly
                  : (engine == "model" || engine == "model-fast") ? ClEngine::ModelOnly
                                                                  : ClEngine::Lockstep;

@@ -406,6 +406,8 @@ check_bad "pid-kp=1000000: 1000.* per control period of 0.001 s exceeds" path "$
 check_bad "pid-kb=-1: must be a finite number in \[0," path "$tmp/square.gcode" --closed-loop --controller pid-aw \
   --pid-kb -1
 check_bad "controller: pid not in" path "$tmp/square.gcode" --closed-loop --controller pid
+check_bad "controller=pid-aw: --compare compares the neuron cascade" sim --closed-loop --compare --group 1 \
+  --controller pid-aw
 # A JSON point may carry its line's asymmetric jerks (Ts1 Ts2 Te1 Te2 along
 # the path, mm/s^3): every move on its target (on the model: 15 M clocks,
 # minutes in lockstep under the sanitizers; the rows are plain rows to the
