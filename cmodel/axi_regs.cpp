@@ -91,6 +91,7 @@ uint32_t AxiRegs::read_word(uint16_t a, const RegsSide& side, const CoreOutputs&
       s |= uint32_t(side.sw_level & ((1u << SwW) - 1)) << StatusSwLevelLsb;
       if (q_.latched) s |= bit(StatusLatchedBit);
       if (core.guard) s |= bit(StatusGuardBit);
+      if (core.reach) s |= bit(StatusReachBit);
       return s;
     }
     case RegErr:
@@ -419,6 +420,7 @@ void AxiRegs::step(const AxiIn& in, const RegsSide& side, const CoreOutputs& cor
   if ((core.lim_trip_fwd && soft_fwd(core.ref_pos_int)) || (core.lim_trip_rev && soft_rev(core.ref_pos_int))) {
     d.err_soft = true;
   }
+  if (core.reach && !q.reach_prev) d.err_soft = true;
   if (side.sw_edge != 0) d.irq_st |= uint8_t(bit(IrqSwitchBit));
   // position latch: an edge of the filtered home, probe or index level,
   // armed; a capture wins over a re-arm in the same clock
@@ -442,7 +444,8 @@ void AxiRegs::step(const AxiIn& in, const RegsSide& side, const CoreOutputs& cor
   if (core.move_done) d.irq_st |= uint8_t(bit(IrqMoveDoneBit));
   if (q.busy_prev && !busy_eff) d.irq_st |= uint8_t(bit(IrqIdleBit));
   if (core.underrun && !q.underrun_prev) d.irq_st |= uint8_t(bit(IrqUnderrunBit));
-  if ((fault_any && !q.fault_prev) || (core.discont && !q.discont_prev) || (core.guard && !q.guard_prev)) {
+  if ((fault_any && !q.fault_prev) || (core.discont && !q.discont_prev) || (core.guard && !q.guard_prev) ||
+      (core.reach && !q.reach_prev)) {
     d.irq_st |= uint8_t(bit(IrqFaultBit));
   }
   d.irq = (d.irq_st & d.irq_en) != 0;
@@ -452,6 +455,7 @@ void AxiRegs::step(const AxiIn& in, const RegsSide& side, const CoreOutputs& cor
   d.fault_prev = fault_any;
   d.discont_prev = core.discont;
   d.guard_prev = core.guard;
+  d.reach_prev = core.reach;
   d.start_d1 = q.start;
   q_ = d;
 }
@@ -499,6 +503,7 @@ CoreInputs AxiRegs::core_inputs(uint32_t sw_level, int32_t ref_pos) const {
   c.stop_jerk = q_.stop_jerk;
   c.stop_acc = q_.stop_acc;
   c.guard = q_.guard;
+  c.soft = {q_.soft_en, q_.soft_min, q_.soft_max};
   return c;
 }
 

@@ -90,7 +90,7 @@ class AxiRegs {
     uint8_t irq_st = 0;
     bool irq = false;
     bool below = false, busy_prev = false, underrun_prev = false, fault_prev = false, discont_prev = false,
-         guard_prev = false;
+         guard_prev = false, reach_prev = false;
     PulseTiming cfg{};
     u128 frac0 = 0;
     uint8_t st_phase = 0;

@@ -71,7 +71,8 @@ bool AxisCore::start_able(const CoreExtInputs& x) const {
 bool AxisCore::arm_drop() const { return arm_ && (in_q_.abort || in_q_.stop || into_limit() != 0); }
 
 bool AxisCore::arm_ready() const {
-  return arm_ && !arm_drop() && sg_.state().dir == arm_fwd_ && arm_cnt_ >= in_q_.cfg.setup;
+  return arm_ && !arm_drop() && sg_.state().dir == arm_fwd_ && arm_cnt_ >= in_q_.cfg.setup &&
+         exec_.start_ready(in_q_.soft.en);
 }
 
 bool AxisCore::fault_abort() const { return (in_q_.lim_hard && into_limit() != 0) || rate_trip_; }
@@ -96,6 +97,7 @@ void AxisCore::latch_inputs(const CoreInputs& in) {
   in_q_.stop_jerk = in.stop_jerk & ((uint64_t(1) << JerkW) - 1);
   in_q_.stop_acc = in.stop_acc;
   in_q_.guard = in.guard.masked();
+  in_q_.soft = in.soft;
   in_q_.cfg = in.cfg;
   in_q_.pos_frac0 = mask_bits(in.pos_frac0, FracBits);
 }
@@ -135,8 +137,9 @@ void AxisCore::clock_edge(const CoreExtInputs& x, const SyncInputs& s) {
     } else if (sg_.state().dir != arm_fwd_) {
       arm_cnt_d = 0;
     } else if (arm_cnt_ >= in_q_.cfg.setup) {
-      // set up: start now, or (kSync) hold until every axis is
-      if (!kSync || s.go) {
+      // set up (and the head row's reach known): start now, or (kSync)
+      // hold until every axis is
+      if (exec_.start_ready(in_q_.soft.en) && (!kSync || s.go)) {
         arm_d = false;
         exec_start = true;
       }
@@ -165,6 +168,8 @@ void AxisCore::clock_edge(const CoreExtInputs& x, const SyncInputs& s) {
   ei.stop_jerk = in_q_.stop_jerk;
   ei.stop_acc = in_q_.stop_acc;
   ei.guard = in_q_.guard;
+  ei.soft = in_q_.soft;
+  ei.reach_veto = kSync && s.reach_veto;
   sg_.step(si);  // uses the executor's current (registered) outputs
   exec_.step(ei);
   if constexpr (kExt) exec_started_ = exec_start;
@@ -181,7 +186,7 @@ bool AxisCore::inputs_settled(const CoreInputs& in) const {
          !in_q_.stop && !in.lim_fwd && !in.lim_rev && !in_q_.lim_fwd && !in_q_.lim_rev &&
          in_q_.lim_hard == in.lim_hard && in_q_.enable == in.enable && in_q_.cfg == in.cfg &&
          in_q_.stop_jerk == (in.stop_jerk & ((uint64_t(1) << JerkW) - 1)) && in_q_.stop_acc == in.stop_acc &&
-         in_q_.guard == in.guard.masked() &&
+         in_q_.guard == in.guard.masked() && in_q_.soft == in.soft &&
          in_q_.pos_frac0 == mask_bits(in.pos_frac0, FracBits);
 }
 CoreOutputs AxisCore::outputs() const {
@@ -204,6 +209,7 @@ void AxisCore::read_outputs(CoreOutputs& o) const {
   o.underrun = e.underrun;
   o.discont = e.discont;
   o.guard = e.guard;
+  o.reach = e.reach;
   o.stopping = e.stop;
   o.overshoot = exec_.overshoot();
   o.move_done = e.move_done;
@@ -236,7 +242,8 @@ bool AxisCore::outputs_equal(const CoreOutputs& o) const {
          o.done == is_done && o.busy == busy() && o.en == in_q_.enable &&
          o.phase == (is_done ? uint8_t(Phase::PhDone) : uint8_t(e.phase)) && o.fault_table == e.fault &&
          o.fault_overrun == fault_overrun() && o.seg_idx == e.idx && o.step_pending == s.pend &&
-         o.underrun == e.underrun && o.discont == e.discont && o.guard == e.guard && o.stopping == e.stop &&
+         o.underrun == e.underrun && o.discont == e.discont && o.guard == e.guard && o.reach == e.reach &&
+         o.stopping == e.stop &&
          o.overshoot == exec_.overshoot() && o.move_done == e.move_done &&
          o.move_idx == e.move_idx && o.boundary_pos == e.bpos && o.fifo_level == exec_.fifo_level() &&
          o.fifo_full == exec_.fifo_full() && o.row_count == e.rows && o.retarget_refused == e.refused &&
@@ -253,7 +260,10 @@ bool AxisCore::lim_trip(bool fwd, bool busy_now) const {
 uint64_t AxisCore::clocks_to_next_event(const CoreInputs& in) const {
   const ProfileExec::State& e = exec_.state();
   const bool dir_settled = !(e.run && e.vel != 0) || (e.vel >= 0) == sg_.state().dir;
-  if (!sg_.idle() || !dir_settled || e.step_req || arm_ || rate_trip_ || !inputs_settled(in)) return 0;
+  if (!sg_.idle() || !dir_settled || e.step_req || arm_ || rate_trip_ || !inputs_settled(in) ||
+      !exec_.reach_idle()) {
+    return 0;
+  }
   const uint64_t ev = exec_.clocks_to_next_event();
   return ev == 0 && !e.run ? UINT64_MAX : ev;  // idle: only counters move
 }

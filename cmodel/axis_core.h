@@ -26,6 +26,7 @@ struct CoreInputs {
   uint64_t stop_jerk = StopJerkReset;
   uint64_t stop_acc = StopAccReset;
   GuardLimits guard{};  // the executor's row guards (guard_*_i; 0 = none)
+  SoftWindow soft{};    // the executor's soft-limit look-ahead (soft_*_i)
   // Limits (lim_fwd_i, lim_rev_i, lim_hard_i): a limit switch is active on
   // the + / - side; motion into it stops (hard: at once), a START toward it
   // is refused.
@@ -53,6 +54,7 @@ struct SyncInputs {
   bool start_ok = false;  // every axis can accept the START it sees (AND of start_able)
   bool go = false;        // every axis is armed with DIR set up (AND of arm_ready)
   bool drop = false;      // some axis drops its arming (OR of arm_drop)
+  bool reach_veto = false;  // some axis refuses its head row (OR of reach_bad): none loads it
 };
 
 // Every output of sc_axis_core, as the lockstep checker compares them.
@@ -68,6 +70,7 @@ struct CoreOutputs {
   bool underrun = false;
   bool discont = false;
   bool guard = false;  // a row broke a guard limit (until START)
+  bool reach = false;  // the soft-limit look-ahead refused a row (until START)
   bool stopping = false;
   bool overshoot = false;
   bool move_done = false;
@@ -110,6 +113,8 @@ class AxisCore {
   // The synchronisation outputs (start_able_o, arm_ready_o, arm_drop_o,
   // fault_abort_o), from the current state.
   bool start_able() const;
+  // reach_bad_o: the executor's look-ahead refuses the head row this clock.
+  bool reach_bad() const { return exec_.reach_bad(in_q_.pos_frac0, in_q_.soft); }
   bool arm_ready() const;
   bool arm_drop() const;
   bool fault_abort() const;
@@ -170,6 +175,7 @@ class AxisCore {
     uint64_t stop_jerk = 0;
     uint64_t stop_acc = 0;
     GuardLimits guard{};
+    SoftWindow soft{};
     bool lim_fwd = false, lim_rev = false, lim_hard = false;
     PulseTiming cfg{0, 0, 0, 0};
     u128 pos_frac0 = 0;

@@ -14,19 +14,55 @@ MultiAxisCore::MultiAxisCore(size_t axes, bool servo) : axes_(axes) {
   } else {
     cores_.resize(axes);
   }
+  for (size_t a = 0; a < axes; ++a) exec_of(a).share_reach();
+  reset();
 }
 
 void MultiAxisCore::reset() {
   for (AxisCore& a : cores_) a.reset();
   for (ServoAxis& a : servos_) a.reset();
+  reach_.reset();
+  reach_owner_ = axes_ - 1;  // axis 0 first
 }
 
 void MultiAxisCore::step(const MultiCoreInputs& in) {
+  reach_ports();
   if (servos_.empty()) {
     step_open(in);
   } else {
     step_servo(in);
   }
+  step_reach();
+}
+
+void MultiAxisCore::reach_ports() {
+  for (size_t a = 0; a < axes_; ++a) {
+    ProfileExec::ReachPort& p = exec_of(a).reach_port();
+    p.busy = reach_.busy();
+    p.done = reach_.done() && a == reach_owner_;
+    p.fwd = reach_.reach_fwd();
+    p.rev = reach_.reach_rev();
+  }
+}
+
+// sc_multi_axis_core's arbiter: while idle, the first requesting axis after
+// the last one served starts; while busy, only that axis's abort reaches it.
+void MultiAxisCore::step_reach() {
+  RowReach::Inputs ri{};
+  if (reach_.busy()) {
+    ri.abort = exec_of(reach_owner_).reach_request().abort;
+  } else {
+    for (size_t i = 1; i <= axes_; ++i) {
+      const size_t c = (reach_owner_ + i) % axes_;
+      if (exec_of(c).reach_request().start) {
+        ri = exec_of(c).reach_request();
+        ri.abort = false;
+        reach_owner_ = c;
+        break;
+      }
+    }
+  }
+  reach_.step(ri);
 }
 
 namespace {
@@ -48,7 +84,7 @@ void apply_shared(const MultiCoreInputs& in, bool stopping_any, bool fault_any, 
 // The sync and broadcast signals from every axis's registers before this
 // clock (sc_multi_axis_core's AND / OR across axes).
 struct Broadcast {
-  SyncInputs sync{true, true, false};
+  SyncInputs sync{true, true, false, false};
   bool stopping_any = false, fault_any = false;
 };
 
@@ -59,6 +95,7 @@ Broadcast broadcast(const std::vector<Axis>& axes) {
     b.sync.start_ok = b.sync.start_ok && a.start_able();
     b.sync.go = b.sync.go && a.arm_ready();
     b.sync.drop = b.sync.drop || a.arm_drop();
+    b.sync.reach_veto = b.sync.reach_veto || a.reach_bad();
     b.stopping_any = b.stopping_any || a.exec().state().stop;
     b.fault_any = b.fault_any || a.fault_abort();
   }
@@ -100,6 +137,7 @@ void MultiAxisCore::step_servo(const MultiCoreInputs& in) {
     si.stop_jerk = c.stop_jerk;
     si.stop_acc = c.stop_acc;
     si.guard = c.guard;
+    si.soft = c.soft;
     si.lim_fwd = c.lim_fwd;
     si.lim_rev = c.lim_rev;
     si.lim_hard = c.lim_hard;

@@ -68,7 +68,14 @@ class MultiAxisCore {
  private:
   void step_open(const MultiCoreInputs& in);
   void step_servo(const MultiCoreInputs& in);
+  ProfileExec& exec_of(size_t a) { return servos_.empty() ? cores_[a].exec() : servos_[a].exec(); }
+  // The shared row reach evaluator: its state to every executor before the
+  // clock, the executors' requests arbitrated into it after.
+  void reach_ports();
+  void step_reach();
   size_t axes_;
+  RowReach reach_;                  // the one evaluator of the soft-limit look-ahead
+  size_t reach_owner_ = 0;          // the axis whose row it evaluates (or last did)
   std::vector<AxisCore> cores_;     // Servo = 0
   std::vector<ServoAxis> servos_;   // Servo = 1
   CoreInputs scratch_{};            // one axis's inputs of this clock

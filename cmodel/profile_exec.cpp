@@ -8,6 +8,9 @@ void ProfileExec::reset() {
   q_ = State{};
   fifo_.reset();
   stop_.reset();
+  reach_.reset();
+  port_ = ReachPort{};
+  req_ = RowReach::Inputs{};
 }
 
 GuardLimits GuardLimits::masked() const {
@@ -32,6 +35,28 @@ bool ProfileExec::holding() const {
          q_.ends_in == q_.ends_out && !fifo_.full();
 }
 
+// Soft-limit look-ahead: the head row's reach from where it would start
+// (after this clock's integration at a boundary, POS_FRAC0 at a START), on
+// the top ReachFrac fraction bits, out of the window (or not yet known).
+bool ProfileExec::reach_bad(u128 pos_frac0, const SoftWindow& soft) const {
+  if (!soft.en) return false;
+  if (q_.chk == 0) return true;
+  const std::array<int64_t, 2>& hd_reach = side_[fifo_.rd()];
+  int32_t p0_int = q_.pint;
+  u128 p0_frac = mask_bits(pos_frac0, FracBits);
+  if (q_.run) {
+    const i128 sum = i128(q_.frac) + q_.vel;
+    p0_int = sum < 0 ? add_wrap32(q_.pint, -1) : u128(sum) >= kOne ? add_wrap32(q_.pint, 1) : q_.pint;
+    p0_frac = sum < 0 ? u128(sum + i128(kOne)) : u128(sum) >= kOne ? u128(sum) - kOne : u128(sum);
+  }
+  const i128 p0 = (i128(p0_int) << ReachFrac) | i128(p0_frac >> (FracBits - ReachFrac));
+  const i128 fwd_int = (p0 + hd_reach[0]) >> ReachFrac;
+  const i128 rev_int = (p0 + hd_reach[1]) >> ReachFrac;
+  const bool out_fwd = fwd_int > soft.max && fwd_int > p0_int;
+  const bool out_rev = rev_int < soft.min && rev_int < p0_int;
+  return out_fwd || out_rev;
+}
+
 void ProfileExec::step(const Inputs& in) {
   // Mirrors the RTL's always_comb blocks; the FIFO's head is read before
   // its clock edge (asynchronous read).
@@ -48,11 +73,13 @@ void ProfileExec::step(const Inputs& in) {
   const bool move_done = boundary && (q_.flags & kRowMoveEnd);
   const bool ends = (q_.flags & kRowStreamEnd) || (fifo_empty && at_rest);
   const bool over_guard = in.guard.exceeded_by(hd.seg);
+  const uint8_t chk_now = q_.chk;
+  const bool reach_bad = this->reach_bad(in.pos_frac0, in.soft);
   bool load = false;
   if (boundary) {
-    load = !(q_.flags & kRowStreamEnd) && !fifo_empty && continues && !over_guard;
+    load = !(q_.flags & kRowStreamEnd) && !fifo_empty && continues && !over_guard && !reach_bad && !in.reach_veto;
   } else if (!q_.run) {
-    load = in.start && !fifo_empty && !over_guard;
+    load = in.start && !fifo_empty && !over_guard && !reach_bad && !in.reach_veto;
   }
   const bool row_bad = load && hd.seg.clocks == 0;
   const bool stop_start = q_.run && !q_.stop && !in.abort &&
@@ -116,7 +143,8 @@ void ProfileExec::step(const Inputs& in) {
         } else if (!load) {
           q_.underrun = fifo_empty;
           q_.discont = !fifo_empty && !continues;
-          q_.guard = !fifo_empty && continues;
+          q_.guard = !fifo_empty && continues && over_guard;
+          q_.reach = !fifo_empty && continues && !over_guard && reach_bad;
         }
       } else {
         q_.left = q_.left - 1;
@@ -130,14 +158,16 @@ void ProfileExec::step(const Inputs& in) {
     q_.underrun = false;
     q_.discont = false;
     q_.guard = false;
+    q_.reach = false;
     q_.frac = mask_bits(in.pos_frac0, FracBits);
     q_.move_idx = 0;
     q_.bpos = q_.pint;
     if (!load) {
-      // an empty FIFO is the table fault; a head row over a guard limit is
-      // refused with everything queued behind it
+      // an empty FIFO is the table fault; a head row over a guard limit or
+      // out of the soft limits is refused with everything queued behind it
       q_.fault = fifo_empty;
-      q_.guard = !fifo_empty;
+      q_.guard = !fifo_empty && over_guard;
+      q_.reach = !fifo_empty && !over_guard && reach_bad;
       q_.phase = Phase::PhFault;
       flush = !fifo_empty;
     }
@@ -185,6 +215,7 @@ void ProfileExec::step(const Inputs& in) {
   held_stop_jerk_ = in.stop_jerk;
   held_stop_acc_ = in.stop_acc;
   held_guard_ = in.guard;
+  held_soft_ = in.soft;
   // The stop generator's clock; idle and not started, it holds its state.
   if (stop_start || stop_.active()) {
     StopGen::Inputs si;
@@ -223,6 +254,32 @@ void ProfileExec::step(const Inputs& in) {
     q_.rows = rows_now + 1;
   }
   q_.refused = replace_req && !replace_ok;
+  // The look-ahead's checker: the first row without a known reach; a row
+  // that leaves the queue (popped, replaced, flushed) drops its evaluation.
+  const bool rc_abort = flush_all || (load && chk_now == 0) || (replace_ok && keep <= chk_now);
+  const bool rc_busy = shared_reach_ ? port_.busy : reach_.busy();
+  const bool rc_done = shared_reach_ ? port_.done : reach_.done();
+  const bool rc_start = in.soft.en && !rc_busy && chk_now < fifo_.level() && !rc_abort;
+  const bool rc_write = rc_done && !rc_abort;
+  if (rc_write) {
+    side_[(fifo_.rd() + chk_now) & (RowFifoDepth - 1)] =
+        shared_reach_ ? std::array<int64_t, 2>{port_.fwd, port_.rev}
+                      : std::array<int64_t, 2>{reach_.reach_fwd(), reach_.reach_rev()};
+  }
+  const size_t chk_inc = chk_now + (rc_write ? 1 : 0);
+  const size_t chk_keep = (replace_ok && keep < chk_inc) ? keep : chk_inc;
+  q_.chk = uint8_t(flush_all ? 0 : (load && chk_keep != 0) ? chk_keep - 1 : chk_keep);
+  {
+    const Segment& at = fifo_.peek(chk_now & (RowFifoDepth - 1)).row.seg;
+    RowReach::Inputs& ri = req_;
+    ri.start = rc_start;
+    ri.abort = rc_abort;
+    ri.clocks = at.clocks;
+    ri.jerk = at.jerk;
+    ri.acc0 = at.acc0;
+    ri.vel0 = at.vel0;
+    if (!shared_reach_) reach_.step(ri);
+  }
   fifo_.step(flush_all, in.row_push && !in.row_replace, Queued{w, w_ends}, load, replace_ok, keep);
 }
 
@@ -260,6 +317,7 @@ bool ProfileExec::jump_safe() const {
 constexpr uint64_t kHoldSpan = uint64_t(1) << 30;
 
 uint64_t ProfileExec::clocks_to_next_event() const {
+  if (!reach_idle()) return 0;  // the look-ahead's checker runs clock by clock
   const bool hold = holding();
   if (!hold && !jump_safe()) return 0;
   const uint64_t left = hold ? kHoldSpan : q_.left;  // clock `left` reloads or finishes
@@ -280,6 +338,7 @@ uint64_t ProfileExec::clocks_to_next_event() const {
 }
 
 uint64_t ProfileExec::closed_form_span() const {
+  if (!reach_idle()) return 0;
   if (holding()) return kHoldSpan;
   return jump_safe() ? q_.left - 1 : 0;
 }
@@ -307,6 +366,7 @@ int64_t ProfileExec::fast_forward(uint64_t n) {
   quiet.stop_jerk = held_stop_jerk_;
   quiet.stop_acc = held_stop_acc_;
   quiet.guard = held_guard_;
+  quiet.soft = held_soft_;
   const int32_t p0 = q_.pint;
   while (n > 0) {
     const uint64_t span = std::min(closed_form_span(), n);
@@ -315,7 +375,7 @@ int64_t ProfileExec::fast_forward(uint64_t n) {
       n -= span;
       if (n == 0) break;
     }
-    if (!q_.run && !q_.step_req) {  // idle: nothing changes any more
+    if (!q_.run && !q_.step_req && reach_idle()) {  // idle: nothing changes any more
       idle_clocks();
       break;
     }

@@ -9,6 +9,7 @@
 
 #include "fixed_point.h"
 #include "row_fifo.h"
+#include "row_reach.h"
 #include "stop_gen.h"
 
 namespace sc {
@@ -43,6 +44,15 @@ struct GuardLimits {
   bool exceeded_by(const Segment& s) const;
 };
 
+// The soft-limit window of the look-ahead (soft_en_i, soft_min_i,
+// soft_max_i): the lowest and highest positions inside.
+struct SoftWindow {
+  bool en = false;
+  int32_t min = 0;
+  int32_t max = 0;
+  bool operator==(const SoftWindow&) const = default;
+};
+
 inline constexpr uint8_t kRowMoveEnd = uint8_t(1u << RowFlagMoveEnd);
 inline constexpr uint8_t kRowStreamEnd = uint8_t(1u << RowFlagStreamEnd);
 inline constexpr uint8_t kRowAccStep = uint8_t(1u << RowFlagAccStep);
@@ -63,6 +73,8 @@ class ProfileExec {
     uint64_t stop_jerk = StopJerkReset;   // JerkW bits (default: the register's reset value)
     uint64_t stop_acc = StopAccReset;     // AccW bits
     GuardLimits guard{};                  // row guards (0 = none)
+    SoftWindow soft{};                    // soft-limit look-ahead
+    bool reach_veto = false;              // another executor refuses its head row (multi-axis rows)
   };
   struct State {
     bool run = false;
@@ -71,6 +83,8 @@ class ProfileExec {
     bool underrun = false;
     bool discont = false;
     bool guard = false;  // a row broke a guard limit (until START)
+    bool reach = false;  // the look-ahead refused a row (until START)
+    uint8_t chk = 0;     // rows at the head of the FIFO whose reach is known
     bool stop = false;  // controlled stop running
     uint8_t idx = 0;
     uint8_t flags = 0;
@@ -94,8 +108,22 @@ class ProfileExec {
     bool operator==(const State&) const = default;
   };
 
+  // The row reach evaluator's state as an executor outside it sees it
+  // (sc_profile_exec #(.OwnReach(0)): rc_busy_i, rc_done_i, rc_fwd_i,
+  // rc_rev_i).
+  struct ReachPort {
+    bool busy = false;  // busy with any executor's row
+    bool done = false;  // done with this executor's row
+    int64_t fwd = 0, rev = 0;
+  };
+
   ProfileExec() { reset(); }
   void reset();
+  // Use an evaluator outside (shared): step() then reads reach_port() and
+  // leaves its request in reach_request() instead of stepping its own.
+  void share_reach() { shared_reach_ = true; }
+  ReachPort& reach_port() { return port_; }
+  const RowReach::Inputs& reach_request() const { return req_; }
   void step(const Inputs& in);
 
   // Clocks until the next clock that emits a step or ends the segment
@@ -133,6 +161,19 @@ class ProfileExec {
   // head_fwd_o: direction of the head row (velocity's sign, else the
   // acceleration's, else the jerk's).
   bool head_forward() const;
+  // start_ready_o: a START may load the head now (its reach is known, or
+  // the look-ahead is off).
+  bool start_ready(bool soft_en) const { return !soft_en || fifo_.empty() || q_.chk != 0; }
+  // reach_bad_o: with the window on, the head row's reach is not known yet
+  // or leaves the window from where the row would start (after this clock's
+  // integration while running, at pos_frac0 at a START).
+  bool reach_bad(u128 pos_frac0, const SoftWindow& soft) const;
+  // The look-ahead has nothing left to evaluate (fast-forward may jump):
+  // the evaluator idle, and every queued row checked or the window off.
+  bool reach_idle() const {
+    return !(shared_reach_ ? port_.busy : reach_.busy()) && (q_.chk == fifo_.level() || !held_soft_.en);
+  }
+  const RowReach& row_reach() const { return reach_; }
 
  private:
   bool jump_safe() const;
@@ -144,10 +185,17 @@ class ProfileExec {
   };
   RowFifo<Queued, RowFifoDepth> fifo_;
   StopGen stop_;
+  RowReach reach_;
+  bool shared_reach_ = false;
+  ReachPort port_{};
+  RowReach::Inputs req_{};
+  // The reach of each FIFO entry (sc_row_fifo's side array): forward, backward.
+  std::array<std::array<int64_t, 2>, RowFifoDepth> side_{};
   // The stop limits of the last step() (inputs the RTL sees held while
   // fast_forward() runs without inputs).
   uint64_t held_stop_jerk_ = StopJerkReset, held_stop_acc_ = StopAccReset;
   GuardLimits held_guard_{};
+  SoftWindow held_soft_{};
 };
 
 }  // namespace sc

@@ -22,6 +22,8 @@ class RowFifo {
   const Word& head() const { return mem_[rd_]; }  // valid while !empty()
   // The entry `k` places behind the head (peek_o).
   const Word& peek(size_t k) const { return mem_[(rd_ + k) & (Depth - 1)]; }
+  // The head's address (the side array of sc_row_fifo is indexed like mem_).
+  size_t rd() const { return rd_; }
   // One clock: flush wins over push and pop; a push while full and a pop
   // while empty are ignored.
   // replace (instead of push): keep the first `keep` entries (from the head

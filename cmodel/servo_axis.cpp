@@ -74,6 +74,7 @@ void ServoAxis::step_impl(const ServoInputs& in, const SyncInputs& s) {
   ki.stop_jerk = in.stop_jerk;
   ki.stop_acc = in.stop_acc;
   ki.guard = in.guard;
+  ki.soft = in.soft;
   ki.lim_fwd = in.lim_fwd;
   ki.lim_rev = in.lim_rev;
   ki.lim_hard = in.lim_hard;
@@ -166,6 +167,7 @@ ServoOutputs ServoAxis::outputs() const {
   o.underrun = e.underrun;
   o.discont = e.discont;
   o.guard = e.guard;
+  o.reach = e.reach;
   o.stopping = e.stop;
   o.overshoot = core_.exec().overshoot();
   o.lim_trip_fwd = core_.lim_trip(true, o.busy);

@@ -39,6 +39,7 @@ struct ServoInputs {
   uint64_t stop_jerk = StopJerkReset;  // controlled-stop limits (as CoreInputs)
   uint64_t stop_acc = StopAccReset;
   GuardLimits guard{};   // row guards (as CoreInputs)
+  SoftWindow soft{};     // soft-limit look-ahead (as CoreInputs)
   bool lim_fwd = false;  // limits (as CoreInputs)
   bool lim_rev = false;
   bool lim_hard = false;
@@ -53,7 +54,7 @@ struct ServoOutputs {
   bool busy = false, done = false;
   uint8_t phase = 0;
   bool fault_table = false, fault_overrun = false, fault_ferr = false, in_pos = false;
-  bool underrun = false, discont = false, guard = false, move_done = false, fifo_full = false;
+  bool underrun = false, discont = false, guard = false, reach = false, move_done = false, fifo_full = false;
   bool stopping = false, overshoot = false;
   bool lim_trip_fwd = false, lim_trip_rev = false;
   uint32_t move_idx = 0;
@@ -115,6 +116,7 @@ class ServoAxis {
   // fault_abort_o), from the current state.
   bool start_able() const { return core_.start_able(ext_inputs()); }
   bool arm_ready() const { return core_.arm_ready(); }
+  bool reach_bad() const { return core_.reach_bad(); }
   bool arm_drop() const { return core_.arm_drop(); }
   bool fault_abort() const { return core_.fault_abort(ext_inputs()); }
   // The outputs sc_multi_axis_core takes from this axis: the core's set
@@ -129,6 +131,7 @@ class ServoAxis {
 
   const AxisCore& core() const { return core_; }
   const ProfileExec& exec() const { return core_.exec(); }
+  ProfileExec& exec() { return core_.exec(); }
   const QuadDecoder& decoder() const { return dec_; }
   const NeuronPi& ctl() const { return ctl_; }
   const StepNco& nco() const { return nco_; }

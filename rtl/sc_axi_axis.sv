@@ -69,6 +69,8 @@ module sc_axi_axis (
   logic [sc_pkg::VelW-1:0]     guard_vel;
   logic [sc_pkg::AccW-1:0]     guard_acc;
   logic [sc_pkg::JerkW-1:0]    guard_jerk;
+  logic                        soft_en, reach;
+  logic signed [sc_pkg::PosIntW-1:0] soft_min, soft_max;
   logic [sc_pkg::MoveIdxW-1:0] move_idx;
   logic signed [sc_pkg::PosIntW-1:0] boundary_pos;
   logic [RowLevelW-1:0]        fifo_level;
@@ -83,6 +85,12 @@ module sc_axi_axis (
   logic signed [AccW-1:0]      unused_ref_acc;
   logic signed [JerkW-1:0]     unused_ref_jerk;
   logic signed [PendW-1:0]     unused_pending;
+  // the core's own row reach evaluator: its outside ports unused
+  logic                               unused_rc_start, unused_rc_abort;
+  logic [sc_pkg::SegClkW-1:0]         unused_rc_clocks;
+  logic signed [sc_pkg::JerkW-1:0]    unused_rc_jerk;
+  logic signed [sc_pkg::AccW-1:0]     unused_rc_acc0;
+  logic signed [sc_pkg::VelW-1:0]     unused_rc_vel0;
   logic                        unused_exec_start, unused_abort, unused_ref_done, unused_ref_running,
                                unused_step_busy;
   logic                        stop, stopping, overshoot;
@@ -142,6 +150,9 @@ module sc_axi_axis (
     .guard_vel_o     (guard_vel),
     .guard_acc_o     (guard_acc),
     .guard_jerk_o    (guard_jerk),
+    .soft_en_o       (soft_en),
+    .soft_min_o      (soft_min),
+    .soft_max_o      (soft_max),
     .closed_loop_o   (unused_closed),
     .ctl_cfg_o       (unused_ctl_cfg),
     .busy_i          (core_busy),
@@ -168,6 +179,7 @@ module sc_axi_axis (
     .underrun_i      (underrun),
     .discont_i       (discont),
     .guard_i         (guard),
+    .reach_i         (reach),
     .stopping_i      (stopping),
     .overshoot_i     (overshoot),
     .move_done_i     (move_done),
@@ -194,7 +206,7 @@ module sc_axi_axis (
     .edge_o     (sw_edge)
   );
 
-  logic unused_start_able, unused_arm_ready, unused_arm_drop, unused_fault_abort,
+  logic unused_start_able, unused_arm_ready, unused_arm_drop, unused_fault_abort, unused_reach_bad,
         unused_arming;
 
   sc_axis_core u_core (
@@ -224,6 +236,9 @@ module sc_axi_axis (
     .guard_vel_i     (guard_vel),
     .guard_acc_i     (guard_acc),
     .guard_jerk_i    (guard_jerk),
+    .soft_en_i       (soft_en),
+    .soft_min_i      (soft_min),
+    .soft_max_i      (soft_max),
     .lim_fwd_i       (lim_fwd),
     .lim_rev_i       (lim_rev),
     .lim_hard_i      (lim_hard),
@@ -238,6 +253,8 @@ module sc_axi_axis (
     .sync_start_ok_i  (1'b0),   // one axis: no start synchronisation
     .sync_go_i        (1'b0),
     .sync_drop_i      (1'b0),
+    .sync_reach_veto_i (1'b0),
+    .reach_bad_o      (unused_reach_bad),
     .start_able_o     (unused_start_able),
     .arm_ready_o      (unused_arm_ready),
     .arm_drop_o       (unused_arm_drop),
@@ -261,6 +278,7 @@ module sc_axi_axis (
     .underrun_o      (underrun),
     .discont_o       (discont),
     .guard_o         (guard),
+    .reach_o         (reach),
     .stopping_o      (stopping),
     .overshoot_o     (overshoot),
     .move_done_o     (move_done),
@@ -277,7 +295,17 @@ module sc_axi_axis (
     .ref_acc_o       (unused_ref_acc),
     .ref_jerk_o      (unused_ref_jerk),
     .seg_idx_o       (seg_idx),
-    .step_pending_o  (unused_pending)
+    .step_pending_o  (unused_pending),
+    .rc_start_o      (unused_rc_start),
+    .rc_abort_o      (unused_rc_abort),
+    .rc_clocks_o     (unused_rc_clocks),
+    .rc_jerk_o       (unused_rc_jerk),
+    .rc_acc0_o       (unused_rc_acc0),
+    .rc_vel0_o       (unused_rc_vel0),
+    .rc_busy_i       (1'b0),
+    .rc_done_i       (1'b0),
+    .rc_fwd_i        ('0),
+    .rc_rev_i        ('0)
   );
 
   assign done_o  = core_done && !busy_o;

@@ -18,8 +18,9 @@
 // once: the core's one stop); CTRL.ENABLE of every axis enables the core.
 // irq_o is the OR of the axes' interrupts.
 module sc_axi_multi_axis #(
-  parameter int Axes  = 2,
-  parameter bit Servo = 1'b1
+  parameter int Axes      = 2,
+  parameter bit Servo     = 1'b1,
+  parameter bit Lookahead = 1'b1   // 0: no soft-limit look-ahead (sc_multi_axis_core)
 ) (
   input  logic                               clk_i,
   input  logic                               rst_ni,
@@ -147,6 +148,8 @@ module sc_axi_multi_axis #(
   logic [Axes*PhaseW-1:0]      row_phase;
   logic [Axes*SegClkW-1:0]     row_clocks;
   logic [Axes*JerkW-1:0]       row_jerk, stop_jerk, guard_jerk;
+  logic [Axes-1:0]             soft_en, reach;
+  logic [Axes*PosIntW-1:0]     soft_min, soft_max;
   logic [Axes*AccW-1:0]        row_acc0, stop_acc, guard_acc;
   logic [Axes*VelW-1:0]        row_vel0, guard_vel;
   logic [Axes*FracBits-1:0]    pos_frac0;
@@ -256,6 +259,9 @@ module sc_axi_multi_axis #(
       .guard_vel_o       (guard_vel[a*VelW +: VelW]),
       .guard_acc_o       (guard_acc[a*AccW +: AccW]),
       .guard_jerk_o      (guard_jerk[a*JerkW +: JerkW]),
+      .soft_en_o         (soft_en[a]),
+      .soft_min_o        (soft_min[a*PosIntW +: PosIntW]),
+      .soft_max_o        (soft_max[a*PosIntW +: PosIntW]),
       .closed_loop_o     (closed_loop[a]),
       .ctl_cfg_o         (ctl_cfg[a*CtlCfgW +: CtlCfgW]),
       .sw_invert_o       (sw_invert[a*SwW +: SwW]),
@@ -275,6 +281,7 @@ module sc_axi_multi_axis #(
       .underrun_i        (underrun[a]),
       .discont_i         (discont[a]),
       .guard_i           (guard[a]),
+      .reach_i           (reach[a]),
       .stopping_i        (stopping[a]),
       .overshoot_i       (overshoot[a]),
       .move_done_i       (move_done[a]),
@@ -316,7 +323,7 @@ module sc_axi_multi_axis #(
   logic unused_shared;
   assign unused_shared = ^{row_push, row_replace, retarget_row, row_clocks, fifo_flush, start};
 
-  sc_multi_axis_core #(.Axes(Axes), .Servo(Servo)) u_core (
+  sc_multi_axis_core #(.Axes(Axes), .Servo(Servo), .Lookahead(Lookahead)) u_core (
     .clk_i,
     .rst_ni,
     .enable_i           (&enable),
@@ -343,6 +350,9 @@ module sc_axi_multi_axis #(
     .guard_vel_i        (guard_vel),
     .guard_acc_i        (guard_acc),
     .guard_jerk_i       (guard_jerk),
+    .soft_en_i          (soft_en),
+    .soft_min_i         (soft_min),
+    .soft_max_i         (soft_max),
     .lim_fwd_i          (lim_fwd),
     .lim_rev_i          (lim_rev),
     .lim_hard_i         (lim_hard),
@@ -357,6 +367,7 @@ module sc_axi_multi_axis #(
     .underrun_o         (underrun),
     .discont_o          (discont),
     .guard_o            (guard),
+    .reach_o            (reach),
     .stopping_o         (stopping),
     .overshoot_o        (overshoot),
     .move_done_o        (move_done),

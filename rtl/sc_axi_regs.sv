@@ -105,6 +105,9 @@ module sc_axi_regs #(
   output logic [sc_pkg::SwW-1:0]              sw_invert_o, // SW_CFG
   output logic [sc_pkg::DebounceW-1:0]        sw_debounce_o,
   output logic                                lim_fwd_o,   // a limit (switch or soft) is active on the + side
+  output logic                                soft_en_o,   // the soft-limit window, for the core's look-ahead
+  output logic signed [sc_pkg::PosIntW-1:0]   soft_min_o,
+  output logic signed [sc_pkg::PosIntW-1:0]   soft_max_o,
   output logic                                lim_rev_o,
   output logic                                lim_hard_o,
 
@@ -121,6 +124,7 @@ module sc_axi_regs #(
   input  logic                                underrun_i,
   input  logic                                discont_i,
   input  logic                                guard_i,
+  input  logic                                reach_i,     // the soft-limit look-ahead refused a row
   input  logic                                stopping_i,
   input  logic                                overshoot_i,
   input  logic                                move_done_i,
@@ -268,7 +272,7 @@ module sc_axi_regs #(
   logic [IrqW-1:0]           irq_st_q, irq_st_d, irq_en_q, irq_en_d;
   logic                      irq_q;
   logic                      below_q, busy_prev_q, underrun_prev_q, fault_prev_q, discont_prev_q,
-                             guard_prev_q;
+                             guard_prev_q, reach_prev_q;
   logic                      below, fault_any;
   logic [PulseTimeW-1:0]     high_q, high_d, low_q, low_d, setup_q, setup_d, hold_q, hold_d;
   logic [FracBits-1:0]       frac0_q, frac0_d;
@@ -388,6 +392,7 @@ module sc_axi_regs #(
     w[sc_pkg::StatusSwLevelLsb +: SwW]    = sw_level_i;
     w[sc_pkg::StatusLatchedBit]           = latched_q;
     w[sc_pkg::StatusGuardBit]             = guard_i;
+    w[sc_pkg::StatusReachBit]             = reach_i;
     status_word = w;
   end
 
@@ -819,6 +824,7 @@ module sc_axi_regs #(
     if (guard_i && !guard_prev_q)       err_guard_d = 1'b1;
     if (retarget_refused_i)             err_retarget_d = 1'b1;
     if ((lim_trip_fwd_i && soft_fwd) || (lim_trip_rev_i && soft_rev)) err_soft_d = 1'b1;
+    if (reach_i && !reach_prev_q)       err_soft_d  = 1'b1;
     if (sw_edge_i != '0)                irq_st_d[sc_pkg::IrqSwitchBit]   = 1'b1;
     // a capture wins over a re-arm in the same clock (the edge is not lost)
     if (latch_cap) begin
@@ -832,7 +838,7 @@ module sc_axi_regs #(
     if (busy_prev_q && !busy_eff)       irq_st_d[sc_pkg::IrqIdleBit]     = 1'b1;
     if (underrun_i && !underrun_prev_q) irq_st_d[sc_pkg::IrqUnderrunBit] = 1'b1;
     if ((fault_any && !fault_prev_q) || (discont_i && !discont_prev_q) ||
-        (guard_i && !guard_prev_q))
+        (guard_i && !guard_prev_q) || (reach_i && !reach_prev_q))
                                         irq_st_d[sc_pkg::IrqFaultBit]    = 1'b1;
   end
 
@@ -860,6 +866,7 @@ module sc_axi_regs #(
       fault_prev_q <= 1'b0;
       discont_prev_q <= 1'b0;
       guard_prev_q <= 1'b0;
+      reach_prev_q <= 1'b0;
       high_q       <= PulseTimeW'(sc_pkg::RstPulseHigh);
       low_q        <= PulseTimeW'(sc_pkg::RstPulseLow);
       setup_q      <= PulseTimeW'(sc_pkg::RstDirSetup);
@@ -932,6 +939,7 @@ module sc_axi_regs #(
       fault_prev_q <= fault_any;
       discont_prev_q <= discont_i;
       guard_prev_q <= guard_i;
+      reach_prev_q <= reach_i;
       high_q       <= high_d;
       low_q        <= low_d;
       setup_q      <= setup_d;
@@ -1032,6 +1040,9 @@ module sc_axi_regs #(
   assign guard_vel_o  = guard_vel_q;
   assign guard_acc_o  = guard_acc_q;
   assign guard_jerk_o = guard_jerk_q;
+  assign soft_en_o    = soft_en_q;
+  assign soft_min_o   = soft_min_q;
+  assign soft_max_o   = soft_max_q;
   assign closed_loop_o = closed_q;
   assign ctl_cfg_o   = sc_pkg::ctl_cfg_from_words(cl_q);
   assign sw_invert_o = sw_inv_q;

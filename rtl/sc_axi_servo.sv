@@ -82,6 +82,8 @@ module sc_axi_servo (
   logic [sc_pkg::VelW-1:0]     guard_vel;
   logic [sc_pkg::AccW-1:0]     guard_acc;
   logic [sc_pkg::JerkW-1:0]    guard_jerk;
+  logic                        soft_en, reach;
+  logic signed [sc_pkg::PosIntW-1:0] soft_min, soft_max;
   logic                        stop, stopping, overshoot;
   logic [sc_pkg::JerkW-1:0]    stop_jerk;
   logic [sc_pkg::AccW-1:0]     stop_acc;
@@ -113,13 +115,19 @@ module sc_axi_servo (
   logic signed [NWgtW-1:0]     unused_wn_p1, unused_wn_p2, unused_wn_v1, unused_wn_v2;
   logic signed [sc_pkg::NcoW-1:0] unused_nco_phase;
   logic signed [PendW-1:0]     unused_pending;
+  // the core's own row reach evaluator: its outside ports unused
+  logic                               unused_rc_start, unused_rc_abort;
+  logic [sc_pkg::SegClkW-1:0]         unused_rc_clocks;
+  logic signed [sc_pkg::JerkW-1:0]    unused_rc_jerk;
+  logic signed [sc_pkg::AccW-1:0]     unused_rc_acc0;
+  logic signed [sc_pkg::VelW-1:0]     unused_rc_vel0;
   logic [sc_pkg::FracBits-1:0] unused_ref_pos_frac;
   logic signed [sc_pkg::VelW-1:0]  unused_ref_vel_full;
   logic signed [sc_pkg::AccW-1:0]  unused_ref_acc;
   logic signed [sc_pkg::JerkW-1:0] unused_ref_jerk;
   logic [sc_pkg::SegIdxW-1:0]  unused_seg_idx;
   logic unused_regs_start_able;
-  logic unused_start_able, unused_arm_ready, unused_arm_drop, unused_fault_abort, unused_arming,
+  logic unused_start_able, unused_arm_ready, unused_arm_drop, unused_fault_abort, unused_arming, unused_reach_bad,
         unused_exec_start;
 
   sc_cl_stat_pack u_cl_stat (
@@ -197,6 +205,9 @@ module sc_axi_servo (
     .guard_vel_o     (guard_vel),
     .guard_acc_o     (guard_acc),
     .guard_jerk_o    (guard_jerk),
+    .soft_en_o       (soft_en),
+    .soft_min_o      (soft_min),
+    .soft_max_o      (soft_max),
     .closed_loop_o   (closed_loop),
     .ctl_cfg_o       (ctl_cfg),
     .busy_i          (core_busy),
@@ -223,6 +234,7 @@ module sc_axi_servo (
     .underrun_i      (underrun),
     .discont_i       (discont),
     .guard_i         (guard),
+    .reach_i         (reach),
     .stopping_i      (stopping),
     .overshoot_i     (overshoot),
     .move_done_i     (move_done),
@@ -277,6 +289,9 @@ module sc_axi_servo (
     .guard_vel_i       (guard_vel),
     .guard_acc_i       (guard_acc),
     .guard_jerk_i      (guard_jerk),
+    .soft_en_i         (soft_en),
+    .soft_min_i        (soft_min),
+    .soft_max_i        (soft_max),
     .lim_fwd_i         (lim_fwd),
     .lim_rev_i         (lim_rev),
     .lim_hard_i        (lim_hard),
@@ -295,6 +310,7 @@ module sc_axi_servo (
     .underrun_o        (underrun),
     .discont_o         (discont),
     .guard_o           (guard),
+    .reach_o           (reach),
     .stopping_o        (stopping),
     .overshoot_o       (overshoot),
     .move_done_o       (move_done),
@@ -340,12 +356,24 @@ module sc_axi_servo (
     .sync_start_ok_i   (1'b0),  // one axis: no start synchronisation
     .sync_go_i         (1'b0),
     .sync_drop_i       (1'b0),
+    .sync_reach_veto_i (1'b0),
+    .reach_bad_o       (unused_reach_bad),
     .start_able_o      (unused_start_able),
     .arm_ready_o       (unused_arm_ready),
     .arm_drop_o        (unused_arm_drop),
     .fault_abort_o     (unused_fault_abort),
     .arming_o          (unused_arming),
-    .exec_start_o      (unused_exec_start)
+    .exec_start_o      (unused_exec_start),
+    .rc_start_o        (unused_rc_start),
+    .rc_abort_o        (unused_rc_abort),
+    .rc_clocks_o       (unused_rc_clocks),
+    .rc_jerk_o         (unused_rc_jerk),
+    .rc_acc0_o         (unused_rc_acc0),
+    .rc_vel0_o         (unused_rc_vel0),
+    .rc_busy_i         (1'b0),
+    .rc_done_i         (1'b0),
+    .rc_fwd_i          ('0),
+    .rc_rev_i          ('0)
   );
 
   assign done_o  = core_done && !busy_o;

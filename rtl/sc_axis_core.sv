@@ -58,7 +58,9 @@
 // sync_* inputs are ignored and add no logic.
 module sc_axis_core #(
   parameter bit ExtStep   = 1'b0,
-  parameter bit SyncStart = 1'b0
+  parameter bit SyncStart = 1'b0,
+  parameter bit OwnReach  = 1'b1,  // 0: the row reach evaluator is outside (rc_*), shared
+  parameter bit Lookahead = 1'b1   // 0: no soft-limit look-ahead (sc_profile_exec)
 ) (
   input  logic                        clk_i,
   input  logic                        rst_ni,
@@ -88,6 +90,9 @@ module sc_axis_core #(
   input  logic [sc_pkg::VelW-1:0]             guard_vel_i,  // row guard limits (0 = none)
   input  logic [sc_pkg::AccW-1:0]             guard_acc_i,
   input  logic [sc_pkg::JerkW-1:0]            guard_jerk_i,
+  input  logic                        soft_en_i,    // soft-limit look-ahead on every row (sc_profile_exec)
+  input  logic signed [sc_pkg::PosIntW-1:0]   soft_min_i,
+  input  logic signed [sc_pkg::PosIntW-1:0]   soft_max_i,
   input  logic                        lim_fwd_i,    // a limit is active on the + side
   input  logic                        lim_rev_i,    // a limit is active on the - side
   input  logic                        lim_hard_i,   // 1: a limit stops at once, 0: controlled stop
@@ -106,6 +111,8 @@ module sc_axis_core #(
   input  logic                        sync_start_ok_i,   // every axis can accept this START
   input  logic                        sync_go_i,         // every axis is armed and set up
   input  logic                        sync_drop_i,       // some axis drops its arming
+  input  logic                        sync_reach_veto_i, // some axis refuses its head row (OR of reach_bad_o)
+  output logic                        reach_bad_o,       // this axis's look-ahead refuses its head row now
   output logic                        start_able_o,      // this axis would accept the START it sees
   output logic                        arm_ready_o,       // armed, DIR set up: waits for sync_go_i
   output logic                        arm_drop_o,        // this axis drops its arming this clock
@@ -130,6 +137,7 @@ module sc_axis_core #(
   output logic                        underrun_o,
   output logic                        discont_o,
   output logic                        guard_o,      // a row broke a guard limit (until START)
+  output logic                        reach_o,      // the soft-limit look-ahead refused a row (until START)
   output logic                        stopping_o,   // a controlled stop runs
   output logic                        overshoot_o,  // the last stop could not avoid a reversal
   output logic                        move_done_o,
@@ -148,7 +156,19 @@ module sc_axis_core #(
   output logic signed [sc_pkg::AccW-1:0]      ref_acc_o,
   output logic signed [sc_pkg::JerkW-1:0]     ref_jerk_o,
   output logic [sc_pkg::SegIdxW-1:0]          seg_idx_o,
-  output logic signed [sc_pkg::PendW-1:0]     step_pending_o
+  output logic signed [sc_pkg::PendW-1:0]     step_pending_o,
+
+  // the row reach evaluator outside (OwnReach = 0; sc_profile_exec)
+  output logic                                rc_start_o,
+  output logic                                rc_abort_o,
+  output logic [sc_pkg::SegClkW-1:0]          rc_clocks_o,
+  output logic signed [sc_pkg::JerkW-1:0]     rc_jerk_o,
+  output logic signed [sc_pkg::AccW-1:0]      rc_acc0_o,
+  output logic signed [sc_pkg::VelW-1:0]      rc_vel0_o,
+  input  logic                                rc_busy_i,
+  input  logic                                rc_done_i,
+  input  logic signed [sc_pkg::ReachW-1:0]    rc_fwd_i,
+  input  logic signed [sc_pkg::ReachW-1:0]    rc_rev_i
 );
 
   localparam int PulseTimeW = sc_pkg::PulseTimeW;
@@ -173,6 +193,9 @@ module sc_axis_core #(
   logic [sc_pkg::VelW-1:0]  guard_vel_q;
   logic [sc_pkg::AccW-1:0]  guard_acc_q;
   logic [sc_pkg::JerkW-1:0] guard_jerk_q;
+  logic   soft_en_q;
+  logic signed [sc_pkg::PosIntW-1:0] soft_min_q, soft_max_q;
+  logic   exec_ready;                    // the head row's reach is known (or not needed)
   logic   head_fwd;                      // direction of the FIFO's head row
   logic   arm_q, arm_d;                  // start accepted, waiting for DIR
   logic   arm_fwd_q, arm_fwd_d;
@@ -214,7 +237,7 @@ module sc_axis_core #(
                          (!ExtStep || ref_moving) ? !ref_vel_o[sc_pkg::VelW-1] : ext_hint_i;
 
   assign arm_drop_o  = arm_q && (abort_q || stop_q || lim_act);
-  assign arm_ready_o = arm_q && !arm_drop_o && sg_dir == arm_fwd_q && arm_cnt_q >= cfg_setup_q;
+  assign arm_ready_o = arm_q && !arm_drop_o && sg_dir == arm_fwd_q && arm_cnt_q >= cfg_setup_q && exec_ready;
   // (an external fault aborts every axis of a multi-axis core while this
   // executor runs; latched, it must not hold the others' next start off)
   assign fault_abort_o = lim_abort || rate_trip_q || (ExtStep && ext_abort_i && exec_running);
@@ -235,8 +258,9 @@ module sc_axis_core #(
       end else if (sg_dir != arm_fwd_q) begin
         arm_cnt_d = '0;
       end else if (arm_cnt_q >= cfg_setup_q) begin
-        // set up: start now, or (SyncStart) hold until every axis is
-        if (!SyncStart || sync_go_i) begin
+        // set up (and the head row's reach known): start now, or
+        // (SyncStart) hold until every axis is
+        if (exec_ready && (!SyncStart || sync_go_i)) begin
           arm_d      = 1'b0;
           exec_start = 1'b1;
         end
@@ -246,7 +270,10 @@ module sc_axis_core #(
     end
   end
 
-  sc_profile_exec u_exec (
+  sc_profile_exec #(
+    .OwnReach  (OwnReach),
+    .Lookahead (Lookahead)
+  ) u_exec (
     .clk_i,
     .rst_ni,
     .row_push_i,
@@ -268,12 +295,19 @@ module sc_axis_core #(
     .guard_vel_i (guard_vel_q),
     .guard_acc_i (guard_acc_q),
     .guard_jerk_i (guard_jerk_q),
+    .soft_en_i   (soft_en_q),
+    .soft_min_i  (soft_min_q),
+    .soft_max_i  (soft_max_q),
     .running_o   (exec_running),
     .finished_o  (exec_finished),
     .fault_o     (exec_fault),
     .underrun_o,
     .discont_o,
     .guard_o,
+    .reach_o,
+    .start_ready_o (exec_ready),
+    .reach_veto_i  (SyncStart && sync_reach_veto_i),
+    .reach_bad_o,
     .stopping_o,
     .overshoot_o,
     .move_done_o,
@@ -292,7 +326,17 @@ module sc_axis_core #(
     .acc_o       (ref_acc_o),
     .jerk_o      (ref_jerk_o),
     .phase_o     (exec_phase),
-    .seg_idx_o
+    .seg_idx_o,
+    .rc_start_o,
+    .rc_abort_o,
+    .rc_clocks_o,
+    .rc_jerk_o,
+    .rc_acc0_o,
+    .rc_vel0_o,
+    .rc_busy_i,
+    .rc_done_i,
+    .rc_fwd_i,
+    .rc_rev_i
   );
 
   sc_step_gen u_step_gen (
@@ -334,6 +378,9 @@ module sc_axis_core #(
       guard_vel_q <= '0;
       guard_acc_q <= '0;
       guard_jerk_q <= '0;
+      soft_en_q   <= 1'b0;
+      soft_min_q  <= '0;
+      soft_max_q  <= '0;
       cfg_high_q  <= '0;
       cfg_low_q   <= '0;
       cfg_setup_q <= '0;
@@ -357,6 +404,9 @@ module sc_axis_core #(
       guard_vel_q <= guard_vel_i;
       guard_acc_q <= guard_acc_i;
       guard_jerk_q <= guard_jerk_i;
+      soft_en_q   <= soft_en_i;
+      soft_min_q  <= soft_min_i;
+      soft_max_q  <= soft_max_i;
       cfg_high_q  <= cfg_high_i;
       cfg_low_q   <= cfg_low_i;
       cfg_setup_q <= cfg_setup_i;

@@ -118,7 +118,10 @@ module sc_board_xy_top #(
   // per axis {probe, home, limit +, limit -} (sc_pkg::SwLimNeg .. SwProbe)
   assign axis_sw = {probe_i, sw_i[5:3], probe_i, sw_i[2:0]};
 
-  sc_axi_multi_axis #(.Axes(Axes), .Servo(1'b1)) u_axes (
+  // Without the soft-limit look-ahead: with it the two closed-loop axes
+  // need about 102 % of the xc7a35t's LUTs by yosys' count (docs/limits.md);
+  // SOFT_MIN / SOFT_MAX still act as limits on REF_POS.
+  sc_axi_multi_axis #(.Axes(Axes), .Servo(1'b1), .Lookahead(1'b0)) u_axes (
     .clk_i           (clk),
     .rst_ni          (rst_n),
     .s_axi_awaddr_i  (awaddr),

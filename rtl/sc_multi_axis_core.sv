@@ -24,6 +24,13 @@
 // bits [a*W +: W] of a W-bit field (one-dimensional: yosys 0.23 reads no
 // packed arrays of vectors in ports).
 //
+// One row reach evaluator (sc_row_reach) serves the soft-limit look-ahead
+// of every axis: the axes' requests are taken in turn (round robin from the
+// axis after the last one served), so each axis's queued rows are checked
+// one after the other, interleaved with the other axes' rows; a row that
+// one axis refuses is loaded by none (the OR of reach_bad_o vetoes it on
+// every axis). Lookahead = 0 leaves the look-ahead out (an area option).
+//
 // Servo = 1: every axis is a closed-loop capable sc_servo_axis (its own
 // encoder, neuron-PI cascade and step NCO; closed_loop_i per axis selects
 // the loop or the open-loop path through the same pins). The start, row
@@ -33,7 +40,10 @@
 // their outputs 0.
 module sc_multi_axis_core #(
   parameter int Axes  = 2,
-  parameter bit Servo = 1'b0
+  parameter bit Servo = 1'b0,
+  // 0: no soft-limit look-ahead (an area option, sc_profile_exec): no
+  // evaluator, the soft-limit window only the register tops' reactive limit
+  parameter bit Lookahead = 1'b1
 ) (
   input  logic                                   clk_i,
   input  logic                                   rst_ni,
@@ -63,6 +73,9 @@ module sc_multi_axis_core #(
   input  logic [Axes*sc_pkg::VelW-1:0] guard_vel_i,
   input  logic [Axes*sc_pkg::AccW-1:0] guard_acc_i,
   input  logic [Axes*sc_pkg::JerkW-1:0] guard_jerk_i,
+  input  logic [Axes-1:0]                        soft_en_i,
+  input  logic [Axes*sc_pkg::PosIntW-1:0] soft_min_i,
+  input  logic [Axes*sc_pkg::PosIntW-1:0] soft_max_i,
   input  logic [Axes-1:0]                        lim_fwd_i,
   input  logic [Axes-1:0]                        lim_rev_i,
   input  logic [Axes-1:0]                        lim_hard_i,
@@ -78,6 +91,7 @@ module sc_multi_axis_core #(
   output logic [Axes-1:0]                        underrun_o,
   output logic [Axes-1:0]                        discont_o,
   output logic [Axes-1:0]                        guard_o,
+  output logic [Axes-1:0]                        reach_o,
   output logic [Axes-1:0]                        stopping_o,
   output logic [Axes-1:0]                        overshoot_o,
   output logic [Axes-1:0]                        move_done_o,
@@ -128,12 +142,81 @@ module sc_multi_axis_core #(
   end
 `endif
 
-  logic [Axes-1:0] start_able, arm_ready, arm_drop, fault_abort, arming, exec_start;
-  logic            sync_start_ok, sync_go, sync_drop, stop_all, abort_all;
+  logic [Axes-1:0] start_able, arm_ready, arm_drop, fault_abort, arming, exec_start, reach_bad;
+  logic            sync_start_ok, sync_go, sync_drop, reach_veto, stop_all, abort_all;
+
+  // ---- the shared row reach evaluator --------------------------------------
+  localparam int OwnerW = Axes > 1 ? $clog2(Axes) : 1;
+  logic [Axes-1:0]                    rc_start, rc_abort, rc_done_to;
+  logic [Axes*sc_pkg::SegClkW-1:0]    rc_clocks;
+  logic [Axes*sc_pkg::JerkW-1:0]      rc_jerk;
+  logic [Axes*sc_pkg::AccW-1:0]       rc_acc0;
+  logic [Axes*sc_pkg::VelW-1:0]       rc_vel0;
+  logic [OwnerW-1:0]                  owner_q, owner_d, grant;
+  logic                               granted, ev_busy, ev_done;
+  logic signed [sc_pkg::ReachW-1:0]   ev_fwd, ev_rev;
+
+  if (Lookahead) begin : g_reach
+    // While idle: the first requesting axis after the last one served.
+    logic [OwnerW-1:0] cand;
+    always_comb begin
+      grant   = owner_q;
+      granted = 1'b0;
+      cand    = '0;
+      for (int unsigned i = 1; i <= Axes; i++) begin
+        cand = OwnerW'((32'(owner_q) + i) % Axes);
+        if (!granted && rc_start[cand]) begin
+          grant   = cand;
+          granted = 1'b1;
+        end
+      end
+      owner_d = (!ev_busy && granted) ? grant : owner_q;
+    end
+
+    sc_row_reach u_reach (
+      .clk_i,
+      .rst_ni,
+      .start_i     (!ev_busy && granted),
+      .abort_i     (ev_busy && rc_abort[owner_q]),
+      .clocks_i    (rc_clocks[grant*sc_pkg::SegClkW +: sc_pkg::SegClkW]),
+      .jerk_i      (rc_jerk[grant*sc_pkg::JerkW +: sc_pkg::JerkW]),
+      .acc0_i      (rc_acc0[grant*sc_pkg::AccW +: sc_pkg::AccW]),
+      .vel0_i      (rc_vel0[grant*sc_pkg::VelW +: sc_pkg::VelW]),
+      .busy_o      (ev_busy),
+      .done_o      (ev_done),
+      .reach_fwd_o (ev_fwd),
+      .reach_rev_o (ev_rev)
+    );
+
+    for (genvar a = 0; a < Axes; a++) begin : g_rc_done
+      assign rc_done_to[a] = ev_done && owner_q == OwnerW'(a);
+    end
+
+    always_ff @(posedge clk_i) begin
+      if (!rst_ni) owner_q <= OwnerW'(Axes - 1);  // axis 0 first
+      else         owner_q <= owner_d;
+    end
+  end else begin : g_no_reach
+    assign ev_busy = 1'b0;
+    assign ev_done = 1'b0;
+    assign ev_fwd  = '0;
+    assign ev_rev  = '0;
+    assign owner_q = '0;
+    assign owner_d = '0;
+    assign grant   = '0;
+    assign granted = 1'b0;
+    assign rc_done_to = '0;
+    logic unused_rc;
+    assign unused_rc = ^{rc_start, rc_abort, rc_clocks, rc_jerk, rc_acc0, rc_vel0, owner_q, owner_d, grant, granted,
+                         ev_done};
+  end
 
   assign sync_start_ok = &start_able;
   assign sync_go       = &arm_ready;
   assign sync_drop     = |arm_drop;
+  // a row that one axis's look-ahead refuses is loaded by none: every axis
+  // stops at that boundary (reach_bad_o does not depend on the veto)
+  assign reach_veto    = |reach_bad;
   // stopping_o and fault_abort are register outputs: no loop through the axes
   assign stop_all      = stop_i || (|stopping_o);
   assign abort_all     = abort_i || (|fault_abort);
@@ -146,7 +229,9 @@ module sc_multi_axis_core #(
       logic [sc_pkg::NWgtW-1:0] unused_wn_p1, unused_wn_p2, unused_wn_v1, unused_wn_v2;
 
       sc_servo_axis #(
-        .SyncStart (1'b1)
+        .SyncStart (1'b1),
+        .OwnReach  (1'b0),
+        .Lookahead (Lookahead)
       ) u_servo (
         .clk_i,
         .rst_ni,
@@ -175,6 +260,9 @@ module sc_multi_axis_core #(
         .guard_vel_i      (guard_vel_i[a*sc_pkg::VelW +: sc_pkg::VelW]),
         .guard_acc_i      (guard_acc_i[a*sc_pkg::AccW +: sc_pkg::AccW]),
         .guard_jerk_i     (guard_jerk_i[a*sc_pkg::JerkW +: sc_pkg::JerkW]),
+        .soft_en_i        (soft_en_i[a]),
+        .soft_min_i       (soft_min_i[a*sc_pkg::PosIntW +: sc_pkg::PosIntW]),
+        .soft_max_i       (soft_max_i[a*sc_pkg::PosIntW +: sc_pkg::PosIntW]),
         .lim_fwd_i        (lim_fwd_i[a]),
         .lim_rev_i        (lim_rev_i[a]),
         .lim_hard_i       (lim_hard_i[a]),
@@ -193,6 +281,7 @@ module sc_multi_axis_core #(
         .underrun_o       (underrun_o[a]),
         .discont_o        (discont_o[a]),
         .guard_o          (guard_o[a]),
+        .reach_o          (reach_o[a]),
         .stopping_o       (stopping_o[a]),
         .overshoot_o      (overshoot_o[a]),
         .move_done_o      (move_done_o[a]),
@@ -238,19 +327,33 @@ module sc_multi_axis_core #(
         .sync_start_ok_i  (sync_start_ok),
         .sync_go_i        (sync_go),
         .sync_drop_i      (sync_drop),
+        .sync_reach_veto_i (reach_veto),
+        .reach_bad_o      (reach_bad[a]),
         .start_able_o     (start_able[a]),
         .arm_ready_o      (arm_ready[a]),
         .arm_drop_o       (arm_drop[a]),
         .fault_abort_o    (fault_abort[a]),
         .arming_o         (arming[a]),
-        .exec_start_o     (exec_start[a])
+        .exec_start_o     (exec_start[a]),
+        .rc_start_o       (rc_start[a]),
+        .rc_abort_o       (rc_abort[a]),
+        .rc_clocks_o      (rc_clocks[a*sc_pkg::SegClkW +: sc_pkg::SegClkW]),
+        .rc_jerk_o        (rc_jerk[a*sc_pkg::JerkW +: sc_pkg::JerkW]),
+        .rc_acc0_o        (rc_acc0[a*sc_pkg::AccW +: sc_pkg::AccW]),
+        .rc_vel0_o        (rc_vel0[a*sc_pkg::VelW +: sc_pkg::VelW]),
+        .rc_busy_i        (ev_busy),
+        .rc_done_i        (rc_done_to[a]),
+        .rc_fwd_i         (ev_fwd),
+        .rc_rev_i         (ev_rev)
       );
     end else begin : g_open
       logic unused_abort, unused_ref_done, unused_ref_running, unused_step_busy;
 
       sc_axis_core #(
         .ExtStep   (1'b0),
-        .SyncStart (1'b1)
+        .SyncStart (1'b1),
+        .OwnReach  (1'b0),
+        .Lookahead (Lookahead)
       ) u_core (
         .clk_i,
         .rst_ni,
@@ -278,6 +381,9 @@ module sc_multi_axis_core #(
         .guard_vel_i      (guard_vel_i[a*sc_pkg::VelW +: sc_pkg::VelW]),
         .guard_acc_i      (guard_acc_i[a*sc_pkg::AccW +: sc_pkg::AccW]),
         .guard_jerk_i     (guard_jerk_i[a*sc_pkg::JerkW +: sc_pkg::JerkW]),
+        .soft_en_i        (soft_en_i[a]),
+        .soft_min_i       (soft_min_i[a*sc_pkg::PosIntW +: sc_pkg::PosIntW]),
+        .soft_max_i       (soft_max_i[a*sc_pkg::PosIntW +: sc_pkg::PosIntW]),
         .lim_fwd_i        (lim_fwd_i[a]),
         .lim_rev_i        (lim_rev_i[a]),
         .lim_hard_i       (lim_hard_i[a]),
@@ -292,6 +398,8 @@ module sc_multi_axis_core #(
         .sync_start_ok_i  (sync_start_ok),
         .sync_go_i        (sync_go),
         .sync_drop_i      (sync_drop),
+        .sync_reach_veto_i (reach_veto),
+        .reach_bad_o      (reach_bad[a]),
         .start_able_o     (start_able[a]),
         .arm_ready_o      (arm_ready[a]),
         .arm_drop_o       (arm_drop[a]),
@@ -315,6 +423,7 @@ module sc_multi_axis_core #(
         .underrun_o       (underrun_o[a]),
         .discont_o        (discont_o[a]),
         .guard_o          (guard_o[a]),
+        .reach_o          (reach_o[a]),
         .stopping_o       (stopping_o[a]),
         .overshoot_o      (overshoot_o[a]),
         .move_done_o      (move_done_o[a]),
@@ -331,7 +440,17 @@ module sc_multi_axis_core #(
         .ref_acc_o        (ref_acc_o[a*sc_pkg::AccW +: sc_pkg::AccW]),
         .ref_jerk_o       (ref_jerk_o[a*sc_pkg::JerkW +: sc_pkg::JerkW]),
         .seg_idx_o        (seg_idx_o[a*sc_pkg::SegIdxW +: sc_pkg::SegIdxW]),
-        .step_pending_o   (step_pending_o[a*sc_pkg::PendW +: sc_pkg::PendW])
+        .step_pending_o   (step_pending_o[a*sc_pkg::PendW +: sc_pkg::PendW]),
+        .rc_start_o       (rc_start[a]),
+        .rc_abort_o       (rc_abort[a]),
+        .rc_clocks_o      (rc_clocks[a*sc_pkg::SegClkW +: sc_pkg::SegClkW]),
+        .rc_jerk_o        (rc_jerk[a*sc_pkg::JerkW +: sc_pkg::JerkW]),
+        .rc_acc0_o        (rc_acc0[a*sc_pkg::AccW +: sc_pkg::AccW]),
+        .rc_vel0_o        (rc_vel0[a*sc_pkg::VelW +: sc_pkg::VelW]),
+        .rc_busy_i        (ev_busy),
+        .rc_done_i        (rc_done_to[a]),
+        .rc_fwd_i         (ev_fwd),
+        .rc_rev_i         (ev_rev)
       );
 
       // no loop: its ports unused, its outputs 0

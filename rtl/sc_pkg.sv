@@ -207,15 +207,16 @@ package sc_pkg;
   localparam int MultiRegAddrW = 13;      // RegAddrW + RegWinW: byte address bits of the multi-axis map
   // 0x0306 = 3.6: 1 KiB window, UART word address; switch inputs, guards,
   // probe, soft limits, index latch; ROW_PUSH.HOLD (velocity mode), ROW_PUSH.REPLACE,
-  // ROW_COUNT and RETARGET_ROW (retarget)
-  localparam int RegMapVersion = 774;
+  // ROW_COUNT and RETARGET_ROW (retarget); 0x0307 = 3.7: STATUS.REACH (the
+  // soft-limit look-ahead)
+  localparam int RegMapVersion = 775;
   localparam int RegIdMagic    = 21315;   // 0x5343, ASCII "SC"
   localparam int RstPulseHigh  = 50;      // reset values of the pulse timing
   localparam int RstPulseLow   = 50;
   localparam int RstDirSetup   = 100;
   localparam int RstDirHold    = 100;
   localparam int RegId         = 32'h0000_0000;  //@reg ID RO "identification"
-  localparam int IdVersionLsb  = 0;      //@field ID VERSION 16 reset=RegMapVersion "register map version, 0x0306 = 3.6"
+  localparam int IdVersionLsb  = 0;      //@field ID VERSION 16 reset=RegMapVersion "register map version, 0x0307 = 3.7"
   localparam int IdMagicLsb    = 16;     //@field ID MAGIC 16 reset=21315 "0x5343, ASCII 'SC'"
   localparam int RegCtrl       = 32'h0000_0004;  //@reg CTRL RW "control"
   localparam int CtrlEnableBit = 0;      //@field CTRL ENABLE 1 "drives the EN pin; START is refused while 0; ESTOP clears it"
@@ -244,6 +245,7 @@ package sc_pkg;
   localparam int StatusLatchedBit      = 26;  //@field STATUS LATCHED 1 "LATCH_PULSE / LATCH_ENC hold a capture (a LATCH_CFG write re-arms)"
   localparam int StatusGuardBit        = 27;  //@field STATUS GUARD 1 "a row broke a GUARD_VEL / GUARD_ACC / GUARD_JERK limit and was refused: the axis stopped (until the next START)"
   localparam int StatusSwLevelLsb      = 28;  //@field STATUS SW_LEVEL SwW "filtered switch levels, 1 = active: bit 28 LIM_NEG, 29 LIM_POS, 30 HOME, 31 PROBE"
+  localparam int StatusReachBit        = 23;  //@field STATUS REACH 1 "the soft-limit look-ahead refused a row (its reach left SOFT_MIN .. SOFT_MAX, or it was not checked by its boundary): the axis stopped or the START was refused (until the next START)"
   localparam int StatusOvershootBit    = 22;  //@field STATUS OVERSHOOT 1 "the last controlled stop could not avoid a velocity reversal within STOP_JERK (limits below the plan's)"
   localparam int RegErr        = 32'h0000_0010;  //@reg ERR W1C "sticky error flags: write 1 to clear"
   localparam int ErrRejectBit  = 0;      //@field ERR REJECT 1 "a table/config/START write was refused (busy, e-stopped or disabled): SLVERR, nothing changed"
@@ -254,7 +256,7 @@ package sc_pkg;
   localparam int ErrLimNegBit  = 6;      //@field ERR LIMIT_NEG 1 "the - limit (switch or SOFT_MIN) stopped motion into it or refused a START toward it"
   localparam int ErrLimPosBit  = 7;      //@field ERR LIMIT_POS 1 "the + limit (switch or SOFT_MAX) stopped motion into it or refused a START toward it"
   localparam int ErrGuardBit   = 8;      //@field ERR GUARD 1 "a row broke a guard limit: not executed, the axis stopped (or the START was refused)"
-  localparam int ErrSoftLimBit = 9;      //@field ERR SOFT_LIMIT 1 "the soft-limit window stopped motion out of it or refused a START out of it (with LIMIT_NEG / LIMIT_POS for the side)"
+  localparam int ErrSoftLimBit = 9;      //@field ERR SOFT_LIMIT 1 "the soft-limit window stopped motion out of it or refused a START out of it (with LIMIT_NEG / LIMIT_POS for the side), or its look-ahead refused a row (STATUS.REACH)"
   localparam int ErrRetargetBit = 10;    //@field ERR RETARGET 1 "a ROW_PUSH.REPLACE was refused: row RETARGET_ROW was already loaded, lies beyond the queued rows, or no stream runs on (idle, stopping, STREAM_END row): nothing changed"
   localparam int ErrUnderrunBit = 5;     //@field ERR UNDERRUN 1 "the FIFO ran dry while the axis was moving: the axis stopped"
   localparam int RegPulseCount = 32'h0000_0014;  //@reg PULSE_COUNT RO "net STEP pulses since the last START (signed)"
@@ -409,7 +411,7 @@ package sc_pkg;
   localparam int IrqMoveDoneBit = 1;     //@field IRQ_STATUS MOVE_DONE 1 "a move ended (MOVE_INDEX advanced)"
   localparam int IrqIdleBit     = 2;     //@field IRQ_STATUS IDLE 1 "the axis became idle (BUSY fell)"
   localparam int IrqUnderrunBit = 3;     //@field IRQ_STATUS UNDERRUN 1 "the FIFO ran dry while moving"
-  localparam int IrqFaultBit    = 4;     //@field IRQ_STATUS FAULT 1 "a fault: FAULT_TABLE, FAULT_OVERRUN, DISCONTINUITY, GUARD, FAULT_FERR, e-stop or a limit acting"
+  localparam int IrqFaultBit    = 4;     //@field IRQ_STATUS FAULT 1 "a fault: FAULT_TABLE, FAULT_OVERRUN, DISCONTINUITY, GUARD, REACH, FAULT_FERR, e-stop or a limit acting"
   localparam int IrqSwitchBit   = 5;     //@field IRQ_STATUS SWITCH 1 "a filtered switch level (STATUS.SW_LEVEL) changed"
   localparam int IrqLatchBit    = 6;     //@field IRQ_STATUS LATCH 1 "the position latch captured (STATUS.LATCHED rose)"
   localparam int IrqW           = 7;

@@ -29,6 +29,18 @@
 // under control as for a discontinuity. Either way guard_o is set (until
 // START) and the FIFO is emptied: what the host queued behind a refused
 // row is not run.
+// Soft-limit look-ahead (soft_en_i): every queued row's reach (sc_row_reach:
+// the furthest positions it moves to, forward and backward, exact to
+// 2^-ReachFrac pulse and rounded outward) is evaluated in the background
+// while the window is on, one row after the other from the head, and kept
+// beside the row (by this executor's own evaluator, or with OwnReach = 0 by
+// one outside that it shares with other executors through rc_*). A head
+// row is loaded only when its reach is known and, from the position it
+// starts at, stays inside [soft_min_i, soft_max_i] (or, beyond an edge, goes
+// no further out than that position): otherwise the axis stops under
+// control at that boundary and reach_o is set (until START), a START is
+// refused (start_ready_o holds the core's arming until the head's reach
+// is known).
 // A row flagged MOVE_END closes a move: move_idx_o counts the moves done
 // since START and boundary_pos_o holds the integer position at that
 // boundary (after the step of its last clock).
@@ -56,7 +68,14 @@
 // the immediate stop (e-stop): v, a and j go to 0 at once. Every stop
 // flushes the FIFO: rows planned from a state the axis never reached must
 // not run after it.
-module sc_profile_exec (
+module sc_profile_exec #(
+  // 1: the executor has its own row reach evaluator; 0: it uses one outside
+  // through rc_* (sc_multi_axis_core shares one among its axes)
+  parameter bit OwnReach  = 1'b1,
+  // 0: no soft-limit look-ahead (an area option: the window is then only
+  // the register top's reactive limit; no reach is evaluated or stored)
+  parameter bit Lookahead = 1'b1
+) (
   input  logic                       clk_i,
   input  logic                       rst_ni,
 
@@ -82,12 +101,19 @@ module sc_profile_exec (
   input  logic [sc_pkg::VelW-1:0]             guard_vel_i,   // row limits, magnitudes (0 = none)
   input  logic [sc_pkg::AccW-1:0]             guard_acc_i,
   input  logic [sc_pkg::JerkW-1:0]            guard_jerk_i,
+  input  logic                                soft_en_i,     // soft-limit look-ahead
+  input  logic signed [sc_pkg::PosIntW-1:0]   soft_min_i,    // lowest position inside
+  input  logic signed [sc_pkg::PosIntW-1:0]   soft_max_i,    // highest position inside
   output logic                       running_o,
   output logic                       finished_o,
   output logic                       fault_o,       // START met an empty FIFO, or a zero-length row
   output logic                       underrun_o,    // the FIFO ran dry while moving (until START)
   output logic                       discont_o,     // a row did not continue the motion (until START)
   output logic                       guard_o,       // a row broke a guard limit (until START)
+  output logic                       reach_o,       // the look-ahead refused a row (until START)
+  output logic                       start_ready_o, // a START may load the head now (its reach is known)
+  input  logic                       reach_veto_i,  // another executor refuses its head row: none loads it
+  output logic                       reach_bad_o,   // the look-ahead refuses the head row this clock
   output logic                       stopping_o,    // a controlled stop runs
   output logic                       overshoot_o,   // the last stop could not avoid a reversal (until its next start)
   output logic                       move_done_o,   // a MOVE_END row ended (one clock, with its move_idx_o)
@@ -107,7 +133,21 @@ module sc_profile_exec (
   output logic signed [sc_pkg::AccW-1:0]      acc_o,
   output logic signed [sc_pkg::JerkW-1:0]     jerk_o,
   output logic [sc_pkg::PhaseW-1:0]           phase_o,
-  output logic [sc_pkg::SegIdxW-1:0]          seg_idx_o      // row of the current move (wraps)
+  output logic [sc_pkg::SegIdxW-1:0]          seg_idx_o,     // row of the current move (wraps)
+
+  // the row reach evaluator outside (OwnReach = 0): this executor's request
+  // (the row at rc_*: start when idle, abort its evaluation) and the
+  // evaluator's state (busy with any executor's row, done with this one's)
+  output logic                                rc_start_o,
+  output logic                                rc_abort_o,
+  output logic [sc_pkg::SegClkW-1:0]          rc_clocks_o,
+  output logic signed [sc_pkg::JerkW-1:0]     rc_jerk_o,
+  output logic signed [sc_pkg::AccW-1:0]      rc_acc0_o,
+  output logic signed [sc_pkg::VelW-1:0]      rc_vel0_o,
+  input  logic                                rc_busy_i,
+  input  logic                                rc_done_i,
+  input  logic signed [sc_pkg::ReachW-1:0]    rc_fwd_i,
+  input  logic signed [sc_pkg::ReachW-1:0]    rc_rev_i
 );
 
   localparam int FracBits  = sc_pkg::FracBits;
@@ -131,6 +171,7 @@ module sc_profile_exec (
   logic                      underrun_q, underrun_d;
   logic                      discont_q, discont_d;
   logic                      guard_q, guard_d;
+  logic                      reach_q, reach_d;
   logic                      stop_q, stop_d;        // controlled stop running
   logic [SegIdxW-1:0]        idx_q, idx_d;
   logic [RowFlagW-1:0]       flags_q, flags_d;
@@ -168,6 +209,28 @@ module sc_profile_exec (
   logic signed [VelW-1:0]     vel_end;
   logic signed [AccW-1:0]     acc_end;
   logic                       continues, at_rest, over_guard;
+  // soft-limit look-ahead
+  localparam int ReachW = sc_pkg::ReachW;
+  localparam int PtrW   = $clog2(sc_pkg::RowFifoDepth);
+  logic [RowLevelW-1:0]       chk_q, chk_d, chk_inc, chk_keep;  // rows at the head with a known reach
+  logic [RowW-1:0]            at_row;
+  logic [RowLevelW-1:0]       unused_at_ends;
+  logic [RowFlagW-1:0]        unused_at_flags;
+  logic [PhaseW-1:0]          unused_at_phase;
+  logic [SegClkW-1:0]         at_clocks;
+  logic signed [JerkW-1:0]    at_jerk;
+  logic signed [AccW-1:0]     at_acc0;
+  logic signed [VelW-1:0]     at_vel0;
+  logic                       rc_start, rc_abort, rc_busy, rc_done, rc_write;
+  logic signed [ReachW-1:0]   rc_fwd, rc_rev, hd_fwd, hd_rev;
+  logic                       hd_known, reach_bad, out_fwd, out_rev;
+  logic signed [PosIntW-1:0]  p0_int, pint_next;
+  logic [15:0]                p0_frac;
+  localparam int SumW = ReachW + 1;                 // start (PosIntW.16) + reach
+  localparam int IntW = SumW - sc_pkg::ReachFrac;   // its integer part
+  logic signed [SumW-1:0]     fwd_sum, rev_sum;
+  logic signed [IntW-1:0]     fwd_int, rev_int;
+  logic [2*sc_pkg::ReachFrac-1:0] unused_sum_frac;
   logic [VelW-1:0]            hd_vel_x;
   logic [AccW-1:0]            hd_acc_x;
   logic [JerkW-1:0]           hd_jerk_x;
@@ -187,7 +250,9 @@ module sc_profile_exec (
     .Width  (RowW),
     .Depth  (sc_pkg::RowFifoDepth),
     .LevelW (RowLevelW),
-    .PeekW  (RowLevelW)
+    .PeekW  (RowLevelW),
+    .SideW  (2 * ReachW),
+    .Checker (Lookahead)
   ) u_fifo (
     .clk_i,
     .rst_ni,
@@ -200,12 +265,19 @@ module sc_profile_exec (
     .peek_i    (peek_at),
     .head_o    (head),
     .peek_o    (pk_ends),
+    .at_i      (chk_q[PtrW-1:0]),
+    .at_o      (at_row),
+    .side_we_i (rc_write),
+    .side_off_i (chk_q[PtrW-1:0]),
+    .side_wdata_i ({rc_fwd, rc_rev}),
+    .side_head_o ({hd_fwd, hd_rev}),
     .empty_o   (fifo_empty),
     .full_o    (fifo_full),
     .level_o   (fifo_level_o)
   );
 
   assign {hd_ends, hd_flags, hd_phase, hd_clocks, hd_jerk, hd_acc0, hd_vel0} = head;
+  assign {unused_at_ends, unused_at_flags, unused_at_phase, at_clocks, at_jerk, at_acc0, at_vel0} = at_row;
   assign wdata = {w_ends, row_flags_i, row_phase_i, row_clocks_i, row_jerk_i, row_acc0_i, row_vel0_i};
 
   assign pos_sum  = $signed({2'b00, frac_q}) + (FracBits+2)'(vel_q);
@@ -242,9 +314,10 @@ module sc_profile_exec (
   always_comb begin
     load = 1'b0;
     if (boundary) begin
-      load = !flags_q[sc_pkg::RowFlagStreamEnd] && !fifo_empty && continues && !over_guard;
+      load = !flags_q[sc_pkg::RowFlagStreamEnd] && !fifo_empty && continues && !over_guard && !reach_bad &&
+             !reach_veto_i;
     end else if (!run_q) begin
-      load = start_i && !fifo_empty && !over_guard;
+      load = start_i && !fifo_empty && !over_guard && !reach_bad && !reach_veto_i;
     end
   end
   assign pop = load;
@@ -256,6 +329,7 @@ module sc_profile_exec (
     underrun_d = underrun_q;
     discont_d  = discont_q;
     guard_d    = guard_q;
+    reach_d    = reach_q;
     stop_d     = stop_q;
     idx_d      = idx_q;
     flags_d    = flags_q;
@@ -318,11 +392,13 @@ module sc_profile_exec (
             jerk_d     = '0;
             finished_d = 1'b1;
           end else if (!load) begin
-            // No row, one that does not continue the motion, or one over
-            // a guard limit: the rest of the stream is not run.
+            // No row, one that does not continue the motion, one over a
+            // guard limit or one out of the soft limits: the rest of the
+            // stream is not run.
             underrun_d = fifo_empty;
             discont_d  = !fifo_empty && !continues;
-            guard_d    = !fifo_empty && continues;
+            guard_d    = !fifo_empty && continues && over_guard;
+            reach_d    = !fifo_empty && continues && !over_guard && reach_bad;
           end
         end else begin
           left_d = left_q - SegClkW'(1);
@@ -336,14 +412,17 @@ module sc_profile_exec (
       underrun_d = 1'b0;
       discont_d  = 1'b0;
       guard_d    = 1'b0;
+      reach_d    = 1'b0;
       frac_d     = pos_frac0_i;
       move_idx_d = '0;
       bpos_d     = pint_q;
       if (!load) begin
         // an empty FIFO is the table fault; a head row over a guard limit
-        // is refused with everything queued behind it
+        // or out of the soft limits is refused with everything queued
+        // behind it
         fault_d = fifo_empty;
-        guard_d = !fifo_empty;
+        guard_d = !fifo_empty && over_guard;
+        reach_d = !fifo_empty && !over_guard && reach_bad;
         phase_d = sc_pkg::PhFault;
         flush   = !fifo_empty;
       end
@@ -421,6 +500,75 @@ module sc_profile_exec (
     end
   end
 
+  // ---- soft-limit look-ahead ----------------------------------------------
+  // The checker works on the first row without a known reach (chk_q rows
+  // from the head have one). It drops a row that leaves the queue before
+  // its result: popped, replaced, or flushed.
+  assign chk_inc  = chk_q + RowLevelW'(rc_write);
+  assign chk_keep = (replace_ok && keep < chk_inc) ? keep : chk_inc;
+  assign rc_abort = flush || (pop && chk_q == '0) || (replace_ok && keep <= chk_q);
+  // (only with the window on: without it nothing reads a reach)
+  assign rc_start = Lookahead && soft_en_i && !rc_busy && chk_q < fifo_level_o && !rc_abort;
+  assign rc_write = rc_done && !rc_abort;
+  always_comb begin
+    chk_d = chk_keep;
+    if (flush)                          chk_d = '0;
+    else if (pop && chk_keep != '0)     chk_d = chk_keep - RowLevelW'(1);
+  end
+
+  assign rc_start_o  = rc_start;
+  assign rc_abort_o  = rc_abort;
+  assign rc_clocks_o = at_clocks;
+  assign rc_jerk_o   = at_jerk;
+  assign rc_acc0_o   = at_acc0;
+  assign rc_vel0_o   = at_vel0;
+
+  if (OwnReach && Lookahead) begin : g_reach
+    sc_row_reach u_reach (
+      .clk_i,
+      .rst_ni,
+      .start_i     (rc_start),
+      .abort_i     (rc_abort),
+      .clocks_i    (at_clocks),
+      .jerk_i      (at_jerk),
+      .acc0_i      (at_acc0),
+      .vel0_i      (at_vel0),
+      .busy_o      (rc_busy),
+      .done_o      (rc_done),
+      .reach_fwd_o (rc_fwd),
+      .reach_rev_o (rc_rev)
+    );
+    logic unused_rc;
+    assign unused_rc = ^{rc_busy_i, rc_done_i, rc_fwd_i, rc_rev_i};
+  end else begin : g_no_reach
+    assign rc_busy = rc_busy_i;
+    assign rc_done = rc_done_i;
+    assign rc_fwd  = rc_fwd_i;
+    assign rc_rev  = rc_rev_i;
+  end
+
+  // Where the head row would start: the position after this clock's
+  // integration at a boundary, REF_POS with POS_FRAC0 at a START. The
+  // window compare needs only the top ReachFrac fraction bits (the reach
+  // is a multiple of 2^-ReachFrac, so the lower bits never carry into it).
+  assign pint_next = pos_sum[FracBits+1] ? pint_q - PosIntW'(1) :
+                     pos_sum[FracBits]   ? pint_q + PosIntW'(1) : pint_q;
+  assign p0_int  = run_q ? pint_next : pint_q;
+  assign p0_frac = run_q ? pos_sum[FracBits-1 -: 16] : pos_frac0_i[FracBits-1 -: 16];
+  assign fwd_sum = SumW'($signed({p0_int, p0_frac})) + SumW'(hd_fwd);
+  assign rev_sum = SumW'($signed({p0_int, p0_frac})) + SumW'(hd_rev);
+  assign fwd_int = fwd_sum[SumW-1:sc_pkg::ReachFrac];
+  assign rev_int = rev_sum[SumW-1:sc_pkg::ReachFrac];
+  assign unused_sum_frac = {fwd_sum[sc_pkg::ReachFrac-1:0], rev_sum[sc_pkg::ReachFrac-1:0]};
+  // Out: further than the edge and further out than the start (a row that
+  // starts beyond an edge may move back in, or stay).
+  assign out_fwd   = fwd_int > IntW'(soft_max_i) && fwd_int > IntW'(p0_int);
+  assign out_rev   = rev_int < IntW'(soft_min_i) && rev_int < IntW'(p0_int);
+  assign hd_known  = chk_q != '0;
+  assign reach_bad = Lookahead && soft_en_i && (!hd_known || out_fwd || out_rev);
+  assign start_ready_o = !Lookahead || !soft_en_i || fifo_empty || hd_known;
+  assign reach_bad_o   = reach_bad;
+
   sc_stop_gen u_stop (
     .clk_i,
     .rst_ni,
@@ -443,6 +591,8 @@ module sc_profile_exec (
       underrun_q <= 1'b0;
       discont_q  <= 1'b0;
       guard_q    <= 1'b0;
+      reach_q    <= 1'b0;
+      chk_q      <= '0;
       stop_q     <= 1'b0;
       idx_q      <= '0;
       flags_q    <= '0;
@@ -469,6 +619,8 @@ module sc_profile_exec (
       underrun_q <= underrun_d;
       discont_q  <= discont_d;
       guard_q    <= guard_d;
+      reach_q    <= reach_d;
+      chk_q      <= chk_d;
       stop_q     <= stop_d;
       idx_q      <= idx_d;
       flags_q    <= flags_d;
@@ -502,6 +654,7 @@ module sc_profile_exec (
   assign underrun_o     = underrun_q;
   assign discont_o      = discont_q;
   assign guard_o        = guard_q;
+  assign reach_o        = reach_q;
   assign stopping_o     = stop_q;
   assign overshoot_o    = sg_overshoot;
   assign fifo_full_o    = fifo_full || stop_q;

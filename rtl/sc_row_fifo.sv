@@ -9,11 +9,19 @@
 // behind them: the caller checks pop_i <= keep_i <= level and that the
 // result fits. peek_o reads the high PeekW bits of the entry peek_i places
 // behind the head (a second read port on those bits only: their own array).
+// at_o reads the whole entry at_i places behind the head (a third read
+// port, for a checker working through the queue). The side array holds
+// SideW bits per entry that the checker writes later: side_we_i writes
+// side_wdata_i to the entry side_off_i places behind the head (before this
+// clock's pop); side_head_o reads the head's. Checker = 0 builds neither
+// (at_o and side_head_o read 0).
 module sc_row_fifo #(
   parameter int Width  = 8,
   parameter int Depth  = 32,
   parameter int LevelW = 6,  // $clog2(Depth + 1)
-  parameter int PeekW  = 1   // 1 .. Width - 1
+  parameter int PeekW  = 1,  // 1 .. Width - 1
+  parameter int SideW  = 1,
+  parameter bit Checker = 1'b1
 ) (
   input  logic              clk_i,
   input  logic              rst_ni,
@@ -26,6 +34,12 @@ module sc_row_fifo #(
   input  logic [$clog2(Depth)-1:0] peek_i,
   output logic [Width-1:0]  head_o,   // valid while !empty_o
   output logic [PeekW-1:0]  peek_o,
+  input  logic [$clog2(Depth)-1:0] at_i,
+  output logic [Width-1:0]  at_o,
+  input  logic              side_we_i,
+  input  logic [$clog2(Depth)-1:0] side_off_i,
+  input  logic [SideW-1:0]  side_wdata_i,
+  output logic [SideW-1:0]  side_head_o,
   output logic              empty_o,
   output logic              full_o,
   output logic [LevelW-1:0] level_o
@@ -73,6 +87,20 @@ module sc_row_fifo #(
       mem_q[waddr]      <= wdata_i[Width-PeekW-1:0];
       peek_mem_q[waddr] <= wdata_i[Width-1 -: PeekW];
     end
+  end
+
+  if (Checker) begin : g_checker
+    logic [SideW-1:0] side_mem_q [Depth];
+    assign at_o        = {peek_mem_q[rd_q + at_i], mem_q[rd_q + at_i]};
+    assign side_head_o = side_mem_q[rd_q];
+    always_ff @(posedge clk_i) begin
+      if (side_we_i) side_mem_q[rd_q + side_off_i] <= side_wdata_i;
+    end
+  end else begin : g_no_checker
+    assign at_o        = '0;
+    assign side_head_o = '0;
+    logic unused_checker;
+    assign unused_checker = ^{at_i, side_we_i, side_off_i, side_wdata_i};
   end
 
   always_ff @(posedge clk_i) begin

@@ -21,7 +21,9 @@
 // SyncStart = 1 makes it one axis of sc_multi_axis_core #(.Servo(1)): the
 // core's start synchronisation ports (sc_axis_core) pass through.
 module sc_servo_axis #(
-  parameter bit SyncStart = 1'b0
+  parameter bit SyncStart = 1'b0,
+  parameter bit OwnReach  = 1'b1,  // 0: the row reach evaluator is outside (rc_*), shared
+  parameter bit Lookahead = 1'b1   // 0: no soft-limit look-ahead (sc_profile_exec)
 ) (
   input  logic                                clk_i,
   input  logic                                rst_ni,
@@ -52,6 +54,9 @@ module sc_servo_axis #(
   input  logic [sc_pkg::VelW-1:0]             guard_vel_i, // row guard limits: sc_axis_core
   input  logic [sc_pkg::AccW-1:0]             guard_acc_i,
   input  logic [sc_pkg::JerkW-1:0]            guard_jerk_i,
+  input  logic                                soft_en_i,   // soft-limit look-ahead: sc_axis_core
+  input  logic signed [sc_pkg::PosIntW-1:0]   soft_min_i,
+  input  logic signed [sc_pkg::PosIntW-1:0]   soft_max_i,
   input  logic                                lim_fwd_i,   // limits: sc_axis_core
   input  logic                                lim_rev_i,
   input  logic                                lim_hard_i,
@@ -75,6 +80,7 @@ module sc_servo_axis #(
   output logic                                underrun_o,
   output logic                                discont_o,
   output logic                                guard_o,
+  output logic                                reach_o,
   output logic                                stopping_o,
   output logic                                overshoot_o,
   output logic                                move_done_o,
@@ -126,12 +132,26 @@ module sc_servo_axis #(
   input  logic                                sync_start_ok_i,
   input  logic                                sync_go_i,
   input  logic                                sync_drop_i,
+  input  logic                                sync_reach_veto_i,
+  output logic                                reach_bad_o,
   output logic                                start_able_o,
   output logic                                arm_ready_o,
   output logic                                arm_drop_o,
   output logic                                fault_abort_o,
   output logic                                arming_o,
-  output logic                                exec_start_o
+  output logic                                exec_start_o,
+
+  // the row reach evaluator outside (OwnReach = 0; sc_profile_exec)
+  output logic                                rc_start_o,
+  output logic                                rc_abort_o,
+  output logic [sc_pkg::SegClkW-1:0]          rc_clocks_o,
+  output logic signed [sc_pkg::JerkW-1:0]     rc_jerk_o,
+  output logic signed [sc_pkg::AccW-1:0]      rc_acc0_o,
+  output logic signed [sc_pkg::VelW-1:0]      rc_vel0_o,
+  input  logic                                rc_busy_i,
+  input  logic                                rc_done_i,
+  input  logic signed [sc_pkg::ReachW-1:0]    rc_fwd_i,
+  input  logic signed [sc_pkg::ReachW-1:0]    rc_rev_i
 );
 
   localparam int FracBits   = sc_pkg::FracBits;
@@ -174,7 +194,9 @@ module sc_servo_axis #(
 
   sc_axis_core #(
     .ExtStep   (1'b1),
-    .SyncStart (SyncStart)
+    .SyncStart (SyncStart),
+    .OwnReach  (OwnReach),
+    .Lookahead (Lookahead)
   ) u_core (
     .clk_i,
     .rst_ni,
@@ -202,6 +224,9 @@ module sc_servo_axis #(
     .guard_vel_i,
     .guard_acc_i,
     .guard_jerk_i,
+    .soft_en_i,
+    .soft_min_i,
+    .soft_max_i,
     .lim_fwd_i,
     .lim_rev_i,
     .lim_hard_i,
@@ -220,6 +245,8 @@ module sc_servo_axis #(
     .sync_start_ok_i,
     .sync_go_i,
     .sync_drop_i,
+    .sync_reach_veto_i,
+    .reach_bad_o,
     .start_able_o,
     .arm_ready_o,
     .arm_drop_o,
@@ -243,6 +270,7 @@ module sc_servo_axis #(
     .underrun_o,
     .discont_o,
     .guard_o,
+    .reach_o,
     .stopping_o,
     .overshoot_o,
     .move_done_o,
@@ -259,7 +287,17 @@ module sc_servo_axis #(
     .ref_acc_o,
     .ref_jerk_o,
     .seg_idx_o,
-    .step_pending_o
+    .step_pending_o,
+    .rc_start_o,
+    .rc_abort_o,
+    .rc_clocks_o,
+    .rc_jerk_o,
+    .rc_acc0_o,
+    .rc_vel0_o,
+    .rc_busy_i,
+    .rc_done_i,
+    .rc_fwd_i,
+    .rc_rev_i
   );
 
   sc_quad_decoder u_dec (

@@ -226,7 +226,7 @@ GROUPS = [
 ]
 
 # sc_profile_exec: its FIFO and stop generator, without their own FORMAL sections
-EXEC_SUBS = ["sc_row_fifo.sv", "sc_stop_gen.sv"]
+EXEC_SUBS = ["sc_row_fifo.sv", "sc_stop_gen.sv", "sc_row_reach.sv"]
 GROUPS += [
     Group(
         name="exec_steps", module="sc_profile_exec", plain_files=EXEC_SUBS,
@@ -264,7 +264,7 @@ GROUPS += [
 ]
 
 # sc_axis_core (open loop, ExtStep = 0): executor, FIFO, stop and step generators without FORMAL
-CORE_SUBS = ["sc_profile_exec.sv", "sc_row_fifo.sv", "sc_stop_gen.sv", "sc_step_gen.sv"]
+CORE_SUBS = ["sc_profile_exec.sv", "sc_row_fifo.sv", "sc_stop_gen.sv", "sc_row_reach.sv", "sc_step_gen.sv"]
 GROUPS += [
     Group(
         name="core_done", module="sc_axis_core", plain_files=CORE_SUBS,

@@ -6,11 +6,13 @@
 # SC_SYNTH_PARAMS="Servo=1" for the closed-loop capable multi-axis core.
 # Area budget (fails when over): SC_LUT_BUDGET / SC_DSP_BUDGET in the
 # environment; the single-axis cores (sc_axis_core, sc_servo_axis) default
-# to 8600 LUT (logic + LUTs used as memory) and 8 DSP48E1: with the
+# to 9700 LUT (logic + LUTs used as memory) and 8 DSP48E1: with the
 # controlled-stop generator (about 3500 LUT in the servo axis, docs/stop.md),
-# the row stream with retarget and the HOLD count, the closed-loop axis
-# measures 7622 (7430 before the PID mode; the board top 9463 of the xc7a35t's 20800: 45.5 %, room
-# for a second axis beside it). The margin covers yosys' own spread: the
+# the row stream with retarget and the HOLD count and the soft-limit
+# look-ahead's row reach evaluator (about 1500 LUT with its FIFO read port
+# and reach column), the closed-loop axis measures 9163 (7622 before the
+# look-ahead; the board top 10905 of the xc7a35t's 20800: 52.4 %). The
+# margin covers yosys' own spread: the
 # same sc_profile_exec source came out at 1138 or 1578 LUT inside
 # sc_servo_axis when only the servo and sc_pkg changed elsewhere (the
 # executor synthesized alone gives 5902 both times).
@@ -69,13 +71,14 @@ printf '{"top":"%s","lut":%d,"lut_mem":%d,"lut_total":%d,"ff":%d,"carry4":%d,"ds
 lut_budget=${SC_LUT_BUDGET:-}; dsp_budget=${SC_DSP_BUDGET:-}
 # the single-axis cores: open loop and with the closed loop
 case "$top" in
-  sc_axis_core|sc_servo_axis) lut_budget=${lut_budget:-8600}; dsp_budget=${dsp_budget:-8} ;;
-  # two open-loop axes (its default Axes = 2): 12227 LUT, two single cores;
-  # two closed-loop axes (Servo = 1): 16427 LUT, 8 DSP, two servo axes
+  sc_axis_core|sc_servo_axis) lut_budget=${lut_budget:-9700}; dsp_budget=${dsp_budget:-8} ;;
+  # two open-loop axes (its default Axes = 2): 13299 LUT, two single cores
+  # and the one shared row reach evaluator; two closed-loop axes (Servo = 1):
+  # 17663 LUT, 8 DSP, two servo axes and the evaluator
   sc_multi_axis_core)
     case " ${SC_SYNTH_PARAMS:-} " in
-      *" Servo=1 "*) lut_budget=${lut_budget:-17500}; dsp_budget=${dsp_budget:-16} ;;
-      *) lut_budget=${lut_budget:-14000}; dsp_budget=${dsp_budget:-0} ;;
+      *" Servo=1 "*) lut_budget=${lut_budget:-18500}; dsp_budget=${dsp_budget:-16} ;;
+      *) lut_budget=${lut_budget:-14500}; dsp_budget=${dsp_budget:-0} ;;
     esac ;;
   # the two-axis board top: it must fit the xc7a35t (20800 LUT, 90 DSP48E1)
   sc_board_xy_top) lut_budget=${lut_budget:-20800}; dsp_budget=${dsp_budget:-90} ;;

@@ -51,6 +51,7 @@ SignalValues render_servo(const ServoOutputs& o) {
   add("underrun_o", o.underrun, 1);
   add("discont_o", o.discont, 1);
   add("guard_o", o.guard, 1);
+  add("reach_o", o.reach, 1);
   add("stopping_o", o.stopping, 1);
   add("overshoot_o", o.overshoot, 1);
   add("move_done_o", o.move_done, 1);

@@ -32,6 +32,7 @@ SignalValues render_outputs(const CoreOutputs& o) {
       {"underrun_o", hex_bits(uint64_t(o.underrun), 1)},
       {"discont_o", hex_bits(uint64_t(o.discont), 1)},
       {"guard_o", hex_bits(uint64_t(o.guard), 1)},
+      {"reach_o", hex_bits(uint64_t(o.reach), 1)},
       {"stopping_o", hex_bits(uint64_t(o.stopping), 1)},
       {"overshoot_o", hex_bits(uint64_t(o.overshoot), 1)},
       {"move_done_o", hex_bits(uint64_t(o.move_done), 1)},

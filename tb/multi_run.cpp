@@ -108,6 +108,7 @@ class Run {
         x.stop_jerk = options.stop[a].jerk;
         x.stop_acc = options.stop[a].acc;
       }
+      if (!options.soft.empty()) x.soft = options.soft[a];
       PinRules r{options.timing};
       // Closed loop: the pulses follow the controller, counted against the
       // step generator's counter (no exact reference to count against).
@@ -134,6 +135,9 @@ class Run {
     MultiRunResult r;
     r.axes = n;
     r.stop_clock.assign(n, UINT64_MAX);
+    r.min_pos_before_stop.assign(n, 0);
+    r.max_pos_before_stop.assign(n, 0);
+    bool any_stopped = false;
     r.reversed.assign(n, false);
     std::vector<int> vel_sign(n, 0);
     r.peak_velocity.assign(n, 0);
@@ -215,8 +219,13 @@ class Run {
         rtl_->read_outputs(rtl_out);
         check.compare(clock, rtl_out, out);
       }
+      for (size_t a = 0; a < n; ++a) any_stopped = any_stopped || out.axis[a].stopping;
       for (size_t a = 0; a < n; ++a) {
         const CoreOutputs& o = out.axis[a];
+        if (!any_stopped) {
+          r.min_pos_before_stop[a] = std::min(r.min_pos_before_stop[a], o.ref_pos_int);
+          r.max_pos_before_stop[a] = std::max(r.max_pos_before_stop[a], o.ref_pos_int);
+        }
         if (closed_) {
           pins_[a].on_clock(clock, o.step, o.dir, o.done, o.phase, o.pulse_count);
         } else {
@@ -316,6 +325,7 @@ class Run {
       r.ref_pos.push_back(out.axis[a].ref_pos_int);
       r.pin_steps.push_back(pins_[a].net_steps());
       r.done.push_back(out.axis[a].done);
+      r.reach.push_back(out.axis[a].reach);
       if (!plants_.empty()) {
         r.measured_pos.push_back(measured(out, a));
         r.final_error.push_back(double(out.axis[a].ref_pos_int) - measured(out, a));
@@ -492,6 +502,10 @@ MultiRunResult run_multi(const MultiRows& rows, const MultiRunOptions& options) 
     throw std::invalid_argument(fmt::format("run_multi: limit_axis={} but only {} axes", options.limit_axis,
                                             rows.axes()));
   }
+  if (!options.soft.empty() && options.soft.size() != rows.axes()) {
+    throw std::invalid_argument(fmt::format("run_multi: {} soft-limit windows for {} axes", options.soft.size(),
+                                            rows.axes()));
+  }
   if (rows.rows.empty() || rows.pos_frac0.size() != rows.axes()) {
     throw std::invalid_argument("run_multi: rows and pos_frac0 need one entry per axis");
   }
@@ -518,7 +532,8 @@ MultiRunResult run_multi(const MultiRows& rows, const MultiRunOptions& options) 
   }
   std::vector<double> line;
   if (options.measure_line) line = end_positions(rows, options);
-  Run run(rows, options, options.rtl, options.stop_at.has_value() || options.limit_at.has_value(), true);
+  Run run(rows, options, options.rtl,
+          options.stop_at.has_value() || options.limit_at.has_value() || !options.soft.empty(), true);
   return run.run(options.measure_line ? &line : nullptr);
 }
 

@@ -65,6 +65,9 @@ struct MultiRunOptions {
   std::optional<uint64_t> limit_at;
   size_t limit_axis = 0;
   bool limit_hard = false;
+  // The soft-limit window per axis (SOFT_EN, SOFT_MIN, SOFT_MAX; empty: off
+  // on every axis). A window that a row would leave stops every axis.
+  std::vector<SoftWindow> soft;
   // Check every clock that all axes load rows together (off where one axis
   // is meant to stop first: a limit on one axis).
   bool check_sync = true;
@@ -128,6 +131,10 @@ struct MultiRunResult {
   std::vector<bool> done;           // DONE per axis at the end
   std::vector<uint64_t> stop_clock;  // per axis: the first clock its stop ran (UINT64_MAX: none)
   std::vector<bool> reversed;       // per axis: the reference velocity changed sign
+  std::vector<bool> reach;          // per axis at the end: its look-ahead refused a row
+  // Per axis: the lowest and highest REF_POS before any axis's stop ran
+  // (the rows that ran, without the stopping distance).
+  std::vector<int32_t> min_pos_before_stop, max_pos_before_stop;
   double max_line_deviation = 0;    // pulses, every clock (measure_line)
   double contour_max = 0, contour_rms = 0;  // pulses, from the polyline (options.polyline)
   std::vector<MultiMoveEnd> move_ends;      // one per completed move

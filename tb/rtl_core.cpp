@@ -22,6 +22,7 @@ RtlCore::RtlCore() : top_(std::make_unique<VerilatedTop<Vsc_axis_core>>("sc_axis
   drive_stop(m, last_.stop, last_.stop_jerk, last_.stop_acc);
   drive_limits(m, last_.lim_fwd, last_.lim_rev, last_.lim_hard);
   drive_guards(m, last_.guard);
+  drive_soft(m, last_.soft);
   // No external step source on the plain core (ExtStep = 0).
   m.ext_sel_i = 0;
   m.ext_req_i = 0;
@@ -68,6 +69,7 @@ void RtlCore::step(const CoreInputs& in) {
     drive_stop(m, in.stop, in.stop_jerk, in.stop_acc);
   }
   if (!(in.guard == last_.guard)) drive_guards(m, in.guard);
+  if (!(in.soft == last_.soft)) drive_soft(m, in.soft);
   if (in.lim_fwd != last_.lim_fwd || in.lim_rev != last_.lim_rev || in.lim_hard != last_.lim_hard) {
     drive_limits(m, in.lim_fwd, in.lim_rev, in.lim_hard);
   }
@@ -84,6 +86,7 @@ void RtlCore::step(const CoreInputs& in) {
   last_.stop_jerk = in.stop_jerk;
   last_.stop_acc = in.stop_acc;
   last_.guard = in.guard;
+  last_.soft = in.soft;
   last_.lim_fwd = in.lim_fwd;
   last_.lim_rev = in.lim_rev;
   last_.lim_hard = in.lim_hard;

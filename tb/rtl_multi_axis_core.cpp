@@ -57,6 +57,7 @@ class MultiImpl final : public RtlMultiAxisCore::Impl {
       c.underrun = SC_GET(underrun_o, a, 1) != 0;
       c.discont = SC_GET(discont_o, a, 1) != 0;
       c.guard = SC_GET(guard_o, a, 1) != 0;
+      c.reach = SC_GET(reach_o, a, 1) != 0;
       c.stopping = SC_GET(stopping_o, a, 1) != 0;
       c.overshoot = SC_GET(overshoot_o, a, 1) != 0;
       c.move_done = SC_GET(move_done_o, a, 1) != 0;
@@ -139,6 +140,11 @@ class MultiImpl final : public RtlMultiAxisCore::Impl {
         SC_SET(guard_vel_i, a, VelW, g.vel);
         SC_SET(guard_acc_i, a, AccW, g.acc);
         SC_SET(guard_jerk_i, a, JerkW, g.jerk);
+      }
+      if (all || !(x.soft == l.soft)) {
+        SC_SET(soft_en_i, a, 1, x.soft.en);
+        SC_SET(soft_min_i, a, PosIntW, uint32_t(x.soft.min));
+        SC_SET(soft_max_i, a, PosIntW, uint32_t(x.soft.max));
       }
       if (all || x.lim_fwd != l.lim_fwd || x.lim_rev != l.lim_rev || x.lim_hard != l.lim_hard) {
         SC_SET(lim_fwd_i, a, 1, x.lim_fwd);

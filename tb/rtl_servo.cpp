@@ -8,6 +8,7 @@ namespace sc {
 
 RtlServo::RtlServo() : top_(std::make_unique<VerilatedTop<Vsc_servo_axis>>("sc_servo_axis")) {
   drive_guards(top_->top(), guard_);
+  drive_soft(top_->top(), soft_);
 }
 
 RtlServo::~RtlServo() = default;
@@ -47,6 +48,10 @@ void RtlServo::step(const ServoInputs& in) {
   if (!(in.guard == guard_)) {
     guard_ = in.guard;
     drive_guards(m, guard_);
+  }
+  if (!(in.soft == soft_)) {
+    soft_ = in.soft;
+    drive_soft(m, soft_);
   }
   m.enc_a_i = in.enc_a;
   m.enc_b_i = in.enc_b;

@@ -35,6 +35,7 @@ class RtlServo {
   std::unique_ptr<VerilatedTop<Vsc_servo_axis>> top_;
   u128 pos_frac0_ = 0;
   GuardLimits guard_{};  // the guard inputs as driven
+  SoftWindow soft_{};    // the soft-limit inputs as driven
   ServoConfig cfg_{};
   bool cfg_set_ = false;
 };

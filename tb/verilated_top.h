@@ -251,6 +251,14 @@ void drive_guards(V& m, const GuardLimits& g) {
   m.guard_jerk_i = w.jerk;
 }
 
+// The soft-limit look-ahead inputs of the axis tops (sc_axis_core, sc_servo_axis).
+template <class V>
+void drive_soft(V& m, const SoftWindow& w) {
+  m.soft_en_i = w.en;
+  m.soft_min_i = uint32_t(w.min);
+  m.soft_max_i = uint32_t(w.max);
+}
+
 // The limit inputs of the axis tops (sc_axis_core, sc_servo_axis).
 template <class V>
 void drive_limits(V& m, bool lim_fwd, bool lim_rev, bool lim_hard) {
@@ -283,6 +291,7 @@ void read_axis_outputs(const V& m, O& o) {
   o.underrun = m.underrun_o;
   o.discont = m.discont_o;
   o.guard = m.guard_o;
+  o.reach = m.reach_o;
   o.stopping = m.stopping_o;
   o.overshoot = m.overshoot_o;
   o.move_done = m.move_done_o;

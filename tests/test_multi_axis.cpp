@@ -220,6 +220,27 @@ TEST(MultiAxisLockstep, AStartTowardALimitOnOneAxisIsRefusedByAll) {
   EXPECT_LT(r.clocks, 10u);
 }
 
+// A random path request: 2 to 4 lines from 0, every axis +-600 pulses a
+// line, a random feed (and with blends a random corner tolerance).
+scurve::PathRequest random_path_request(std::mt19937_64& rng, size_t axes, scurve::Junction junction) {
+  scurve::PathRequest req;
+  req.axes = axes;
+  req.limits = {40000 + 100000 * double(rng() % 1000) / 1000, 1e7, 2e9};
+  req.junction = junction;
+  if (junction == scurve::Junction::kBlend) req.tolerance = 0.5 + double(rng() % 500) / 10;
+  std::vector<int64_t> at(axes, 0);
+  const int moves = 2 + int(rng() % 3);
+  for (int k = 0; k < moves; ++k) {
+    scurve::PathMove m;
+    for (size_t a = 0; a < axes; ++a) at[a] += int64_t(rng() % 1201) - 600;
+    m.target_pulses = at;
+    m.feed = req.limits.v;
+    m.source_line = k + 1;
+    req.moves.push_back(m);
+  }
+  return req;
+}
+
 // Random paths of 2 to 4 lines (scurve::plan_path: one row stream, each line
 // from the fraction the last one left), with exact stops or blended
 // junctions (a random corner tolerance): in lockstep every move's last row
@@ -231,21 +252,7 @@ void random_paths(size_t axes, int count, uint64_t seed, scurve::Junction juncti
   std::mt19937_64 rng(seed);
   const bool blend = junction == scurve::Junction::kBlend;
   for (int i = 0; i < count; ++i) {
-    scurve::PathRequest req;
-    req.axes = axes;
-    req.limits = {40000 + 100000 * double(rng() % 1000) / 1000, 1e7, 2e9};
-    req.junction = junction;
-    if (blend) req.tolerance = 0.5 + double(rng() % 500) / 10;
-    std::vector<int64_t> at(axes, 0);
-    const int moves = 2 + int(rng() % 3);
-    for (int k = 0; k < moves; ++k) {
-      scurve::PathMove m;
-      for (size_t a = 0; a < axes; ++a) at[a] += int64_t(rng() % 1201) - 600;
-      m.target_pulses = at;
-      m.feed = req.limits.v;
-      m.source_line = k + 1;
-      req.moves.push_back(m);
-    }
+    const scurve::PathRequest req = random_path_request(rng, axes, junction);
     auto p = scurve::plan_path(scurve::Planner{model_clock()}, req, to_host(PulseTiming{}));
     ASSERT_TRUE(std::holds_alternative<scurve::PathPlan>(p)) << std::get<scurve::Error>(p).message;
     const scurve::PathPlan& plan = std::get<scurve::PathPlan>(p);
@@ -291,6 +298,100 @@ TEST(MultiAxisLockstep, RandomTwoAxisPathsWithBlendedJunctionsEndExactlyWithinTh
 
 TEST(MultiAxisLockstep, RandomThreeAxisPathsWithBlendedJunctionsEndExactlyWithinTheTolerance) {
   random_paths(3, 8, 63, scurve::Junction::kBlend);
+}
+
+// Soft-limit windows on every axis, the look-ahead's rows checked by the
+// one evaluator the axes share. Windows exactly at the extremes of a path
+// (the start and the corners) or wider run it to its end on every target;
+// a window cut short on one axis stops every axis on the same clock, at the
+// row boundary before the first row that would leave it (no axis loads that
+// row: every clock all axes hold the same rows): that axis flags REACH,
+// nothing ends done, the rows that ran stayed inside (checked on the
+// reference, clock by clock, before any stop ran), the pins agree with
+// REF_POS.
+MultiLoop servo_loop(const ControllerParams& c);
+
+void soft_window_paths(size_t axes, int count, uint64_t seed, bool servo) {
+  std::mt19937_64 rng(seed);
+  int cut_runs = 0, start_refusals = 0;
+  for (int i = 0; i < count; ++i) {
+    const scurve::PathRequest req = random_path_request(rng, axes, scurve::Junction::kExactStop);
+    std::vector<int64_t> lo(axes, 0), hi(axes, 0);  // every axis's extremes: the start and the corners
+    for (const scurve::PathMove& m : req.moves) {
+      for (size_t a = 0; a < axes; ++a) {
+        lo[a] = std::min(lo[a], m.target_pulses[a]);
+        hi[a] = std::max(hi[a], m.target_pulses[a]);
+      }
+    }
+    auto p = scurve::plan_path(scurve::Planner{model_clock()}, req, to_host(PulseTiming{}));
+    ASSERT_TRUE(std::holds_alternative<scurve::PathPlan>(p)) << std::get<scurve::Error>(p).message;
+    const scurve::PathPlan& plan = std::get<scurve::PathPlan>(p);
+    MultiRunOptions o;
+    o.measure_line = false;
+    if (servo) o.loop = servo_loop(ControllerParams{});
+    for (size_t a = 0; a < axes; ++a) {
+      const int64_t margin = (i % 2 == 0) ? 0 : int64_t(rng() % 6);
+      o.soft.push_back(SoftWindow{true, int32_t(lo[a] - margin), int32_t(hi[a] + margin)});
+    }
+    // Every third path inside its windows; the others with one side of one
+    // moving axis cut short (the start stays inside).
+    const bool cut = i % 3 != 0;
+    size_t axis = 0;
+    bool upper = true;
+    if (cut) {
+      axis = size_t(rng() % axes);
+      while (hi[axis] == lo[axis]) axis = (axis + 1) % axes;
+      upper = hi[axis] > 0 && (lo[axis] == 0 || rng() % 2 == 0);
+      const int64_t room = upper ? hi[axis] : -lo[axis];
+      const int64_t by = 1 + int64_t(rng() % uint64_t(room));
+      if (upper) o.soft[axis].max = int32_t(hi[axis] - by);
+      else       o.soft[axis].min = int32_t(lo[axis] + by);
+    }
+    const MultiRunResult r = run_multi(path_rows(plan), o);
+    const std::string what = fmt::format("path {} ({} moves){}", i, plan.moves.size(),
+                                         cut ? fmt::format(", axis {} window [{}, {}]", axis, o.soft[axis].min,
+                                                           o.soft[axis].max)
+                                             : std::string(", inside its windows"));
+    EXPECT_EQ(r.mismatches, 0u) << what;
+    EXPECT_GT(r.compared, 0u) << what;
+    for (const std::string& e : r.errors) ADD_FAILURE() << what << ": " << e;
+    for (size_t a = 0; a < axes; ++a) {
+      // (in the loop the pins follow the controller: the pin monitor counts
+      // them against its step counter)
+      if (!servo) {
+        EXPECT_EQ(r.pin_steps[a], int64_t(r.ref_pos[a])) << what << " axis " << a;
+      }
+      EXPECT_GE(r.min_pos_before_stop[a], o.soft[a].min) << what << " axis " << a;
+      EXPECT_LE(r.max_pos_before_stop[a], o.soft[a].max) << what << " axis " << a;
+    }
+    if (!cut) {
+      for (size_t a = 0; a < axes; ++a) {
+        EXPECT_EQ(r.ref_pos[a], plan.moves.back().target[a]) << what << " axis " << a;
+        EXPECT_TRUE(r.done[a]) << what << " axis " << a;
+        EXPECT_FALSE(r.reach[a]) << what << " axis " << a;
+      }
+    } else {
+      ++cut_runs;
+      EXPECT_TRUE(r.reach[axis]) << what << ": the look-ahead refused no row";
+      bool moved = false;
+      for (size_t a = 0; a < axes; ++a) {
+        EXPECT_FALSE(r.done[a]) << what << " axis " << a;
+        moved = moved || r.pin_steps[a] != 0;
+      }
+      if (!moved) ++start_refusals;
+      for (size_t a = 1; a < axes && moved; ++a) {
+        EXPECT_EQ(r.stop_clock[a], r.stop_clock[0]) << what << ": axis " << a << " stopped on another clock";
+      }
+    }
+    if (::testing::Test::HasFailure()) return;
+  }
+  std::printf("%d paths on %zu axes%s: %d cut short (%d refused at START)\n", count, axes, servo ? " (servo)" : "",
+              cut_runs, start_refusals);
+}
+
+TEST(MultiAxisLockstep, SoftWindowsOnEveryAxisStopAllAxesBeforeARowLeavesOneAndPassPathsInside) {
+  soft_window_paths(2, 6, 71, false);
+  soft_window_paths(3, 3, 73, false);
 }
 
 // Nightly size: 100 random 2-axis and 30 random 3-axis paths, half with
@@ -479,6 +580,8 @@ TEST(MultiAxisClosedLoop, ExactStopFineStartsEachLineOnlyOnceEveryAxisSettledAtT
 
 // The same core with the loop off runs the open-loop path through the same
 // pins: exact, pins = reference, synchronised as the open-loop core.
+TEST(MultiAxisClosedLoop, SoftWindowsStopBothLoopsBeforeARowLeavesOne) { soft_window_paths(2, 3, 75, true); }
+
 TEST(MultiAxisClosedLoop, TheServoCoreWithTheLoopOffRunsLinesOpenLoopExactly) {
   std::mt19937_64 rng(73);
   ControllerParams c;

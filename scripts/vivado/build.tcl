@@ -25,6 +25,7 @@ file mkdir $out
 set rtl_files_of(sc_board_top) {
   sc_pkg.sv
   sc_stop_gen.sv
+  sc_row_reach.sv
   sc_row_fifo.sv
   sc_step_gen.sv
   sc_profile_exec.sv
@@ -57,6 +58,7 @@ set rtl_files_of(sc_board_xy_top) {
   sc_quad_decoder.sv
   sc_axis_core.sv
   sc_servo_axis.sv
+  sc_row_reach.sv
   sc_multi_axis_core.sv
   sc_switch_filter.sv
   sc_axi_regs.sv

@@ -44,20 +44,23 @@ module sc_axis_core_smoke_tb;
     .start_i(start), .abort_i(1'b0), .stop_i(1'b0),
     .stop_jerk_i(sc_pkg::JerkW'(1) << 20), .stop_acc_i(sc_pkg::AccW'(1) << 50),
     .guard_vel_i('0), .guard_acc_i('0), .guard_jerk_i('0),
+    .soft_en_i(1'b0), .soft_min_i('0), .soft_max_i('0),
     .lim_fwd_i(1'b0), .lim_rev_i(1'b0), .lim_hard_i(1'b0),
     .ext_sel_i(1'b0), .ext_req_i(1'b0), .ext_fwd_i(1'b0), .ext_hint_valid_i(1'b0),
     .ext_hint_i(1'b0), .ext_busy_i(1'b0), .ext_abort_i(1'b0), .ext_done_i(1'b0),
-    .sync_start_ok_i(1'b0), .sync_go_i(1'b0), .sync_drop_i(1'b0),
+    .sync_start_ok_i(1'b0), .sync_go_i(1'b0), .sync_drop_i(1'b0), .sync_reach_veto_i(1'b0), .reach_bad_o(),
     .start_able_o(), .arm_ready_o(), .arm_drop_o(), .fault_abort_o(), .arming_o(),
     .exec_start_o(), .abort_o(), .ref_done_o(), .ref_running_o(), .step_busy_o(),
     .lim_trip_fwd_o(), .lim_trip_rev_o(),
     .step_o(step), .dir_o(dir), .en_o(en),
     .busy_o(busy), .done_o(done), .phase_o(), .fault_table_o(), .fault_overrun_o(),
-    .underrun_o(), .discont_o(), .guard_o(), .stopping_o(), .overshoot_o(), .move_done_o(),
+    .underrun_o(), .discont_o(), .guard_o(), .reach_o(), .stopping_o(), .overshoot_o(), .move_done_o(),
     .move_idx_o(), .boundary_pos_o(), .fifo_level_o(), .fifo_full_o(fifo_full), .row_count_o(), .retarget_refused_o(),
     .pulse_count_o(pulse_count),
     .ref_pos_int_o(ref_pos_int), .ref_pos_frac_o(ref_pos_frac), .ref_vel_o(), .ref_acc_o(),
-    .ref_jerk_o(), .seg_idx_o(), .step_pending_o()
+    .ref_jerk_o(), .seg_idx_o(), .step_pending_o(),
+    .rc_start_o(), .rc_abort_o(), .rc_clocks_o(), .rc_jerk_o(), .rc_acc0_o(), .rc_vel0_o(),
+    .rc_busy_i(1'b0), .rc_done_i(1'b0), .rc_fwd_i('0), .rc_rev_i('0)
   );
 
   // ---- pin monitor ---------------------------------------------------------

@@ -256,7 +256,10 @@ int sc_main(int argc, char** argv) {
   dut.sync_start_ok_i(ext_off);  // one axis: no start synchronisation
   dut.sync_go_i(ext_off);
   dut.sync_drop_i(ext_off);
-  // No limit switches and no guard limits (0 = none) on this bench.
+  dut.sync_reach_veto_i(ext_off);
+  sc_signal<bool> reach_bad("reach_bad");
+  dut.reach_bad_o(reach_bad);
+  // No limit switches, no guard limits (0 = none) and no soft limits on this bench.
   sc_signal<VelBv> guard_vel("guard_vel");
   sc_signal<uint64_t> guard_acc("guard_acc"), guard_jerk("guard_jerk");
   sc_signal<bool> guard("guard");
@@ -264,6 +267,28 @@ int sc_main(int argc, char** argv) {
   dut.guard_acc_i(guard_acc);
   dut.guard_jerk_i(guard_jerk);
   dut.guard_o(guard);
+  // no soft-limit window
+  sc_signal<uint32_t> soft_min("soft_min"), soft_max("soft_max");
+  sc_signal<bool> reach("reach");
+  dut.soft_en_i(ext_off);
+  dut.soft_min_i(soft_min);
+  dut.soft_max_i(soft_max);
+  dut.reach_o(reach);
+  // the core's own row reach evaluator (OwnReach): its outside ports unused
+  sc_signal<bool> rc_start("rc_start"), rc_abort("rc_abort");
+  sc_signal<uint32_t> rc_clocks("rc_clocks");
+  sc_signal<uint64_t> rc_jerk("rc_jerk"), rc_acc0("rc_acc0"), rc_fwd("rc_fwd"), rc_rev("rc_rev");
+  sc_signal<VelBv> rc_vel0("rc_vel0");
+  dut.rc_start_o(rc_start);
+  dut.rc_abort_o(rc_abort);
+  dut.rc_clocks_o(rc_clocks);
+  dut.rc_jerk_o(rc_jerk);
+  dut.rc_acc0_o(rc_acc0);
+  dut.rc_vel0_o(rc_vel0);
+  dut.rc_busy_i(ext_off);
+  dut.rc_done_i(ext_off);
+  dut.rc_fwd_i(rc_fwd);
+  dut.rc_rev_i(rc_rev);
   dut.lim_fwd_i(ext_off);
   dut.lim_rev_i(ext_off);
   dut.lim_hard_i(ext_off);
