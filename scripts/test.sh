@@ -13,21 +13,30 @@
 #   scripts/test.sh -L long  or  scripts/test.sh -L core
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
+# Each stage's start and the time spent so far, for the CI log.
+stage() { echo "== test.sh: $1 (at $((SECONDS / 60)) min $((SECONDS % 60)) s)"; }
+stage "build"
 "$here/scripts/build.sh"
 cd "$here/build"
 if [ $# -gt 0 ]; then
   exec ctest --output-on-failure -j"$(nproc)" --output-junit test-results.xml "$@"
 fi
 rc=0
+stage "default suite"
 ctest --output-on-failure -j"$(nproc)" --output-junit test-results.xml -LE '^(long|extended)$' || rc=$?
 if [ "${SC_SANITIZE:-0}" = "1" ]; then
+  stage "extended tests"
   ctest --output-on-failure -j"$(nproc)" --output-junit test-results-extended.xml -L '^extended$' || rc=$?
+  stage "coverage floors"
   ctest --output-on-failure --output-junit test-results-coverage.xml -L '^coverage_ci$' || rc=$?
+  stage "sanitizer build"
   "$here/scripts/build.sh" --sanitize
   cd "$here/build-san"
   # Stop at the first report; leaks count (LeakSanitizer).
   export ASAN_OPTIONS=abort_on_error=1:detect_leaks=1:strict_string_checks=1
   export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+  stage "sanitizer suite"
   ctest --output-on-failure -j"$(nproc)" --output-junit test-results.xml -LE long || rc=$?
 fi
+stage "done, exit $rc"
 exit "$rc"
