@@ -294,9 +294,11 @@ class Workspace:
                str(self.work / "formal"), "--json", str(out), "--timeout", str(max(1, int(timeout)))]
         for g in stage.gtest_filter.split(","):
             cmd += ["--group", g]
+        # the solvers of scripts/setup.sh's .venv/ (src/ is a copy without one)
+        env = dict(os.environ, PATH=str(self.root / ".venv" / "bin") + os.pathsep + os.environ.get("PATH", ""))
         t0 = time.monotonic()
         try:
-            subprocess.run(cmd, capture_output=True, text=True, timeout=timeout + 60)
+            subprocess.run(cmd, capture_output=True, text=True, timeout=timeout + 60, env=env)
         except subprocess.TimeoutExpired:
             return "inconclusive", "formal: timed out", time.monotonic() - t0
         dt = time.monotonic() - t0
