@@ -54,11 +54,12 @@ set_tests_properties(tools.cli_contract tools.cli_contract_closed_loop tools.cli
                      tools.regress_shards_cover_list tools.board_driver_over_a_pty
                      tools.board_driver_drives_the_two_axis_board_over_a_pty PROPERTIES LABELS tools TIMEOUT 600)
 # Paper 000's group 1 over the pseudo-terminal: 278 M clocks of the board
-# top (minutes here): CI's extended stage, not the sanitizer build.
+# top (almost 4 minutes): label long (the nightly size), as the lockstep
+# benches of the paper groups; not in the sanitizer build.
 if(NOT SC_SANITIZE)
   add_test(NAME tools.board_paper_group_over_a_pty
     COMMAND ${SC_TESTS_DIR}/board_pty_test.sh $<TARGET_FILE:scurve> ${PROJECT_SOURCE_DIR} paper)
-  set_tests_properties(tools.board_paper_group_over_a_pty PROPERTIES LABELS "tools;extended" TIMEOUT 2400)
+  set_tests_properties(tools.board_paper_group_over_a_pty PROPERTIES LABELS "tools;long" TIMEOUT 2400)
 endif()
 # Under the sanitizers its bench runs take minutes (about 250 s in all). In
 # the default build it is an `extended` test (CI's stage after the default
