@@ -18,6 +18,10 @@ set(SC_RTL_LIVE_TOPS "" CACHE STRING "mutation testing: the tops Verilated from 
 # Mutation testing: the Verilated code's optimisation level (empty: -O3);
 # a mutant's build is dominated by compiling its top.
 set(SC_VERILATE_OPT "" CACHE STRING "mutation testing: the Verilated code's -O level instead of -O3")
+# The CI coverage profile (scripts/coverage.py --profile ci): the tops (by
+# PREFIX) that no test of its selection runs, Verilated without coverage
+# points and compiled at -O0 (they only have to link).
+set(SC_COVERAGE_PLAIN_TOPS "" CACHE STRING "coverage build: PREFIXes of tops built plain at -O0 (not run)")
 # A mutant that leaves a signal unread (a stuck right side, a dropped term)
 # is still a wrong design for the tests to find, not a build error.
 option(SC_VERILATE_WARN_NOT_FATAL "mutation testing: Verilator -Wall warnings do not stop the build" OFF)
@@ -89,7 +93,11 @@ function(sc_verilate target)
     set(warn_args -Wno-fatal)
   endif()
   set(cover_args)
-  if(SC_COVERAGE)
+  if(SC_COVERAGE AND A_PREFIX IN_LIST SC_COVERAGE_PLAIN_TOPS)
+    set(A_OPT -O0)
+    set(fast -O0)
+    set(slow -O0)
+  elseif(SC_COVERAGE)
     # The kinds of SC_COVERAGE_KINDS (line, toggle, user); SC_COVER enables
     # the RTL's cover points. Toggle points make a run ~20x slower, line and
     # user ones barely: scripts/coverage.py builds them apart.
