@@ -3,7 +3,7 @@
 # suite (every area except the nightly-size `long` campaigns). Writes
 # build/test-results.xml (JUnit). With SC_SANITIZE=1 (CI) it then runs the
 # `extended` tests of build/ (build/test-results-extended.xml), the RTL
-# coverage floors on the CI selection (label coverage_ci: build/cov-ci/,
+# line and cover-point floors on the CI selection (label coverage_ci: build/cov-ci/,
 # build/coverage-ci.json, build/test-results-coverage.xml), builds the
 # sanitizer configuration (build-san/: clang, ASan + UBSan; the Verilated
 # RTL compiled uninstrumented) and runs its suite: the unit tests, the tool
