@@ -15,9 +15,10 @@
 # tests run. Both empty (the default): every top from rtl/.
 set(SC_RTL_FROZEN_DIR "" CACHE PATH "mutation testing: Verilate the tops not in SC_RTL_LIVE_TOPS from here")
 set(SC_RTL_LIVE_TOPS "" CACHE STRING "mutation testing: the tops Verilated from rtl/ when SC_RTL_FROZEN_DIR is set")
-# Mutation testing: the Verilated code's optimisation level (empty: -O3);
-# a mutant's build is dominated by compiling its top.
-set(SC_VERILATE_OPT "" CACHE STRING "mutation testing: the Verilated code's -O level instead of -O3")
+# The Verilated code's optimisation level (empty: -O3), for builds whose
+# time goes into compiling rather than running it: a mutant's build, the CI
+# coverage build (scripts/mutation.py, scripts/coverage.py).
+set(SC_VERILATE_OPT "" CACHE STRING "the Verilated code's -O level instead of -O3 (mutation, CI coverage builds)")
 # The CI coverage profile (scripts/coverage.py --profile ci): the tops (by
 # PREFIX) that no test of its selection runs, Verilated without coverage
 # points and compiled at -O0 (they only have to link).

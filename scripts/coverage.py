@@ -10,10 +10,10 @@ floors.
 Two coverage builds, because toggle points make a simulation about 20 times
 slower and line and user points barely:
 1. BUILD-line (cmake -DSC_COVERAGE=ON -DSC_COVERAGE_KINDS="line;user"):
-   the default suite (ctest -LE 'long|extended', without the four
-   full-length paper groups: 1.3 G clocks that reach no line the short moves
-   do not) with SC_COVERAGE_DIR set: each test process writes its counters
-   (tb/coverage_sink.h);
+   the tests CI runs (ctest -LE long: the default suite and its extended
+   tier), without the four full-length paper groups (1.3 G clocks that reach
+   no line the short moves do not), with SC_COVERAGE_DIR set: each test
+   process writes its counters (tb/coverage_sink.h);
 2. BUILD-toggle (SC_COVERAGE_KINDS=toggle): the short runs of TOGGLE_TESTS,
    chosen to drive every module's registers through their values;
 3. merges all counters (verilator_coverage --write), writes an lcov
@@ -55,9 +55,10 @@ FLOORS = {"line": 95.0, "toggle": 90.0, "user": 100.0}
 # 200 ms answer timeouts the instrumented board misses on a loaded machine
 # (the same UART frames run in board.BoardUart.* and board.RegisterFuzz.*).
 SLOW_TESTS = r"FullLengthLockstepIsExactAndInPhase|tools\.board_driver_over_a_pty|tools\.python_board_drives_the"
-# Labels outside the default suite, and those that simulate no Verilated RTL
-# (synthesis, lint, formal, the host planner).
-NO_RTL_OR_LONG = r"^(long|extended|coverage|mutation|synth|lint|formal|planner)$"
+# Labels outside what CI runs (the default and extended tiers), the Slurm
+# cluster run (the same regression as a local one), and those that simulate
+# no Verilated RTL (synthesis, lint, formal, the host planner).
+NO_RTL_OR_LONG = r"^(long|slurm|coverage|mutation|synth|lint|formal|planner)$"
 # The toggle runs: short tests that between them drive each module's
 # registers through their range (raw tables with reversals and overruns,
 # stops of every kind, streams, the register file and UART, the controller
@@ -442,8 +443,13 @@ def main():
         if not args.skip_build:
             print(f"== {name}: build {build}", flush=True)
             plain = ";".join(CI_PLAIN_TOPS) if name == "ci" else ""
+            # Without toggle points the CI selection's runs take about two
+            # minutes and its build several: the Verilated code at -O1
+            # builds faster than it then runs slower.
+            opt = "-O1" if name == "ci" and "toggle" not in measures else ""
             if run(["cmake", "-S", ROOT, "-B", build, "-DCMAKE_BUILD_TYPE=Release", "-DSC_COVERAGE=ON",
-                    f"-DSC_COVERAGE_KINDS={cmake_kinds}", f"-DSC_COVERAGE_PLAIN_TOPS={plain}"],
+                    f"-DSC_COVERAGE_KINDS={cmake_kinds}", f"-DSC_COVERAGE_PLAIN_TOPS={plain}",
+                    f"-DSC_VERILATE_OPT={opt}"],
                    stdout=subprocess.DEVNULL):
                 fail(f"cmake configure of {build} failed")
             if run(["cmake", "--build", build, "-j", args.jobs] + (["--target", *targets] if targets else [])):

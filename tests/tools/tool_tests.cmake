@@ -70,6 +70,13 @@ set_tests_properties(tools.output_files_whole_or_refused PROPERTIES TIMEOUT 1800
 if(SC_SANITIZE)
   set_tests_properties(tools.cli_contract PROPERTIES TIMEOUT 1800)
 endif()
+# The `extended` tier of the default build (CI runs it after the default
+# suite): the output-file checks, the whole CLI contract (about 90 s; the
+# default suite keeps the closed-loop CLI contract and the bad-input tests)
+# and the host driver against the virtual boards over a pty (about 60 s and
+# 40 s; board.BoardUart.* and board.BoardXY.* send the same frames).
 if(NOT SC_SANITIZE)
-  set_tests_properties(tools.output_files_whole_or_refused PROPERTIES LABELS "tools;extended")
+  set_tests_properties(tools.output_files_whole_or_refused tools.cli_contract tools.board_driver_over_a_pty
+                       tools.board_driver_drives_the_two_axis_board_over_a_pty
+                       PROPERTIES LABELS "tools;extended" COST 1000)
 endif()
