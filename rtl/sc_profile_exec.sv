@@ -791,6 +791,41 @@ module sc_profile_exec #(
       p_stop_empty: assert (!stopping_o || fifo_level_o == '0);
     end
   end
+
+  // -- group exec_soft (OwnReach = 0: the reach results are free inputs, any
+  // answer an evaluator could give): with the look-ahead on, a row loads only
+  // when, from the exact position it starts at, its forward reach stays at or
+  // below the window's upper edge or its start, and its backward reach at or
+  // above the lower edge or its start. Written on the whole position (the
+  // start after this clock's integration at a boundary, whose adders
+  // exec_steps covers, or REF_POS with POS_FRAC0 at a START), not on the 16
+  // fraction bits the gate adds: it also proves that the bits the gate
+  // drops never carry into the integer part it compares.
+  localparam int FPosW  = PosIntW + FracBits;
+  localparam int FW     = FPosW + 3;  // a position plus any reach (ReachW bits)
+  localparam int FShift = FracBits - sc_pkg::ReachFrac;
+  localparam int FIntW  = FW - FracBits;
+  logic [FPosW-1:0]        f_p0_raw;
+  logic signed [FW-1:0]    f_p0, f_fwd_end, f_rev_end;
+  logic signed [FIntW-1:0] f_p0_floor, f_fwd_floor, f_rev_floor;
+  logic                    f_fwd_ok, f_rev_ok;
+
+  assign f_p0_raw    = run_q ? {pint_next, pos_sum[FracBits-1:0]} : {pint_q, pos_frac0_i};
+  assign f_p0        = {{(FW-FPosW){f_p0_raw[FPosW-1]}}, f_p0_raw};
+  assign f_fwd_end   = f_p0 + {{(FW-ReachW-FShift){hd_fwd[ReachW-1]}}, hd_fwd, {FShift{1'b0}}};
+  assign f_rev_end   = f_p0 + {{(FW-ReachW-FShift){hd_rev[ReachW-1]}}, hd_rev, {FShift{1'b0}}};
+  // the integer part of a position: floor, also below 0
+  assign f_p0_floor  = f_p0[FW-1:FracBits];
+  assign f_fwd_floor = f_fwd_end[FW-1:FracBits];
+  assign f_rev_floor = f_rev_end[FW-1:FracBits];
+  assign f_fwd_ok    = f_fwd_floor <= FIntW'(soft_max_i) || f_fwd_floor <= f_p0_floor;
+  assign f_rev_ok    = f_rev_floor >= FIntW'(soft_min_i) || f_rev_floor >= f_p0_floor;
+
+  always_comb begin
+    if (!f_init_q) begin
+      p_soft_gate: assert (!(Lookahead && soft_en_i && load) || (f_fwd_ok && f_rev_ok));
+    end
+  end
 `endif
 
 endmodule

@@ -270,6 +270,17 @@ GROUPS += [
                   "assign continues = hd_vel0 == vel_end;",
                   "the guard checks the velocity only"),
         broken_depth=5),
+    Group(
+        name="exec_soft", module="sc_profile_exec", plain_files=EXEC_SUBS, params={"OwnReach": 0},
+        what="soft-limit look-ahead: with the window on, a row loads only if, from the exact position it "
+             "starts at, its reach goes no further past an edge than that start (no step beyond a soft "
+             "limit that its reach did not announce); any reach result",
+        asserts=["p_soft_gate"],
+        induction=1, depth=1,
+        mutation=("assign out_fwd   = fwd_int > IntW'(soft_max_i) && fwd_int > IntW'(p0_int);",
+                  "assign out_fwd   = fwd_int > IntW'(soft_max_i) + IntW'(1) && fwd_int > IntW'(p0_int);",
+                  "the window's upper edge one pulse out"),
+        broken_depth=6),
 ]
 
 # sc_axis_core (open loop, ExtStep = 0): executor, FIFO, stop and step generators without FORMAL

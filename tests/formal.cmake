@@ -10,7 +10,7 @@ set(SC_FORMAL_FAST
   quad_decoder_count quad_decoder_illegal quad_decoder_filter
   axi_regs_handshake axi_regs_response axi_regs_decode axi_regs_decode_axis axi_regs_pulse_time
   uart_bridge_frames uart_bridge_crc uart_bridge_crc8
-  exec_steps exec_abort exec_continuity stop_gen_limits
+  exec_steps exec_abort exec_continuity exec_soft stop_gen_limits
   core_done core_abort core_limits core_rate multi_sync_start)
 set(SC_FORMAL_SLOW step_gen_overrun step_gen_drain)
 
