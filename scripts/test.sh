@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # The test command: install what is missing, build, run the default ctest
-# suite (every area except the nightly-size `long` campaigns). Writes
-# build/test-results.xml (JUnit). With SC_SANITIZE=1 (CI) it then runs the
-# `extended` tests of build/ (build/test-results-extended.xml), the RTL
+# suite (the short and directed runs of every area: not the `extended` or the
+# nightly-size `long` tests). Writes build/test-results.xml (JUnit). With
+# SC_SANITIZE=1 (CI) the same ctest run takes the `extended` tests too (one
+# run keeps both cores busy to its end), then come the RTL
 # line and cover-point floors on the CI selection (label coverage_ci: build/cov-ci/,
 # build/coverage-ci.json, build/test-results-coverage.xml), builds the
 # sanitizer configuration (build-san/: clang, ASan + UBSan; the Verilated
@@ -22,11 +23,14 @@ if [ $# -gt 0 ]; then
   exec ctest --output-on-failure -j"$(nproc)" --output-junit test-results.xml "$@"
 fi
 rc=0
-stage "default suite"
-ctest --output-on-failure -j"$(nproc)" --output-junit test-results.xml -LE '^(long|extended)$' || rc=$?
 if [ "${SC_SANITIZE:-0}" = "1" ]; then
-  stage "extended tests"
-  ctest --output-on-failure -j"$(nproc)" --output-junit test-results-extended.xml -L '^extended$' || rc=$?
+  stage "default suite and extended tests"
+  ctest --output-on-failure -j"$(nproc)" --output-junit test-results.xml -LE '^long$' || rc=$?
+else
+  stage "default suite"
+  ctest --output-on-failure -j"$(nproc)" --output-junit test-results.xml -LE '^(long|extended)$' || rc=$?
+fi
+if [ "${SC_SANITIZE:-0}" = "1" ]; then
   stage "coverage floors"
   ctest --output-on-failure --output-junit test-results-coverage.xml -L '^coverage_ci$' || rc=$?
   stage "sanitizer build"
