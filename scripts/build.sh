@@ -11,7 +11,8 @@ here=$(cd "$(dirname "$0")/.." && pwd)
 jobs=$(nproc)
 if [ "${1:-}" = "--sanitize" ]; then
   CC=clang-14 CXX=clang++-14 cmake -S "$here" -B "$here/build-san" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-    -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -gline-tables-only" -DSC_SANITIZE=ON -DSC_FUZZ=ON -DSCURVE_HOST_EXECUTABLE=ON >/dev/null
+    -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -gline-tables-only" -DSC_SANITIZE=ON -DSC_FUZZ=ON \
+    -DSCURVE_HOST_EXECUTABLE=ON >/dev/null
   # Only what its tests run (not the benchmarks or the nightly-size tests).
   cmake --build "$here/build-san" -j"$jobs" --target scurve_host_tests scurve_board_link_tests scurve_host_main plan_digest san_model_tests \
     parser_tests tools_tests scurve sc_bench fuzz_scenario_json fuzz_stream_json fuzz_regress_list fuzz_regress_results fuzz_kin_trace fuzz_fst_trace \
