@@ -23,14 +23,12 @@ if [ $# -gt 0 ]; then
   exec ctest --output-on-failure -j"$(nproc)" --output-junit test-results.xml "$@"
 fi
 rc=0
-if [ "${SC_SANITIZE:-0}" = "1" ]; then
-  stage "default suite and extended tests"
-  ctest --output-on-failure -j"$(nproc)" --output-junit test-results.xml -LE '^long$' || rc=$?
-else
+if [ "${SC_SANITIZE:-0}" != "1" ]; then
   stage "default suite"
   ctest --output-on-failure -j"$(nproc)" --output-junit test-results.xml -LE '^(long|extended)$' || rc=$?
-fi
-if [ "${SC_SANITIZE:-0}" = "1" ]; then
+else
+  stage "default suite and extended tests"
+  ctest --output-on-failure -j"$(nproc)" --output-junit test-results.xml -LE '^long$' || rc=$?
   stage "coverage floors"
   ctest --output-on-failure --output-junit test-results-coverage.xml -L '^coverage_ci$' || rc=$?
   stage "sanitizer build"
