@@ -74,6 +74,9 @@ Uop uop(uint8_t pc) {
 }  // namespace
 
 void RowReach::step(const Inputs& in) {
+  // Idle without a start every register holds (an abort only keeps it idle):
+  // skip the datapath, which nothing reads then, through the clocks of motion.
+  if (q_.st == St::Idle && !in.start) return;
   const State& q = q_;
   State d = q;
 
