@@ -12,12 +12,8 @@
 
 namespace scurve::cli {
 
-namespace {
-
 // Ranges of the move itself are the planner's, checked there.
-constexpr double kAnyReal = 1e300;
-
-}  // namespace
+using input::kAnyReal;
 
 CLI::Option* real_flag(CLI::App* app, const char* flag, double& target, const std::string& what, double lo,
                        double hi) {

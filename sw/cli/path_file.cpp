@@ -24,7 +24,7 @@ namespace scurve::cli {
 namespace {
 
 constexpr int64_t kMaxPosition = scurve::PathRequest::kMaxPosition;
-constexpr double kAnyReal = 1e300;  // a finite number; the sign is checked where it matters
+using input::kAnyReal;  // a finite number; the sign is checked where it matters
 
 // A move as the file gives it: the feed still in mm/s (its factor to pulses
 // needs the move's start), the jerks in mm/s^3.

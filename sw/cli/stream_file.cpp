@@ -19,7 +19,7 @@ StreamRequest parse_stream_json(const std::string& text) {
     throw input::Error("stream", "file", "not JSON: " + std::string(e.what()));
   }
   using namespace input;
-  constexpr double kAny = 1e300;  // the planner checks the ranges and names them
+  // Bounds kAnyReal: the planner checks the ranges and names them.
   StreamRequest r;
   json_object("stream", j);
   json_known_keys("stream", j, {"_comment", "limits", "moves", "soft_limits", "start_position"});
@@ -30,9 +30,9 @@ StreamRequest parse_stream_json(const std::string& text) {
   for (const char* k : {"a_max", "j_max", "v_max"}) {
     if (!l.contains(k)) throw input::Error(std::string("limits.") + k, "missing", "required");
   }
-  r.limits.a_max = json_real("limits.a_max", l["a_max"], 0, kAny);
-  r.limits.j_max = json_real("limits.j_max", l["j_max"], 0, kAny);
-  r.limits.v_max = json_real("limits.v_max", l["v_max"], 0, kAny);
+  r.limits.a_max = json_real("limits.a_max", l["a_max"], 0, kAnyReal);
+  r.limits.j_max = json_real("limits.j_max", l["j_max"], 0, kAnyReal);
+  r.limits.v_max = json_real("limits.v_max", l["v_max"], 0, kAnyReal);
   constexpr int64_t kPos = scurve::PlannerLimits::kMaxPosition;
   if (j.contains("start_position")) {
     r.limits.start_position = json_int("start_position", j["start_position"], -kPos, kPos);
@@ -67,9 +67,10 @@ StreamRequest parse_stream_json(const std::string& text) {
     scurve::StreamMove mv;
     mv.distance = json_int(at + ".distance", m["distance"], -scurve::PlannerLimits::kMaxDistance,
                            scurve::PlannerLimits::kMaxDistance);
-    mv.v_cruise = json_real(at + ".v_cruise", m["v_cruise"], 0, kAny);
-    mv.v_junction_max =
-        m.contains("v_junction_max") ? json_real(at + ".v_junction_max", m["v_junction_max"], 0, kAny) : r.limits.v_max;
+    mv.v_cruise = json_real(at + ".v_cruise", m["v_cruise"], 0, kAnyReal);
+    mv.v_junction_max = m.contains("v_junction_max")
+                            ? json_real(at + ".v_junction_max", m["v_junction_max"], 0, kAnyReal)
+                            : r.limits.v_max;
     r.moves.push_back(mv);
   }
   return r;

@@ -94,7 +94,7 @@ std::variant<std::optional<RetargetPlan>, std::string> resolve_retarget_flags(co
 // Number flags read through the validation layer (decimal notation, finite,
 // integer, range); CLI11 reports its message (exit 2).
 CLI::Option* real_flag(CLI::App* app, const char* flag, double& target, const std::string& what,
-                       double lo = -1e300, double hi = 1e300);
+                       double lo = -input::kAnyReal, double hi = input::kAnyReal);
 template <typename T>
 CLI::Option* int_flag(CLI::App* app, const char* flag, T& target, int64_t lo, int64_t hi, const std::string& what) {
   return app

@@ -33,6 +33,11 @@ class Error : public std::invalid_argument {
 // digits, no leading zeros; any width (traces carry 128-bit values).
 bool is_decimal_integer(std::string_view text);
 
+// The bound of a real that any finite value may take (parse_real(p, t,
+// -kAnyReal, kAnyReal)): where its range is checked later, by the planner or
+// against the value's sign.
+inline constexpr double kAnyReal = 1e300;
+
 // Decimal text: an optional sign and digits, no leading zeros (no octal or
 // hex reading), within [lo, hi].
 int64_t parse_int(const std::string& param, std::string_view text, int64_t lo, int64_t hi);
