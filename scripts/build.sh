@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Configure and build (Release, LTO) into build/. Binaries land in build/bin/.
+# Configure and build (Release) into build/. Binaries land in build/bin/.
 #   scripts/build.sh --sanitize   the sanitizer build instead, into build-san/:
 #                                 clang, ASan + UBSan (-fno-sanitize-recover),
 #                                 the libFuzzer harnesses, the CLI and the

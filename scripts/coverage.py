@@ -446,10 +446,14 @@ def main():
             # Without toggle points the CI selection's runs take about two
             # minutes and its build several: the Verilated code at -O1
             # builds faster than it then runs slower.
-            opt = "-O1" if name == "ci" and "toggle" not in measures else ""
+            # The host C++ (model, benches, tests) likewise at -O1: it is
+            # most of the build, and the instrumented RTL most of the runs.
+            quick = name == "ci" and "toggle" not in measures
+            opt = "-O1" if quick else ""
+            host_flags = [f"-DCMAKE_CXX_FLAGS_RELEASE={'-O1' if quick else '-O3'} -DNDEBUG"]
             if run(["cmake", "-S", ROOT, "-B", build, "-DCMAKE_BUILD_TYPE=Release", "-DSC_COVERAGE=ON",
                     f"-DSC_COVERAGE_KINDS={cmake_kinds}", f"-DSC_COVERAGE_PLAIN_TOPS={plain}",
-                    f"-DSC_VERILATE_OPT={opt}"],
+                    f"-DSC_VERILATE_OPT={opt}", *host_flags],
                    stdout=subprocess.DEVNULL):
                 fail(f"cmake configure of {build} failed")
             if run(["cmake", "--build", build, "-j", args.jobs] + (["--target", *targets] if targets else [])):

@@ -3,7 +3,8 @@
 # suite (the short and directed runs of every area: not the `extended` or the
 # nightly-size `long` tests). Writes build/test-results.xml (JUnit). With
 # SC_SANITIZE=1 (CI) the same ctest run takes the `extended` tests too (one
-# run keeps both cores busy to its end), then come the RTL
+# run keeps both cores busy to its end) and leaves out the `sanitized` ones
+# (the tool scripts the sanitizer stage runs again, instrumented), then come the RTL
 # line and cover-point floors on the CI selection (label coverage_ci: build/cov-ci/,
 # build/coverage-ci.json, build/test-results-coverage.xml), builds the
 # sanitizer configuration (build-san/: clang, ASan + UBSan; the Verilated
@@ -28,7 +29,7 @@ if [ "${SC_SANITIZE:-0}" != "1" ]; then
   ctest --output-on-failure -j"$(nproc)" --output-junit test-results.xml -LE '^(long|extended)$' || rc=$?
 else
   stage "default suite and extended tests"
-  ctest --output-on-failure -j"$(nproc)" --output-junit test-results.xml -LE '^long$' || rc=$?
+  ctest --output-on-failure -j"$(nproc)" --output-junit test-results.xml -LE '^(long|sanitized)$' || rc=$?
   stage "coverage floors"
   ctest --output-on-failure --output-junit test-results-coverage.xml -L '^coverage_ci$' || rc=$?
   stage "sanitizer build"

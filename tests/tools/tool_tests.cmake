@@ -80,3 +80,15 @@ if(NOT SC_SANITIZE)
                        tools.board_driver_drives_the_two_axis_board_over_a_pty
                        PROPERTIES LABELS "tools;extended" COST 1000)
 endif()
+# The tests the sanitizer stage runs again with the same command and files,
+# instrumented: labelled `sanitized` in the default build, so that CI's
+# release run (scripts/test.sh with SC_SANITIZE=1) leaves them to that stage
+# instead of running them twice. A plain ctest run, any tier, still runs them.
+set(SC_SANITIZED_TESTS tools.cli_contract tools.cli_contract_closed_loop tools.cli_bad_input_closed_loop
+    tools.cli_clock_hz tools.regs_cli_uart_frames tools.regs_cli_closed_loop tools.regress_shards_cover_list
+    tools.board_driver_over_a_pty tools.board_driver_drives_the_two_axis_board_over_a_pty)
+if(NOT SC_SANITIZE)
+  foreach(name IN LISTS SC_SANITIZED_TESTS)
+    set_property(TEST ${name} APPEND PROPERTY LABELS sanitized)
+  endforeach()
+endif()
